@@ -1,0 +1,55 @@
+// CUT (paper C1-C10): find every place where one projected edge passes behind another,
+// using the adaptive uniform grid, and group the results by behind edge into a CUTSET.
+//
+// Memory: nothing is allocated. plan_cut() measures the scene and says how many scratch
+// bytes run_cut() needs; the caller also hands run_cut() the storage the CUTSET lives in
+// (cutset_bytes()). Scratch can be reused once run_cut() returns; the CUTSET storage must
+// live as long as DRAW runs on it (it is what lets DRAW rerun with a new halo width).
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "cut/cutset.h"
+#include "cut/grid.h"
+#include "status/status.h"
+
+namespace haloplot {
+
+// Called now and then from the cell loop; the host tool draws a progress line with it.
+using ProgressFn = void (*)(void* context, uint32_t cells_done, uint32_t cells_total);
+
+struct CutParams {
+  GridParams grid;
+  CellCover cover = CellCover::kExact;
+  int32_t reach = 0;  // also record near misses up to this many steps apart (exact halo); 0: off
+  ProgressFn progress = nullptr;
+  void* progress_context = nullptr;
+};
+
+struct CutPlan {
+  Grid grid;
+  uint32_t n_edges = 0;
+  uint32_t cell_pairs = 0;   // (cell, edge) pairs: the paper's CEPAIR size
+  size_t scratch_bytes = 0;  // what run_cut() needs as scratch
+  CutParams params;
+};
+
+struct CutStats {
+  uint32_t cell_pairs = 0;      // (cell, edge) pairs
+  uint64_t pairs_tested = 0;    // edge pairs examined inside cells (C6.1)
+  uint64_t crossings = 0;       // crossings found, owned once each (also past capacity)
+  uint64_t near_misses = 0;     // near-miss records found
+  uint64_t rejected = 0;        // crossings seen in a cell that does not own them (C6.3)
+  uint64_t equal_depth = 0;     // crossings where both edges have the same depth: not cut
+  uint32_t max_per_edge = 0;    // the largest group, which sizes DRAW's scratch
+};
+
+// Check the scene, choose the grid and count (cell, edge) pairs: O(N + cell pairs).
+Status plan_cut(const Edge3* edges, uint32_t n, const CutParams& params, CutPlan* plan);
+
+// Run CUT. On kCrossingCapacity, stats->crossings + stats->near_misses is the record count a
+// retry needs; the CUTSET is left empty (never half-filled).
+Status run_cut(const CutPlan& plan, const Edge3* edges, void* scratch, size_t scratch_bytes,
+               void* cutset_storage, size_t cutset_storage_bytes, CutSet* out, CutStats* stats);
+
+}  // namespace haloplot

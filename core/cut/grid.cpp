@@ -1,0 +1,63 @@
+#include "cut/grid.h"
+
+#include "geometry/wide.h"
+
+namespace haloplot {
+
+uint32_t average_length(const Edge3* edges, uint32_t n) {
+  if (n == 0) return 0;
+  uint64_t sum = 0;  // n < 2^32 edges of length < 2^21: the sum fits in 53 bits
+  for (uint32_t i = 0; i < n; ++i) {
+    const int64_t dx = edges[i].b.x - edges[i].a.x, dy = edges[i].b.y - edges[i].a.y;
+    sum += isqrt_u64(static_cast<uint64_t>(dx * dx + dy * dy));
+  }
+  return static_cast<uint32_t>(sum / n);
+}
+
+namespace {
+
+uint32_t cells_for(int32_t width, int32_t height, int32_t cell) {
+  const uint64_t nx = static_cast<uint64_t>((width + cell - 1) / cell);
+  const uint64_t ny = static_cast<uint64_t>((height + cell - 1) / cell);
+  const uint64_t total = nx * ny;
+  return total > 0xffffffffu ? 0xffffffffu : static_cast<uint32_t>(total);
+}
+
+}  // namespace
+
+Grid choose_grid(const Edge3* edges, uint32_t n, const GridParams& params) {
+  Grid g;
+  if (n == 0) return g;
+  int32_t xmin = kCoordMax, ymin = kCoordMax, xmax = 0, ymax = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    const Edge3& e = edges[i];
+    xmin = min_i32(xmin, min_i32(e.a.x, e.b.x));
+    xmax = max_i32(xmax, max_i32(e.a.x, e.b.x));
+    ymin = min_i32(ymin, min_i32(e.a.y, e.b.y));
+    ymax = max_i32(ymax, max_i32(e.a.y, e.b.y));
+  }
+  const int32_t width = xmax - xmin + 1, height = ymax - ymin + 1;
+  int32_t cell = params.cell;
+  if (cell <= 0) {
+    // Paper C2: G = lambda * L. lambda is Q8.8; the product fits easily in 64 bits.
+    const uint64_t l = average_length(edges, n);
+    const uint64_t side = (l * params.lambda_q8) >> 8;
+    cell = side < 1 ? 1 : (side > static_cast<uint64_t>(kCoordLimit) ? kCoordLimit : static_cast<int32_t>(side));
+  }
+  // Cap the cell count so the per-cell index stays linear in N. Coarsening the grid keeps
+  // CUT correct; it only adds pair tests in crowded cells.
+  const uint64_t cap64 = params.max_cells ? params.max_cells : 2ull * n + 64;
+  const uint32_t cap = cap64 > 0x7fffffffu ? 0x7fffffffu : static_cast<uint32_t>(cap64);
+  while (cells_for(width, height, cell) > cap) {
+    // Grow by about 1/8 per step: close to the largest grid that fits the cap.
+    cell += cell / 8 + 1;
+  }
+  g.ox = xmin;
+  g.oy = ymin;
+  g.cell = cell;
+  g.nx = static_cast<uint32_t>((width + cell - 1) / cell);
+  g.ny = static_cast<uint32_t>((height + cell - 1) / cell);
+  return g;
+}
+
+}  // namespace haloplot

@@ -1,0 +1,87 @@
+// CUT's adaptive uniform grid (paper C2-C3). Cells are squares of side `cell` steps laid
+// from the scene's lower-left corner. They partition the plane exactly: a point belongs to
+// column floor((x - ox) / cell) and row floor((y - oy) / cell), so a vertical grid line lies in
+// the cell to its right and a horizontal one in the cell above it, as the paper requires.
+#pragma once
+#include <stdint.h>
+
+#include "geometry/contract.h"
+#include "geometry/fraction.h"
+
+namespace haloplot {
+
+enum class CellCover : uint8_t {
+  kExact,        // the cells the segment passes through, column by column (default)
+  kBoundingBox,  // every cell of the segment's bounding box: the paper's shortcut; costs more
+                 // (cell, edge) pairs and so more pair tests on long diagonal edges
+};
+
+struct Grid {
+  int32_t ox = 0, oy = 0;  // lower-left corner of cell (0, 0), in steps
+  int32_t cell = 1;        // side of a cell, in steps
+  uint32_t nx = 1, ny = 1;
+
+  uint32_t cells() const { return nx * ny; }
+  uint32_t col(int32_t x) const { return static_cast<uint32_t>(x - ox) / static_cast<uint32_t>(cell); }
+  uint32_t row(int32_t y) const { return static_cast<uint32_t>(y - oy) / static_cast<uint32_t>(cell); }
+  uint32_t cell_of(int32_t x, int32_t y) const { return row(y) * nx + col(x); }
+};
+
+inline int32_t min_i32(int32_t a, int32_t b) { return a < b ? a : b; }
+inline int32_t max_i32(int32_t a, int32_t b) { return a > b ? a : b; }
+
+// Visit every cell the projection of `e` may touch, calling visit(cell_index). `reach` > 0
+// dilates the bounding box by that many steps (used when CUT also records near misses) and
+// implies the bounding-box cover. Every point of the segment lies in a visited cell; a few
+// extra cells may be visited, which costs time but never correctness (paper, notes on C3.1).
+template <typename Visit>
+void for_each_cell(const Grid& g, const Edge3& e, CellCover cover, int32_t reach, Visit visit) {
+  int32_t x0 = e.a.x, y0 = e.a.y, x1 = e.b.x, y1 = e.b.y;
+  if (x0 > x1) {  // walk columns left to right
+    int32_t t = x0;
+    x0 = x1;
+    x1 = t;
+    t = y0;
+    y0 = y1;
+    y1 = t;
+  }
+  const int32_t xmax_scene = g.ox + static_cast<int32_t>(g.nx) * g.cell - 1;
+  const int32_t ymax_scene = g.oy + static_cast<int32_t>(g.ny) * g.cell - 1;
+  const uint32_t c0 = g.col(max_i32(x0 - reach, g.ox));
+  const uint32_t c1 = g.col(min_i32(x1 + reach, xmax_scene));
+  if (cover == CellCover::kBoundingBox || reach > 0 || c0 == c1) {
+    const uint32_t r0 = g.row(max_i32(min_i32(y0, y1) - reach, g.oy));
+    const uint32_t r1 = g.row(min_i32(max_i32(y0, y1) + reach, ymax_scene));
+    for (uint32_t r = r0; r <= r1; ++r)
+      for (uint32_t c = c0; c <= c1; ++c) visit(r * g.nx + c);
+    return;
+  }
+  // Exact walk: in column c the segment spans x in [xl, xh]; y is monotone in x, so its rows
+  // lie between the rows of y(xl) and y(xh). Using the closed column (xh on the boundary)
+  // adds at most a cell the segment only touches at a grid corner: safe.
+  const int64_t dx = x1 - x0, dy = y1 - y0;  // dx > 0 here, since c0 != c1
+  for (uint32_t c = c0; c <= c1; ++c) {
+    const int32_t xl = c == c0 ? x0 : g.ox + static_cast<int32_t>(c) * g.cell;
+    const int32_t xh = c == c1 ? x1 : g.ox + static_cast<int32_t>(c + 1) * g.cell;
+    // floor(y) at both ends; |dy * (x - x0)| < 2^41, so int64 is exact.
+    const int32_t ya = y0 + static_cast<int32_t>(floor_div(dy * (xl - x0), dx));
+    const int32_t yb = y0 + static_cast<int32_t>(floor_div(dy * (xh - x0), dx));
+    const uint32_t r0 = g.row(min_i32(ya, yb));
+    const uint32_t r1 = g.row(max_i32(ya, yb));
+    for (uint32_t r = r0; r <= r1; ++r) visit(r * g.nx + c);
+  }
+}
+
+struct GridParams {
+  uint32_t lambda_q8 = 256;  // cell side = lambda * average projected length; Q8.8, 1.0 default
+  int32_t cell = 0;          // > 0 forces the cell side in steps (benchmarks, tests)
+  uint32_t max_cells = 0;    // 0: at most 2 * N + 64 cells, so the cell index stays O(N) bytes
+};
+
+// Choose the grid for a scene (paper C1-C2). Edges must already be range-checked.
+Grid choose_grid(const Edge3* edges, uint32_t n, const GridParams& params);
+
+// Average projected length in steps (floor), from exact integer square roots.
+uint32_t average_length(const Edge3* edges, uint32_t n);
+
+}  // namespace haloplot

@@ -1,0 +1,50 @@
+// DRAW (paper D1-D2.5): given a CUTSET and a halo width, emit the visible spans of every edge.
+// DRAW reads only the CUTSET, so a new halo width reruns DRAW alone, never CUT.
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "cut/cutset.h"
+#include "draw/halo.h"
+#include "status/status.h"
+
+namespace haloplot {
+
+// A visible piece of an edge: positions t0 < t1 in Q0.32 along it (t = 1 is 2^32), and the
+// same ends rounded to the nearest step, which is all a plotter needs.
+struct Span {
+  uint32_t edge;
+  int64_t t0, t1;
+  int32_t x0, y0, x1, y1;
+};
+
+// Where spans go: a plain function pointer and context, so the firmware can stream spans
+// straight into the motion planner without a buffer and the host can collect them. A sink
+// that returns anything but kOk stops DRAW with that status.
+struct SpanSink {
+  Status (*emit)(void* context, const Span& span);
+  void* context;
+};
+
+struct DrawParams {
+  int32_t halo = 0;  // halo width W in steps, in [0, 2^20); 0 draws every edge whole
+  HaloMode mode = HaloMode::kPaper;
+};
+
+struct DrawStats {
+  uint64_t gaps = 0;            // halo gaps applied
+  uint64_t spans = 0;           // spans emitted
+  uint64_t hidden_edges = 0;    // edges the halos removed entirely
+  bool reach_short = false;     // exact mode, W > CUT's reach: near misses beyond reach unseen
+};
+
+// Scratch DRAW needs for this CUTSET: one Gap per record of the busiest edge.
+size_t draw_scratch_bytes(const CutSet& cutset);
+
+Status draw(const CutSet& cutset, const DrawParams& params, void* scratch, size_t scratch_bytes,
+            SpanSink sink, DrawStats* stats);
+
+// Round a position along an edge to steps (paper: the only place rounding happens).
+void span_point(const Edge3& e, int64_t t32, int32_t* x, int32_t* y);
+
+}  // namespace haloplot

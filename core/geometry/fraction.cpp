@@ -1,0 +1,44 @@
+#include "geometry/fraction.h"
+
+namespace haloplot {
+
+uint32_t frac_q32_small(int64_t num, int64_t den) {
+  const int64_t high = (num << 22) / den;        // top 22 bits of the fraction
+  const int64_t rem = (num << 22) - high * den;  // < den < 2^41
+  const int64_t low = (rem << 10) / den;         // next 10 bits; rem << 10 < 2^51
+  return static_cast<uint32_t>((high << 10) | low);
+}
+
+uint32_t frac_q32(int64_t num, int64_t den) {
+  uint64_t rem = static_cast<uint64_t>(num);
+  const uint64_t d = static_cast<uint64_t>(den);
+  uint32_t q = 0;
+  for (int i = 0; i < kFracBits; ++i) {
+    rem <<= 1;  // rem < den < 2^62, so this stays below 2^63
+    q <<= 1;
+    if (rem >= d) {
+      rem -= d;
+      q |= 1u;
+    }
+  }
+  return q;
+}
+
+int64_t q32_floor_clamped(int64_t num, int64_t den) {
+  if (num <= -den) return -kFracOne;
+  if (num >= 2 * den) return 2 * kFracOne;
+  // num in (-den, 2 den): integer part is -1, 0 or 1.
+  int64_t whole = 0;
+  if (num < 0) {
+    whole = -1;
+    num += den;
+  } else if (num >= den) {
+    whole = 1;
+    num -= den;
+  }
+  return whole * kFracOne + frac_q32(num, den);
+}
+
+int64_t q32_ceil_clamped(int64_t num, int64_t den) { return -q32_floor_clamped(-num, den); }
+
+}  // namespace haloplot

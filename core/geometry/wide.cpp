@@ -1,0 +1,94 @@
+#include "geometry/wide.h"
+
+namespace haloplot {
+
+Wide Wide::from_i64(int64_t v) {
+  Wide w;
+  w.lo = static_cast<uint64_t>(v);
+  w.hi = v < 0 ? ~uint64_t{0} : 0;
+  return w;
+}
+
+Wide Wide::from_u64(uint64_t v) {
+  Wide w;
+  w.lo = v;
+  return w;
+}
+
+Wide operator+(Wide a, Wide b) {
+  Wide r;
+  r.lo = a.lo + b.lo;
+  r.hi = a.hi + b.hi + (r.lo < a.lo ? 1 : 0);
+  return r;
+}
+
+Wide operator-(Wide a) {
+  Wide r;
+  r.lo = ~a.lo + 1;
+  r.hi = ~a.hi + (r.lo == 0 ? 1 : 0);
+  return r;
+}
+
+Wide operator-(Wide a, Wide b) { return a + (-b); }
+
+Wide mul_u64(uint64_t a, uint64_t b) {
+  // Schoolbook on 32-bit halves: each partial product is 32 x 32 -> 64, which the
+  // Cortex-M4 does in one UMULL.
+  const uint64_t a0 = a & 0xffffffffu, a1 = a >> 32;
+  const uint64_t b0 = b & 0xffffffffu, b1 = b >> 32;
+  const uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+  const uint64_t middle = (p00 >> 32) + (p01 & 0xffffffffu) + (p10 & 0xffffffffu);
+  Wide r;
+  r.lo = (middle << 32) | (p00 & 0xffffffffu);
+  r.hi = p11 + (p01 >> 32) + (p10 >> 32) + (middle >> 32);
+  return r;
+}
+
+Wide mul_i64(int64_t a, int64_t b) {
+  const bool neg = (a < 0) != (b < 0);
+  const uint64_t ua = a < 0 ? 0 - static_cast<uint64_t>(a) : static_cast<uint64_t>(a);
+  const uint64_t ub = b < 0 ? 0 - static_cast<uint64_t>(b) : static_cast<uint64_t>(b);
+  const Wide m = mul_u64(ua, ub);
+  return neg ? -m : m;
+}
+
+Wide mul_wide_u64(Wide a, uint64_t b) {
+  Wide r = mul_u64(a.lo, b);
+  r.hi += a.hi * b;  // only the low 64 bits of a.hi * b matter below 2^128
+  return r;
+}
+
+int compare(Wide a, Wide b) {
+  const int64_t ah = static_cast<int64_t>(a.hi), bh = static_cast<int64_t>(b.hi);
+  if (ah != bh) return ah < bh ? -1 : 1;
+  if (a.lo != b.lo) return a.lo < b.lo ? -1 : 1;
+  return 0;
+}
+
+uint64_t isqrt(Wide v) {
+  // Classic bit-pair method: the root grows one bit per step, the remainder stays below
+  // 2 * root + 1, so every intermediate fits in 128 bits for v < 2^126.
+  uint64_t root = 0;
+  Wide rem;  // remainder, unsigned in practice
+  for (int shift = 124; shift >= 0; shift -= 2) {
+    // bring down the next two bits of v
+    const uint64_t two_bits =
+        shift >= 64 ? (v.hi >> (shift - 64)) & 3u : (v.lo >> shift) & 3u;
+    rem.hi = (rem.hi << 2) | (rem.lo >> 62);
+    rem.lo = (rem.lo << 2) | two_bits;
+    // trial = 4 * root + 1 (as a 128-bit value; root < 2^63 here)
+    Wide trial;
+    trial.lo = (root << 2) | 1u;
+    trial.hi = root >> 62;
+    root <<= 1;
+    if (!(rem < trial)) {
+      rem = rem - trial;
+      root |= 1u;
+    }
+  }
+  return root;
+}
+
+uint32_t isqrt_u64(uint64_t v) { return static_cast<uint32_t>(isqrt(Wide::from_u64(v))); }
+
+}  // namespace haloplot

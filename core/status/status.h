@@ -1,0 +1,26 @@
+// Status codes for every core stage. The core never throws, never aborts and never
+// truncates silently: a stage either finishes or returns a code that names the problem.
+#pragma once
+#include <stdint.h>
+
+namespace haloplot {
+
+enum class Status : uint8_t {
+  kOk = 0,
+  kCoordinateOutOfRange,  // an input coordinate is outside [0, 2^20)
+  kTooManyEdges,          // more edges than the 32-bit indices and counters allow
+  kWorkspaceTooSmall,     // the caller's scratch buffer is smaller than the plan asked for
+  kCutsetStorageTooSmall, // the caller's CUTSET buffer cannot hold the edge index
+  kCrossingCapacity,      // more crossings than the CUTSET buffer holds (see needed count)
+  kCellPairOverflow,      // more (cell, edge) pairs than a 32-bit counter holds
+  kBadParameter,          // a parameter is outside its documented range
+  kSinkFull,              // the span sink refused a span (its buffer is full)
+  kCutsetInconsistent,    // a CUTSET read from outside breaks an invariant
+};
+
+// A short, stable, human-readable name, e.g. "crossing capacity exceeded".
+const char* status_name(Status s);
+
+inline bool ok(Status s) { return s == Status::kOk; }
+
+}  // namespace haloplot

@@ -1,0 +1,18 @@
+# Fails the build if the library's symbol table (defined or referenced) names a software
+# floating-point routine, the heap, C++ exceptions or RTTI, or the printf family.
+set(PATTERN "__aeabi_[df](add|sub|rsub|mul|div|cmp|neg|2)|__aeabi_(u?i|u?l)2[df]|malloc|calloc|realloc| free$|_Znw|_Zna|_Zdl|_Zda|__cxa_throw|__cxa_allocate_exception|__gxx_personality|_ZTI|printf")
+execute_process(COMMAND ${NM} ${LIB} OUTPUT_VARIABLE symbols RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "nm failed on ${LIB}")
+endif()
+string(REPLACE "\n" ";" lines "${symbols}")
+set(bad "")
+foreach(line IN LISTS lines)
+  if(line MATCHES "${PATTERN}")
+    string(APPEND bad "  ${line}\n")
+  endif()
+endforeach()
+if(bad)
+  message(FATAL_ERROR "forbidden symbols in ${LIB}:\n${bad}")
+endif()
+message(STATUS "symbol gate passed: ${LIB}")
