@@ -1,0 +1,295 @@
+// haloplot: the host tool. Runs the same freestanding core as the firmware.
+//   haloplot demo-scene [--cubes N] -o SCENE.edges
+//   haloplot cut SCENE.edges -o SCENE.cut [cut options] [--stats]
+//   haloplot draw SCENE.cut --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans] [--stats]
+//   haloplot plot SCENE.edges --halo W [--exact-halo] -o OUT.svg [--spans F] [--cut F] [--stats]
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "cli/options.h"
+#include "demo/cube_array.h"
+#include "io/atomic_file.h"
+#include "io/cut_file.h"
+#include "io/edges_file.h"
+#include "io/line_reader.h"
+#include "io/spans_file.h"
+#include "pipeline/host_pipeline.h"
+#include "render/svg.h"
+
+using namespace haloplot;
+using namespace haloplot::host;
+
+namespace {
+
+const char* kUsage =
+    "usage:\n"
+    "  haloplot demo-scene [--cubes N] -o SCENE.edges\n"
+    "  haloplot cut SCENE.edges -o SCENE.cut [--lambda X] [--cell G] [--cover exact|bbox]\n"
+    "               [--reach R] [--stats]\n"
+    "  haloplot draw SCENE.cut --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans] [--stats]\n"
+    "  haloplot plot SCENE.edges --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans]\n"
+    "               [--cut OUT.cut] [cut options] [--stats]\n";
+
+int fail(const std::string& message) {
+  std::cerr << "haloplot: " << message << "\n";
+  return 1;
+}
+
+int fail_status(const char* stage, Status s) {
+  return fail(std::string(stage) + " failed: " + status_name(s));
+}
+
+void progress(void*, uint32_t done, uint32_t total) {
+  static uint32_t last_pct = 101;
+  const uint32_t pct = total ? uint32_t(uint64_t(done) * 100 / total) : 100;
+  if (pct == last_pct) return;
+  last_pct = pct;
+  std::fprintf(stderr, "\rCUT: %3u%% of %u cells%s", pct, total, pct == 100 ? "\n" : "");
+}
+
+bool read_int_option(const Options& o, const std::string& name, int64_t lo, int64_t hi,
+                     int64_t* out, std::string* error) {
+  const std::string v = o.get(name);
+  if (v.empty()) return true;
+  if (!parse_int(v, lo, hi, out)) {
+    *error = name + " '" + v + "' must be an integer in [" + std::to_string(lo) + ", " +
+             std::to_string(hi) + "]";
+    return false;
+  }
+  return true;
+}
+
+// --lambda accepts a decimal like 1.5; stored as Q8.8 without floating point.
+bool parse_lambda(const std::string& s, uint32_t* q8) {
+  const size_t dot = s.find('.');
+  int64_t whole = 0, frac = 0;
+  const std::string w = s.substr(0, dot);
+  if (!parse_int(w.empty() ? "0" : w, 0, 1000, &whole)) return false;
+  uint64_t scale = 1;
+  if (dot != std::string::npos) {
+    const std::string f = s.substr(dot + 1);
+    if (f.empty() || f.size() > 6 || !parse_int(f, 0, 999999, &frac)) return false;
+    for (size_t i = 0; i < f.size(); ++i) scale *= 10;
+  }
+  const uint64_t v = uint64_t(whole) * 256 + (uint64_t(frac) * 256 + scale / 2) / scale;
+  if (v == 0) return false;
+  *q8 = uint32_t(v);
+  return true;
+}
+
+bool cut_params(const Options& o, CutParams* p, std::string* error) {
+  if (!o.get("--lambda").empty() && !parse_lambda(o.get("--lambda"), &p->grid.lambda_q8)) {
+    *error = "--lambda '" + o.get("--lambda") + "' must be a positive decimal up to 1000";
+    return false;
+  }
+  int64_t cell = 0, reach = 0;
+  if (!read_int_option(o, "--cell", 1, kCoordLimit, &cell, error)) return false;
+  if (!read_int_option(o, "--reach", 0, kCoordMax, &reach, error)) return false;
+  p->grid.cell = int32_t(cell);
+  p->reach = int32_t(reach);
+  const std::string cover = o.get("--cover", "exact");
+  if (cover == "exact")
+    p->cover = CellCover::kExact;
+  else if (cover == "bbox")
+    p->cover = CellCover::kBoundingBox;
+  else {
+    *error = "--cover must be 'exact' or 'bbox'";
+    return false;
+  }
+  if (isatty(2)) p->progress = &progress;
+  return true;
+}
+
+bool draw_params(const Options& o, DrawParams* p, std::string* error) {
+  if (o.get("--halo").empty()) {
+    *error = "--halo W (steps) is required";
+    return false;
+  }
+  int64_t halo = 0;
+  if (!read_int_option(o, "--halo", 0, kCoordMax, &halo, error)) return false;
+  p->halo = int32_t(halo);
+  p->mode = o.has("--exact-halo") ? HaloMode::kExact : HaloMode::kPaper;
+  return true;
+}
+
+std::string grid_text(const CutPlan& plan) {
+  return std::to_string(plan.grid.nx) + "x" + std::to_string(plan.grid.ny);
+}
+
+// The CUT statistics that do not depend on the machine, so a .cut file stays deterministic.
+std::string cut_header(const HostCut& c) {
+  std::ostringstream h;
+  h << "# stats edges=" << c.set.n_edges << " crossings=" << c.stats.crossings
+    << " near=" << c.stats.near_misses << " grid=" << grid_text(c.plan)
+    << " cell=" << c.plan.grid.cell << " cell_pairs=" << c.stats.cell_pairs
+    << " pairs_tested=" << c.stats.pairs_tested << " rejected=" << c.stats.rejected
+    << " equal_depth=" << c.stats.equal_depth << "\n";
+  return h.str();
+}
+
+void print_cut_stats(const HostCut& c) {
+  std::fprintf(stderr,
+               "edges=%u\ncrossings=%llu\nnear=%llu\ngrid=%s\ncell=%d\ncell_pairs=%u\n"
+               "pairs_tested=%llu\nrejected=%llu\nequal_depth=%llu\ncut_ms=%.3f\n"
+               "cut_retries=%d\ncut_scratch_bytes=%zu\ncutset_bytes=%zu\n",
+               c.set.n_edges, (unsigned long long)c.stats.crossings,
+               (unsigned long long)c.stats.near_misses, grid_text(c.plan).c_str(), c.plan.grid.cell,
+               c.stats.cell_pairs, (unsigned long long)c.stats.pairs_tested,
+               (unsigned long long)c.stats.rejected, (unsigned long long)c.stats.equal_depth,
+               c.cut_ms, c.retries, c.scratch_bytes,
+               cutset_bytes(c.set.n_edges, c.set.n_crossings));
+}
+
+void print_draw_stats(const HostDraw& d) {
+  std::fprintf(stderr, "draw_ms=%.3f\nspans=%llu\ngaps=%llu\nhidden_edges=%llu\ndraw_scratch_bytes=%zu\n",
+               d.draw_ms, (unsigned long long)d.stats.spans, (unsigned long long)d.stats.gaps,
+               (unsigned long long)d.stats.hidden_edges, d.scratch_bytes);
+}
+
+// Writes the SVG and, if asked, the spans. Returns 0 or 1 after reporting.
+int write_drawing(const Options& o, const HostDraw& d) {
+  std::string err = write_atomically(o.get("-o"), [&](std::ostream& out) {
+    write_svg(out, d.spans, SvgStyle{});
+    return true;
+  });
+  if (!err.empty()) return fail(err);
+  if (!o.get("--spans").empty()) {
+    err = write_atomically(o.get("--spans"), [&](std::ostream& out) {
+      write_spans(out, d.spans);
+      return true;
+    });
+    if (!err.empty()) return fail(err);
+  }
+  return 0;
+}
+
+void warn_reach(const HostDraw& d, int32_t halo, int32_t reach) {
+  if (d.stats.reach_short)
+    std::cerr << "haloplot: warning: exact halo " << halo << " exceeds the near-miss reach " << reach
+              << " CUT used; near misses between " << reach << " and " << halo
+              << " steps are not haloed (rerun cut with --reach " << halo << ")\n";
+}
+
+const std::set<std::string> kCutValued = {"-o", "--lambda", "--cell", "--cover", "--reach"};
+
+int cmd_demo_scene(int argc, char** argv) {
+  const Options o = parse_options(argc, argv, 2, {"-o", "--cubes"}, {});
+  if (!o.error.empty()) return fail(o.error);
+  if (o.get("-o").empty() || !o.positional.empty()) return fail(std::string("bad arguments\n") + kUsage);
+  int64_t cubes = 28;
+  std::string error;
+  if (!read_int_option(o, "--cubes", 1, 200, &cubes, &error)) return fail(error);
+  CubeArrayParams p;
+  p.cubes = int(cubes);
+  const std::vector<Edge3> edges = cube_array(p);
+  const std::string header = "# haloplot demo: " + std::to_string(cubes) + " x " +
+                             std::to_string(cubes) +
+                             " cubes, azimuth 30, elevation 40 (HALO paper, Figure 4)\n"
+                             "# x1 y1 z1 x2 y2 z2 in steps; z larger = nearer\n";
+  error = write_atomically(o.get("-o"), [&](std::ostream& out) {
+    write_edges(out, edges, header);
+    return true;
+  });
+  return error.empty() ? 0 : fail(error);
+}
+
+int cmd_cut(int argc, char** argv) {
+  std::set<std::string> valued = kCutValued;
+  const Options o = parse_options(argc, argv, 2, valued, {"--stats"});
+  if (!o.error.empty()) return fail(o.error);
+  if (o.positional.size() != 1 || o.get("-o").empty()) return fail(std::string("bad arguments\n") + kUsage);
+  CutParams cp;
+  std::string error;
+  if (!cut_params(o, &cp, &error)) return fail(error);
+  std::vector<Edge3> edges;
+  const InputError ie = read_edges_file(o.positional[0], &edges);
+  if (ie.failed()) return fail(ie.message());
+  HostCut c;
+  const Status s = host_cut(std::move(edges), cp, &c);
+  if (!ok(s)) return fail_status("CUT", s);
+  error = write_atomically(o.get("-o"), [&](std::ostream& out) {
+    write_cut(out, c.set, cut_header(c));
+    return true;
+  });
+  if (!error.empty()) return fail(error);
+  if (o.has("--stats")) print_cut_stats(c);
+  return 0;
+}
+
+int cmd_draw(int argc, char** argv) {
+  const Options o = parse_options(argc, argv, 2, {"-o", "--halo", "--spans"}, {"--exact-halo", "--stats"});
+  if (!o.error.empty()) return fail(o.error);
+  if (o.positional.size() != 1 || o.get("-o").empty()) return fail(std::string("bad arguments\n") + kUsage);
+  DrawParams dp;
+  std::string error;
+  if (!draw_params(o, &dp, &error)) return fail(error);
+  LoadedCut lc;
+  const InputError ie = read_cut_file(o.positional[0], &lc);
+  if (ie.failed()) return fail(ie.message());
+  HostDraw d;
+  const Status s = host_draw(lc.set, dp, &d);
+  if (!ok(s)) return fail_status("DRAW", s);
+  warn_reach(d, dp.halo, lc.set.reach);
+  if (const int rc = write_drawing(o, d)) return rc;
+  if (o.has("--stats")) {
+    std::fprintf(stderr, "edges=%u\ncrossings=%u\ncut_ran=0\ncut_ms=0\n", lc.set.n_edges, lc.set.n_crossings);
+    print_draw_stats(d);
+  }
+  return 0;
+}
+
+int cmd_plot(int argc, char** argv) {
+  std::set<std::string> valued = kCutValued;
+  valued.insert({"--halo", "--spans", "--cut"});
+  const Options o = parse_options(argc, argv, 2, valued, {"--exact-halo", "--stats"});
+  if (!o.error.empty()) return fail(o.error);
+  if (o.positional.size() != 1 || o.get("-o").empty()) return fail(std::string("bad arguments\n") + kUsage);
+  CutParams cp;
+  DrawParams dp;
+  std::string error;
+  if (!cut_params(o, &cp, &error) || !draw_params(o, &dp, &error)) return fail(error);
+  // In one process the halo width is known before CUT: let the exact halo see near misses.
+  if (dp.mode == HaloMode::kExact && o.get("--reach").empty()) cp.reach = dp.halo;
+  std::vector<Edge3> edges;
+  const InputError ie = read_edges_file(o.positional[0], &edges);
+  if (ie.failed()) return fail(ie.message());
+  HostCut c;
+  Status s = host_cut(std::move(edges), cp, &c);
+  if (!ok(s)) return fail_status("CUT", s);
+  HostDraw d;
+  s = host_draw(c.set, dp, &d);
+  if (!ok(s)) return fail_status("DRAW", s);
+  warn_reach(d, dp.halo, c.set.reach);
+  if (!o.get("--cut").empty()) {
+    error = write_atomically(o.get("--cut"), [&](std::ostream& out) {
+      write_cut(out, c.set, cut_header(c));
+      return true;
+    });
+    if (!error.empty()) return fail(error);
+  }
+  if (const int rc = write_drawing(o, d)) return rc;
+  if (o.has("--stats")) {
+    print_cut_stats(c);
+    print_draw_stats(d);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) return fail(kUsage);
+  const std::string cmd = argv[1];
+  if (cmd == "--help" || cmd == "-h" || cmd == "help") {
+    std::cout << kUsage;
+    return 0;
+  }
+  if (cmd == "demo-scene") return cmd_demo_scene(argc, argv);
+  if (cmd == "cut") return cmd_cut(argc, argv);
+  if (cmd == "draw") return cmd_draw(argc, argv);
+  if (cmd == "plot") return cmd_plot(argc, argv);
+  return fail("unknown command '" + cmd + "'\n" + kUsage);
+}

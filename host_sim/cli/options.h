@@ -1,0 +1,28 @@
+// Command-line options for the haloplot tool: "--name value" and "--flag" pairs after a
+// subcommand and its positional arguments. Unknown options are errors, never ignored.
+#pragma once
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace haloplot::host {
+
+struct Options {
+  std::vector<std::string> positional;
+  std::map<std::string, std::string> values;
+  std::set<std::string> flags;
+  std::string error;
+
+  bool has(const std::string& flag) const { return flags.count(flag) != 0; }
+  std::string get(const std::string& name, const std::string& fallback = "") const {
+    auto it = values.find(name);
+    return it == values.end() ? fallback : it->second;
+  }
+};
+
+// valued: options that take a value ("-o", "--halo"); boolean: options that do not.
+Options parse_options(int argc, char** argv, int first, const std::set<std::string>& valued,
+                      const std::set<std::string>& boolean);
+
+}  // namespace haloplot::host

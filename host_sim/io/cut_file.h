@@ -1,0 +1,29 @@
+// The .cut file: the paper's CUTSET as text, so DRAW can run later, elsewhere, or with other
+// halo widths without CUT.
+//
+//   # haloplot cutset v1          header lines start with '#'
+//   # reach R                      near misses were recorded up to R steps (0: none)
+//   e I x1 y1 z1 x2 y2 z2          one per edge, I = 0, 1, 2, ... in order
+//   c BEHIND FRONT X Y T KIND      one per record, grouped by BEHIND ascending and ordered
+//                                  along that edge by (T, FRONT)
+//
+// X Y: the crossing point in steps, 3 decimals. T: the exact stored position along BEHIND,
+// floor(t * 2^32); DRAW reads T, so a CUTSET read back draws exactly like the one in memory.
+// KIND: "cross" (a proper crossing) or "near" (a near miss within reach).
+#pragma once
+#include <iosfwd>
+#include <string>
+
+#include "io/input_error.h"
+#include "pipeline/host_pipeline.h"
+
+namespace haloplot::host {
+
+void write_cut(std::ostream& out, const CutSet& set, const std::string& extra_header);
+InputError read_cut(std::istream& in, const std::string& name, LoadedCut* out);
+InputError read_cut_file(const std::string& path, LoadedCut* out);
+
+// "123.456": a position along an edge, exactly rounded to 3 decimals.
+std::string decimal_position(int32_t a, int32_t d, uint32_t t32);
+
+}  // namespace haloplot::host

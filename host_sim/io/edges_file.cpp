@@ -1,0 +1,45 @@
+#include "io/edges_file.h"
+
+#include <fstream>
+#include <ostream>
+
+#include "io/line_reader.h"
+
+namespace haloplot::host {
+
+InputError read_edges(std::istream& in, const std::string& name, std::vector<Edge3>* edges) {
+  edges->clear();
+  LineReader reader(in);
+  std::vector<std::string> f;
+  while (reader.next(&f)) {
+    if (f.size() != 6)
+      return {name, reader.line(),
+              "expected 6 integers (x1 y1 z1 x2 y2 z2), found " + std::to_string(f.size()) +
+                  " fields"};
+    int64_t v[6];
+    for (int i = 0; i < 6; ++i)
+      if (!parse_int(f[i], 0, kCoordMax, &v[i]))
+        return {name, reader.line(),
+                "field " + std::to_string(i + 1) + " '" + f[i] +
+                    "' is not an integer in [0, 1048575]"};
+    edges->push_back(Edge3{{int32_t(v[0]), int32_t(v[1]), int32_t(v[2])},
+                           {int32_t(v[3]), int32_t(v[4]), int32_t(v[5])}});
+  }
+  if (in.bad()) return {name, 0, "read error"};
+  return {};
+}
+
+InputError read_edges_file(const std::string& path, std::vector<Edge3>* edges) {
+  std::ifstream in(path);
+  if (!in) return {path, 0, "cannot open"};
+  return read_edges(in, path, edges);
+}
+
+void write_edges(std::ostream& out, const std::vector<Edge3>& edges, const std::string& header) {
+  out << header;
+  for (const Edge3& e : edges)
+    out << e.a.x << ' ' << e.a.y << ' ' << e.a.z << ' ' << e.b.x << ' ' << e.b.y << ' ' << e.b.z
+        << '\n';
+}
+
+}  // namespace haloplot::host

@@ -1,0 +1,63 @@
+#include "pipeline/host_pipeline.h"
+
+#include <chrono>
+
+namespace haloplot::host {
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+Status collect(void* context, const Span& s) {
+  static_cast<std::vector<Span>*>(context)->push_back(s);
+  return Status::kOk;
+}
+
+}  // namespace
+
+Status host_cut(std::vector<Edge3> edges, const CutParams& params, HostCut* out) {
+  out->edges = std::move(edges);
+  const uint32_t n = static_cast<uint32_t>(out->edges.size());
+  if (out->edges.size() > kMaxEdges) return Status::kTooManyEdges;
+  // A first guess at the record count; a short guess costs one retry, never a wrong answer.
+  uint64_t capacity = 4ull * n + 1024;
+  std::vector<uint64_t> scratch;
+  for (int attempt = 0;; ++attempt) {
+    const auto t0 = std::chrono::steady_clock::now();
+    Status s = plan_cut(out->edges.data(), n, params, &out->plan);
+    if (!ok(s)) return s;
+    scratch.assign((out->plan.scratch_bytes + 7) / 8, 0);
+    const size_t bytes = cutset_bytes(n, static_cast<uint32_t>(capacity));
+    out->storage.assign((bytes + 7) / 8, 0);
+    s = run_cut(out->plan, out->edges.data(), scratch.data(), scratch.size() * 8,
+                out->storage.data(), out->storage.size() * 8, &out->set, &out->stats);
+    out->cut_ms = ms_since(t0);
+    out->retries = attempt;
+    out->scratch_bytes = out->plan.scratch_bytes;
+    if (s != Status::kCrossingCapacity || attempt > 0) return s;
+    capacity = out->stats.crossings + out->stats.near_misses;
+    if (capacity > 0xffffffffu) return Status::kCrossingCapacity;
+  }
+}
+
+void LoadedCut::bind() {
+  set.edges = edges.data();
+  set.n_edges = static_cast<uint32_t>(edges.size());
+  set.first = first.data();
+  set.crossings = crossings.data();
+  set.n_crossings = static_cast<uint32_t>(crossings.size());
+}
+
+Status host_draw(const CutSet& set, const DrawParams& params, HostDraw* out) {
+  out->spans.clear();
+  out->scratch_bytes = draw_scratch_bytes(set);
+  std::vector<Gap> scratch(out->scratch_bytes / sizeof(Gap) + 1);
+  const auto t0 = std::chrono::steady_clock::now();
+  const Status s = draw(set, params, scratch.data(), scratch.size() * sizeof(Gap),
+                        SpanSink{&collect, &out->spans}, &out->stats);
+  out->draw_ms = ms_since(t0);
+  return s;
+}
+
+}  // namespace haloplot::host

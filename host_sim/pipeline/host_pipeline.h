@@ -1,0 +1,43 @@
+// The core's CUT and DRAW on the host: buffers sized from the core's own queries, a retry
+// when the first crossing-capacity guess was short, and timings that cover CUT or DRAW alone.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "haloplot.h"
+
+namespace haloplot::host {
+
+struct HostCut {
+  std::vector<Edge3> edges;          // owned copy: the CUTSET points into it
+  std::vector<uint64_t> storage;     // CUTSET storage (8-byte aligned)
+  CutPlan plan;
+  CutSet set;
+  CutStats stats;
+  double cut_ms = 0;                 // plan + run of the final pass, no I/O
+  int retries = 0;                   // capacity retries (each reruns CUT)
+  size_t scratch_bytes = 0;
+};
+
+// Runs CUT on `edges`; returns the core's status (kOk, or the reason it failed).
+Status host_cut(std::vector<Edge3> edges, const CutParams& params, HostCut* out);
+
+// A CUTSET read back from a .cut file, in the same shape.
+struct LoadedCut {
+  std::vector<Edge3> edges;
+  std::vector<uint32_t> first;
+  std::vector<Crossing> crossings;
+  CutSet set;
+  void bind();  // point `set` at the vectors
+};
+
+struct HostDraw {
+  std::vector<Span> spans;
+  DrawStats stats;
+  double draw_ms = 0;
+  size_t scratch_bytes = 0;
+};
+
+Status host_draw(const CutSet& set, const DrawParams& params, HostDraw* out);
+
+}  // namespace haloplot::host

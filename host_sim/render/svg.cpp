@@ -1,0 +1,39 @@
+#include "render/svg.h"
+
+#include <algorithm>
+#include <ostream>
+
+namespace haloplot::host {
+
+void write_svg(std::ostream& out, const std::vector<Span>& spans, const SvgStyle& style) {
+  int32_t xmin = 0, ymin = 0, xmax = 1, ymax = 1;
+  if (!spans.empty()) {
+    xmin = ymin = kCoordMax;
+    xmax = ymax = 0;
+    for (const Span& s : spans) {
+      xmin = std::min({xmin, s.x0, s.x1});
+      xmax = std::max({xmax, s.x0, s.x1});
+      ymin = std::min({ymin, s.y0, s.y1});
+      ymax = std::max({ymax, s.y0, s.y1});
+    }
+  }
+  const int32_t span_max = std::max(xmax - xmin, ymax - ymin) + 1;
+  const int32_t margin = span_max / 40 + 1;
+  const int32_t w = xmax - xmin + 2 * margin, h = ymax - ymin + 2 * margin;
+  const double stroke = style.stroke_steps > 0 ? style.stroke_steps : span_max / 1000.0 + 0.5;
+  const double scale = double(style.pixels) / std::max(w, h);
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << int(w * scale + 0.5)
+      << "\" height=\"" << int(h * scale + 0.5) << "\" viewBox=\"" << xmin - margin << ' '
+      << -(ymax + margin) << ' ' << w << ' ' << h << "\">\n"
+      << "<rect x=\"" << xmin - margin << "\" y=\"" << -(ymax + margin) << "\" width=\"" << w
+      << "\" height=\"" << h << "\" fill=\"white\"/>\n"
+      << "<path fill=\"none\" stroke=\"black\" stroke-linecap=\"round\" stroke-width=\"" << stroke
+      << "\" d=\"";
+  // One path, y negated: the viewBox above starts at -(ymax + margin).
+  for (const Span& s : spans)
+    out << 'M' << s.x0 << ' ' << -s.y0 << 'L' << s.x1 << ' ' << -s.y1;
+  out << "\"/>\n</svg>\n";
+}
+
+}  // namespace haloplot::host

@@ -1,0 +1,18 @@
+// SVG of visible spans. Plotter y grows upward, SVG y downward: the picture is flipped so it
+// looks as it will on paper. The viewBox is in steps, so the SVG measures like the plot.
+#pragma once
+#include <iosfwd>
+#include <vector>
+
+#include "draw/draw.h"
+
+namespace haloplot::host {
+
+struct SvgStyle {
+  int pixels = 1200;         // width of the longer side, in px
+  double stroke_steps = 0;   // 0: about 1/1000 of the picture
+};
+
+void write_svg(std::ostream& out, const std::vector<Span>& spans, const SvgStyle& style);
+
+}  // namespace haloplot::host
