@@ -65,7 +65,7 @@ Gap paper_gap(const Edge3& behind, const Edge3& front, uint32_t t32, int32_t hal
   if (d == 0) return kWhole;  // cannot happen for a CUT crossing; stay safe for bad input
   // half-gap in t = W * |dq| / |d|; numerator < 2^20 * 2^37, denominator < 2^57.
   const int64_t num = int64_t{halo} * static_cast<int64_t>(length_q16_ceil(qdx, qdy));
-  const int64_t h = q32_ceil_clamped(num, d << 16);
+  const int64_t h = q32_ceil_clamped(num, d << 16);  // d > 0 here
   // The exact crossing lies in [t32, t32 + 1) / 2^32.
   return Gap{int64_t{t32} - h, int64_t{t32} + 1 + h};
 }
@@ -82,7 +82,9 @@ Gap exact_gap(const Edge3& behind, const Edge3& front, int32_t halo) {
     // through Q's endpoints. Distances to the line are cross / |dq|, so compare
     // cross * 2^16 with W * |dq| * 2^16 (|dq| rounded up).
     const int64_t width = int64_t{halo} * static_cast<int64_t>(length_q16_ceil(qdx, qdy));
-    const Gap strip = linear_band(cross(qdx, qdy, wx, wy) << 16, cross(qdx, qdy, pdx, pdy) << 16,
+    // Scale by multiplying: a left shift of a negative value is undefined in C++17.
+    constexpr int64_t kQ16 = int64_t{1} << 16;
+    const Gap strip = linear_band(cross(qdx, qdy, wx, wy) * kQ16, cross(qdx, qdy, pdx, pdy) * kQ16,
                                   -width, width);
     const Gap slab = linear_band(dot(qdx, qdy, wx, wy), dot(qdx, qdy, pdx, pdy), 0, q2);
     g = hull(g, intersect(strip, slab));
