@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs, on a fresh Debian machine, whatever of the build and test tools is missing.
+# Usage: tools/install_deps.sh [demo|test]
+set -euo pipefail
+want_demo=(cmake g++ make rsvg-convert)
+want_test=(cmake g++ make clang++ arm-none-eabi-gcc arm-none-eabi-g++ qemu-system-arm)
+declare -A package=(
+  [cmake]=cmake [g++]=g++ [make]=make [clang++]=clang [rsvg-convert]=librsvg2-bin
+  [arm-none-eabi-gcc]=gcc-arm-none-eabi [arm-none-eabi-g++]=gcc-arm-none-eabi
+  [qemu-system-arm]=qemu-system-arm
+)
+case "${1:-test}" in
+  demo) tools=("${want_demo[@]}") ;;
+  test) tools=("${want_test[@]}") ;;
+  *) echo "usage: $0 [demo|test]" >&2; exit 2 ;;
+esac
+missing=()
+for t in "${tools[@]}"; do command -v "$t" >/dev/null 2>&1 || missing+=("${package[$t]}"); done
+# The C++ runtime headers for the cross compiler ship separately from the compiler.
+if [ "${1:-test}" = test ] && ! dpkg -s libstdc++-arm-none-eabi-newlib >/dev/null 2>&1; then
+  missing+=(libstdc++-arm-none-eabi-newlib)
+fi
+[ ${#missing[@]} -eq 0 ] && exit 0
+mapfile -t missing < <(printf '%s\n' "${missing[@]}" | sort -u)
+echo "installing: ${missing[*]}"
+if [ "$(id -u)" -ne 0 ]; then
+  echo "not root: run 'apt-get install ${missing[*]}' as root, then retry" >&2
+  exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
