@@ -89,6 +89,19 @@ uint64_t isqrt(Wide v) {
   return root;
 }
 
-uint32_t isqrt_u64(uint64_t v) { return static_cast<uint32_t>(isqrt(Wide::from_u64(v))); }
+uint32_t isqrt_u64(uint64_t v) {
+  // The same bit-pair method on 64 bits: 32 steps of shifts, compares and subtractions.
+  uint64_t root = 0, rem = 0;
+  for (int shift = 62; shift >= 0; shift -= 2) {
+    rem = (rem << 2) | ((v >> shift) & 3u);
+    const uint64_t trial = (root << 2) | 1u;
+    root <<= 1;
+    if (rem >= trial) {
+      rem -= trial;
+      root |= 1u;
+    }
+  }
+  return static_cast<uint32_t>(root);
+}
 
 }  // namespace haloplot

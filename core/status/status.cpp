@@ -14,6 +14,9 @@ const char* status_name(Status s) {
     case Status::kBadParameter: return "parameter out of range";
     case Status::kSinkFull: return "span sink full";
     case Status::kCutsetInconsistent: return "cutset inconsistent";
+    case Status::kStepRateExceeded: return "step rate above the motor limit";
+    case Status::kTimerFloor: return "step interval below the timer floor";
+    case Status::kQueueFull: return "motion queue full";
   }
   return "unknown status";
 }

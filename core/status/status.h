@@ -16,6 +16,9 @@ enum class Status : uint8_t {
   kBadParameter,          // a parameter is outside its documented range
   kSinkFull,              // the span sink refused a span (its buffer is full)
   kCutsetInconsistent,    // a CUTSET read from outside breaks an invariant
+  kStepRateExceeded,      // a speed needs more steps per second than a motor may take
+  kTimerFloor,            // a step interval below the step clock's floor
+  kQueueFull,             // a fixed-size motion queue has no room (try again after a tick)
 };
 
 // A short, stable, human-readable name, e.g. "crossing capacity exceeded".

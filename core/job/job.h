@@ -1,0 +1,65 @@
+// A plot job: which drawing effect, which halo, which machine and which plotter effects.
+// job_prepare() runs only the stages the drawing effect needs (CUT and DRAW only for haloed
+// lines), then path planning, all in one caller buffer carved per stage. A stage that does
+// not run gets zero bytes and a zero counter: an unrequested effect costs nothing.
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "cut/cut.h"
+#include "draw/draw.h"
+#include "motion/machine.h"
+#include "motion/path_plan.h"
+#include "status/status.h"
+
+namespace haloplot {
+
+enum class DrawingEffect : uint8_t {
+  kAllEdges,       // every edge whole: no CUT, no DRAW
+  kHaloed,         // HALO: CUT, then DRAW with the halo width
+  kHiddenRemoved,  // needs faces: the solid-models issue
+  kHiddenDashed,   // needs faces: the solid-models issue
+  kOutline,        // outline emphasis: the solid-models issue
+  kHatch,          // hatched visible faces: the hidden-surface issue
+};
+
+struct JobSpec {
+  DrawingEffect drawing = DrawingEffect::kHaloed;
+  DrawParams draw;          // halo width and mode
+  CutParams cut;            // grid choices (and reach for the exact halo)
+  Machine machine;
+  PlotterEffects effects;
+  int32_t start_x = 0, start_y = 0;  // where the pen is before the job
+};
+
+// Bytes each stage takes from the job buffer (0: the stage does not run).
+struct JobBytes {
+  size_t cut_scratch = 0, cutset = 0, draw_scratch = 0, spans = 0, path = 0, points = 0;
+  size_t total() const { return cut_scratch + cutset + draw_scratch + spans + path + points; }
+};
+
+struct JobCounters {
+  uint32_t cut_runs = 0, draw_runs = 0, path_runs = 0;
+  CutStats cut;
+  DrawStats draw;
+  PathStats path;
+};
+
+struct PreparedJob {
+  const PathPoint* points = nullptr;
+  uint32_t n_points = 0;
+  uint32_t n_spans = 0;
+  const Segment2* spans = nullptr;
+  CutSet cutset;  // valid when CUT ran: DRAW can rerun from it with another halo width
+};
+
+// Bytes the job needs for these edges when CUT may store up to `crossing_capacity` records.
+// CUT's plan is computed here (O(N)); kCrossingCapacity from job_prepare() says how many
+// records a retry needs.
+Status job_bytes(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
+                 JobBytes* bytes);
+
+Status job_prepare(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
+                   void* buffer, size_t buffer_bytes, PreparedJob* out, JobCounters* counters);
+
+}  // namespace haloplot

@@ -1,0 +1,244 @@
+#include "motion/path_plan.h"
+
+#include "geometry/wide.h"
+#include "sort/in_place_sort.h"
+
+namespace haloplot {
+namespace {
+
+constexpr uint32_t kNone = 0xffffffffu;
+
+struct EndKey {
+  int32_t x, y;
+  uint32_t id;  // 2 * span + (0 for (x0, y0), 1 for (x1, y1))
+};
+
+struct Chain {
+  uint32_t first_end;  // the end the chain starts at, when walked forward
+  uint32_t last_end;   // the end it finishes at
+  uint32_t spans;
+};
+
+void end_point(const Segment2* s, uint32_t id, int32_t* x, int32_t* y) {
+  const Segment2& g = s[id >> 1];
+  *x = (id & 1) ? g.x1 : g.x0;
+  *y = (id & 1) ? g.y1 : g.y0;
+}
+
+// Walk a chain from `start` (an end id): the span leaves by its other end, which links to the
+// next span's end. Calls visit(span, reversed) for each span; returns the final end id.
+template <typename Visit>
+uint32_t walk(const uint32_t* link, uint32_t start, Visit visit) {
+  uint32_t enter = start;
+  for (;;) {
+    const uint32_t leave = enter ^ 1u;
+    if (!visit(enter >> 1, (enter & 1u) != 0)) return leave;
+    const uint32_t next = link[leave];
+    if (next == kNone || next == start) return leave;
+    enter = next;
+  }
+}
+
+size_t align8(size_t v) { return (v + 7) & ~size_t{7}; }
+
+struct Layout {
+  size_t ends, link, chains, done, cell_start, cell_items, total;
+  uint32_t cells_cap;
+};
+
+Layout layout(uint32_t n) {
+  Layout l;
+  l.cells_cap = n + 1;
+  l.ends = 0;
+  l.link = align8(l.ends + size_t{2} * n * sizeof(EndKey));
+  l.chains = align8(l.link + size_t{2} * n * 4);
+  l.done = align8(l.chains + size_t{n} * sizeof(Chain));
+  l.cell_start = align8(l.done + size_t{n});
+  l.cell_items = align8(l.cell_start + (size_t{l.cells_cap} + 1) * 4);
+  l.total = align8(l.cell_items + size_t{2} * n * 4);
+  return l;
+}
+
+}  // namespace
+
+uint32_t length_floor(int64_t dx, int64_t dy) { return isqrt_u64(static_cast<uint64_t>(dx * dx + dy * dy)); }
+
+size_t path_plan_bytes(uint32_t n_spans) { return layout(n_spans).total; }
+
+Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t start_y,
+                 void* workspace, size_t workspace_bytes, PathPoint* out, uint32_t out_capacity,
+                 uint32_t* out_count, PathStats* stats) {
+  const Layout lay = layout(n);
+  if (workspace_bytes < lay.total) return Status::kWorkspaceTooSmall;
+  if (out_capacity < path_points_max(n)) return Status::kBadParameter;
+  uint8_t* base = static_cast<uint8_t*>(workspace);
+  EndKey* ends = reinterpret_cast<EndKey*>(base + lay.ends);
+  uint32_t* link = reinterpret_cast<uint32_t*>(base + lay.link);
+  Chain* chains = reinterpret_cast<Chain*>(base + lay.chains);
+  uint8_t* done = base + lay.done;
+  PathStats st;
+
+  // Naive pen-up travel: every span on its own, in input order.
+  {
+    int32_t px = start_x, py = start_y;
+    for (uint32_t i = 0; i < n; ++i) {
+      st.naive_pen_up_length += length_floor(int64_t{spans[i].x0} - px, int64_t{spans[i].y0} - py);
+      px = spans[i].x1;
+      py = spans[i].y1;
+    }
+  }
+
+  // 1. Join: sort all ends by position, pair the ends that meet. Zero-length spans (dots)
+  //    stay alone so a chain never links a span to itself.
+  for (uint32_t id = 0; id < 2 * n; ++id) {
+    end_point(spans, id, &ends[id].x, &ends[id].y);
+    ends[id].id = id;
+    link[id] = kNone;
+  }
+  sort_in_place(ends, size_t{2} * n, [](const EndKey& a, const EndKey& b) {
+    if (a.x != b.x) return a.x < b.x;
+    if (a.y != b.y) return a.y < b.y;
+    return a.id < b.id;
+  });
+  auto is_dot = [&](uint32_t s) { return spans[s].x0 == spans[s].x1 && spans[s].y0 == spans[s].y1; };
+  for (uint32_t i = 0; i < 2 * n;) {
+    uint32_t j = i;
+    while (j < 2 * n && ends[j].x == ends[i].x && ends[j].y == ends[i].y) ++j;
+    uint32_t pending = kNone;
+    for (uint32_t k = i; k < j; ++k) {
+      const uint32_t id = ends[k].id;
+      if (is_dot(id >> 1)) continue;
+      if (pending == kNone) {
+        pending = id;
+      } else if ((pending >> 1) != (id >> 1)) {
+        link[pending] = id;
+        link[id] = pending;
+        pending = kNone;
+      }
+    }
+    i = j;
+  }
+
+  // 2. Chains: open ones start at an unlinked end; what is left over forms closed loops.
+  for (uint32_t s = 0; s < n; ++s) done[s] = 0;
+  uint32_t n_chains = 0;
+  auto make_chain = [&](uint32_t start) {
+    Chain c{start, 0, 0};
+    c.last_end = walk(link, start, [&](uint32_t s, bool) {
+      if (done[s]) return false;
+      done[s] = 1;
+      ++c.spans;
+      return true;
+    });
+    chains[n_chains++] = c;
+  };
+  for (uint32_t id = 0; id < 2 * n; ++id)
+    if (link[id] == kNone && !done[id >> 1]) make_chain(id);
+  for (uint32_t s = 0; s < n; ++s)
+    if (!done[s]) make_chain(2 * s);  // a closed loop: start anywhere
+  st.polylines = n_chains;
+
+  // 3. Greedy nearest neighbour over chain ends, bucketed in a uniform grid (counting sort).
+  int32_t xmin = start_x, ymin = start_y, xmax = start_x, ymax = start_y;
+  for (uint32_t i = 0; i < 2 * n; ++i) {
+    xmin = ends[i].x < xmin ? ends[i].x : xmin;
+    xmax = ends[i].x > xmax ? ends[i].x : xmax;
+    ymin = ends[i].y < ymin ? ends[i].y : ymin;
+    ymax = ends[i].y > ymax ? ends[i].y : ymax;
+  }
+  const uint64_t w = uint64_t(xmax - xmin) + 1, h = uint64_t(ymax - ymin) + 1;
+  // Cell side: about one chain end per cell.
+  uint32_t side = isqrt_u64(w * h / (2ull * n_chains + 1)) + 1;
+  while ((w / side + 1) * (h / side + 1) > lay.cells_cap) side += side / 8 + 1;
+  const uint32_t gx = uint32_t(w / side + 1), gy = uint32_t(h / side + 1);
+  uint32_t* cell_start = reinterpret_cast<uint32_t*>(base + lay.cell_start);
+  uint32_t* items = reinterpret_cast<uint32_t*>(base + lay.cell_items);  // 2 * chain + end
+  auto cell_of = [&](int32_t x, int32_t y) {
+    return uint32_t(uint64_t(y - ymin) / side) * gx + uint32_t(uint64_t(x - xmin) / side);
+  };
+  auto chain_end = [&](uint32_t item, int32_t* x, int32_t* y) {
+    const Chain& c = chains[item >> 1];
+    end_point(spans, (item & 1) ? c.last_end : c.first_end, x, y);
+  };
+  const uint32_t cells = gx * gy;
+  for (uint32_t c = 0; c <= cells; ++c) cell_start[c] = 0;
+  for (uint32_t item = 0; item < 2 * n_chains; ++item) {
+    int32_t x, y;
+    chain_end(item, &x, &y);
+    ++cell_start[cell_of(x, y) + 1];
+  }
+  for (uint32_t c = 0; c < cells; ++c) cell_start[c + 1] += cell_start[c];
+  for (uint32_t item = 2 * n_chains; item-- > 0;) {
+    int32_t x, y;
+    chain_end(item, &x, &y);
+    items[--cell_start[cell_of(x, y) + 1]] = item;
+  }
+  for (uint32_t c = 0; c < cells; ++c) cell_start[c] = cell_start[c + 1];
+  cell_start[cells] = 2 * n_chains;
+  for (uint32_t c = 0; c < n_chains; ++c) done[c] = 0;
+
+  uint32_t count = 0;
+  int32_t px = start_x, py = start_y;
+  for (uint32_t taken = 0; taken < n_chains; ++taken) {
+    const int64_t pcx = (px - xmin) / int64_t(side), pcy = (py - ymin) / int64_t(side);
+    uint64_t best = ~uint64_t{0};
+    uint32_t best_item = kNone;
+    for (int64_t r = 0;; ++r) {
+      for (int64_t cy = pcy - r; cy <= pcy + r; ++cy) {
+        if (cy < 0 || cy >= gy) continue;
+        const bool edge_row = cy == pcy - r || cy == pcy + r;
+        for (int64_t cx = pcx - r; cx <= pcx + r; cx += edge_row ? 1 : 2 * r) {
+          if (cx >= 0 && cx < gx) {
+            const uint32_t c = uint32_t(cy) * gx + uint32_t(cx);
+            for (uint32_t k = cell_start[c]; k < cell_start[c + 1]; ++k) {
+              const uint32_t item = items[k];
+              if (done[item >> 1]) continue;
+              int32_t x, y;
+              chain_end(item, &x, &y);
+              const int64_t dx = x - px, dy = y - py;
+              const uint64_t d2 = uint64_t(dx * dx + dy * dy);
+              if (d2 < best || (d2 == best && item < best_item)) {
+                best = d2;
+                best_item = item;
+              }
+            }
+          }
+          if (r == 0) break;
+        }
+      }
+      const uint64_t reach = uint64_t(r) * side;  // anything beyond ring r is at least this far
+      if (best_item != kNone && best <= reach * reach) break;
+      if (r > int64_t(gx) + int64_t(gy)) break;
+    }
+    const Chain& ch = chains[best_item >> 1];
+    done[best_item >> 1] = 1;
+    // Walk from the end we arrived at; a chain entered at its last end is walked backwards.
+    const bool backwards = (best_item & 1) != 0;
+    const uint32_t entry = backwards ? ch.last_end : ch.first_end;
+    int32_t sx, sy;
+    end_point(spans, entry, &sx, &sy);
+    if (sx != px || sy != py || count == 0) {
+      out[count++] = PathPoint{sx, sy, 0};
+      st.pen_up_length += length_floor(int64_t{sx} - px, int64_t{sy} - py);
+      if (taken > 0) ++st.pen_lifts;
+    }
+    // Backwards: walk the links from the last end; each span is then left by its other end.
+    uint32_t remaining = ch.spans;
+    walk(link, entry, [&](uint32_t s, bool reversed) {
+      if (remaining == 0) return false;
+      --remaining;
+      const Segment2& g = spans[s];
+      const int32_t ex = reversed ? g.x0 : g.x1, ey = reversed ? g.y0 : g.y1;
+      st.pen_down_length += length_floor(int64_t{ex} - (reversed ? g.x1 : g.x0), int64_t{ey} - (reversed ? g.y1 : g.y0));
+      out[count++] = PathPoint{ex, ey, 1};
+      return true;
+    });
+    px = out[count - 1].x;
+    py = out[count - 1].y;
+  }
+  *out_count = count;
+  if (stats) *stats = st;
+  return Status::kOk;
+}
+
+}  // namespace haloplot

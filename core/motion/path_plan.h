@@ -1,0 +1,43 @@
+// Path planning: turn DRAW's visible spans into pen strokes a plotter can draw quickly.
+//   1. Join spans that share an endpoint (exact integer equality) into polylines.
+//   2. Order the polylines greedily: from the pen's position, go to the nearest free polyline
+//      end, found by ring search in a uniform grid; flip the polyline if its far end was nearer.
+// The output is a list of path points: travel to a point with the pen up, or draw to it.
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "status/status.h"
+
+namespace haloplot {
+
+struct Segment2 {
+  int32_t x0, y0, x1, y1;
+};
+
+struct PathPoint {
+  int32_t x, y;
+  uint8_t pen_down;  // 1: draw from the previous point to here; 0: travel here pen up
+};
+
+struct PathStats {
+  uint32_t polylines = 0;
+  uint64_t pen_up_length = 0;        // planned order, plot steps (sum of rounded lengths)
+  uint64_t naive_pen_up_length = 0;  // spans drawn one by one in input order
+  uint64_t pen_down_length = 0;
+  uint32_t pen_lifts = 0;            // pen-up moves between strokes in the planned order
+};
+
+// Workspace bytes plan_path() needs for n spans, and the most path points it can write (2n).
+size_t path_plan_bytes(uint32_t n_spans);
+inline uint32_t path_points_max(uint32_t n_spans) { return 2 * n_spans; }
+
+// Plan from pen position (start_x, start_y). `out` must hold path_points_max(n) points.
+Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t start_y,
+                 void* workspace, size_t workspace_bytes, PathPoint* out, uint32_t out_capacity,
+                 uint32_t* out_count, PathStats* stats);
+
+// Length of (dx, dy) rounded down to whole plot steps.
+uint32_t length_floor(int64_t dx, int64_t dy);
+
+}  // namespace haloplot

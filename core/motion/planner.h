@@ -1,0 +1,83 @@
+// The motion planner: path points in, committed motion items out (moves with their entry,
+// top and exit speeds, and pen changes), with a fixed look-ahead buffer of blocks.
+//
+// Speeds live in path units (plot steps per second) so junction speeds compare across blocks;
+// squares are kept as Q8 (v^2 * 256) in uint64_t. Budget: v < 2^16, a < 2^22, block length
+// < 2^21 plot steps (Q8: 2^29): 2 * a * L_q8 < 2^52, v^2 Q8 < 2^40.
+//
+// Acceleration (grbl's scheme, in integers): each block gets a maximum entry speed from the
+// junction deviation at its start; a backward pass makes every block able to stop by the end
+// of the buffer, a forward pass keeps every entry reachable. The oldest block is committed
+// when the buffer is full; its exit speed then becomes the fixed entry of the next.
+// Without the acceleration effect no pass runs and no buffer exists: every move runs at its
+// top speed from end to end.
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "motion/machine.h"
+#include "motion/path_plan.h"
+#include "status/status.h"
+
+namespace haloplot {
+
+struct MotionItem {
+  enum Kind : uint8_t { kMove, kPen };
+  Kind kind = kMove;
+  bool pen_down = false;     // kPen: the new state; kMove: the state during the move
+  int32_t delta[2] = {0, 0}; // motor steps
+  uint32_t length_q8 = 0;    // plot steps * 256
+  uint32_t accel = 0;        // plot steps / s^2; 0: constant speed
+  uint64_t entry_v2 = 0, top_v2 = 0, exit_v2 = 0;  // (plot steps / s)^2 * 256
+  uint32_t dwell_ticks = 0;  // kPen: servo travel + settle
+};
+
+struct PlannerCounters {
+  uint64_t moves = 0;
+  uint64_t junctions = 0;      // junction speeds computed (acceleration effect)
+  uint64_t replans = 0;        // backward/forward passes (acceleration effect)
+  uint64_t pen_changes = 0;
+  uint64_t dwell_ticks = 0;    // pen servo time added (pen servo effect)
+};
+
+class MotionPlanner {
+ public:
+  static constexpr uint32_t kDefaultLookahead = 16;
+  // Workspace for the look-ahead buffer: zero without the acceleration effect.
+  static size_t workspace_bytes(const PlotterEffects& fx, uint32_t lookahead = kDefaultLookahead);
+
+  Status init(const Machine& m, const PlotterEffects& fx, const PathPoint* points, uint32_t n,
+              void* workspace, size_t workspace_bytes, uint32_t lookahead = kDefaultLookahead);
+  // The next committed item; false when the path is done (the pen ends up).
+  bool next(MotionItem* out);
+  const PlannerCounters& counters() const { return counters_; }
+
+ private:
+  struct Block {
+    int32_t delta[2];
+    int32_t dx, dy;         // plot steps
+    uint32_t length_q8;
+    uint64_t nominal_v2, max_entry_v2, entry_v2;
+  };
+  bool make_move(const PathPoint& p, Block* b);
+  uint64_t junction_v2(const Block& prev, const Block& next) const;
+  void replan();
+  Block& at(uint32_t i) { return ring_[(head_ + i) % capacity_]; }
+
+  Machine m_{};
+  PlotterEffects fx_{};
+  const PathPoint* points_ = nullptr;
+  uint32_t n_ = 0, next_point_ = 0;
+  int32_t x_ = 0, y_ = 0;          // plot position after the last block made
+  int32_t motors_[2] = {0, 0};     // motor position after the last block made
+  bool pen_down_ = false;          // pen state of the blocks in the buffer
+  Block* ring_ = nullptr;
+  uint32_t capacity_ = 0, head_ = 0, count_ = 0;
+  bool head_fixed_ = false;        // the head's entry speed is committed
+  bool have_prev_ = false;         // the last block made, for the next junction
+  bool last_backward_[2] = {false, false};  // backlash: each motor's last direction
+  Block prev_{};
+  PlannerCounters counters_{};
+};
+
+}  // namespace haloplot

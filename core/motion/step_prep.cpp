@@ -1,0 +1,174 @@
+#include "motion/step_prep.h"
+
+#include "geometry/fraction.h"
+#include "geometry/wide.h"
+
+namespace haloplot {
+namespace {
+
+uint32_t abs32(int32_t v) { return v < 0 ? uint32_t(0) - uint32_t(v) : uint32_t(v); }
+uint64_t speed_q8(uint64_t v2_q8) { return isqrt_u64(v2_q8 << 8); }  // sqrt(v^2 * 2^16)
+
+}  // namespace
+
+Status StepPrep::init(const Machine& m, const PlotterEffects& fx) {
+  const Status s = validate(m);
+  if (!ok(s)) return s;
+  if (m.tick_hz >= (1u << 24)) return Status::kBadParameter;
+  *this = StepPrep{};
+  m_ = m;
+  fx_ = fx;
+  return Status::kOk;
+}
+
+void StepPrep::advance_time(uint32_t events, int64_t interval, int64_t add) {
+  // Exactly what the tick does: events times "time += interval; interval += add".
+  const int64_t e = events;
+  time_q8_ += uint64_t(e * interval + add * (e * (e - 1) / 2));
+}
+
+Status StepPrep::begin_move(const MotionItem& it) {
+  item_ = it;
+  const uint32_t a0 = abs32(it.delta[0]), a1 = abs32(it.delta[1]);
+  dominant_ = a0 >= a1 ? 0 : 1;
+  n_ = dominant_ == 0 ? a0 : a1;
+  minor_ = dominant_ == 0 ? a1 : a0;
+  dir_bits_ = uint8_t((it.delta[0] < 0 ? 1 : 0) | (it.delta[1] < 0 ? 2 : 0));
+  j_ = 0;
+  first_segment_ = true;
+  block_start_q8_ = time_q8_;
+  ++counters_.blocks;
+  // Backlash: a motor that reverses first takes up its slack (the planner stopped there).
+  for (uint8_t mo = 0; mo < 2; ++mo) {
+    const bool moves = it.delta[mo] != 0, backward = it.delta[mo] < 0;
+    takeup_pending_[mo] = fx_.backlash && moves && backward != last_backward_[mo] && m_.backlash[mo] > 0;
+    if (moves) last_backward_[mo] = backward;
+  }
+  // The trapezoid. With acceleration off the move runs at its top speed throughout.
+  const uint64_t l = it.length_q8;
+  entry2_ = it.entry_v2;
+  vtop2_ = it.top_v2;
+  if (it.accel > 0) {
+    const uint64_t two_a_l = 2ull * it.accel * l;
+    const uint64_t peak2 = (two_a_l + it.entry_v2 + it.exit_v2) / 2;
+    if (peak2 < vtop2_) vtop2_ = peak2;
+    if (vtop2_ < entry2_) vtop2_ = entry2_;
+    vin_q8_ = speed_q8(entry2_);
+    vtop_q8_ = speed_q8(vtop2_);
+    s_acc_q8_ = (vtop2_ - entry2_) / (2ull * it.accel);
+    const uint64_t exit2 = it.exit_v2 < vtop2_ ? it.exit_v2 : vtop2_;
+    const uint64_t brake = (vtop2_ - exit2) / (2ull * it.accel);
+    s_dec_q8_ = brake < l ? l - brake : 0;
+    if (s_acc_q8_ > s_dec_q8_) s_acc_q8_ = s_dec_q8_;
+    t_acc_q8_ = (vtop_q8_ - vin_q8_) * m_.tick_hz / it.accel;
+    t_dec_q8_ = t_acc_q8_ + (s_dec_q8_ - s_acc_q8_) * m_.tick_hz * 256 / vtop_q8_;
+  } else {
+    vtop_q8_ = speed_q8(vtop2_);
+  }
+  return Status::kOk;
+}
+
+uint64_t StepPrep::block_time_q8(uint32_t j) const {
+  const uint64_t s = uint64_t(j) * item_.length_q8 / n_;  // plot distance, Q8
+  const uint64_t hz = m_.tick_hz;
+  if (item_.accel == 0) return s * hz * 256 / vtop_q8_;
+  const uint64_t a = item_.accel;
+  if (s <= s_acc_q8_) return (speed_q8(entry2_ + 2 * a * s) - vin_q8_) * hz / a;
+  if (s <= s_dec_q8_) return t_acc_q8_ + (s - s_acc_q8_) * hz * 256 / vtop_q8_;
+  const uint64_t drop = 2 * a * (s - s_dec_q8_);
+  const uint64_t v2 = drop < vtop2_ ? vtop2_ - drop : 0;
+  return t_dec_q8_ + (vtop_q8_ - speed_q8(v2)) * hz / a;
+}
+
+Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* have) {
+  *have = false;
+  for (;;) {
+    if (!in_move_) {
+      if (done_) return Status::kOk;
+      MotionItem it;
+      if (!planner.next(&it)) {
+        done_ = true;
+        return Status::kOk;
+      }
+      if (it.kind == MotionItem::kPen) {
+        out->kind = StepSegment::kPen;
+        out->pen_down = it.pen_down;
+        out->interval_q8 = int64_t{it.dwell_ticks} * 256;
+        time_q8_ += uint64_t(out->interval_q8);
+        ++counters_.segments;
+        *have = true;
+        return Status::kOk;
+      }
+      const Status s = begin_move(it);
+      if (!ok(s)) return s;
+      in_move_ = true;
+    }
+    for (uint8_t mo = 0; mo < 2; ++mo) {
+      if (!takeup_pending_[mo]) continue;
+      // Slack take-up from rest, one motor only, at the rate whose first step from rest needs
+      // the motor's acceleration: interval = sqrt(2 / a_motor).
+      takeup_pending_[mo] = false;
+      const uint64_t a_motor = uint64_t{m_.accel} * m_.steps_num / m_.steps_den + 1;
+      const uint64_t root_q8 = isqrt_u64(a_motor * 65536 / 2);  // sqrt(a / 2) * 256
+      int64_t interval = int64_t(uint64_t{m_.tick_hz} * 65536 / root_q8);
+      if (interval < int64_t{m_.min_interval} * 256) interval = int64_t{m_.min_interval} * 256;
+      out->kind = StepSegment::kSteps;
+      out->new_block = true;
+      out->dominant = mo;
+      out->dir_bits = uint8_t((dir_bits_ & (1u << mo)) | (last_backward_[1 - mo] ? (1u << (1 - mo)) : 0));
+      out->major = m_.backlash[mo];
+      out->minor = 0;
+      out->count = uint16_t(m_.backlash[mo]);
+      out->interval_q8 = interval;
+      out->add_q8 = 0;
+      advance_time(out->count, interval, 0);
+      counters_.motor_steps[mo] += m_.backlash[mo];
+      ++counters_.backlash_takeups;
+      ++counters_.segments;
+      block_start_q8_ = time_q8_;
+      *have = true;
+      return Status::kOk;
+    }
+    if (j_ >= n_) {
+      in_move_ = false;
+      continue;
+    }
+    // Segment length: up to kSegmentSteps, halved while the exact interval changes by more
+    // than 1/8 across it, so the tick's linear interval ramp stays close to the true curve
+    // (near rest, where t grows like sqrt(j), segments shrink to single, exact steps).
+    uint32_t j1 = j_ + kSegmentSteps < n_ ? j_ + kSegmentSteps : n_;
+    const uint64_t t_first = block_start_q8_ + block_time_q8(j_ + 1);
+    while (j1 > j_ + 1) {
+      const int64_t i_first = int64_t(block_time_q8(j_ + 1) - (j_ > 0 ? block_time_q8(j_) : 0));
+      const int64_t i_last = int64_t(block_time_q8(j1) - block_time_q8(j1 - 1));
+      const int64_t diff = i_first > i_last ? i_first - i_last : i_last - i_first;
+      if (8 * diff <= (i_first < i_last ? i_first : i_last)) break;
+      j1 = j_ + (j1 - j_) / 2;
+    }
+    const int64_t m = j1 - j_;
+    const int64_t first = int64_t(t_first) - int64_t(time_q8_);
+    const int64_t total = int64_t(block_start_q8_ + block_time_q8(j1)) - int64_t(time_q8_);
+    const int64_t add = m > 1 ? floor_div(2 * (total - m * first), m * (m - 1)) : 0;
+    const int64_t floor_q8 = int64_t{m_.min_interval} * 256;
+    if (first < floor_q8 || first + (m - 1) * add < floor_q8) return Status::kTimerFloor;
+    out->kind = StepSegment::kSteps;
+    out->new_block = first_segment_;
+    out->dominant = dominant_;
+    out->dir_bits = dir_bits_;
+    out->major = n_;
+    out->minor = minor_;
+    out->count = uint16_t(m);
+    out->interval_q8 = first;
+    out->add_q8 = add;
+    first_segment_ = false;
+    advance_time(uint32_t(m), first, add);
+    counters_.motor_steps[dominant_] += uint64_t(m);
+    ++counters_.segments;
+    j_ = j1;
+    if (j_ >= n_) counters_.motor_steps[1 - dominant_] += minor_;
+    *have = true;
+    return Status::kOk;
+  }
+}
+
+}  // namespace haloplot

@@ -1,0 +1,77 @@
+// Step preparation (main loop, not the interrupt): turns each motion item into step segments
+// of at most kSegmentSteps dominant steps.
+//
+// Timing is exact at segment boundaries: the time of dominant step j of a move comes from the
+// closed-form trapezoid (t = (v(s) - v_in) / a with v(s) = sqrt(v_in^2 + 2 a s) while
+// accelerating, s / v while cruising, and the mirror image while braking), evaluated in Q8
+// ticks with integer square roots. Inside a segment the tick interpolates with a linear
+// interval change. The prep mirrors the tick's arithmetic exactly, so each segment aims at
+// the exact boundary time from where the tick really is: timing error never accumulates.
+//
+// Budget: tick_hz < 2^24 (validated), speeds Q8 < 2^24, so speed * tick_hz < 2^48 and
+// distance_q8 * tick_hz * 256 < 2^61.
+#pragma once
+#include <stdint.h>
+
+#include "motion/machine.h"
+#include "motion/planner.h"
+#include "motion/step_segment.h"
+#include "status/status.h"
+
+namespace haloplot {
+
+struct PrepCounters {
+  uint64_t segments = 0;
+  uint64_t blocks = 0;
+  uint64_t backlash_takeups = 0;  // backlash effect
+  uint64_t motor_steps[2] = {0, 0};
+};
+
+class StepPrep {
+ public:
+  static constexpr uint32_t kSegmentSteps = 16;
+
+  Status init(const Machine& m, const PlotterEffects& fx);
+
+  // Push segments until the queue is full or the plan is done. A move whose step interval
+  // would fall below the timer floor is rejected with kTimerFloor.
+  template <typename Queue>
+  Status fill(MotionPlanner& planner, Queue& queue) {
+    while (!queue.full()) {
+      StepSegment s;
+      bool have = false;
+      const Status st = next_segment(planner, &s, &have);
+      if (!ok(st)) return st;
+      if (!have) break;
+      queue.push(s);
+    }
+    return Status::kOk;
+  }
+  bool done() const { return done_; }
+  const PrepCounters& counters() const { return counters_; }
+  uint64_t engine_time_q8() const { return time_q8_; }
+
+ private:
+  Status next_segment(MotionPlanner& planner, StepSegment* out, bool* have);
+  Status begin_move(const MotionItem& item);
+  uint64_t block_time_q8(uint32_t j) const;  // time of dominant step j from the block start
+  void advance_time(uint32_t events, int64_t interval, int64_t add);
+
+  Machine m_{};
+  PlotterEffects fx_{};
+  MotionItem item_{};
+  bool in_move_ = false, done_ = false, takeup_pending_[2] = {false, false};
+  bool first_segment_ = false;
+  bool last_backward_[2] = {false, false};
+  uint32_t n_ = 0, j_ = 0;           // dominant steps in the move, steps prepared
+  uint8_t dominant_ = 0, dir_bits_ = 0;
+  uint32_t minor_ = 0;
+  uint64_t block_start_q8_ = 0;      // tick time (Q8) the move starts at
+  uint64_t time_q8_ = 0;             // where the tick's clock will be after the pushed segments
+  // Trapezoid of the current move, in plot-path units (see planner.h).
+  uint64_t vin_q8_ = 0, vtop_q8_ = 0, vtop2_ = 0, entry2_ = 0;
+  uint64_t s_acc_q8_ = 0, s_dec_q8_ = 0, t_acc_q8_ = 0, t_dec_q8_ = 0;
+  PrepCounters counters_{};
+};
+
+}  // namespace haloplot
