@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -14,6 +15,11 @@
 #include "demo/random_scene.h"
 #include "io/atomic_file.h"
 #include "io/cut_file.h"
+#include "io/job_file.h"
+#include "sim/replay.h"
+#include "sim/simulator.h"
+#include "sim/trace.h"
+#include "export/exporters.h"
 #include "io/edges_file.h"
 #include "io/line_reader.h"
 #include "io/spans_file.h"
@@ -33,7 +39,9 @@ const char* kUsage =
     "               [--reach R] [--stats]\n"
     "  haloplot draw SCENE.cut --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans] [--stats]\n"
     "  haloplot plot SCENE.edges --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans]\n"
-    "               [--cut OUT.cut] [cut options] [--stats]\n";
+    "               [--cut OUT.cut] [cut options] [--stats]\n"
+    "  haloplot sim JOB.job -o OUT.trace [--gcode OUT.gcode] [--hpgl OUT.hpgl] [--stats]\n"
+    "  haloplot replay IN.trace -o OUT.svg [--stats]\n";
 
 int fail(const std::string& message) {
   std::cerr << "haloplot: " << message << "\n";
@@ -316,6 +324,103 @@ int cmd_plot(int argc, char** argv) {
   return 0;
 }
 
+// "12.345" from a count of thousandths.
+std::string thousandths(uint64_t v) {
+  std::string f = std::to_string(v % 1000);
+  return std::to_string(v / 1000) + "." + std::string(3 - f.size(), '0') + f;
+}
+
+int cmd_sim(int argc, char** argv) {
+  const Options o = parse_options(argc, argv, 2, {"-o", "--gcode", "--hpgl"}, {"--stats"});
+  if (!o.error.empty()) return fail(o.error);
+  if (o.positional.size() != 1 || o.get("-o").empty()) return fail(std::string("bad arguments\n") + kUsage);
+  JobFile jf;
+  InputError ie = read_job_file(o.positional[0], &jf);
+  if (ie.failed()) return fail(ie.message());
+  std::vector<Edge3> edges;
+  ie = read_edges_file(jf.scene_path, &edges);
+  if (ie.failed()) return fail(ie.message());
+  if (isatty(2)) jf.spec.cut.progress = &progress;
+  JobSpec spec = jf.spec;
+  if (!spec.effects.backlash) spec.machine.backlash[0] = spec.machine.backlash[1] = 0;  // not simulated
+  SimReport r;
+  Status s = Status::kOk;
+  std::string error = write_atomically(o.get("-o"), [&](std::ostream& out) {
+    s = simulate(spec, edges, &out, &r);
+    return ok(s);
+  });
+  if (!ok(s)) return fail_status("sim", s);
+  if (!error.empty()) return fail(error);
+  if (!o.get("--gcode").empty()) {
+    error = write_atomically(o.get("--gcode"), [&](std::ostream& out) {
+      write_gcode(out, r.points, spec.machine, jf.style);
+      return true;
+    });
+    if (!error.empty()) return fail(error);
+  }
+  if (!o.get("--hpgl").empty()) {
+    error = write_atomically(o.get("--hpgl"), [&](std::ostream& out) {
+      write_hpgl(out, r.points, jf.style);
+      return true;
+    });
+    if (!error.empty()) return fail(error);
+  }
+  if (o.has("--stats")) {
+    const Machine& m = spec.machine;
+    auto rate = [&](int k) { return r.min_gap[k] == UINT64_MAX ? 0 : m.tick_hz / r.min_gap[k]; };
+    std::fprintf(stderr,
+                 "edges=%zu\nspans=%u\npolylines=%u\npen_down_length=%llu\npen_up_length=%llu\n"
+                 "naive_pen_up_length=%llu\nplot_s=%s\nsteps_0=%llu\nsteps_1=%llu\n"
+                 "peak_step_rate_0=%llu\npeak_step_rate_1=%llu\npen_lifts=%u\n"
+                 "cut_runs=%u\ndraw_runs=%u\nplanner_replans=%llu\njunctions=%llu\n"
+                 "dwell_ticks=%llu\nbacklash_takeups=%llu\nsegments=%llu\n"
+                 "bytes_cut=%zu\nbytes_draw=%zu\nbytes_path=%zu\nbytes_planner=%zu\n",
+                 edges.size(), (unsigned)r.spans.size(), r.job.path.polylines,
+                 (unsigned long long)r.job.path.pen_down_length, (unsigned long long)r.job.path.pen_up_length,
+                 (unsigned long long)r.job.path.naive_pen_up_length,
+                 thousandths(r.end_tick * 1000 / m.tick_hz).c_str(), (unsigned long long)r.steps[0],
+                 (unsigned long long)r.steps[1], (unsigned long long)rate(0), (unsigned long long)rate(1),
+                 r.pen_lifts, r.job.cut_runs, r.job.draw_runs, (unsigned long long)r.planner.replans,
+                 (unsigned long long)r.planner.junctions, (unsigned long long)r.planner.dwell_ticks,
+                 (unsigned long long)r.prep.backlash_takeups, (unsigned long long)r.prep.segments,
+                 r.bytes.cut_scratch + r.bytes.cutset, r.bytes.draw_scratch, r.bytes.path + r.bytes.points,
+                 r.planner_bytes);
+  }
+  return 0;
+}
+
+int cmd_replay(int argc, char** argv) {
+  const Options o = parse_options(argc, argv, 2, {"-o"}, {"--stats"});
+  if (!o.error.empty()) return fail(o.error);
+  if (o.positional.size() != 1 || o.get("-o").empty()) return fail(std::string("bad arguments\n") + kUsage);
+  std::ifstream in(o.positional[0]);
+  if (!in) return fail(o.positional[0] + ": cannot open");
+  Trace t;
+  const InputError ie = read_trace(in, o.positional[0], &t);
+  if (ie.failed()) return fail(ie.message());
+  ReplayStats st;
+  const auto strokes = replay_strokes(t, &st);
+  std::vector<Span> spans;
+  uint64_t down_length = 0;
+  for (const auto& stroke : strokes) {
+    const auto pts = simplify(stroke, 1);
+    for (size_t i = 1; i < pts.size(); ++i) down_length += length_floor(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+    if (pts.size() == 1) spans.push_back(Span{0, 0, 0, pts[0].x, pts[0].y, pts[0].x, pts[0].y});
+    for (size_t i = 1; i < pts.size(); ++i)
+      spans.push_back(Span{0, 0, 0, pts[i - 1].x, pts[i - 1].y, pts[i].x, pts[i].y});
+  }
+  const std::string error = write_atomically(o.get("-o"), [&](std::ostream& out) {
+    write_svg(out, spans, SvgStyle{});
+    return true;
+  });
+  if (!error.empty()) return fail(error);
+  if (o.has("--stats"))
+    std::fprintf(stderr, "strokes=%zu\npen_down_length=%llu\npen_up_length=%llu\nplot_s=%s\npen_lifts=%u\n",
+                 strokes.size(), (unsigned long long)down_length, (unsigned long long)st.pen_up_length,
+                 thousandths(t.end_tick * 1000 / t.machine.tick_hz).c_str(), st.pen_lifts);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -330,5 +435,7 @@ int main(int argc, char** argv) {
   if (cmd == "cut") return cmd_cut(argc, argv);
   if (cmd == "draw") return cmd_draw(argc, argv);
   if (cmd == "plot") return cmd_plot(argc, argv);
+  if (cmd == "sim") return cmd_sim(argc, argv);
+  if (cmd == "replay") return cmd_replay(argc, argv);
   return fail("unknown command '" + cmd + "'\n" + kUsage);
 }

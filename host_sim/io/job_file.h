@@ -1,0 +1,33 @@
+// The .job file: what `haloplot sim` plots and how. One "key value..." per line, '#' comments.
+//
+//   scene demo.edges          the scene, relative to the job file's folder (required)
+//   drawing haloed            all | haloed  (hidden-removed, hidden-dashed, outline and hatch
+//                             arrive with the solid-model and hidden-surface issues)
+//   halo 50                   halo width, plot steps
+//   halo-mode paper           paper | exact
+//   effects acceleration pen-servo    plotter effects to simulate: any of acceleration,
+//                             pen-servo, backlash; or "none"
+//   kinematics corexy         cartesian | corexy
+//   steps 1/1                 motor steps per plot step
+//   tick-hz 1000000   min-interval 25   max-step-rate 25000
+//   draw-speed 6000   travel-speed 12000   accel 60000   junction-deviation 4
+//   pen-travel-ticks 150000   pen-settle-ticks 50000   backlash 0 0
+//   steps-per-mm 80           for the G-code and HPGL exporters
+#pragma once
+#include <string>
+
+#include "export/exporters.h"
+#include "io/input_error.h"
+#include "job/job.h"
+
+namespace haloplot::host {
+
+struct JobFile {
+  std::string scene_path;
+  JobSpec spec;
+  ExportStyle style;
+};
+
+InputError read_job_file(const std::string& path, JobFile* out);
+
+}  // namespace haloplot::host

@@ -1,0 +1,35 @@
+// The host simulator: the core's job, motion planner, step prep and step tick, driven in
+// virtual time, with a recording HAL that streams every step and pen change into a trace.
+#pragma once
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "job/job.h"
+#include "motion/planner.h"
+#include "motion/step_prep.h"
+
+namespace haloplot::host {
+
+struct SimReport {
+  JobBytes bytes;
+  size_t planner_bytes = 0;
+  JobCounters job;
+  PlannerCounters planner;
+  PrepCounters prep;
+  uint64_t end_tick = 0;
+  uint64_t steps[2] = {0, 0};
+  uint64_t min_gap[2] = {UINT64_MAX, UINT64_MAX};  // ticks between steps of one motor
+  uint32_t pen_lifts = 0;
+  int retries = 0;
+  std::vector<PathPoint> points;  // the planned path (for the exporters)
+  std::vector<Segment2> spans;    // what DRAW emitted (for checks)
+  int32_t final_motors[2] = {0, 0};
+};
+
+// Runs the whole job and writes the trace to `trace` (may be null). Returns the first status
+// that stopped it.
+Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostream* trace, SimReport* report);
+
+}  // namespace haloplot::host

@@ -1,0 +1,118 @@
+#include "sim/trace.h"
+
+#include <algorithm>
+#include <istream>
+#include <ostream>
+
+#include "io/line_reader.h"
+
+namespace haloplot::host {
+
+TraceWriter::TraceWriter(std::ostream& out, const Machine& m) : out_(out) {
+  out_ << "haloplot-trace 1\ntick_hz " << m.tick_hz << "\nkinematics "
+       << (m.kinematics == Kinematics::kCoreXY ? "corexy" : "cartesian") << "\nsteps " << m.steps_num
+       << '/' << m.steps_den << "\nbacklash " << m.backlash[0] << ' ' << m.backlash[1] << '\n';
+}
+
+void TraceWriter::flush(uint8_t motor) {
+  Run& r = runs_[motor];
+  if (r.count == 0) return;
+  out_ << "m " << int(motor) << ' ' << r.t0 << ' ' << r.count << ' ' << r.dt << ' ' << r.ddt << ' '
+       << (r.backward ? '-' : '+') << '\n';
+  r = Run{};
+}
+
+void TraceWriter::step(uint64_t tick, uint8_t motor, bool backward) {
+  Run& r = runs_[motor];
+  if (r.count > 0 && r.backward == backward) {
+    const int64_t gap = int64_t(tick - r.last);
+    if (r.count == 1) {
+      r.dt = r.last_dt = gap;
+      r.last = tick;
+      ++r.count;
+      return;
+    }
+    if (r.count == 2) r.ddt = gap - r.last_dt;
+    if (gap == r.last_dt + r.ddt) {
+      r.last_dt = gap;
+      r.last = tick;
+      ++r.count;
+      return;
+    }
+  }
+  flush(motor);
+  r.t0 = r.last = tick;
+  r.count = 1;
+  r.backward = backward;
+}
+
+void TraceWriter::pen(uint64_t tick, bool down) { out_ << "p " << tick << (down ? " down\n" : " up\n"); }
+
+void TraceWriter::finish(uint64_t end_tick) {
+  flush(0);
+  flush(1);
+  out_ << "end " << end_tick << '\n';
+}
+
+InputError read_trace(std::istream& in, const std::string& name, Trace* out) {
+  *out = Trace{};
+  LineReader reader(in);
+  std::vector<std::string> f;
+  bool header = false, ended = false;
+  while (reader.next(&f)) {
+    const int line = reader.line();
+    int64_t v[5];
+    auto bad = [&](const std::string& what) { return InputError{name, line, what}; };
+    if (f[0] == "haloplot-trace") {
+      if (f.size() != 2 || f[1] != "1") return bad("unsupported trace version");
+      header = true;
+    } else if (!header) {
+      return bad("not a haloplot trace (no 'haloplot-trace 1' line)");
+    } else if (f[0] == "tick_hz" && f.size() == 2 && parse_int(f[1], 1, 1 << 30, &v[0])) {
+      out->machine.tick_hz = uint32_t(v[0]);
+    } else if (f[0] == "kinematics" && f.size() == 2 && (f[1] == "corexy" || f[1] == "cartesian")) {
+      out->machine.kinematics = f[1] == "corexy" ? Kinematics::kCoreXY : Kinematics::kCartesian;
+    } else if (f[0] == "steps" && f.size() == 2) {
+      const size_t slash = f[1].find('/');
+      if (slash == std::string::npos || !parse_int(f[1].substr(0, slash), 1, 1024, &v[0]) ||
+          !parse_int(f[1].substr(slash + 1), 1, 1024, &v[1]))
+        return bad("steps must be N/D");
+      out->machine.steps_num = uint32_t(v[0]);
+      out->machine.steps_den = uint32_t(v[1]);
+    } else if (f[0] == "backlash" && f.size() == 3 && parse_int(f[1], 0, 65535, &v[0]) &&
+               parse_int(f[2], 0, 65535, &v[1])) {
+      out->machine.backlash[0] = uint32_t(v[0]);
+      out->machine.backlash[1] = uint32_t(v[1]);
+    } else if (f[0] == "p" && f.size() == 3 && parse_int(f[1], 0, INT64_MAX, &v[0]) &&
+               (f[2] == "down" || f[2] == "up")) {
+      out->events.push_back({uint64_t(v[0]), 2, f[2] == "down"});
+    } else if (f[0] == "m" && f.size() == 7 && parse_int(f[1], 0, 1, &v[0]) &&
+               parse_int(f[2], 0, INT64_MAX, &v[1]) && parse_int(f[3], 1, INT64_MAX, &v[2]) &&
+               parse_int(f[4], -(int64_t(1) << 40), int64_t(1) << 40, &v[3]) &&
+               parse_int(f[5], -(int64_t(1) << 40), int64_t(1) << 40, &v[4]) && (f[6] == "+" || f[6] == "-")) {
+      // Ticks t0, t0 + dt, t0 + 2 dt + ddt, ...: the gap grows by ddt after each step.
+      int64_t t = v[1], gap = v[3];
+      for (int64_t i = 0; i < v[2]; ++i) {
+        if (t < 0) return bad("a run goes back before tick 0");
+        out->events.push_back({uint64_t(t), uint8_t(v[0]), f[6] == "-"});
+        t += gap;
+        gap += v[4];
+      }
+    } else if (f[0] == "end" && f.size() == 2 && parse_int(f[1], 0, INT64_MAX, &v[0])) {
+      out->end_tick = uint64_t(v[0]);
+      ended = true;
+    } else {
+      return bad("unrecognised trace line '" + f[0] + "'");
+    }
+  }
+  if (!header) return {name, 0, "empty trace"};
+  if (!ended) return {name, 0, "the trace has no 'end' line: truncated?"};
+  // Time order; at equal ticks motor 0, motor 1, then the pen: the tick steps first and only
+  // then moves on to a pen change.
+  std::stable_sort(out->events.begin(), out->events.end(), [](const StepEvent& a, const StepEvent& b) {
+    return a.tick != b.tick ? a.tick < b.tick : a.motor < b.motor;
+  });
+  return {};
+}
+
+}  // namespace haloplot::host
