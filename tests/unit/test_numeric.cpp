@@ -64,6 +64,10 @@ int main() {
     CHECK_MSG(u128(isqrt(w)) == isqrt_ref(v), "isqrt");
   }
   CHECK_EQ(isqrt_u64(~uint64_t{0}), 0xffffffffu);
+  for (int i = 0; i < 20000; ++i) {
+    const uint64_t v = r.next() >> (r.next() % 64);
+    CHECK_MSG(u128(isqrt_u64(v)) == isqrt_ref(v), "isqrt_u64");
+  }
   // Q0.32 fractions: both division routines give floor(num * 2^32 / den) exactly.
   for (int i = 0; i < 50000; ++i) {
     const int64_t den = int64_t(r.next() % ((uint64_t(1) << 41) - 1)) + 1;
