@@ -40,10 +40,10 @@ std::string describe(const char* ea, const char* eb, const A& a, const B& b) {
 
 #define CHECK(cond) ::check::record(static_cast<bool>(cond), __FILE__, __LINE__, #cond)
 #define CHECK_MSG(cond, msg) ::check::record(static_cast<bool>(cond), __FILE__, __LINE__, (msg))
-#define CHECK_EQ(a, b)                                                                  \
-  do {                                                                                  \
-    const auto& check_a_ = (a);                                                         \
-    const auto& check_b_ = (b);                                                         \
-    ::check::record(check_a_ == check_b_, __FILE__, __LINE__,                           \
-                    ::check::describe(#a, #b, check_a_, check_b_));                     \
+#define CHECK_EQ(a, b)                                              \
+  do {                                                              \
+    const auto& check_a_ = (a);                                     \
+    const auto& check_b_ = (b);                                     \
+    ::check::record(check_a_ == check_b_, __FILE__, __LINE__,       \
+                    ::check::describe(#a, #b, check_a_, check_b_)); \
   } while (0)

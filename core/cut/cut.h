@@ -35,13 +35,13 @@ struct CutPlan {
 };
 
 struct CutStats {
-  uint32_t cell_pairs = 0;      // (cell, edge) pairs
-  uint64_t pairs_tested = 0;    // edge pairs examined inside cells (C6.1)
-  uint64_t crossings = 0;       // crossings found, owned once each (also past capacity)
-  uint64_t near_misses = 0;     // near-miss records found
-  uint64_t rejected = 0;        // crossings seen in a cell that does not own them (C6.3)
-  uint64_t equal_depth = 0;     // crossings where both edges have the same depth: not cut
-  uint32_t max_per_edge = 0;    // the largest group, which sizes DRAW's scratch
+  uint32_t cell_pairs = 0;    // (cell, edge) pairs
+  uint64_t pairs_tested = 0;  // edge pairs examined inside cells (C6.1)
+  uint64_t crossings = 0;     // crossings found, owned once each (also past capacity)
+  uint64_t near_misses = 0;   // near-miss records found
+  uint64_t rejected = 0;      // crossings seen in a cell that does not own them (C6.3)
+  uint64_t equal_depth = 0;   // crossings where both edges have the same depth: not cut
+  uint32_t max_per_edge = 0;  // the largest group, which sizes DRAW's scratch
 };
 
 // Check the scene, choose the grid and count (cell, edge) pairs: O(N + cell pairs).

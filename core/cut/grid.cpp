@@ -42,7 +42,9 @@ Grid choose_grid(const Edge3* edges, uint32_t n, const GridParams& params) {
     // Paper C2: G = lambda * L. lambda is Q8.8; the product fits easily in 64 bits.
     const uint64_t l = average_length(edges, n);
     const uint64_t side = (l * params.lambda_q8) >> 8;
-    cell = side < 1 ? 1 : (side > static_cast<uint64_t>(kCoordLimit) ? kCoordLimit : static_cast<int32_t>(side));
+    cell = side < 1 ? 1
+                    : (side > static_cast<uint64_t>(kCoordLimit) ? kCoordLimit
+                                                                 : static_cast<int32_t>(side));
   }
   // Cap the cell count so the per-cell index stays linear in N. Coarsening the grid keeps
   // CUT correct; it only adds pair tests in crowded cells.

@@ -22,8 +22,12 @@ struct Grid {
   uint32_t nx = 1, ny = 1;
 
   uint32_t cells() const { return nx * ny; }
-  uint32_t col(int32_t x) const { return static_cast<uint32_t>(x - ox) / static_cast<uint32_t>(cell); }
-  uint32_t row(int32_t y) const { return static_cast<uint32_t>(y - oy) / static_cast<uint32_t>(cell); }
+  uint32_t col(int32_t x) const {
+    return static_cast<uint32_t>(x - ox) / static_cast<uint32_t>(cell);
+  }
+  uint32_t row(int32_t y) const {
+    return static_cast<uint32_t>(y - oy) / static_cast<uint32_t>(cell);
+  }
   uint32_t cell_of(int32_t x, int32_t y) const { return row(y) * nx + col(x); }
 };
 

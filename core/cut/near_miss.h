@@ -9,9 +9,9 @@ namespace haloplot {
 
 struct NearMiss {
   bool found = false;
-  bool p_behind = false;  // true: P is the farther edge at the closest approach
-  int32_t ex = 0, ey = 0; // the endpoint that realises the closest approach (owns the pair)
-  uint32_t t_behind = 0;  // closest-approach position along the behind edge, Q0.32 (saturated)
+  bool p_behind = false;   // true: P is the farther edge at the closest approach
+  int32_t ex = 0, ey = 0;  // the endpoint that realises the closest approach (owns the pair)
+  uint32_t t_behind = 0;   // closest-approach position along the behind edge, Q0.32 (saturated)
 };
 
 // Exact test, for two edges that do not properly cross: is their distance <= reach, and if

@@ -32,10 +32,10 @@ struct DrawParams {
 };
 
 struct DrawStats {
-  uint64_t gaps = 0;            // halo gaps applied
-  uint64_t spans = 0;           // spans emitted
-  uint64_t hidden_edges = 0;    // edges the halos removed entirely
-  bool reach_short = false;     // exact mode, W > CUT's reach: near misses beyond reach unseen
+  uint64_t gaps = 0;          // halo gaps applied
+  uint64_t spans = 0;         // spans emitted
+  uint64_t hidden_edges = 0;  // edges the halos removed entirely
+  bool reach_short = false;   // exact mode, W > CUT's reach: near misses beyond reach unseen
 };
 
 // Scratch DRAW needs for this CUTSET: one Gap per record of the busiest edge.

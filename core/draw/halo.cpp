@@ -36,11 +36,11 @@ Gap linear_band(int64_t k0, int64_t k1, int64_t lo_num, int64_t hi_num) {
 Gap disc_gap(const Edge3& behind, int64_t cx, int64_t cy, int32_t r) {
   const int64_t dx = behind.b.x - behind.a.x, dy = behind.b.y - behind.a.y;
   const int64_t wx = behind.a.x - cx, wy = behind.a.y - cy;
-  const int64_t a = dx * dx + dy * dy;                        // < 2^41
-  const int64_t b = dot(dx, dy, wx, wy);                      // < 2^42
-  const int64_t cc = wx * wx + wy * wy - int64_t{r} * r;      // < 2^42
-  if (a == 0) return cc <= 0 ? kWhole : kEmpty;               // P is a single point
-  const Wide disc = mul_i64(b, b) - mul_i64(a, cc);           // < 2^85
+  const int64_t a = dx * dx + dy * dy;                    // < 2^41
+  const int64_t b = dot(dx, dy, wx, wy);                  // < 2^42
+  const int64_t cc = wx * wx + wy * wy - int64_t{r} * r;  // < 2^42
+  if (a == 0) return cc <= 0 ? kWhole : kEmpty;           // P is a single point
+  const Wide disc = mul_i64(b, b) - mul_i64(a, cc);       // < 2^85
   if (disc.negative()) return kEmpty;
   uint64_t s = isqrt(disc);
   if (mul_u64(s, s) < disc) ++s;  // round the root up: the gap only grows

@@ -22,8 +22,8 @@ inline constexpr int kCoordBits = 20;
 inline constexpr int32_t kCoordLimit = int32_t{1} << kCoordBits;  // exclusive upper bound
 inline constexpr int32_t kCoordMax = kCoordLimit - 1;
 
-inline constexpr int kDiffBits = kCoordBits + 1;           // signed differences
-inline constexpr int kCrossBits = 2 * kCoordBits + 2;      // signed 2-D cross and dot products
+inline constexpr int kDiffBits = kCoordBits + 1;       // signed differences
+inline constexpr int kCrossBits = 2 * kCoordBits + 2;  // signed 2-D cross and dot products
 inline constexpr int kCoordTimesCrossBits = kCoordBits + kCrossBits;  // exact depth / position
 
 static_assert(int64_t{kCoordMax} * kCoordMax * 2 < (int64_t{1} << (kCrossBits - 1)),

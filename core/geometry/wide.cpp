@@ -72,8 +72,7 @@ uint64_t isqrt(Wide v) {
   Wide rem;  // remainder, unsigned in practice
   for (int shift = 124; shift >= 0; shift -= 2) {
     // bring down the next two bits of v
-    const uint64_t two_bits =
-        shift >= 64 ? (v.hi >> (shift - 64)) & 3u : (v.lo >> shift) & 3u;
+    const uint64_t two_bits = shift >= 64 ? (v.hi >> (shift - 64)) & 3u : (v.lo >> shift) & 3u;
     rem.hi = (rem.hi << 2) | (rem.lo >> 62);
     rem.lo = (rem.lo << 2) | two_bits;
     // trial = 4 * root + 1 (as a 128-bit value; root < 2^63 here)

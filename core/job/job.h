@@ -25,8 +25,8 @@ enum class DrawingEffect : uint8_t {
 
 struct JobSpec {
   DrawingEffect drawing = DrawingEffect::kHaloed;
-  DrawParams draw;          // halo width and mode
-  CutParams cut;            // grid choices (and reach for the exact halo)
+  DrawParams draw;  // halo width and mode
+  CutParams cut;    // grid choices (and reach for the exact halo)
   Machine machine;
   PlotterEffects effects;
   int32_t start_x = 0, start_y = 0;  // where the pen is before the job

@@ -25,13 +25,13 @@ struct Machine {
   // Motor steps per plot step, as a ratio so no fraction is ever lost: motor position =
   // round(plot position * steps_num / steps_den), always from the absolute position.
   uint32_t steps_num = 1, steps_den = 1;
-  uint32_t tick_hz = 1000000;     // step clock frequency
-  uint32_t min_interval = 25;     // timer floor: ticks between two step events, at least
-  uint32_t max_step_rate = 25000; // per motor, steps per second
-  uint32_t draw_speed = 6000;     // plot steps per second, pen down
-  uint32_t travel_speed = 12000;  // plot steps per second, pen up
-  uint32_t accel = 60000;         // plot steps per second squared
-  uint32_t junction_deviation = 4;  // plot steps (grbl's junction deviation)
+  uint32_t tick_hz = 1000000;          // step clock frequency
+  uint32_t min_interval = 25;          // timer floor: ticks between two step events, at least
+  uint32_t max_step_rate = 25000;      // per motor, steps per second
+  uint32_t draw_speed = 6000;          // plot steps per second, pen down
+  uint32_t travel_speed = 12000;       // plot steps per second, pen up
+  uint32_t accel = 60000;              // plot steps per second squared
+  uint32_t junction_deviation = 4;     // plot steps (grbl's junction deviation)
   uint32_t pen_travel_ticks = 150000;  // servo travel time
   uint32_t pen_settle_ticks = 50000;   // settle time before XY motion resumes
   uint32_t backlash[2] = {0, 0};       // motor steps of slack per motor

@@ -61,7 +61,9 @@ Layout layout(uint32_t n) {
 
 }  // namespace
 
-uint32_t length_floor(int64_t dx, int64_t dy) { return isqrt_u64(static_cast<uint64_t>(dx * dx + dy * dy)); }
+uint32_t length_floor(int64_t dx, int64_t dy) {
+  return isqrt_u64(static_cast<uint64_t>(dx * dx + dy * dy));
+}
 
 size_t path_plan_bytes(uint32_t n_spans) { return layout(n_spans).total; }
 
@@ -100,7 +102,9 @@ Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t sta
     if (a.y != b.y) return a.y < b.y;
     return a.id < b.id;
   });
-  auto is_dot = [&](uint32_t s) { return spans[s].x0 == spans[s].x1 && spans[s].y0 == spans[s].y1; };
+  auto is_dot = [&](uint32_t s) {
+    return spans[s].x0 == spans[s].x1 && spans[s].y0 == spans[s].y1;
+  };
   for (uint32_t i = 0; i < 2 * n;) {
     uint32_t j = i;
     while (j < 2 * n && ends[j].x == ends[i].x && ends[j].y == ends[i].y) ++j;
@@ -229,7 +233,8 @@ Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t sta
       --remaining;
       const Segment2& g = spans[s];
       const int32_t ex = reversed ? g.x0 : g.x1, ey = reversed ? g.y0 : g.y1;
-      st.pen_down_length += length_floor(int64_t{ex} - (reversed ? g.x1 : g.x0), int64_t{ey} - (reversed ? g.y1 : g.y0));
+      st.pen_down_length += length_floor(int64_t{ex} - (reversed ? g.x1 : g.x0),
+                                         int64_t{ey} - (reversed ? g.y1 : g.y0));
       out[count++] = PathPoint{ex, ey, 1};
       return true;
     });

@@ -25,7 +25,7 @@ struct PathStats {
   uint64_t pen_up_length = 0;        // planned order, plot steps (sum of rounded lengths)
   uint64_t naive_pen_up_length = 0;  // spans drawn one by one in input order
   uint64_t pen_down_length = 0;
-  uint32_t pen_lifts = 0;            // pen-up moves between strokes in the planned order
+  uint32_t pen_lifts = 0;  // pen-up moves between strokes in the planned order
 };
 
 // Workspace bytes plan_path() needs for n spans, and the most path points it can write (2n).

@@ -62,7 +62,7 @@ uint64_t MotionPlanner::junction_v2(const Block& a, const Block& b) const {
   if (num > 2 * p) num = 2 * p;
   const uint64_t s2_q16 = (uint64_t(num) << 16) / uint64_t(2 * p);  // sin^2(theta / 2)
   const uint64_t s_q16 = isqrt_u64(s2_q16 << 16);
-  if (s_q16 >= 65535) return ~uint64_t{0};  // straight on: no junction limit
+  if (s_q16 >= 65535) return ~uint64_t{0};                         // straight on: no junction limit
   const uint64_t ad = uint64_t{m_.accel} * m_.junction_deviation;  // < 2^38
   return ad * s_q16 / (65536 - s_q16) * 256;
 }

@@ -24,20 +24,20 @@ namespace haloplot {
 struct MotionItem {
   enum Kind : uint8_t { kMove, kPen };
   Kind kind = kMove;
-  bool pen_down = false;     // kPen: the new state; kMove: the state during the move
-  int32_t delta[2] = {0, 0}; // motor steps
-  uint32_t length_q8 = 0;    // plot steps * 256
-  uint32_t accel = 0;        // plot steps / s^2; 0: constant speed
+  bool pen_down = false;      // kPen: the new state; kMove: the state during the move
+  int32_t delta[2] = {0, 0};  // motor steps
+  uint32_t length_q8 = 0;     // plot steps * 256
+  uint32_t accel = 0;         // plot steps / s^2; 0: constant speed
   uint64_t entry_v2 = 0, top_v2 = 0, exit_v2 = 0;  // (plot steps / s)^2 * 256
-  uint32_t dwell_ticks = 0;  // kPen: servo travel + settle
+  uint32_t dwell_ticks = 0;                        // kPen: servo travel + settle
 };
 
 struct PlannerCounters {
   uint64_t moves = 0;
-  uint64_t junctions = 0;      // junction speeds computed (acceleration effect)
-  uint64_t replans = 0;        // backward/forward passes (acceleration effect)
+  uint64_t junctions = 0;  // junction speeds computed (acceleration effect)
+  uint64_t replans = 0;    // backward/forward passes (acceleration effect)
   uint64_t pen_changes = 0;
-  uint64_t dwell_ticks = 0;    // pen servo time added (pen servo effect)
+  uint64_t dwell_ticks = 0;  // pen servo time added (pen servo effect)
 };
 
 class MotionPlanner {
@@ -55,7 +55,7 @@ class MotionPlanner {
  private:
   struct Block {
     int32_t delta[2];
-    int32_t dx, dy;         // plot steps
+    int32_t dx, dy;  // plot steps
     uint32_t length_q8;
     uint64_t nominal_v2, max_entry_v2, entry_v2;
   };
@@ -68,13 +68,13 @@ class MotionPlanner {
   PlotterEffects fx_{};
   const PathPoint* points_ = nullptr;
   uint32_t n_ = 0, next_point_ = 0;
-  int32_t x_ = 0, y_ = 0;          // plot position after the last block made
-  int32_t motors_[2] = {0, 0};     // motor position after the last block made
-  bool pen_down_ = false;          // pen state of the blocks in the buffer
+  int32_t x_ = 0, y_ = 0;       // plot position after the last block made
+  int32_t motors_[2] = {0, 0};  // motor position after the last block made
+  bool pen_down_ = false;       // pen state of the blocks in the buffer
   Block* ring_ = nullptr;
   uint32_t capacity_ = 0, head_ = 0, count_ = 0;
-  bool head_fixed_ = false;        // the head's entry speed is committed
-  bool have_prev_ = false;         // the last block made, for the next junction
+  bool head_fixed_ = false;                 // the head's entry speed is committed
+  bool have_prev_ = false;                  // the last block made, for the next junction
   bool last_backward_[2] = {false, false};  // backlash: each motor's last direction
   Block prev_{};
   PlannerCounters counters_{};

@@ -41,7 +41,8 @@ Status StepPrep::begin_move(const MotionItem& it) {
   // Backlash: a motor that reverses first takes up its slack (the planner stopped there).
   for (uint8_t mo = 0; mo < 2; ++mo) {
     const bool moves = it.delta[mo] != 0, backward = it.delta[mo] < 0;
-    takeup_pending_[mo] = fx_.backlash && moves && backward != last_backward_[mo] && m_.backlash[mo] > 0;
+    takeup_pending_[mo] =
+        fx_.backlash && moves && backward != last_backward_[mo] && m_.backlash[mo] > 0;
     if (moves) last_backward_[mo] = backward;
   }
   // The trapezoid. With acceleration off the move runs at its top speed throughout.
@@ -115,7 +116,8 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
       out->kind = StepSegment::kSteps;
       out->new_block = true;
       out->dominant = mo;
-      out->dir_bits = uint8_t((dir_bits_ & (1u << mo)) | (last_backward_[1 - mo] ? (1u << (1 - mo)) : 0));
+      out->dir_bits =
+          uint8_t((dir_bits_ & (1u << mo)) | (last_backward_[1 - mo] ? (1u << (1 - mo)) : 0));
       out->major = m_.backlash[mo];
       out->minor = 0;
       out->count = uint16_t(m_.backlash[mo]);

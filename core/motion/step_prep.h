@@ -63,11 +63,11 @@ class StepPrep {
   bool in_move_ = false, done_ = false, takeup_pending_[2] = {false, false};
   bool first_segment_ = false;
   bool last_backward_[2] = {false, false};
-  uint32_t n_ = 0, j_ = 0;           // dominant steps in the move, steps prepared
+  uint32_t n_ = 0, j_ = 0;  // dominant steps in the move, steps prepared
   uint8_t dominant_ = 0, dir_bits_ = 0;
   uint32_t minor_ = 0;
-  uint64_t block_start_q8_ = 0;      // tick time (Q8) the move starts at
-  uint64_t time_q8_ = 0;             // where the tick's clock will be after the pushed segments
+  uint64_t block_start_q8_ = 0;  // tick time (Q8) the move starts at
+  uint64_t time_q8_ = 0;         // where the tick's clock will be after the pushed segments
   // Trapezoid of the current move, in plot-path units (see planner.h).
   uint64_t vin_q8_ = 0, vtop_q8_ = 0, vtop2_ = 0, entry2_ = 0;
   uint64_t s_acc_q8_ = 0, s_dec_q8_ = 0, t_acc_q8_ = 0, t_dec_q8_ = 0;

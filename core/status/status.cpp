@@ -4,19 +4,32 @@ namespace haloplot {
 
 const char* status_name(Status s) {
   switch (s) {
-    case Status::kOk: return "ok";
-    case Status::kCoordinateOutOfRange: return "coordinate outside [0, 2^20)";
-    case Status::kTooManyEdges: return "too many edges for 32-bit indices";
-    case Status::kWorkspaceTooSmall: return "workspace buffer too small";
-    case Status::kCutsetStorageTooSmall: return "cutset buffer too small for the edge index";
-    case Status::kCrossingCapacity: return "crossing capacity exceeded";
-    case Status::kCellPairOverflow: return "too many (cell, edge) pairs";
-    case Status::kBadParameter: return "parameter out of range";
-    case Status::kSinkFull: return "span sink full";
-    case Status::kCutsetInconsistent: return "cutset inconsistent";
-    case Status::kStepRateExceeded: return "step rate above the motor limit";
-    case Status::kTimerFloor: return "step interval below the timer floor";
-    case Status::kQueueFull: return "motion queue full";
+    case Status::kOk:
+      return "ok";
+    case Status::kCoordinateOutOfRange:
+      return "coordinate outside [0, 2^20)";
+    case Status::kTooManyEdges:
+      return "too many edges for 32-bit indices";
+    case Status::kWorkspaceTooSmall:
+      return "workspace buffer too small";
+    case Status::kCutsetStorageTooSmall:
+      return "cutset buffer too small for the edge index";
+    case Status::kCrossingCapacity:
+      return "crossing capacity exceeded";
+    case Status::kCellPairOverflow:
+      return "too many (cell, edge) pairs";
+    case Status::kBadParameter:
+      return "parameter out of range";
+    case Status::kSinkFull:
+      return "span sink full";
+    case Status::kCutsetInconsistent:
+      return "cutset inconsistent";
+    case Status::kStepRateExceeded:
+      return "step rate above the motor limit";
+    case Status::kTimerFloor:
+      return "step interval below the timer floor";
+    case Status::kQueueFull:
+      return "motion queue full";
   }
   return "unknown status";
 }

@@ -7,18 +7,18 @@ namespace haloplot {
 
 enum class Status : uint8_t {
   kOk = 0,
-  kCoordinateOutOfRange,  // an input coordinate is outside [0, 2^20)
-  kTooManyEdges,          // more edges than the 32-bit indices and counters allow
-  kWorkspaceTooSmall,     // the caller's scratch buffer is smaller than the plan asked for
-  kCutsetStorageTooSmall, // the caller's CUTSET buffer cannot hold the edge index
-  kCrossingCapacity,      // more crossings than the CUTSET buffer holds (see needed count)
-  kCellPairOverflow,      // more (cell, edge) pairs than a 32-bit counter holds
-  kBadParameter,          // a parameter is outside its documented range
-  kSinkFull,              // the span sink refused a span (its buffer is full)
-  kCutsetInconsistent,    // a CUTSET read from outside breaks an invariant
-  kStepRateExceeded,      // a speed needs more steps per second than a motor may take
-  kTimerFloor,            // a step interval below the step clock's floor
-  kQueueFull,             // a fixed-size motion queue has no room (try again after a tick)
+  kCoordinateOutOfRange,   // an input coordinate is outside [0, 2^20)
+  kTooManyEdges,           // more edges than the 32-bit indices and counters allow
+  kWorkspaceTooSmall,      // the caller's scratch buffer is smaller than the plan asked for
+  kCutsetStorageTooSmall,  // the caller's CUTSET buffer cannot hold the edge index
+  kCrossingCapacity,       // more crossings than the CUTSET buffer holds (see needed count)
+  kCellPairOverflow,       // more (cell, edge) pairs than a 32-bit counter holds
+  kBadParameter,           // a parameter is outside its documented range
+  kSinkFull,               // the span sink refused a span (its buffer is full)
+  kCutsetInconsistent,     // a CUTSET read from outside breaks an invariant
+  kStepRateExceeded,       // a speed needs more steps per second than a motor may take
+  kTimerFloor,             // a step interval below the step clock's floor
+  kQueueFull,              // a fixed-size motion queue has no room (try again after a tick)
 };
 
 // A short, stable, human-readable name, e.g. "crossing capacity exceeded".

@@ -13,18 +13,18 @@
 #include "cli/options.h"
 #include "demo/cube_array.h"
 #include "demo/random_scene.h"
+#include "export/exporters.h"
 #include "io/atomic_file.h"
 #include "io/cut_file.h"
-#include "io/job_file.h"
-#include "sim/replay.h"
-#include "sim/simulator.h"
-#include "sim/trace.h"
-#include "export/exporters.h"
 #include "io/edges_file.h"
+#include "io/job_file.h"
 #include "io/line_reader.h"
 #include "io/spans_file.h"
 #include "pipeline/host_pipeline.h"
 #include "render/svg.h"
+#include "sim/replay.h"
+#include "sim/simulator.h"
+#include "sim/trace.h"
 
 using namespace haloplot;
 using namespace haloplot::host;
@@ -154,7 +154,8 @@ void print_cut_stats(const HostCut& c) {
 }
 
 void print_draw_stats(const HostDraw& d) {
-  std::fprintf(stderr, "draw_ms=%.3f\nspans=%llu\ngaps=%llu\nhidden_edges=%llu\ndraw_scratch_bytes=%zu\n",
+  std::fprintf(stderr,
+               "draw_ms=%.3f\nspans=%llu\ngaps=%llu\nhidden_edges=%llu\ndraw_scratch_bytes=%zu\n",
                d.draw_ms, (unsigned long long)d.stats.spans, (unsigned long long)d.stats.gaps,
                (unsigned long long)d.stats.hidden_edges, d.scratch_bytes);
 }
@@ -178,8 +179,8 @@ int write_drawing(const Options& o, const HostDraw& d) {
 
 void warn_reach(const HostDraw& d, int32_t halo, int32_t reach) {
   if (d.stats.reach_short)
-    std::cerr << "haloplot: warning: exact halo " << halo << " exceeds the near-miss reach " << reach
-              << " CUT used; near misses between " << reach << " and " << halo
+    std::cerr << "haloplot: warning: exact halo " << halo << " exceeds the near-miss reach "
+              << reach << " CUT used; near misses between " << reach << " and " << halo
               << " steps are not haloed (rerun cut with --reach " << halo << ")\n";
 }
 
@@ -188,7 +189,8 @@ const std::set<std::string> kCutValued = {"-o", "--lambda", "--cell", "--cover",
 int cmd_demo_scene(int argc, char** argv) {
   const Options o = parse_options(argc, argv, 2, {"-o", "--cubes"}, {});
   if (!o.error.empty()) return fail(o.error);
-  if (o.get("-o").empty() || !o.positional.empty()) return fail(std::string("bad arguments\n") + kUsage);
+  if (o.get("-o").empty() || !o.positional.empty())
+    return fail(std::string("bad arguments\n") + kUsage);
   int64_t cubes = 28;
   std::string error;
   if (!read_int_option(o, "--cubes", 1, 200, &cubes, &error)) return fail(error);
@@ -223,7 +225,8 @@ bool parse_millionths(const std::string& s, int64_t* out) {
 int cmd_random_scene(int argc, char** argv) {
   const Options o = parse_options(argc, argv, 2, {"-o", "--edges", "--length", "--seed"}, {});
   if (!o.error.empty()) return fail(o.error);
-  if (o.get("-o").empty() || o.get("--edges").empty() || o.get("--length").empty() || !o.positional.empty())
+  if (o.get("-o").empty() || o.get("--edges").empty() || o.get("--length").empty() ||
+      !o.positional.empty())
     return fail(std::string("bad arguments\n") + kUsage);
   int64_t n = 0, seed = 1, l = 0;
   std::string error;
@@ -231,10 +234,12 @@ int cmd_random_scene(int argc, char** argv) {
       !read_int_option(o, "--seed", 0, INT64_MAX, &seed, &error))
     return fail(error);
   if (!parse_millionths(o.get("--length"), &l))
-    return fail("--length '" + o.get("--length") + "' must be a decimal in (0, 1], at most 6 places");
+    return fail("--length '" + o.get("--length") +
+                "' must be a decimal in (0, 1], at most 6 places");
   const std::vector<Edge3> edges = paper_random(uint32_t(n), l, uint64_t(seed));
-  const std::string header = "# haloplot random scene (HALO paper EDGE distribution): N=" + o.get("--edges") +
-                             " L=" + o.get("--length") + " seed=" + std::to_string(seed) + "\n";
+  const std::string header =
+      "# haloplot random scene (HALO paper EDGE distribution): N=" + o.get("--edges") +
+      " L=" + o.get("--length") + " seed=" + std::to_string(seed) + "\n";
   error = write_atomically(o.get("-o"), [&](std::ostream& out) {
     write_edges(out, edges, header);
     return true;
@@ -246,7 +251,8 @@ int cmd_cut(int argc, char** argv) {
   std::set<std::string> valued = kCutValued;
   const Options o = parse_options(argc, argv, 2, valued, {"--stats"});
   if (!o.error.empty()) return fail(o.error);
-  if (o.positional.size() != 1 || o.get("-o").empty()) return fail(std::string("bad arguments\n") + kUsage);
+  if (o.positional.size() != 1 || o.get("-o").empty())
+    return fail(std::string("bad arguments\n") + kUsage);
   CutParams cp;
   std::string error;
   if (!cut_params(o, &cp, &error)) return fail(error);
@@ -266,9 +272,11 @@ int cmd_cut(int argc, char** argv) {
 }
 
 int cmd_draw(int argc, char** argv) {
-  const Options o = parse_options(argc, argv, 2, {"-o", "--halo", "--spans"}, {"--exact-halo", "--stats"});
+  const Options o =
+      parse_options(argc, argv, 2, {"-o", "--halo", "--spans"}, {"--exact-halo", "--stats"});
   if (!o.error.empty()) return fail(o.error);
-  if (o.positional.size() != 1 || o.get("-o").empty()) return fail(std::string("bad arguments\n") + kUsage);
+  if (o.positional.size() != 1 || o.get("-o").empty())
+    return fail(std::string("bad arguments\n") + kUsage);
   DrawParams dp;
   std::string error;
   if (!draw_params(o, &dp, &error)) return fail(error);
@@ -281,7 +289,8 @@ int cmd_draw(int argc, char** argv) {
   warn_reach(d, dp.halo, lc.set.reach);
   if (const int rc = write_drawing(o, d)) return rc;
   if (o.has("--stats")) {
-    std::fprintf(stderr, "edges=%u\ncrossings=%u\ncut_ran=0\ncut_ms=0\n", lc.set.n_edges, lc.set.n_crossings);
+    std::fprintf(stderr, "edges=%u\ncrossings=%u\ncut_ran=0\ncut_ms=0\n", lc.set.n_edges,
+                 lc.set.n_crossings);
     print_draw_stats(d);
   }
   return 0;
@@ -292,7 +301,8 @@ int cmd_plot(int argc, char** argv) {
   valued.insert({"--halo", "--spans", "--cut"});
   const Options o = parse_options(argc, argv, 2, valued, {"--exact-halo", "--stats"});
   if (!o.error.empty()) return fail(o.error);
-  if (o.positional.size() != 1 || o.get("-o").empty()) return fail(std::string("bad arguments\n") + kUsage);
+  if (o.positional.size() != 1 || o.get("-o").empty())
+    return fail(std::string("bad arguments\n") + kUsage);
   CutParams cp;
   DrawParams dp;
   std::string error;
@@ -333,7 +343,8 @@ std::string thousandths(uint64_t v) {
 int cmd_sim(int argc, char** argv) {
   const Options o = parse_options(argc, argv, 2, {"-o", "--gcode", "--hpgl"}, {"--stats"});
   if (!o.error.empty()) return fail(o.error);
-  if (o.positional.size() != 1 || o.get("-o").empty()) return fail(std::string("bad arguments\n") + kUsage);
+  if (o.positional.size() != 1 || o.get("-o").empty())
+    return fail(std::string("bad arguments\n") + kUsage);
   JobFile jf;
   InputError ie = read_job_file(o.positional[0], &jf);
   if (ie.failed()) return fail(ie.message());
@@ -342,7 +353,8 @@ int cmd_sim(int argc, char** argv) {
   if (ie.failed()) return fail(ie.message());
   if (isatty(2)) jf.spec.cut.progress = &progress;
   JobSpec spec = jf.spec;
-  if (!spec.effects.backlash) spec.machine.backlash[0] = spec.machine.backlash[1] = 0;  // not simulated
+  if (!spec.effects.backlash)
+    spec.machine.backlash[0] = spec.machine.backlash[1] = 0;  // not simulated
   SimReport r;
   Status s = Status::kOk;
   std::string error = write_atomically(o.get("-o"), [&](std::ostream& out) {
@@ -376,15 +388,17 @@ int cmd_sim(int argc, char** argv) {
                  "dwell_ticks=%llu\nbacklash_takeups=%llu\nsegments=%llu\n"
                  "bytes_cut=%zu\nbytes_draw=%zu\nbytes_path=%zu\nbytes_planner=%zu\n",
                  edges.size(), (unsigned)r.spans.size(), r.job.path.polylines,
-                 (unsigned long long)r.job.path.pen_down_length, (unsigned long long)r.job.path.pen_up_length,
+                 (unsigned long long)r.job.path.pen_down_length,
+                 (unsigned long long)r.job.path.pen_up_length,
                  (unsigned long long)r.job.path.naive_pen_up_length,
                  thousandths(r.end_tick * 1000 / m.tick_hz).c_str(), (unsigned long long)r.steps[0],
-                 (unsigned long long)r.steps[1], (unsigned long long)rate(0), (unsigned long long)rate(1),
-                 r.pen_lifts, r.job.cut_runs, r.job.draw_runs, (unsigned long long)r.planner.replans,
-                 (unsigned long long)r.planner.junctions, (unsigned long long)r.planner.dwell_ticks,
+                 (unsigned long long)r.steps[1], (unsigned long long)rate(0),
+                 (unsigned long long)rate(1), r.pen_lifts, r.job.cut_runs, r.job.draw_runs,
+                 (unsigned long long)r.planner.replans, (unsigned long long)r.planner.junctions,
+                 (unsigned long long)r.planner.dwell_ticks,
                  (unsigned long long)r.prep.backlash_takeups, (unsigned long long)r.prep.segments,
-                 r.bytes.cut_scratch + r.bytes.cutset, r.bytes.draw_scratch, r.bytes.path + r.bytes.points,
-                 r.planner_bytes);
+                 r.bytes.cut_scratch + r.bytes.cutset, r.bytes.draw_scratch,
+                 r.bytes.path + r.bytes.points, r.planner_bytes);
   }
   return 0;
 }
@@ -392,19 +406,21 @@ int cmd_sim(int argc, char** argv) {
 int cmd_replay(int argc, char** argv) {
   const Options o = parse_options(argc, argv, 2, {"-o"}, {"--stats"});
   if (!o.error.empty()) return fail(o.error);
-  if (o.positional.size() != 1 || o.get("-o").empty()) return fail(std::string("bad arguments\n") + kUsage);
+  if (o.positional.size() != 1 || o.get("-o").empty())
+    return fail(std::string("bad arguments\n") + kUsage);
   std::ifstream in(o.positional[0]);
   if (!in) return fail(o.positional[0] + ": cannot open");
   Trace t;
   const InputError ie = read_trace(in, o.positional[0], &t);
   if (ie.failed()) return fail(ie.message());
-  ReplayStats st;
-  const auto strokes = replay_strokes(t, &st);
+  const Replay rep = replay(t);
+  const auto& strokes = rep.strokes;
   std::vector<Span> spans;
   uint64_t down_length = 0;
   for (const auto& stroke : strokes) {
-    const auto pts = simplify(stroke, 1);
-    for (size_t i = 1; i < pts.size(); ++i) down_length += length_floor(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+    const auto pts = simplify(stroke, rep.scale, 1);
+    for (size_t i = 1; i < pts.size(); ++i)
+      down_length += length_floor(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
     if (pts.size() == 1) spans.push_back(Span{0, 0, 0, pts[0].x, pts[0].y, pts[0].x, pts[0].y});
     for (size_t i = 1; i < pts.size(); ++i)
       spans.push_back(Span{0, 0, 0, pts[i - 1].x, pts[i - 1].y, pts[i].x, pts[i].y});
@@ -415,9 +431,10 @@ int cmd_replay(int argc, char** argv) {
   });
   if (!error.empty()) return fail(error);
   if (o.has("--stats"))
-    std::fprintf(stderr, "strokes=%zu\npen_down_length=%llu\npen_up_length=%llu\nplot_s=%s\npen_lifts=%u\n",
-                 strokes.size(), (unsigned long long)down_length, (unsigned long long)st.pen_up_length,
-                 thousandths(t.end_tick * 1000 / t.machine.tick_hz).c_str(), st.pen_lifts);
+    std::fprintf(
+        stderr, "strokes=%zu\npen_down_length=%llu\npen_up_length=%llu\nplot_s=%s\npen_lifts=%u\n",
+        strokes.size(), (unsigned long long)down_length, (unsigned long long)rep.pen_up_length,
+        thousandths(t.end_tick * 1000 / t.machine.tick_hz).c_str(), rep.pen_lifts);
   return 0;
 }
 

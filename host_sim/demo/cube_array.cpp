@@ -7,7 +7,8 @@ namespace haloplot::host {
 namespace {
 
 // View direction: azimuth 30 degrees, elevation 40 degrees, as Q16 constants (cos 30 = 0.8660,
-// sin 30 = 0.5, cos 40 = 0.7660, sin 40 = 0.6428), so the demo needs no floating point. Same convention as the README's view:
+// sin 30 = 0.5, cos 40 = 0.7660, sin 40 = 0.6428), so the demo needs no floating point. Same
+// convention as the README's view:
 //   x' = x cos(az) - y sin(az);  y1 = x sin(az) + y cos(az)
 //   screen y' = z cos(el) - y1 sin(el);  depth d = z sin(el) - y1 cos(el)   (larger d = nearer)
 constexpr int64_t kCosAz = 56756, kSinAz = 32768, kCosEl = 50203, kSinEl = 42125;
@@ -64,7 +65,8 @@ std::vector<Edge3> cube_array(const CubeArrayParams& p) {
     return Point3{fit(c.x, xlo, xhi, p.margin, out_w), fit(c.y, ylo, yhi, p.margin, out_h),
                   fit(c.d, dlo, dhi, 0, kCoordMax)};
   };
-  for (const auto& [a, b] : edge_ends) edges.push_back(Edge3{to_point(corners[a]), to_point(corners[b])});
+  for (const auto& [a, b] : edge_ends)
+    edges.push_back(Edge3{to_point(corners[a]), to_point(corners[b])});
   return edges;
 }
 

@@ -8,10 +8,10 @@
 namespace haloplot::host {
 
 struct CubeArrayParams {
-  int cubes = 28;            // cubes per side
-  int32_t width = 20000;     // plot area in steps (about 250 mm at 80 steps/mm)
+  int cubes = 28;         // cubes per side
+  int32_t width = 20000;  // plot area in steps (about 250 mm at 80 steps/mm)
   int32_t height = 16000;
-  int32_t margin = 400;      // lower-left corner of the plot area
+  int32_t margin = 400;  // lower-left corner of the plot area
 };
 
 std::vector<Edge3> cube_array(const CubeArrayParams& params);

@@ -12,10 +12,12 @@ std::string mm_text(int64_t steps, uint32_t per_mm) {
   const bool neg = micro < 0;
   const int64_t a = neg ? -micro : micro;
   std::string frac = std::to_string(a % 1000);
-  return (neg ? "-" : "") + std::to_string(a / 1000) + "." + std::string(3 - frac.size(), '0') + frac;
+  return (neg ? "-" : "") + std::to_string(a / 1000) + "." + std::string(3 - frac.size(), '0') +
+         frac;
 }
 
-void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Machine& m, const ExportStyle& s) {
+void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Machine& m,
+                 const ExportStyle& s) {
   const auto seconds = [&](uint32_t ticks) { return mm_text(ticks, m.tick_hz); };  // 3 places
   const std::string dwell = seconds(m.pen_travel_ticks + m.pen_settle_ticks);
   // Feeds in mm/min.
@@ -38,8 +40,8 @@ void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Ma
       down = p.pen_down != 0;
       pen(down);
     }
-    out << (down ? "G1 X" : "G0 X") << mm_text(p.x, s.steps_per_mm) << " Y" << mm_text(p.y, s.steps_per_mm)
-        << " F" << (down ? draw_feed : travel_feed) << '\n';
+    out << (down ? "G1 X" : "G0 X") << mm_text(p.x, s.steps_per_mm) << " Y"
+        << mm_text(p.y, s.steps_per_mm) << " F" << (down ? draw_feed : travel_feed) << '\n';
   }
   if (down) pen(false);
   out << "M2\n";
@@ -47,7 +49,9 @@ void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Ma
 
 void write_hpgl(std::ostream& out, const std::vector<PathPoint>& path, const ExportStyle& s) {
   // 40 plotter units per mm: units = steps * 40 / steps_per_mm, rounded.
-  const auto unit = [&](int32_t v) { return floor_div(int64_t(v) * 80 + s.steps_per_mm, 2 * int64_t(s.steps_per_mm)); };
+  const auto unit = [&](int32_t v) {
+    return floor_div(int64_t(v) * 80 + s.steps_per_mm, 2 * int64_t(s.steps_per_mm));
+  };
   out << "IN;SP1;";
   bool down = false;
   bool open = false;

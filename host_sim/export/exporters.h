@@ -20,7 +20,8 @@ struct ExportStyle {
   int32_t z_up_um = 2000, z_down_um = 0;
 };
 
-void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Machine& m, const ExportStyle& s);
+void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Machine& m,
+                 const ExportStyle& s);
 void write_hpgl(std::ostream& out, const std::vector<PathPoint>& path, const ExportStyle& s);
 
 // "12.345": plot steps in millimetres, exactly rounded to 3 decimals (integer arithmetic).

@@ -7,6 +7,7 @@
 namespace haloplot::host {
 
 // Calls write(stream) on PATH.tmp, then renames it over PATH. Returns "" or an error message.
-std::string write_atomically(const std::string& path, const std::function<bool(std::ostream&)>& write);
+std::string write_atomically(const std::string& path,
+                             const std::function<bool(std::ostream&)>& write);
 
 }  // namespace haloplot::host

@@ -9,7 +9,8 @@ namespace haloplot::host {
 
 std::string decimal_position(int32_t a, int32_t d, uint32_t t32) {
   // a + d * t / 2^32 in thousandths, rounded half up; exact in 128 bits on the host.
-  const __int128 scaled = (static_cast<__int128>(a) << 32) * 1000 + static_cast<__int128>(d) * t32 * 1000;
+  const __int128 scaled =
+      (static_cast<__int128>(a) << 32) * 1000 + static_cast<__int128>(d) * t32 * 1000;
   const __int128 thousandths = (scaled + (static_cast<__int128>(1) << 31)) >> 32;
   const long long v = static_cast<long long>(thousandths);
   const long long whole = v >= 0 ? v / 1000 : -((-v + 999) / 1000);
@@ -22,8 +23,8 @@ void write_cut(std::ostream& out, const CutSet& set, const std::string& extra_he
   out << "# haloplot cutset v1\n" << extra_header << "# reach " << set.reach << "\n";
   for (uint32_t i = 0; i < set.n_edges; ++i) {
     const Edge3& e = set.edges[i];
-    out << "e " << i << ' ' << e.a.x << ' ' << e.a.y << ' ' << e.a.z << ' ' << e.b.x << ' '
-        << e.b.y << ' ' << e.b.z << '\n';
+    out << "e " << i << ' ' << e.a.x << ' ' << e.a.y << ' ' << e.a.z << ' ' << e.b.x << ' ' << e.b.y
+        << ' ' << e.b.z << '\n';
   }
   for (uint32_t i = 0; i < set.n_edges; ++i) {
     const Edge3& e = set.edges[i];
@@ -51,8 +52,9 @@ InputError read_cut(std::istream& in, const std::string& name, LoadedCut* out) {
       if (f.size() != 8) return {name, line, "an 'e' line needs an index and 6 integers"};
       int64_t v[7];
       if (!parse_int(f[1], 0, kMaxEdges, &v[0]) || v[0] != int64_t(out->edges.size()))
-        return {name, line, "edge index '" + f[1] + "' out of order (expected " +
-                                std::to_string(out->edges.size()) + ")"};
+        return {name, line,
+                "edge index '" + f[1] + "' out of order (expected " +
+                    std::to_string(out->edges.size()) + ")"};
       for (int i = 1; i < 7; ++i)
         if (!parse_int(f[i + 1], 0, kCoordMax, &v[i]))
           return {name, line, "'" + f[i + 1] + "' is not an integer in [0, 1048575]"};
@@ -75,10 +77,12 @@ InputError read_cut(std::istream& in, const std::string& name, LoadedCut* out) {
                  uint32_t(t)};
       if (!out->crossings.empty()) {
         const Crossing& p = out->crossings.back();
-        const bool ordered = p.behind < c.behind ||
-                             (p.behind == c.behind && (p.t < c.t || (p.t == c.t && p.front < c.front)));
+        const bool ordered =
+            p.behind < c.behind ||
+            (p.behind == c.behind && (p.t < c.t || (p.t == c.t && p.front < c.front)));
         if (!ordered)
-          return {name, line, "records must be grouped by BEHIND and ordered along it by (T, FRONT)"};
+          return {name, line,
+                  "records must be grouped by BEHIND and ordered along it by (T, FRONT)"};
       }
       out->crossings.push_back(c);
     } else {

@@ -13,15 +13,15 @@ InputError read_edges(std::istream& in, const std::string& name, std::vector<Edg
   std::vector<std::string> f;
   while (reader.next(&f)) {
     if (f.size() != 6)
-      return {name, reader.line(),
-              "expected 6 integers (x1 y1 z1 x2 y2 z2), found " + std::to_string(f.size()) +
-                  " fields"};
+      return {
+          name, reader.line(),
+          "expected 6 integers (x1 y1 z1 x2 y2 z2), found " + std::to_string(f.size()) + " fields"};
     int64_t v[6];
     for (int i = 0; i < 6; ++i)
       if (!parse_int(f[i], 0, kCoordMax, &v[i]))
-        return {name, reader.line(),
-                "field " + std::to_string(i + 1) + " '" + f[i] +
-                    "' is not an integer in [0, 1048575]"};
+        return {
+            name, reader.line(),
+            "field " + std::to_string(i + 1) + " '" + f[i] + "' is not an integer in [0, 1048575]"};
     edges->push_back(Edge3{{int32_t(v[0]), int32_t(v[1]), int32_t(v[2])},
                            {int32_t(v[3]), int32_t(v[4]), int32_t(v[5])}});
   }

@@ -26,13 +26,18 @@ InputError read_job_file(const std::string& path, JobFile* out) {
     uint32_t v32 = 0;
     if (key == "scene" && f.size() == 2) {
       const size_t slash = path.find_last_of('/');
-      out->scene_path = (f[1][0] == '/' || slash == std::string::npos) ? f[1] : path.substr(0, slash + 1) + f[1];
+      out->scene_path =
+          (f[1][0] == '/' || slash == std::string::npos) ? f[1] : path.substr(0, slash + 1) + f[1];
     } else if (key == "drawing" && f.size() == 2) {
-      if (f[1] == "all") j.drawing = DrawingEffect::kAllEdges;
-      else if (f[1] == "haloed") j.drawing = DrawingEffect::kHaloed;
-      else if (f[1] == "hidden-removed" || f[1] == "hidden-dashed" || f[1] == "outline" || f[1] == "hatch")
+      if (f[1] == "all")
+        j.drawing = DrawingEffect::kAllEdges;
+      else if (f[1] == "haloed")
+        j.drawing = DrawingEffect::kHaloed;
+      else if (f[1] == "hidden-removed" || f[1] == "hidden-dashed" || f[1] == "outline" ||
+               f[1] == "hatch")
         return bad("drawing '" + f[1] + "' needs faces; this build draws 'all' and 'haloed'");
-      else return bad("drawing must be all or haloed, not '" + f[1] + "'");
+      else
+        return bad("drawing must be all or haloed, not '" + f[1] + "'");
     } else if (key == "halo") {
       if (!number(0, 1048575, &v32)) return bad("halo needs a width in [0, 1048575] steps");
       j.draw.halo = int32_t(v32);
@@ -41,10 +46,14 @@ InputError read_job_file(const std::string& path, JobFile* out) {
     } else if (key == "effects" && f.size() >= 2) {
       j.effects = PlotterEffects{false, false, false};
       for (size_t i = 1; i < f.size(); ++i) {
-        if (f[i] == "acceleration") j.effects.acceleration = true;
-        else if (f[i] == "pen-servo") j.effects.pen_servo = true;
-        else if (f[i] == "backlash") j.effects.backlash = true;
-        else if (f[i] != "none") return bad("unknown effect '" + f[i] + "' (acceleration, pen-servo, backlash, none)");
+        if (f[i] == "acceleration")
+          j.effects.acceleration = true;
+        else if (f[i] == "pen-servo")
+          j.effects.pen_servo = true;
+        else if (f[i] == "backlash")
+          j.effects.backlash = true;
+        else if (f[i] != "none")
+          return bad("unknown effect '" + f[i] + "' (acceleration, pen-servo, backlash, none)");
       }
     } else if (key == "kinematics" && f.size() == 2 && (f[1] == "cartesian" || f[1] == "corexy")) {
       j.machine.kinematics = f[1] == "corexy" ? Kinematics::kCoreXY : Kinematics::kCartesian;
@@ -58,19 +67,36 @@ InputError read_job_file(const std::string& path, JobFile* out) {
       j.machine.steps_den = uint32_t(b);
     } else if (key == "backlash" && f.size() == 3) {
       int64_t a, b;
-      if (!parse_int(f[1], 0, 1000, &a) || !parse_int(f[2], 0, 1000, &b)) return bad("backlash needs two step counts in [0, 1000]");
+      if (!parse_int(f[1], 0, 1000, &a) || !parse_int(f[2], 0, 1000, &b))
+        return bad("backlash needs two step counts in [0, 1000]");
       j.machine.backlash[0] = uint32_t(a);
       j.machine.backlash[1] = uint32_t(b);
-    } else if (key == "tick-hz") { if (!number(1, 16000000, &j.machine.tick_hz)) return bad("tick-hz in [1, 16000000]");
-    } else if (key == "min-interval") { if (!number(1, 1000000, &j.machine.min_interval)) return bad("min-interval in [1, 1000000] ticks");
-    } else if (key == "max-step-rate") { if (!number(1, 10000000, &j.machine.max_step_rate)) return bad("max-step-rate in [1, 10000000]");
-    } else if (key == "draw-speed") { if (!number(1, 65535, &j.machine.draw_speed)) return bad("draw-speed in [1, 65535] steps/s");
-    } else if (key == "travel-speed") { if (!number(1, 65535, &j.machine.travel_speed)) return bad("travel-speed in [1, 65535] steps/s");
-    } else if (key == "accel") { if (!number(1, 4194303, &j.machine.accel)) return bad("accel in [1, 4194303] steps/s^2");
-    } else if (key == "junction-deviation") { if (!number(0, 65535, &j.machine.junction_deviation)) return bad("junction-deviation in [0, 65535] steps");
-    } else if (key == "pen-travel-ticks") { if (!number(0, 100000000, &j.machine.pen_travel_ticks)) return bad("pen-travel-ticks in [0, 10^8]");
-    } else if (key == "pen-settle-ticks") { if (!number(0, 100000000, &j.machine.pen_settle_ticks)) return bad("pen-settle-ticks in [0, 10^8]");
-    } else if (key == "steps-per-mm") { if (!number(1, 100000, &out->style.steps_per_mm)) return bad("steps-per-mm in [1, 100000]");
+    } else if (key == "tick-hz") {
+      if (!number(1, 16000000, &j.machine.tick_hz)) return bad("tick-hz in [1, 16000000]");
+    } else if (key == "min-interval") {
+      if (!number(1, 1000000, &j.machine.min_interval))
+        return bad("min-interval in [1, 1000000] ticks");
+    } else if (key == "max-step-rate") {
+      if (!number(1, 10000000, &j.machine.max_step_rate))
+        return bad("max-step-rate in [1, 10000000]");
+    } else if (key == "draw-speed") {
+      if (!number(1, 65535, &j.machine.draw_speed)) return bad("draw-speed in [1, 65535] steps/s");
+    } else if (key == "travel-speed") {
+      if (!number(1, 65535, &j.machine.travel_speed))
+        return bad("travel-speed in [1, 65535] steps/s");
+    } else if (key == "accel") {
+      if (!number(1, 4194303, &j.machine.accel)) return bad("accel in [1, 4194303] steps/s^2");
+    } else if (key == "junction-deviation") {
+      if (!number(0, 65535, &j.machine.junction_deviation))
+        return bad("junction-deviation in [0, 65535] steps");
+    } else if (key == "pen-travel-ticks") {
+      if (!number(0, 100000000, &j.machine.pen_travel_ticks))
+        return bad("pen-travel-ticks in [0, 10^8]");
+    } else if (key == "pen-settle-ticks") {
+      if (!number(0, 100000000, &j.machine.pen_settle_ticks))
+        return bad("pen-settle-ticks in [0, 10^8]");
+    } else if (key == "steps-per-mm") {
+      if (!number(1, 100000, &out->style.steps_per_mm)) return bad("steps-per-mm in [1, 100000]");
     } else {
       return bad("unknown or malformed setting '" + key + "'");
     }

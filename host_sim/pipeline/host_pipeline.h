@@ -9,13 +9,13 @@
 namespace haloplot::host {
 
 struct HostCut {
-  std::vector<Edge3> edges;          // owned copy: the CUTSET points into it
-  std::vector<uint64_t> storage;     // CUTSET storage (8-byte aligned)
+  std::vector<Edge3> edges;       // owned copy: the CUTSET points into it
+  std::vector<uint64_t> storage;  // CUTSET storage (8-byte aligned)
   CutPlan plan;
   CutSet set;
   CutStats stats;
-  double cut_ms = 0;                 // plan + run of the final pass, no I/O
-  int retries = 0;                   // capacity retries (each reruns CUT)
+  double cut_ms = 0;  // plan + run of the final pass, no I/O
+  int retries = 0;    // capacity retries (each reruns CUT)
   size_t scratch_bytes = 0;
 };
 

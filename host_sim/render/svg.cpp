@@ -31,8 +31,7 @@ void write_svg(std::ostream& out, const std::vector<Span>& spans, const SvgStyle
       << "<path fill=\"none\" stroke=\"black\" stroke-linecap=\"round\" stroke-width=\"" << stroke
       << "\" d=\"";
   // One path, y negated: the viewBox above starts at -(ymax + margin).
-  for (const Span& s : spans)
-    out << 'M' << s.x0 << ' ' << -s.y0 << 'L' << s.x1 << ' ' << -s.y1;
+  for (const Span& s : spans) out << 'M' << s.x0 << ' ' << -s.y0 << 'L' << s.x1 << ' ' << -s.y1;
   out << "\"/>\n</svg>\n";
 }
 

@@ -9,8 +9,8 @@
 namespace haloplot::host {
 
 struct SvgStyle {
-  int pixels = 1200;         // width of the longer side, in px
-  double stroke_steps = 0;   // 0: about 1/1000 of the picture
+  int pixels = 1200;        // width of the longer side, in px
+  double stroke_steps = 0;  // 0: about 1/1000 of the picture
 };
 
 void write_svg(std::ostream& out, const std::vector<Span>& spans, const SvgStyle& style);

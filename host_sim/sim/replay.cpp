@@ -1,61 +1,80 @@
 #include "sim/replay.h"
 
+#include "geometry/fraction.h"
 #include "geometry/wide.h"
 
 namespace haloplot::host {
 
-std::vector<std::vector<PathPoint>> replay_strokes(const Trace& t, ReplayStats* st) {
-  std::vector<std::vector<PathPoint>> strokes;
-  ReplayStats s;
+Replay replay(const Trace& t) {
+  Replay r;
+  const Machine& m = t.machine;
+  const bool corexy = m.kinematics == Kinematics::kCoreXY;
+  r.scale = int64_t(m.steps_num) * (corexy ? 2 : 1);
   int32_t motor[2] = {0, 0};
-  // Dead band: slack[m] in [0, backlash[m]] is how far the motor is ahead of the carriage. The
-  // machine starts pushed forward (slack full), as the step prep assumes.
-  int32_t slack[2] = {int32_t(t.machine.backlash[0]), int32_t(t.machine.backlash[1])};
+  // Dead band: slack[k] in [0, backlash[k]] is how far the motor is ahead of the carriage. The
+  // machine starts pushed forward (slack full), as the step prep assumes, so the logical
+  // position is carriage + backlash.
+  int32_t slack[2] = {int32_t(m.backlash[0]), int32_t(m.backlash[1])};
   int32_t carriage[2] = {-slack[0], -slack[1]};
-  bool down = false;
-  int32_t px = 0, py = 0, lift_x = 0, lift_y = 0;
-  auto position = [&](int32_t* x, int32_t* y) {
-    const int32_t logical[2] = {carriage[0] + int32_t(t.machine.backlash[0]),
-                                carriage[1] + int32_t(t.machine.backlash[1])};
-    plot_position(t.machine, logical, x, y);
+  auto position = [&]() {
+    const int64_t a = carriage[0] + int64_t(m.backlash[0]),
+                  b = carriage[1] + int64_t(m.backlash[1]);
+    return corexy ? ExactPoint{(a + b) * m.steps_den, (a - b) * m.steps_den}
+                  : ExactPoint{a * m.steps_den, b * m.steps_den};
   };
-  for (const StepEvent& e : t.events) {
-    if (e.motor == 2) {
-      position(&px, &py);
-      if (down && !e.flag) {
-        ++s.pen_lifts;
-        lift_x = px;
-        lift_y = py;
+  bool down = false;
+  ExactPoint lift = position();
+  const auto& ev = t.events;
+  for (size_t i = 0; i < ev.size();) {
+    const uint64_t tick = ev[i].tick;
+    bool stepped = false;
+    for (; i < ev.size() && ev[i].tick == tick && ev[i].motor != 2; ++i) {
+      const int k = ev[i].motor, b = int32_t(m.backlash[k]);
+      const bool back = ev[i].flag;
+      motor[k] += back ? -1 : 1;
+      if (back) {
+        if (slack[k] > 0)
+          --slack[k];
+        else
+          --carriage[k];
+      } else {
+        if (slack[k] < b)
+          ++slack[k];
+        else
+          ++carriage[k];
       }
-      if (!down && e.flag) {
-        s.pen_up_length += isqrt_u64(uint64_t(int64_t(px - lift_x) * (px - lift_x) + int64_t(py - lift_y) * (py - lift_y)));
-        strokes.push_back({PathPoint{px, py, 0}});
+      (down ? r.pen_down_steps : r.pen_up_steps) += 1;
+      stepped = true;
+    }
+    const ExactPoint p = position();
+    if (stepped && down) {
+      auto& s = r.strokes.back();
+      if (s.back().x != p.x || s.back().y != p.y) s.push_back(p);
+    }
+    for (; i < ev.size() && ev[i].tick == tick && ev[i].motor == 2; ++i) {
+      const bool now_down = ev[i].flag;
+      if (down && !now_down) {
+        ++r.pen_lifts;
+        lift = p;
       }
-      down = e.flag;
-      continue;
+      if (!down && now_down) {
+        const int64_t dx = (p.x - lift.x) / r.scale, dy = (p.y - lift.y) / r.scale;
+        r.pen_up_length += isqrt_u64(uint64_t(dx * dx + dy * dy));
+        r.strokes.push_back({p});
+      }
+      down = now_down;
     }
-    const int m = e.motor, b = int32_t(t.machine.backlash[m]);
-    motor[m] += e.flag ? -1 : 1;
-    if (e.flag) {
-      if (slack[m] > 0) --slack[m]; else --carriage[m];
-    } else {
-      if (slack[m] < b) ++slack[m]; else ++carriage[m];
-    }
-    (down ? s.pen_down_steps : s.pen_up_steps) += 1;
-    int32_t x, y;
-    position(&x, &y);
-    if (x == px && y == py) continue;
-    px = x;
-    py = y;
-    if (down) strokes.back().push_back(PathPoint{x, y, 1});
   }
-  s.final_motors[0] = motor[0];
-  s.final_motors[1] = motor[1];
-  if (st) *st = s;
-  return strokes;
+  r.final_motors[0] = motor[0];
+  r.final_motors[1] = motor[1];
+  return r;
 }
 
-std::vector<PathPoint> simplify(const std::vector<PathPoint>& p, int32_t tol) {
+std::vector<PathPoint> simplify(const std::vector<ExactPoint>& stroke, int64_t scale, int32_t tol) {
+  std::vector<PathPoint> p;
+  for (const ExactPoint& e : stroke)
+    p.push_back(PathPoint{int32_t(floor_div(2 * e.x + scale, 2 * scale)),
+                          int32_t(floor_div(2 * e.y + scale, 2 * scale)), 1});
   if (p.size() < 3) return p;
   std::vector<uint8_t> keep(p.size(), 0);
   keep.front() = keep.back() = 1;
@@ -68,15 +87,14 @@ std::vector<PathPoint> simplify(const std::vector<PathPoint>& p, int32_t tol) {
     Wide worst_d = Wide::from_i64(-1);
     for (size_t i = a + 1; i < b; ++i) {
       const int64_t wx = p[i].x - p[a].x, wy = p[i].y - p[a].y;
-      // squared distance * l2 (or * 1 for a degenerate chord), compared exactly
-      const Wide d = l2 == 0 ? Wide::from_i64(wx * wx + wy * wy) : mul_i64(dx * wy - dy * wx, dx * wy - dy * wx);
+      const Wide d = l2 == 0 ? Wide::from_i64(wx * wx + wy * wy)
+                             : mul_i64(dx * wy - dy * wx, dx * wy - dy * wx);
       if (worst_d < d) {
         worst_d = d;
         worst = i;
       }
     }
-    const Wide limit = mul_i64(int64_t(tol) * tol, l2 == 0 ? 1 : l2);
-    if (worst != a && limit < worst_d) {
+    if (worst != a && mul_i64(int64_t(tol) * tol, l2 == 0 ? 1 : l2) < worst_d) {
       keep[worst] = 1;
       stack.push_back({a, worst});
       stack.push_back({worst, b});

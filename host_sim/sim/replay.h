@@ -1,7 +1,10 @@
 // Replay: rebuild the pen-down drawing from a trace alone. Motor positions are integrated
-// step by step; the carriage follows each motor through a dead band of the trace's backlash
-// (the slack the machine has), and the plot position comes from the inverse kinematics.
+// tick by tick (all steps of one tick together, as the driver pulses them); the carriage
+// follows each motor through a dead band of the trace's backlash (the slack the machine has),
+// and the plot position comes from the inverse kinematics, kept exact: in units of
+// 1 / scale plot steps, scale = steps_num (cartesian) or 2 * steps_num (CoreXY).
 #pragma once
+#include <cstdint>
 #include <vector>
 
 #include "motion/path_plan.h"
@@ -9,18 +12,24 @@
 
 namespace haloplot::host {
 
-struct ReplayStats {
+struct ExactPoint {
+  int64_t x, y;  // plot steps * scale
+};
+
+struct Replay {
+  int64_t scale = 1;
+  std::vector<std::vector<ExactPoint>> strokes;   // one point per tick with steps, pen down
   uint64_t pen_down_steps = 0, pen_up_steps = 0;  // motor steps while the pen was down / up
   uint64_t pen_up_length = 0;  // plot steps: straight lines between strokes (travel is straight)
   uint32_t pen_lifts = 0;
   int32_t final_motors[2] = {0, 0};
 };
 
-// Pen-down strokes as lists of plot positions, one per step event while the pen is down.
-std::vector<std::vector<PathPoint>> replay_strokes(const Trace& t, ReplayStats* stats);
+Replay replay(const Trace& t);
 
-// Douglas-Peucker with an exact integer distance test: drop points within `tolerance` steps of
-// the chord. For compact pictures; the checks use the raw strokes.
-std::vector<PathPoint> simplify(const std::vector<PathPoint>& stroke, int32_t tolerance);
+// A stroke in whole plot steps (rounded), without points closer than `tolerance` steps to the
+// chord between kept points (Douglas-Peucker, exact integer distances): for pictures.
+std::vector<PathPoint> simplify(const std::vector<ExactPoint>& stroke, int64_t scale,
+                                int32_t tolerance);
 
 }  // namespace haloplot::host

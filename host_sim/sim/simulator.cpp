@@ -35,7 +35,8 @@ struct RecordingHal {
 
 }  // namespace
 
-Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostream* trace, SimReport* r) {
+Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostream* trace,
+                SimReport* r) {
   *r = SimReport{};
   const uint32_t n = uint32_t(edges.size());
   // Size the job buffer from the core's own query; one retry if CUT needs more records.
@@ -47,7 +48,8 @@ Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostre
     s = job_bytes(spec, edges.data(), n, capacity, &r->bytes);
     if (!ok(s)) return s;
     buffer.assign(r->bytes.total() / 8 + 1, 0);
-    s = job_prepare(spec, edges.data(), n, capacity, buffer.data(), buffer.size() * 8, &job, &r->job);
+    s = job_prepare(spec, edges.data(), n, capacity, buffer.data(), buffer.size() * 8, &job,
+                    &r->job);
     if (s == Status::kCrossingCapacity && r->retries == 0) {
       capacity = uint32_t(r->job.cut.crossings + r->job.cut.near_misses);
       ++r->retries;
@@ -62,7 +64,8 @@ Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostre
   r->planner_bytes = MotionPlanner::workspace_bytes(spec.effects);
   std::vector<uint64_t> planner_ws(r->planner_bytes / 8 + 1);
   MotionPlanner planner;
-  s = planner.init(spec.machine, spec.effects, job.points, job.n_points, planner_ws.data(), r->planner_bytes);
+  s = planner.init(spec.machine, spec.effects, job.points, job.n_points, planner_ws.data(),
+                   r->planner_bytes);
   if (!ok(s)) return s;
   StepPrep prep;
   s = prep.init(spec.machine, spec.effects);

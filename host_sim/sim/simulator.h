@@ -30,6 +30,7 @@ struct SimReport {
 
 // Runs the whole job and writes the trace to `trace` (may be null). Returns the first status
 // that stopped it.
-Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostream* trace, SimReport* report);
+Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostream* trace,
+                SimReport* report);
 
 }  // namespace haloplot::host

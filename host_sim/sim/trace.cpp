@@ -10,8 +10,9 @@ namespace haloplot::host {
 
 TraceWriter::TraceWriter(std::ostream& out, const Machine& m) : out_(out) {
   out_ << "haloplot-trace 1\ntick_hz " << m.tick_hz << "\nkinematics "
-       << (m.kinematics == Kinematics::kCoreXY ? "corexy" : "cartesian") << "\nsteps " << m.steps_num
-       << '/' << m.steps_den << "\nbacklash " << m.backlash[0] << ' ' << m.backlash[1] << '\n';
+       << (m.kinematics == Kinematics::kCoreXY ? "corexy" : "cartesian") << "\nsteps "
+       << m.steps_num << '/' << m.steps_den << "\nbacklash " << m.backlash[0] << ' '
+       << m.backlash[1] << '\n';
 }
 
 void TraceWriter::flush(uint8_t motor) {
@@ -46,7 +47,9 @@ void TraceWriter::step(uint64_t tick, uint8_t motor, bool backward) {
   r.backward = backward;
 }
 
-void TraceWriter::pen(uint64_t tick, bool down) { out_ << "p " << tick << (down ? " down\n" : " up\n"); }
+void TraceWriter::pen(uint64_t tick, bool down) {
+  out_ << "p " << tick << (down ? " down\n" : " up\n");
+}
 
 void TraceWriter::finish(uint64_t end_tick) {
   flush(0);
@@ -89,7 +92,8 @@ InputError read_trace(std::istream& in, const std::string& name, Trace* out) {
     } else if (f[0] == "m" && f.size() == 7 && parse_int(f[1], 0, 1, &v[0]) &&
                parse_int(f[2], 0, INT64_MAX, &v[1]) && parse_int(f[3], 1, INT64_MAX, &v[2]) &&
                parse_int(f[4], -(int64_t(1) << 40), int64_t(1) << 40, &v[3]) &&
-               parse_int(f[5], -(int64_t(1) << 40), int64_t(1) << 40, &v[4]) && (f[6] == "+" || f[6] == "-")) {
+               parse_int(f[5], -(int64_t(1) << 40), int64_t(1) << 40, &v[4]) &&
+               (f[6] == "+" || f[6] == "-")) {
       // Ticks t0, t0 + dt, t0 + 2 dt + ddt, ...: the gap grows by ddt after each step.
       int64_t t = v[1], gap = v[3];
       for (int64_t i = 0; i < v[2]; ++i) {
@@ -109,9 +113,10 @@ InputError read_trace(std::istream& in, const std::string& name, Trace* out) {
   if (!ended) return {name, 0, "the trace has no 'end' line: truncated?"};
   // Time order; at equal ticks motor 0, motor 1, then the pen: the tick steps first and only
   // then moves on to a pen change.
-  std::stable_sort(out->events.begin(), out->events.end(), [](const StepEvent& a, const StepEvent& b) {
-    return a.tick != b.tick ? a.tick < b.tick : a.motor < b.motor;
-  });
+  std::stable_sort(out->events.begin(), out->events.end(),
+                   [](const StepEvent& a, const StepEvent& b) {
+                     return a.tick != b.tick ? a.tick < b.tick : a.motor < b.motor;
+                   });
   return {};
 }
 

@@ -50,7 +50,7 @@ class TraceWriter {
 };
 
 struct Trace {
-  Machine machine;          // tick_hz, kinematics, steps, backlash
+  Machine machine;                // tick_hz, kinematics, steps, backlash
   std::vector<StepEvent> events;  // every step and pen change, in time order
   uint64_t end_tick = 0;
 };

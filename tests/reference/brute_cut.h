@@ -75,7 +75,7 @@ inline Result brute_cut(const std::vector<haloplot::Edge3>& edges) {
       // depth of p at t: z = za + (zb - za) tn / td; compare p and q by cross-multiplying.
       const i128 zp = i128(p.a.z) * td + i128(p.b.z - p.a.z) * tn;  // over td
       const i128 zq = i128(q.a.z) * ud + i128(q.b.z - q.a.z) * un;  // over ud
-      const i128 lhs = zp * ud, rhs = zq * td;  // < 2^62 * 2^42: fits 128 bits
+      const i128 lhs = zp * ud, rhs = zq * td;                      // < 2^62 * 2^42: fits 128 bits
       if (lhs == rhs) {
         ++r.equal_depth;
         continue;

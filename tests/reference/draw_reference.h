@@ -27,13 +27,17 @@ inline ld dist_point_segment(ld px, ld py, const haloplot::Edge3& q) {
 }
 
 // t-interval of P within distance w of Q (lo > hi if none), from scratch.
-inline void exact_gap_ref(const haloplot::Edge3& p, const haloplot::Edge3& q, ld w, ld* lo, ld* hi) {
+inline void exact_gap_ref(const haloplot::Edge3& p, const haloplot::Edge3& q, ld w, ld* lo,
+                          ld* hi) {
   const ld dx = ld(p.b.x) - p.a.x, dy = ld(p.b.y) - p.a.y;
   auto f = [&](ld t) { return dist_point_segment(p.a.x + t * dx, p.a.y + t * dy, q); };
   ld a = -1, b = 2;  // gaps beyond [0, 1] are clipped anyway
   for (int i = 0; i < 300; ++i) {
     const ld m1 = a + (b - a) / 3, m2 = b - (b - a) / 3;
-    if (f(m1) < f(m2)) b = m2; else a = m1;
+    if (f(m1) < f(m2))
+      b = m2;
+    else
+      a = m1;
   }
   const ld tmin = (a + b) / 2;
   if (f(tmin) > w) {
@@ -42,10 +46,16 @@ inline void exact_gap_ref(const haloplot::Edge3& p, const haloplot::Edge3& q, ld
     return;
   }
   ld l = -1, r = tmin;  // f(l) > w or l is beyond the clip, f(r) <= w
-  for (int i = 0; i < 200; ++i) { const ld m = (l + r) / 2; (f(m) <= w ? r : l) = m; }
+  for (int i = 0; i < 200; ++i) {
+    const ld m = (l + r) / 2;
+    (f(m) <= w ? r : l) = m;
+  }
   *lo = r;
   l = tmin, r = 2;
-  for (int i = 0; i < 200; ++i) { const ld m = (l + r) / 2; (f(m) <= w ? l : r) = m; }
+  for (int i = 0; i < 200; ++i) {
+    const ld m = (l + r) / 2;
+    (f(m) <= w ? l : r) = m;
+  }
   *hi = l;
 }
 
@@ -78,7 +88,9 @@ inline std::vector<RefSpan> draw_ref(const std::vector<haloplot::Edge3>& edges,
     auto& s = signs[e];
     s.push_back({0, +1});  // D2.3: the endpoints
     s.push_back({1, -1});
-    std::sort(s.begin(), s.end(), [](auto a, auto b) { return a.first != b.first ? a.first < b.first : a.second > b.second; });
+    std::sort(s.begin(), s.end(), [](auto a, auto b) {
+      return a.first != b.first ? a.first < b.first : a.second > b.second;
+    });
     int excess = 0;  // D2.5: + count minus - count
     ld start = 0;
     const haloplot::Edge3& p = edges[e];

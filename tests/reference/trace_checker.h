@@ -16,8 +16,8 @@ namespace reference {
 
 struct CheckedTrace {
   uint64_t tick_hz = 0, end = 0;
-  std::vector<int64_t> step_tick[2];   // each motor's step ticks, in order
-  std::vector<int8_t> step_dir[2];     // +1 / -1
+  std::vector<int64_t> step_tick[2];           // each motor's step ticks, in order
+  std::vector<int8_t> step_dir[2];             // +1 / -1
   std::vector<std::pair<uint64_t, bool>> pen;  // (tick, down)
   std::string error;
 };
@@ -31,19 +31,34 @@ inline CheckedTrace parse_trace_independently(const std::string& text) {
     std::istringstream w(line);
     std::string k;
     w >> k;
-    if (k == "tick_hz") w >> t.tick_hz;
-    else if (k == "end") w >> t.end;
-    else if (k == "p") { uint64_t tick; std::string s; w >> tick >> s; t.pen.push_back({tick, s == "down"}); }
-    else if (k == "m") {
-      int m; int64_t t0, count, dt, ddt; char dir;
+    if (k == "tick_hz")
+      w >> t.tick_hz;
+    else if (k == "end")
+      w >> t.end;
+    else if (k == "p") {
+      uint64_t tick;
+      std::string s;
+      w >> tick >> s;
+      t.pen.push_back({tick, s == "down"});
+    } else if (k == "m") {
+      int m;
+      int64_t t0, count, dt, ddt;
+      char dir;
       w >> m >> t0 >> count >> dt >> ddt >> dir;
       int64_t tick = t0, gap = dt;
-      for (int64_t i = 0; i < count; ++i) { ev[m].push_back({tick, dir == '-' ? -1 : 1}); tick += gap; gap += ddt; }
+      for (int64_t i = 0; i < count; ++i) {
+        ev[m].push_back({tick, dir == '-' ? -1 : 1});
+        tick += gap;
+        gap += ddt;
+      }
     }
   }
   for (int m = 0; m < 2; ++m) {
     std::stable_sort(ev[m].begin(), ev[m].end(), [](auto a, auto b) { return a.first < b.first; });
-    for (auto& [tick, d] : ev[m]) { t.step_tick[m].push_back(tick); t.step_dir[m].push_back(d); }
+    for (auto& [tick, d] : ev[m]) {
+      t.step_tick[m].push_back(tick);
+      t.step_dir[m].push_back(d);
+    }
   }
   return t;
 }
@@ -86,9 +101,11 @@ inline CheckResult check_trace(const CheckedTrace& t, const Limits& lim) {
       r.worst_accel_ratio = std::max(r.worst_accel_ratio, d2 / (lim.motor_accel * h * h + 4));
       r.peak_accel = std::max(r.peak_accel, (d2 - 4) / (h * h));
     }
-    if (r.min_gap[m] != UINT64_MAX && (r.min_gap[m] * lim.max_step_rate < t.tick_hz || r.min_gap[m] < lim.min_interval)) {
+    if (r.min_gap[m] != UINT64_MAX &&
+        (r.min_gap[m] * lim.max_step_rate < t.tick_hz || r.min_gap[m] < lim.min_interval)) {
       r.ok = false;
-      r.why += "motor " + std::to_string(m) + " steps too fast (gap " + std::to_string(r.min_gap[m]) + " ticks); ";
+      r.why += "motor " + std::to_string(m) + " steps too fast (gap " +
+               std::to_string(r.min_gap[m]) + " ticks); ";
     }
     for (const auto& [pt, down] : t.pen) {
       (void)down;

@@ -8,7 +8,8 @@
 
 namespace support {
 
-inline std::vector<reference::Record> records_of(const haloplot::CutSet& s, bool include_near = false) {
+inline std::vector<reference::Record> records_of(const haloplot::CutSet& s,
+                                                 bool include_near = false) {
   std::vector<reference::Record> out;
   for (uint32_t e = 0; e < s.n_edges; ++e)
     for (uint32_t k = 0; k < s.count(e); ++k) {

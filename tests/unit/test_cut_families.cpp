@@ -17,7 +17,8 @@ static host::HostCut run(const std::vector<Edge3>& edges, CutParams params = {})
 }
 
 // Agreement with the reference under several grids, including cells aligned to the family.
-static size_t agree(const std::vector<Edge3>& edges, const std::string& label, int32_t aligned_cell = 0) {
+static size_t agree(const std::vector<Edge3>& edges, const std::string& label,
+                    int32_t aligned_cell = 0) {
   const reference::Result ref = reference::brute_cut(edges);
   std::vector<CutParams> variants(3);
   variants[1].cover = CellCover::kBoundingBox;
@@ -32,7 +33,8 @@ static size_t agree(const std::vector<Edge3>& edges, const std::string& label, i
     CHECK_MSG(support::cutset_well_formed(c.set), label + ": malformed CUTSET");
     CHECK_MSG(support::records_of(c.set) == ref.records,
               label + " variant " + std::to_string(v) + ": records differ from the reference (" +
-                  std::to_string(c.set.n_crossings) + " vs " + std::to_string(ref.records.size()) + ")");
+                  std::to_string(c.set.n_crossings) + " vs " + std::to_string(ref.records.size()) +
+                  ")");
     CHECK_MSG(c.stats.equal_depth == ref.equal_depth, label + ": equal-depth count");
   }
   return ref.records.size();
@@ -45,8 +47,10 @@ int main() {
   {  // Axis-parallel lattice: every crossing on a grid corner when cells are 1000 steps.
     std::vector<Edge3> e;
     for (int i = 1; i <= 20; ++i) {
-      e.push_back(edge(0, i * 1000, int32_t(rng.uniform(0, M)), 21000, i * 1000, int32_t(rng.uniform(0, M))));
-      e.push_back(edge(i * 1000, 0, int32_t(rng.uniform(0, M)), i * 1000, 21000, int32_t(rng.uniform(0, M))));
+      e.push_back(edge(0, i * 1000, int32_t(rng.uniform(0, M)), 21000, i * 1000,
+                       int32_t(rng.uniform(0, M))));
+      e.push_back(edge(i * 1000, 0, int32_t(rng.uniform(0, M)), i * 1000, 21000,
+                       int32_t(rng.uniform(0, M))));
     }
     const size_t v = agree(e, "lattice on cell corners", 1000);
     CHECK_EQ(v, size_t{400});  // 20 x 20, minus ties in depth (probability ~0 with 20-bit z)
@@ -72,9 +76,11 @@ int main() {
   {  // Shared endpoints: a fan from one vertex, and a closed polygon: no crossings at all.
     std::vector<Edge3> e;
     for (int i = 0; i < 30; ++i)
-      e.push_back(edge(1000, 1000, 5, int32_t(rng.uniform(0, 50000)), int32_t(rng.uniform(0, 50000)), 99));
+      e.push_back(
+          edge(1000, 1000, 5, int32_t(rng.uniform(0, 50000)), int32_t(rng.uniform(0, 50000)), 99));
     const int32_t px[] = {100, 900, 900, 100}, py[] = {100, 100, 900, 900};
-    for (int i = 0; i < 4; ++i) e.push_back(edge(px[i], py[i], 7, px[(i + 1) % 4], py[(i + 1) % 4], 9));
+    for (int i = 0; i < 4; ++i)
+      e.push_back(edge(px[i], py[i], 7, px[(i + 1) % 4], py[(i + 1) % 4], 9));
     agree(e, "shared endpoints");
     std::vector<Edge3> fan(e.begin(), e.begin() + 30);
     CHECK_EQ(run(fan).set.n_crossings, 0u);
@@ -99,16 +105,21 @@ int main() {
   {  // Near-parallel long edges: full-range edges offset by one step, crossing at tiny angles.
     std::vector<Edge3> e;
     for (int i = 0; i < 30; ++i) {
-      e.push_back(edge(0, 500000 + i, int32_t(rng.uniform(0, M)), M, 500000 + 30 - i, int32_t(rng.uniform(0, M))));
+      e.push_back(edge(0, 500000 + i, int32_t(rng.uniform(0, M)), M, 500000 + 30 - i,
+                       int32_t(rng.uniform(0, M))));
       e.push_back(edge(0, i, 100, M, M - i, 200 + i));
     }
     agree(e, "near-parallel long edges", 4096);
   }
   {  // Coordinates at 0 and 2^20 - 1: the border and both diagonals of the whole range.
-    std::vector<Edge3> e = {edge(0, 0, 0, M, M, M),     edge(0, M, M, M, 0, 0),
-                            edge(0, 0, M, M, 0, 0),     edge(0, M, 0, M, M, M),
-                            edge(0, 0, 0, 0, M, M),     edge(M, 0, M, M, M, 0),
-                            edge(0, M / 2, 0, M, M / 2 + 1, 5), edge(M / 2, 0, M, M / 2 + 1, M, M - 3)};
+    std::vector<Edge3> e = {edge(0, 0, 0, M, M, M),
+                            edge(0, M, M, M, 0, 0),
+                            edge(0, 0, M, M, 0, 0),
+                            edge(0, M, 0, M, M, M),
+                            edge(0, 0, 0, 0, M, M),
+                            edge(M, 0, M, M, M, 0),
+                            edge(0, M / 2, 0, M, M / 2 + 1, 5),
+                            edge(M / 2, 0, M, M / 2 + 1, M, M - 3)};
     agree(e, "range ends", 1);
     // By hand: the borders only touch the diagonals at their ends; the six proper crossings
     // are 0-1, 6-0, 6-1, 6-7, 7-0, 7-1. 0 and 1 meet at the centre at equal depth M/2.
@@ -133,7 +144,8 @@ int main() {
   {  // Crossings exactly on cell borders (cells 1024 steps): diagonals through border points.
     std::vector<Edge3> e;
     for (int i = 0; i < 30; ++i) {
-      const int32_t bx = 1024 * int32_t(rng.uniform(1, 20)), by = 1024 * int32_t(rng.uniform(1, 20));
+      const int32_t bx = 1024 * int32_t(rng.uniform(1, 20)),
+                    by = 1024 * int32_t(rng.uniform(1, 20));
       const int32_t d = int32_t(rng.uniform(1, 900));
       e.push_back(edge(bx - d, by - d, 10 * i, bx + d, by + d, 10 * i + 5));
       e.push_back(edge(bx - d, by + d, 10 * i + 3, bx + d, by - d, 10 * i + 1));

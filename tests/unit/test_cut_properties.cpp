@@ -58,13 +58,15 @@ int main() {
     {  // DRAW commutes with mirroring, up to the half-step rounding of each end
       std::vector<Edge3> mx = edges;
       for (auto& e : mx) e.a.x = kCoordMax - e.a.x, e.b.x = kCoordMax - e.b.x;
-      const auto a = support::plot(edges, 300, HaloMode::kPaper), b = support::plot(mx, 300, HaloMode::kPaper);
+      const auto a = support::plot(edges, 300, HaloMode::kPaper),
+                 b = support::plot(mx, 300, HaloMode::kPaper);
       CHECK_EQ(a.spans.size(), b.spans.size());
       bool close = a.spans.size() == b.spans.size();
       for (size_t i = 0; close && i < a.spans.size(); ++i)
-        close = a.spans[i].edge == b.spans[i].edge && std::abs(kCoordMax - a.spans[i].x0 - b.spans[i].x0) <= 1 &&
-                std::abs(kCoordMax - a.spans[i].x1 - b.spans[i].x1) <= 1 && a.spans[i].y0 == b.spans[i].y0 &&
-                a.spans[i].y1 == b.spans[i].y1;
+        close = a.spans[i].edge == b.spans[i].edge &&
+                std::abs(kCoordMax - a.spans[i].x0 - b.spans[i].x0) <= 1 &&
+                std::abs(kCoordMax - a.spans[i].x1 - b.spans[i].x1) <= 1 &&
+                a.spans[i].y0 == b.spans[i].y0 && a.spans[i].y1 == b.spans[i].y1;
       CHECK_MSG(close, "DRAW of the mirrored scene is not the mirrored drawing");
     }
   }

@@ -9,7 +9,8 @@
 
 using namespace haloplot;
 
-static void compare(const std::vector<Edge3>& edges, const CutParams& params, const std::string& label) {
+static void compare(const std::vector<Edge3>& edges, const CutParams& params,
+                    const std::string& label) {
   const reference::Result ref = reference::brute_cut(edges);
   host::HostCut got;
   const Status s = host::host_cut(edges, params, &got);
@@ -33,14 +34,15 @@ int main() {
     int64_t l_millionths;
   };
   // Rows of the paper's EDGE table (L in millionths of the screen).
-  const Row rows[] = {{100, 100000}, {300, 100000}, {1000, 10000},  {1000, 30000},
-                      {1000, 100000}, {3000, 10000}, {3000, 30000},  {10000, 3000},
-                      {10000, 10000}, {30000, 3000}, {50000, 1000},  {50000, 10000}};
+  const Row rows[] = {{100, 100000},  {300, 100000}, {1000, 10000}, {1000, 30000},
+                      {1000, 100000}, {3000, 10000}, {3000, 30000}, {10000, 3000},
+                      {10000, 10000}, {30000, 3000}, {50000, 1000}, {50000, 10000}};
   uint64_t seed = 1;
   for (const Row& r : rows) {
     const auto edges = scenes::paper_random(r.n, r.l_millionths, seed++);
     CutParams p;
-    compare(edges, p, "paper N=" + std::to_string(r.n) + " L=" + std::to_string(r.l_millionths) + "e-6");
+    compare(edges, p,
+            "paper N=" + std::to_string(r.n) + " L=" + std::to_string(r.l_millionths) + "e-6");
   }
   // Other covers and grid sizes on one mid-size scene: the answer must not depend on them.
   const auto edges = scenes::paper_random(3000, 30000, 99);

@@ -39,8 +39,9 @@ static void compare_spans(const std::vector<Span>& got, const std::vector<refere
     const auto& gs = g[e];
     if (gs.size() != ws.size()) {
       if (++bad <= 3)
-        CHECK_MSG(false, label + ": edge " + std::to_string(e) + " has " + std::to_string(gs.size()) +
-                             " spans, reference " + std::to_string(ws.size()));
+        CHECK_MSG(false, label + ": edge " + std::to_string(e) + " has " +
+                             std::to_string(gs.size()) + " spans, reference " +
+                             std::to_string(ws.size()));
       continue;
     }
     for (size_t i = 0; i < ws.size(); ++i) {
@@ -51,7 +52,8 @@ static void compare_spans(const std::vector<Span>& got, const std::vector<refere
                              " off by " + std::to_string(double(err)) + " steps");
     }
   }
-  CHECK_MSG(bad == 0 && g.size() == w.size(), label + ": " + std::to_string(bad) + " edges disagree");
+  CHECK_MSG(bad == 0 && g.size() == w.size(),
+            label + ": " + std::to_string(bad) + " edges disagree");
 }
 
 int main() {
@@ -96,26 +98,45 @@ int main() {
     for (uint32_t i = 0; i < edges.size(); ++i)
       for (uint32_t j = i + 1; j < edges.size(); ++j) {
         __int128 a, b;
-        if (reference::crossing(edges[i], edges[j], &a, &b) && reference::crossing(edges[j], edges[i], &a, &b))
+        if (reference::crossing(edges[i], edges[j], &a, &b) &&
+            reference::crossing(edges[j], edges[i], &a, &b))
           continue;  // proper crossings are not near misses
         // closest endpoint-to-segment pair, exact: squared distance = num / den
-        struct Cand { __int128 num, den; const Point3* v; const Edge3* s; __int128 k, len2; bool on_i; };
+        struct Cand {
+          __int128 num, den;
+          const Point3* v;
+          const Edge3* s;
+          __int128 k, len2;
+          bool on_i;
+        };
         Cand best{-1, 1, nullptr, nullptr, 0, 1, true};
         const Point3* ends[4] = {&edges[i].a, &edges[i].b, &edges[j].a, &edges[j].b};
         for (int k = 0; k < 4; ++k) {
           const Edge3& s = k < 2 ? edges[j] : edges[i];
-          const __int128 dx = s.b.x - s.a.x, dy = s.b.y - s.a.y, wx = ends[k]->x - s.a.x, wy = ends[k]->y - s.a.y;
+          const __int128 dx = s.b.x - s.a.x, dy = s.b.y - s.a.y, wx = ends[k]->x - s.a.x,
+                         wy = ends[k]->y - s.a.y;
           const __int128 len2 = dx * dx + dy * dy, dt = wx * dx + wy * dy;
           Cand c{0, 1, ends[k], &s, 0, len2, k < 2};
-          if (len2 == 0 || dt <= 0) { c.num = wx * wx + wy * wy; c.k = 0; }
-          else if (dt >= len2) { const __int128 ux = ends[k]->x - s.b.x, uy = ends[k]->y - s.b.y; c.num = ux * ux + uy * uy; c.k = len2; }
-          else { const __int128 cr = dx * wy - dy * wx; c.num = cr * cr; c.den = len2; c.k = dt; }
+          if (len2 == 0 || dt <= 0) {
+            c.num = wx * wx + wy * wy;
+            c.k = 0;
+          } else if (dt >= len2) {
+            const __int128 ux = ends[k]->x - s.b.x, uy = ends[k]->y - s.b.y;
+            c.num = ux * ux + uy * uy;
+            c.k = len2;
+          } else {
+            const __int128 cr = dx * wy - dy * wx;
+            c.num = cr * cr;
+            c.den = len2;
+            c.k = dt;
+          }
           if (best.num < 0 || c.num * best.den < best.num * c.den) best = c;
         }
         if (best.num > __int128(reach) * reach * best.den) continue;
         const __int128 l2 = best.len2 == 0 ? 1 : best.len2;
         const __int128 zv = __int128(best.v->z) * l2;
-        const __int128 zf = __int128(best.s->a.z) * l2 + __int128(best.s->b.z - best.s->a.z) * (best.len2 == 0 ? 0 : best.k);
+        const __int128 zf = __int128(best.s->a.z) * l2 +
+                            __int128(best.s->b.z - best.s->a.z) * (best.len2 == 0 ? 0 : best.k);
         if (zv == zf) continue;
         const bool v_behind = zv < zf;
         const bool i_behind = best.on_i ? v_behind : !v_behind;
@@ -129,8 +150,8 @@ int main() {
     for (uint32_t e = 0; e < c.set.n_edges; ++e)
       for (uint32_t k = 0; k < c.set.count(e); ++k)
         if (c.set.begin(e)[k].near_miss()) got.insert({e, c.set.begin(e)[k].front_edge()});
-    CHECK_MSG(got == want, "near misses, reach " + std::to_string(reach) + ": " + std::to_string(got.size()) +
-                               " vs " + std::to_string(want.size()));
+    CHECK_MSG(got == want, "near misses, reach " + std::to_string(reach) + ": " +
+                               std::to_string(got.size()) + " vs " + std::to_string(want.size()));
     CHECK(support::cutset_well_formed(c.set));
   }
   // 4. The modes agree where they should: right-angle-ish crossings far from the front edge's
@@ -140,14 +161,17 @@ int main() {
     const int32_t cx = 500000, cy = 500000, w = int32_t(r.uniform(1, 200));
     const int32_t len = 10000;
     const int32_t ox = int32_t(r.uniform(-3000, 3000));
-    const std::vector<Edge3> e = {scenes::edge(cx - len, cy + ox / 10, 0, cx + len, cy - ox / 10, 0),
-                                  scenes::edge(cx + ox, cy - len, 9, cx - ox, cy + len, 9)};
+    const std::vector<Edge3> e = {
+        scenes::edge(cx - len, cy + ox / 10, 0, cx + len, cy - ox / 10, 0),
+        scenes::edge(cx + ox, cy - len, 9, cx - ox, cy + len, 9)};
     const auto a = support::plot(e, w, HaloMode::kPaper), b = support::plot(e, w, HaloMode::kExact);
     CHECK_EQ(a.spans.size(), b.spans.size());
     if (a.spans.size() != b.spans.size()) continue;
     for (size_t k = 0; k < a.spans.size(); ++k)
-      CHECK(std::abs(a.spans[k].x0 - b.spans[k].x0) <= 1 && std::abs(a.spans[k].x1 - b.spans[k].x1) <= 1 &&
-            std::abs(a.spans[k].y0 - b.spans[k].y0) <= 1 && std::abs(a.spans[k].y1 - b.spans[k].y1) <= 1);
+      CHECK(std::abs(a.spans[k].x0 - b.spans[k].x0) <= 1 &&
+            std::abs(a.spans[k].x1 - b.spans[k].x1) <= 1 &&
+            std::abs(a.spans[k].y0 - b.spans[k].y0) <= 1 &&
+            std::abs(a.spans[k].y1 - b.spans[k].y1) <= 1);
   }
   return check::finish("draw_reference");
 }

@@ -17,13 +17,15 @@ static InputError parse(const std::string& text, std::vector<Edge3>* out) {
 }
 
 static bool error_is(const InputError& e, int line, const std::string& fragment) {
-  return e.failed() && e.line == line && e.message().find("s.edges:" + std::to_string(line) + ": ") == 0 &&
+  return e.failed() && e.line == line &&
+         e.message().find("s.edges:" + std::to_string(line) + ": ") == 0 &&
          e.what.find(fragment) != std::string::npos;
 }
 
 int main() {
   std::vector<Edge3> e;
-  CHECK(!parse("# comment\n\n1 2 3 4 5 6\r\n  7 8 9 10 11 12", &e).failed());  // CRLF, no final newline
+  CHECK(!parse("# comment\n\n1 2 3 4 5 6\r\n  7 8 9 10 11 12", &e)
+             .failed());  // CRLF, no final newline
   CHECK_EQ(e.size(), size_t{2});
   CHECK_EQ(e[1].b.z, 12);
   CHECK(!parse("", &e).failed() && e.empty());
@@ -34,7 +36,8 @@ int main() {
   CHECK(error_is(parse("-1 2 3 4 5 6\n", &e), 1, "field 1"));
   CHECK(error_is(parse("1.5 2 3 4 5 6\n", &e), 1, "field 1"));
   CHECK(error_is(parse("99999999999999999999 2 3 4 5 6\n", &e), 1, "field 1"));
-  CHECK(read_edges_file("/nonexistent/x.edges", &e).message() == "/nonexistent/x.edges: cannot open");
+  CHECK(read_edges_file("/nonexistent/x.edges", &e).message() ==
+        "/nonexistent/x.edges: cannot open");
 
   // .cut round trip: write a real CUTSET, read it back, get the same records and index.
   const auto edges = scenes::paper_random(1500, 50000, 4);
@@ -53,7 +56,8 @@ int main() {
   CHECK_EQ(lc.set.reach, 30);
   bool same = lc.set.n_crossings == c.set.n_crossings;
   for (uint32_t i = 0; same && i < c.set.n_crossings; ++i)
-    same = lc.crossings[i].behind == c.set.crossings[i].behind && lc.crossings[i].front == c.set.crossings[i].front &&
+    same = lc.crossings[i].behind == c.set.crossings[i].behind &&
+           lc.crossings[i].front == c.set.crossings[i].front &&
            lc.crossings[i].t == c.set.crossings[i].t;
   for (uint32_t i = 0; same && i <= c.set.n_edges; ++i) same = lc.first[i] == c.set.first[i];
   CHECK_MSG(same, ".cut did not round-trip");

@@ -17,11 +17,15 @@ struct Guarded {
   std::vector<uint8_t> bytes;
   size_t size;
   explicit Guarded(size_t n) : bytes(n + 2 * kGuard + 8, 0xAB), size(n) {}
-  void* data() { return bytes.data() + kGuard + 8 - (reinterpret_cast<uintptr_t>(bytes.data() + kGuard) % 8); }
+  void* data() {
+    return bytes.data() + kGuard + 8 - (reinterpret_cast<uintptr_t>(bytes.data() + kGuard) % 8);
+  }
   bool guards_intact() {
     const uint8_t* d = static_cast<uint8_t*>(data());
-    for (const uint8_t* p = bytes.data(); p < d; ++p) if (*p != 0xAB) return false;
-    for (const uint8_t* p = d + size; p < bytes.data() + bytes.size(); ++p) if (*p != 0xAB) return false;
+    for (const uint8_t* p = bytes.data(); p < d; ++p)
+      if (*p != 0xAB) return false;
+    for (const uint8_t* p = d + size; p < bytes.data() + bytes.size(); ++p)
+      if (*p != 0xAB) return false;
     return true;
   }
 };
@@ -48,21 +52,21 @@ int main() {
   {  // scratch one byte short
     Guarded scratch(plan.scratch_bytes - 1), store(cutset_bytes(n, uint32_t(v)));
     CutSet cs;
-    CHECK(run_cut(plan, edges.data(), scratch.data(), scratch.size, store.data(), store.size, &cs, nullptr) ==
-          Status::kWorkspaceTooSmall);
+    CHECK(run_cut(plan, edges.data(), scratch.data(), scratch.size, store.data(), store.size, &cs,
+                  nullptr) == Status::kWorkspaceTooSmall);
   }
   {  // storage without room for the index
     Guarded scratch(plan.scratch_bytes), store(cutset_bytes(n, 0) - 4);
     CutSet cs;
-    CHECK(run_cut(plan, edges.data(), scratch.data(), scratch.size, store.data(), store.size, &cs, nullptr) ==
-          Status::kCutsetStorageTooSmall);
+    CHECK(run_cut(plan, edges.data(), scratch.data(), scratch.size, store.data(), store.size, &cs,
+                  nullptr) == Status::kCutsetStorageTooSmall);
   }
   {  // one record short: a named error, the needed count, an empty CUTSET, guards intact
     Guarded scratch(plan.scratch_bytes), store(cutset_bytes(n, uint32_t(v - 1)));
     CutSet cs;
     CutStats st;
-    CHECK(run_cut(plan, edges.data(), scratch.data(), scratch.size, store.data(), store.size, &cs, &st) ==
-          Status::kCrossingCapacity);
+    CHECK(run_cut(plan, edges.data(), scratch.data(), scratch.size, store.data(), store.size, &cs,
+                  &st) == Status::kCrossingCapacity);
     CHECK_EQ(st.crossings, uint64_t(v));
     CHECK_EQ(cs.n_crossings, 0u);
     CHECK(cs.first == nullptr);
@@ -72,7 +76,8 @@ int main() {
   CutSet cs;
   CutStats st;
   {  // exactly enough: success, guards intact
-    CHECK(ok(run_cut(plan, edges.data(), scratch.data(), scratch.size, store.data(), store.size, &cs, &st)));
+    CHECK(ok(run_cut(plan, edges.data(), scratch.data(), scratch.size, store.data(), store.size,
+                     &cs, &st)));
     CHECK_EQ(size_t{cs.n_crossings}, v);
     CHECK(scratch.guards_intact() && store.guards_intact());
   }
@@ -81,20 +86,23 @@ int main() {
   Collect first;
   {
     Guarded ds(draw_scratch_bytes(cs));
-    CHECK(ok(draw(cs, DrawParams{200, HaloMode::kPaper}, ds.data(), ds.size, SpanSink{&Collect::emit, &first}, nullptr)));
+    CHECK(ok(draw(cs, DrawParams{200, HaloMode::kPaper}, ds.data(), ds.size,
+                  SpanSink{&Collect::emit, &first}, nullptr)));
     CHECK(ds.guards_intact());
     Guarded small(draw_scratch_bytes(cs) - 1);
     Collect none;
-    CHECK(draw(cs, DrawParams{200, HaloMode::kPaper}, small.data(), small.size, SpanSink{&Collect::emit, &none}, nullptr) ==
-          Status::kWorkspaceTooSmall);
+    CHECK(draw(cs, DrawParams{200, HaloMode::kPaper}, small.data(), small.size,
+               SpanSink{&Collect::emit, &none}, nullptr) == Status::kWorkspaceTooSmall);
     CHECK(none.spans.empty());
   }
   {  // Re-draw: wipe CUT's scratch, draw at another width, then back: same spans as before.
     std::memset(scratch.data(), 0x5A, scratch.size);
     Guarded ds(draw_scratch_bytes(cs));
     Collect other, again;
-    CHECK(ok(draw(cs, DrawParams{50, HaloMode::kExact}, ds.data(), ds.size, SpanSink{&Collect::emit, &other}, nullptr)));
-    CHECK(ok(draw(cs, DrawParams{200, HaloMode::kPaper}, ds.data(), ds.size, SpanSink{&Collect::emit, &again}, nullptr)));
+    CHECK(ok(draw(cs, DrawParams{50, HaloMode::kExact}, ds.data(), ds.size,
+                  SpanSink{&Collect::emit, &other}, nullptr)));
+    CHECK(ok(draw(cs, DrawParams{200, HaloMode::kPaper}, ds.data(), ds.size,
+                  SpanSink{&Collect::emit, &again}, nullptr)));
     CHECK(other.spans.size() != first.spans.size());
     CHECK_EQ(again.spans.size(), first.spans.size());
     bool same = again.spans.size() == first.spans.size();
@@ -106,8 +114,8 @@ int main() {
     Guarded ds(draw_scratch_bytes(cs));
     Collect limited;
     limited.limit = 10;
-    CHECK(draw(cs, DrawParams{200, HaloMode::kPaper}, ds.data(), ds.size, SpanSink{&Collect::emit, &limited}, nullptr) ==
-          Status::kSinkFull);
+    CHECK(draw(cs, DrawParams{200, HaloMode::kPaper}, ds.data(), ds.size,
+               SpanSink{&Collect::emit, &limited}, nullptr) == Status::kSinkFull);
     CHECK_EQ(limited.spans.size(), size_t{10});
   }
   {  // Bad input and parameters are named.
@@ -122,8 +130,8 @@ int main() {
     CHECK(plan_cut(edges.data(), n, neg, &p) == Status::kBadParameter);
     Guarded ds(draw_scratch_bytes(cs));
     Collect none;
-    CHECK(draw(cs, DrawParams{-1, HaloMode::kPaper}, ds.data(), ds.size, SpanSink{&Collect::emit, &none}, nullptr) ==
-          Status::kBadParameter);
+    CHECK(draw(cs, DrawParams{-1, HaloMode::kPaper}, ds.data(), ds.size,
+               SpanSink{&Collect::emit, &none}, nullptr) == Status::kBadParameter);
     CHECK(std::strcmp(status_name(Status::kCrossingCapacity), "crossing capacity exceeded") == 0);
   }
   {  // An empty scene is fine and draws nothing.

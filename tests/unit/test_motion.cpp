@@ -48,7 +48,8 @@ static JobSpec base_spec(Kinematics k, uint32_t num, uint32_t den) {
 }
 
 // Squared distance from p to segment ab is <= r^2 (exact integers).
-static bool near_segment(int64_t px, int64_t py, int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t r) {
+static bool near_segment(int64_t px, int64_t py, int64_t ax, int64_t ay, int64_t bx, int64_t by,
+                         int64_t r) {
   const int64_t dx = bx - ax, dy = by - ay, wx = px - ax, wy = py - ay, l2 = dx * dx + dy * dy;
   const int64_t t = dx * wx + dy * wy;
   if (l2 == 0 || t <= 0) return wx * wx + wy * wy <= r * r;
@@ -63,7 +64,8 @@ struct SegmentIndex {
   std::map<std::pair<int64_t, int64_t>, std::vector<Segment2>> grid;
   void add(const Segment2& s) {
     for (int64_t cx = std::min(s.x0, s.x1) / cell - 1; cx <= std::max(s.x0, s.x1) / cell + 1; ++cx)
-      for (int64_t cy = std::min(s.y0, s.y1) / cell - 1; cy <= std::max(s.y0, s.y1) / cell + 1; ++cy)
+      for (int64_t cy = std::min(s.y0, s.y1) / cell - 1; cy <= std::max(s.y0, s.y1) / cell + 1;
+           ++cy)
         grid[{cx, cy}].push_back(s);
   }
   bool near(int64_t x, int64_t y, int64_t r) const {
@@ -91,9 +93,13 @@ static void check_replay(const Run& run, const std::string& label) {
     for (size_t i = 0; i < stroke.size(); ++i) {
       ++points;
       if (!spans.near(stroke[i].x, stroke[i].y, S)) ++stray;  // drew nothing else
-      if (i > 0) drawn.add(Segment2{int32_t(stroke[i - 1].x), int32_t(stroke[i - 1].y), int32_t(stroke[i].x), int32_t(stroke[i].y)});
+      if (i > 0)
+        drawn.add(Segment2{int32_t(stroke[i - 1].x), int32_t(stroke[i - 1].y), int32_t(stroke[i].x),
+                           int32_t(stroke[i].y)});
     }
-    if (stroke.size() == 1) drawn.add(Segment2{int32_t(stroke[0].x), int32_t(stroke[0].y), int32_t(stroke[0].x), int32_t(stroke[0].y)});
+    if (stroke.size() == 1)
+      drawn.add(Segment2{int32_t(stroke[0].x), int32_t(stroke[0].y), int32_t(stroke[0].x),
+                         int32_t(stroke[0].y)});
   }
   for (const Segment2& s : run.report.spans) {  // every span, sampled every step, was drawn
     const int64_t len = std::max(std::abs(s.x1 - s.x0), std::abs(s.y1 - s.y0));
@@ -124,9 +130,15 @@ int main() {
   const std::vector<Edge3> scene = cube_array(cubes);
 
   // 1. Replay reproduces the spans, for both kinematics and several step ratios.
-  struct Case { Kinematics k; uint32_t num, den; bool backlash; };
-  const Case cases[] = {{Kinematics::kCartesian, 1, 1, false}, {Kinematics::kCoreXY, 1, 1, false},
-                        {Kinematics::kCoreXY, 16, 5, false},   {Kinematics::kCartesian, 2, 1, true},
+  struct Case {
+    Kinematics k;
+    uint32_t num, den;
+    bool backlash;
+  };
+  const Case cases[] = {{Kinematics::kCartesian, 1, 1, false},
+                        {Kinematics::kCoreXY, 1, 1, false},
+                        {Kinematics::kCoreXY, 16, 5, false},
+                        {Kinematics::kCartesian, 2, 1, true},
                         {Kinematics::kCoreXY, 1, 1, true}};
   for (const Case& c : cases) {
     JobSpec spec = base_spec(c.k, c.num, c.den);
@@ -134,14 +146,17 @@ int main() {
     if (c.backlash) spec.machine.backlash[0] = 7, spec.machine.backlash[1] = 3;
     const Run run = sim(spec, scene);
     const std::string label = std::string(c.k == Kinematics::kCoreXY ? "corexy " : "cartesian ") +
-                              std::to_string(c.num) + "/" + std::to_string(c.den) + (c.backlash ? " backlash" : "");
+                              std::to_string(c.num) + "/" + std::to_string(c.den) +
+                              (c.backlash ? " backlash" : "");
     CHECK_MSG(ok(run.status), label + ": " + status_name(run.status));
     check_replay(run, label);
     // The independent checker: rates, floor, acceleration (junction deviation off below).
     const auto parsed = reference::parse_trace_independently(run.trace);
-    const auto res = reference::check_trace(parsed, limits_of(spec.machine, c.k == Kinematics::kCoreXY,
-                                                              spec.machine.pen_travel_ticks + spec.machine.pen_settle_ticks));
-    CHECK_MSG(res.min_gap[0] * spec.machine.max_step_rate >= spec.machine.tick_hz, label + ": step rate");
+    const auto res = reference::check_trace(
+        parsed, limits_of(spec.machine, c.k == Kinematics::kCoreXY,
+                          spec.machine.pen_travel_ticks + spec.machine.pen_settle_ticks));
+    CHECK_MSG(res.min_gap[0] * spec.machine.max_step_rate >= spec.machine.tick_hz,
+              label + ": step rate");
     CHECK_MSG(res.dwell_violations == 0, label + ": steps during pen dwell");
   }
 
@@ -157,7 +172,8 @@ int main() {
     reference::Limits lim = limits_of(spec.machine, k == Kinematics::kCoreXY, 25000);
     const auto res = reference::check_trace(parsed, lim);
     CHECK_MSG(res.ok, "acceleration check: " + res.why);
-    CHECK_MSG(res.peak_accel > 0.5 * spec.machine.accel, "the checker sees the planned acceleration");
+    CHECK_MSG(res.peak_accel > 0.5 * spec.machine.accel,
+              "the checker sees the planned acceleration");
     lim.motor_accel /= 4;
     CHECK_MSG(!reference::check_trace(parsed, lim).ok, "the checker fails a quarter of the limit");
     // Junction deviation only ever saves time.
@@ -178,7 +194,8 @@ int main() {
       x = nx, y = ny;
     }
     walk.push_back(scenes::edge(x, y, 0, 0, 0, 0));
-    JobSpec spec = base_spec(trial % 2 ? Kinematics::kCoreXY : Kinematics::kCartesian, trial % 3 ? 7 : 1, trial % 3 ? 3 : 1);
+    JobSpec spec = base_spec(trial % 2 ? Kinematics::kCoreXY : Kinematics::kCartesian,
+                             trial % 3 ? 7 : 1, trial % 3 ? 3 : 1);
     spec.drawing = DrawingEffect::kAllEdges;
     spec.effects.acceleration = trial % 4 != 3;
     const Run run = sim(spec, walk);
@@ -191,7 +208,8 @@ int main() {
     CHECK_EQ(run.report.final_motors[1], want[1]);
     const auto parsed = reference::parse_trace_independently(run.trace);
     int64_t sum[2] = {0, 0};
-    for (int m = 0; m < 2; ++m) for (int8_t d : parsed.step_dir[m]) sum[m] += d;
+    for (int m = 0; m < 2; ++m)
+      for (int8_t d : parsed.step_dir[m]) sum[m] += d;
     CHECK_EQ(sum[0], int64_t(want[0]));
     CHECK_EQ(sum[1], int64_t(want[1]));
   }
@@ -199,7 +217,8 @@ int main() {
     std::vector<Edge3> loop;
     int32_t px = 0, py = 0;
     for (int i = 0; i < 25; ++i) {
-      const int32_t nx = i == 24 ? 0 : int32_t(rng.uniform(0, 20000)), ny = i == 24 ? 0 : int32_t(rng.uniform(0, 20000));
+      const int32_t nx = i == 24 ? 0 : int32_t(rng.uniform(0, 20000)),
+                    ny = i == 24 ? 0 : int32_t(rng.uniform(0, 20000));
       loop.push_back(scenes::edge(px, py, 0, nx, ny, 0));
       px = nx, py = ny;
     }
@@ -226,7 +245,9 @@ int main() {
     const Run bare = sim(all, scene);
     CHECK_EQ(bare.report.job.cut_runs, 0u);
     CHECK_EQ(bare.report.job.draw_runs, 0u);
-    CHECK_EQ(bare.report.bytes.cut_scratch + bare.report.bytes.cutset + bare.report.bytes.draw_scratch, size_t{0});
+    CHECK_EQ(
+        bare.report.bytes.cut_scratch + bare.report.bytes.cutset + bare.report.bytes.draw_scratch,
+        size_t{0});
     CHECK_EQ(bare.report.planner_bytes, size_t{0});
     CHECK_EQ(bare.report.planner.replans, uint64_t{0});
     CHECK_EQ(bare.report.planner.junctions, uint64_t{0});
@@ -242,7 +263,8 @@ int main() {
     CHECK_EQ(rich.report.job.cut_runs, 1u);
     CHECK_EQ(rich.report.job.draw_runs, 1u);
     CHECK(rich.report.bytes.cut_scratch > 0 && rich.report.bytes.cutset > 0);
-    CHECK(rich.report.planner_bytes > 0 && rich.report.planner.replans > 0 && rich.report.planner.junctions > 0);
+    CHECK(rich.report.planner_bytes > 0 && rich.report.planner.replans > 0 &&
+          rich.report.planner.junctions > 0);
     CHECK(rich.report.planner.dwell_ticks > 0);
     CHECK(rich.report.prep.backlash_takeups > 0);
     // Pen servo time is the only difference between these two.

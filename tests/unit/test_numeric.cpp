@@ -32,8 +32,17 @@ static u128 isqrt_ref(u128 v) {
 
 int main() {
   scenes::Rng r(42);
-  const int64_t extremes[] = {0, 1, -1, (int64_t(1) << 62), -(int64_t(1) << 62), INT64_MAX, -INT64_MAX,
-                              (int64_t(1) << 41) - 1, -((int64_t(1) << 41) - 1), 0x7fffffff, -0x80000000LL};
+  const int64_t extremes[] = {0,
+                              1,
+                              -1,
+                              (int64_t(1) << 62),
+                              -(int64_t(1) << 62),
+                              INT64_MAX,
+                              -INT64_MAX,
+                              (int64_t(1) << 41) - 1,
+                              -((int64_t(1) << 41) - 1),
+                              0x7fffffff,
+                              -0x80000000LL};
   // Multiplication, addition, comparison: extremes crossed with random values.
   for (int i = 0; i < 20000; ++i) {
     const int64_t a = i < 121 ? extremes[i % 11] : int64_t(r.next());
@@ -46,7 +55,7 @@ int main() {
     CHECK_MSG((compare(p, q) < 0) == (as_i128(p) < as_i128(q)), "compare");
     const uint64_t ua = r.next(), ub = r.next();
     CHECK_MSG((u128(mul_u64(ua, ub).hi) << 64 | mul_u64(ua, ub).lo) == u128(ua) * ub, "mul_u64");
-    const uint64_t small = r.next() >> 24;                   // < 2^40
+    const uint64_t small = r.next() >> 24;                  // < 2^40
     const Wide w = mul_u64(r.next() >> 1, r.next() >> 40);  // < 2^87: product < 2^127
     CHECK_MSG(as_i128(mul_wide_u64(w, small)) == as_i128(w) * i128(small), "mul_wide_u64");
   }
@@ -89,21 +98,22 @@ int main() {
   const auto edges = scenes::paper_random(200, 500000, 3);
   int crossings = 0;
   for (size_t i = 0; i < edges.size(); ++i)
-  for (size_t j = i + 1; j < edges.size(); ++j) {
-    const Edge3 &p = edges[i], &q = edges[j];
-    const CrossingTest c = test_crossing(p, q);
-    if (!c.crosses) continue;
-    ++crossings;
-    const uint32_t t32 = frac_q32_small(c.tn, c.den);
-    const int32_t ex = lerp_round(p.a.x, p.b.x - p.a.x, t32);
-    const int32_t ey = lerp_round(p.a.y, p.b.y - p.a.y, t32);
-    // exact x * den = a.x * den + dx * tn
-    const i128 xd = i128(p.a.x) * c.den + i128(p.b.x - p.a.x) * c.tn;
-    const i128 yd = i128(p.a.y) * c.den + i128(p.b.y - p.a.y) * c.tn;
-    const i128 errx = (i128(ex) * c.den - xd) * 4096, erry = (i128(ey) * c.den - yd) * 4096;
-    const i128 bound = i128(c.den) * (2048 + 2);  // (1/2 + 2^-11) * 2^12 * den
-    CHECK_MSG(errx <= bound && -errx <= bound && erry <= bound && -erry <= bound, "rounding bound");
-  }
+    for (size_t j = i + 1; j < edges.size(); ++j) {
+      const Edge3 &p = edges[i], &q = edges[j];
+      const CrossingTest c = test_crossing(p, q);
+      if (!c.crosses) continue;
+      ++crossings;
+      const uint32_t t32 = frac_q32_small(c.tn, c.den);
+      const int32_t ex = lerp_round(p.a.x, p.b.x - p.a.x, t32);
+      const int32_t ey = lerp_round(p.a.y, p.b.y - p.a.y, t32);
+      // exact x * den = a.x * den + dx * tn
+      const i128 xd = i128(p.a.x) * c.den + i128(p.b.x - p.a.x) * c.tn;
+      const i128 yd = i128(p.a.y) * c.den + i128(p.b.y - p.a.y) * c.tn;
+      const i128 errx = (i128(ex) * c.den - xd) * 4096, erry = (i128(ey) * c.den - yd) * 4096;
+      const i128 bound = i128(c.den) * (2048 + 2);  // (1/2 + 2^-11) * 2^12 * den
+      CHECK_MSG(errx <= bound && -errx <= bound && erry <= bound && -erry <= bound,
+                "rounding bound");
+    }
   CHECK(crossings > 1000);
   return check::finish("numeric");
 }

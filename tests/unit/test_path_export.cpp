@@ -3,9 +3,9 @@
 // back, in a small reader written here, to the same strokes.
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 #include "../check.h"
 #include "../support/scenes.h"
@@ -25,8 +25,8 @@ static std::vector<PathPoint> plan(const std::vector<Segment2>& spans, PathStats
   std::vector<uint64_t> ws(path_plan_bytes(uint32_t(spans.size())) / 8 + 1);
   std::vector<PathPoint> out(path_points_max(uint32_t(spans.size())));
   uint32_t n = 0;
-  CHECK(ok(plan_path(spans.data(), uint32_t(spans.size()), 0, 0, ws.data(), ws.size() * 8, out.data(),
-                     uint32_t(out.size()), &n, st)));
+  CHECK(ok(plan_path(spans.data(), uint32_t(spans.size()), 0, 0, ws.data(), ws.size() * 8,
+                     out.data(), uint32_t(out.size()), &n, st)));
   out.resize(n);
   return out;
 }
@@ -40,13 +40,15 @@ static void covers(const std::vector<Segment2>& spans, const std::string& label)
     if (pts[i].pen_down) ++got[undirected(pts[i - 1].x, pts[i - 1].y, pts[i].x, pts[i].y)];
   CHECK_MSG(got == want, label + ": planned strokes differ from the spans");
   CHECK_MSG(!pts.empty() && pts[0].pen_down == 0, label + ": starts with travel");
-  CHECK_MSG(st.pen_up_length <= st.naive_pen_up_length, label + ": planned travel longer than naive");
+  CHECK_MSG(st.pen_up_length <= st.naive_pen_up_length,
+            label + ": planned travel longer than naive");
 }
 
 int main() {
   scenes::Rng r(21);
   {  // Chains in shuffled order and mixed directions become one stroke.
-    const std::vector<Segment2> chain = {{200, 0, 300, 50}, {100, 0, 200, 0}, {300, 50, 400, 0}, {100, 0, 0, 0}};
+    const std::vector<Segment2> chain = {
+        {200, 0, 300, 50}, {100, 0, 200, 0}, {300, 50, 400, 0}, {100, 0, 0, 0}};
     PathStats st;
     const auto pts = plan(chain, &st);
     CHECK_EQ(st.polylines, 1u);
@@ -59,8 +61,10 @@ int main() {
       const int32_t x = int32_t(r.uniform(0, 5000)), y = int32_t(r.uniform(0, 5000));
       s.push_back({x, y, int32_t(x + r.uniform(-300, 300)), int32_t(y + r.uniform(-300, 300))});
     }
-    for (int i = 0; i < 12; ++i) s.push_back({2500, 2500, int32_t(r.uniform(0, 5000)), int32_t(r.uniform(0, 5000))});
-    for (int i = 0; i < 8; ++i) s.push_back({1000 + 100 * i, 1000, 1000 + 100 * (i + 1) % 800, 1000 + 50 * (i % 2)});
+    for (int i = 0; i < 12; ++i)
+      s.push_back({2500, 2500, int32_t(r.uniform(0, 5000)), int32_t(r.uniform(0, 5000))});
+    for (int i = 0; i < 8; ++i)
+      s.push_back({1000 + 100 * i, 1000, 1000 + 100 * (i + 1) % 800, 1000 + 50 * (i % 2)});
     s.push_back({77, 77, 77, 77});
     s.push_back(s[5]);
     covers(s, "random families");
@@ -109,11 +113,13 @@ int main() {
           if (word[0] == 'Z') down = std::stod(word.substr(1)) < 1.0;
         }
         if ((cmd == "G0" || cmd == "G1") && has_xy)
-          back.push_back(PathPoint{int32_t(std::lround(x * 80)), int32_t(std::lround(y * 80)), uint8_t(down)});
+          back.push_back(
+              PathPoint{int32_t(std::lround(x * 80)), int32_t(std::lround(y * 80)), uint8_t(down)});
       }
       bool same = back.size() == pts.size();
       for (size_t i = 0; same && i < pts.size(); ++i)
-        same = back[i].x == pts[i].x && back[i].y == pts[i].y && back[i].pen_down == pts[i].pen_down;
+        same =
+            back[i].x == pts[i].x && back[i].y == pts[i].y && back[i].pen_down == pts[i].pen_down;
       CHECK_MSG(same, std::string("G-code parse-back") + (by_z ? " (Z pen)" : " (M3/M5)"));
     }
     std::ostringstream h;
@@ -129,11 +135,13 @@ int main() {
       std::istringstream nums(ins.substr(2));
       std::string a, b;
       while (std::getline(nums, a, ',') && std::getline(nums, b, ','))
-        back.push_back(PathPoint{int32_t(std::stol(a)) * 2, int32_t(std::stol(b)) * 2, uint8_t(down)});
+        back.push_back(
+            PathPoint{int32_t(std::stol(a)) * 2, int32_t(std::stol(b)) * 2, uint8_t(down)});
     }
     bool same = back.size() == pts.size();
     for (size_t i = 0; same && i < pts.size(); ++i)  // 40 units/mm vs 80 steps/mm: within 1 step
-      same = std::abs(back[i].x - pts[i].x) <= 1 && std::abs(back[i].y - pts[i].y) <= 1 && back[i].pen_down == pts[i].pen_down;
+      same = std::abs(back[i].x - pts[i].x) <= 1 && std::abs(back[i].y - pts[i].y) <= 1 &&
+             back[i].pen_down == pts[i].pen_down;
     CHECK_MSG(same, "HPGL parse-back");
   }
   return check::finish("path_export");
