@@ -22,19 +22,35 @@ namespace {
 
 size_t align8(size_t v) { return (v + 7) & ~size_t{7}; }
 
-// Scratch layout: cell_start[cells + 1], then cell_edges[cell_pairs]. After the cell loop the
-// same bytes hold next[n_edges] for grouping, so the scratch is the larger of the two.
-size_t scratch_for(uint32_t cells, uint32_t cell_pairs, uint32_t n_edges) {
-  const size_t grid_part = align8((size_t{cells} + 1) * 4) + size_t{cell_pairs} * 4;
-  const size_t group_part = size_t{n_edges} * 4;
-  return grid_part > group_part ? grid_part : group_part;
+// What a cell list holds per (cell, edge) pair: the edge's index, or a compact copy of its
+// projected endpoints with the index (CutParams::compact_cells). Both read like an edge.
+struct IndexEntry {
+  uint32_t edge;
+  static IndexEntry make(const Edge3&, uint32_t i) { return IndexEntry{i}; }
+};
+struct Point2 {
+  int32_t x, y;
+};
+struct CompactEntry {
+  Point2 a, b;
+  uint32_t edge;
+  static CompactEntry make(const Edge3& e, uint32_t i) {
+    return CompactEntry{{e.a.x, e.a.y}, {e.b.x, e.b.y}, i};
+  }
+};
+inline const Edge3& geometry(const IndexEntry& x, const Edge3* edges) { return edges[x.edge]; }
+inline const CompactEntry& geometry(const CompactEntry& x, const Edge3*) { return x; }
+
+size_t entry_bytes(const CutParams& p) {
+  return p.compact_cells ? sizeof(CompactEntry) : sizeof(IndexEntry);
 }
 
-bool boxes_overlap(const Edge3& p, const Edge3& q, int32_t reach) {
-  return min_i32(p.a.x, p.b.x) <= max_i32(q.a.x, q.b.x) + reach &&
-         min_i32(q.a.x, q.b.x) <= max_i32(p.a.x, p.b.x) + reach &&
-         min_i32(p.a.y, p.b.y) <= max_i32(q.a.y, q.b.y) + reach &&
-         min_i32(q.a.y, q.b.y) <= max_i32(p.a.y, p.b.y) + reach;
+// Scratch layout: cell_start[cells + 1], then the cell lists (cell_pairs entries). After the
+// cell loop the same bytes hold next[n_edges] for grouping, so the scratch is the larger.
+size_t scratch_for(uint32_t cells, uint32_t cell_pairs, uint32_t n_edges, size_t entry) {
+  const size_t grid_part = align8((size_t{cells} + 1) * 4) + size_t{cell_pairs} * entry;
+  const size_t group_part = size_t{n_edges} * 4;
+  return grid_part > group_part ? grid_part : group_part;
 }
 
 struct Recorder {
@@ -52,23 +68,38 @@ struct Recorder {
   }
 };
 
-// C6.2-C6.5 for one pair inside cell c; ep < eq.
-void test_pair(const Grid& g, uint32_t c, const Edge3* edges, uint32_t ep, uint32_t eq,
-               int32_t reach, Recorder& rec, CutStats& st) {
-  const Edge3& p = edges[ep];
-  const Edge3& q = edges[eq];
-  if (!boxes_overlap(p, q, reach)) return;
+// The cell being scanned: its index and its half-open extent [x0, x0 + side) x [y0, y0 + side).
+struct CellBox {
+  uint32_t index;
+  int64_t x0, y0, side;
+};
+
+// Does the cell hold the crossing point a + d * n / den (per axis)? Exact, and division-free:
+// x0 <= a + d n / den < x0 + side  <=>  (x0 - a) den <= d n < (x0 + side - a) den, den > 0.
+// Every product stays below 2^21 * 2^41 = 2^62.
+inline bool owns(const CellBox& cb, int32_t ax, int32_t dx, int32_t ay, int32_t dy, int64_t n,
+                 int64_t den) {
+  const int64_t px = int64_t{dx} * n, py = int64_t{dy} * n;
+  return (cb.x0 - ax) * den <= px && px < (cb.x0 + cb.side - ax) * den &&
+         (cb.y0 - ay) * den <= py && py < (cb.y0 + cb.side - ay) * den;
+}
+
+// C6.2-C6.5 for one pair inside a cell whose boxes overlap; edge ei < edge ej. The projected
+// test runs on the cell entries; depths and near misses go back to the full edges.
+template <typename Entry>
+void test_pair(const Grid& g, const CellBox& cb, const Edge3* edges, const Entry& ei,
+               const Entry& ej, int32_t reach, Recorder& rec, CutStats& st) {
+  const auto& p = geometry(ei, edges);
+  const auto& q = geometry(ej, edges);
+  const uint32_t ep = ei.edge, eq = ej.edge;
   const CrossingTest x = test_crossing(p, q);
   if (x.crosses) {
-    // C6.3: report the crossing only in the cell that holds it. The floor of the exact
-    // crossing point decides the cell exactly, because cell borders lie on integers.
-    const int32_t fx = floor_along(p.a.x, p.b.x - p.a.x, x.tn, x.den);
-    const int32_t fy = floor_along(p.a.y, p.b.y - p.a.y, x.tn, x.den);
-    if (g.cell_of(fx, fy) != c) {
+    // C6.3: report the crossing only in the cell that holds it, decided exactly.
+    if (!owns(cb, p.a.x, p.b.x - p.a.x, p.a.y, p.b.y - p.a.y, x.tn, x.den)) {
       ++st.rejected;
       return;
     }
-    const int depth = compare_depth_at_crossing(p, q, x);  // C6.4
+    const int depth = compare_depth_at_crossing(edges[ep], edges[eq], x);  // C6.4
     if (depth == 0) {
       ++st.equal_depth;
       return;
@@ -81,13 +112,73 @@ void test_pair(const Grid& g, uint32_t c, const Edge3* edges, uint32_t ep, uint3
     return;
   }
   if (reach <= 0) return;
-  const NearMiss m = test_near_miss(p, q, reach);
-  if (!m.found || g.cell_of(m.ex, m.ey) != c) return;
+  const NearMiss m = test_near_miss(edges[ep], edges[eq], reach);
+  if (!m.found || g.cell_of(m.ex, m.ey) != cb.index) return;
   ++st.near_misses;
   if (m.p_behind)
     rec.add(ep, eq | Crossing::kNearBit, m.t_behind);
   else
     rec.add(eq, ep | Crossing::kNearBit, m.t_behind);
+}
+
+// C3-C6 for one kind of cell entry.
+//
+// C3-C5 are a two-pass counting sort: count edges per cell, turn counts into end offsets,
+// then drop each edge into its cell from the back. Edges are walked in descending order so
+// every cell's list comes out ascending. No comparison sort, no linked lists.
+template <typename Entry>
+void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recorder& rec,
+                   CutStats& st) {
+  const uint32_t n = plan.n_edges;
+  const Grid& g = plan.grid;
+  const uint32_t cells = g.cells();
+  uint32_t* cell_start = static_cast<uint32_t*>(scratch);
+  Entry* list = reinterpret_cast<Entry*>(cell_start + ((size_t{cells} + 1 + 1) & ~size_t{1}));
+  for (uint32_t c = 0; c <= cells; ++c) cell_start[c] = 0;
+  for (uint32_t i = 0; i < n; ++i)
+    for_each_cell(g, edges[i], plan.params.cover, plan.params.reach,
+                  [&](uint32_t c) { ++cell_start[c + 1]; });
+  for (uint32_t c = 0; c < cells; ++c) cell_start[c + 1] += cell_start[c];
+  for (uint32_t i = n; i-- > 0;) {
+    const Entry e = Entry::make(edges[i], i);
+    for_each_cell(g, edges[i], plan.params.cover, plan.params.reach,
+                  [&](uint32_t c) { list[--cell_start[c + 1]] = e; });
+  }
+  // Each cell_start[c + 1] now holds the start of cell c; shift back into place.
+  for (uint32_t c = 0; c < cells; ++c) cell_start[c] = cell_start[c + 1];
+  cell_start[cells] = plan.cell_pairs;
+  st.cell_pairs = plan.cell_pairs;
+  if (plan.params.phase) plan.params.phase(plan.params.phase_context, CutPhase::kCellsFilled);
+
+  // C6: every pair inside every cell.
+  const int32_t r = plan.params.reach;
+  uint32_t col = 0, row = 0;
+  for (uint32_t c = 0; c < cells; ++c) {
+    const uint32_t begin = cell_start[c], end = cell_start[c + 1];
+    const uint64_t k = end - begin;
+    st.pairs_tested += k * (k - 1) / 2;
+    const CellBox cb{c, g.ox + int64_t{col} * g.cell, g.oy + int64_t{row} * g.cell, g.cell};
+    for (uint32_t i = begin; i + 1 < end; ++i) {
+      // P's box once per row, then Q's box against it: a cheap reject before the exact
+      // test, since most pairs sharing a cell do not even overlap.
+      const auto& p = geometry(list[i], edges);
+      const int32_t px0 = min_i32(p.a.x, p.b.x) - r, px1 = max_i32(p.a.x, p.b.x) + r;
+      const int32_t py0 = min_i32(p.a.y, p.b.y) - r, py1 = max_i32(p.a.y, p.b.y) + r;
+      for (uint32_t j = i + 1; j < end; ++j) {
+        const auto& q = geometry(list[j], edges);
+        if (max_i32(q.a.x, q.b.x) < px0 || min_i32(q.a.x, q.b.x) > px1 ||
+            max_i32(q.a.y, q.b.y) < py0 || min_i32(q.a.y, q.b.y) > py1)
+          continue;
+        test_pair(g, cb, edges, list[i], list[j], r, rec, st);
+      }
+    }
+    if (plan.params.progress && (c & 0x3ffu) == 0)
+      plan.params.progress(plan.params.progress_context, c, cells);
+    if (++col == g.nx) {
+      col = 0;
+      ++row;
+    }
+  }
 }
 
 }  // namespace
@@ -107,7 +198,7 @@ Status plan_cut(const Edge3* edges, uint32_t n, const CutParams& params, CutPlan
     for_each_cell(p.grid, edges[i], params.cover, params.reach, [&](uint32_t) { ++pairs; });
   if (pairs > 0xffffffffu) return Status::kCellPairOverflow;
   p.cell_pairs = static_cast<uint32_t>(pairs);
-  p.scratch_bytes = scratch_for(p.grid.cells(), p.cell_pairs, n);
+  p.scratch_bytes = scratch_for(p.grid.cells(), p.cell_pairs, n, entry_bytes(params));
   *plan = p;
   return Status::kOk;
 }
@@ -116,45 +207,19 @@ Status run_cut(const CutPlan& plan, const Edge3* edges, void* scratch, size_t sc
                void* cutset_storage, size_t cutset_storage_bytes, CutSet* out, CutStats* stats) {
   CutStats st;
   const uint32_t n = plan.n_edges;
-  const Grid& g = plan.grid;
-  const uint32_t cells = g.cells();
+  const uint32_t cells = plan.grid.cells();
   if (scratch_bytes < plan.scratch_bytes) return Status::kWorkspaceTooSmall;
   if (cutset_storage_bytes < cutset_bytes(n, 0)) return Status::kCutsetStorageTooSmall;
-
-  // C3-C5 as a two-pass counting sort: count edges per cell, turn counts into end offsets,
-  // then drop each edge into its cell from the back. Edges are walked in descending order so
-  // every cell's list comes out ascending. No comparison sort, no linked lists.
-  uint32_t* cell_start = static_cast<uint32_t*>(scratch);
-  uint32_t* cell_edges = cell_start + ((size_t{cells} + 1 + 1) & ~size_t{1});
-  for (uint32_t c = 0; c <= cells; ++c) cell_start[c] = 0;
-  for (uint32_t i = 0; i < n; ++i)
-    for_each_cell(g, edges[i], plan.params.cover, plan.params.reach,
-                  [&](uint32_t c) { ++cell_start[c + 1]; });
-  for (uint32_t c = 0; c < cells; ++c) cell_start[c + 1] += cell_start[c];
-  for (uint32_t i = n; i-- > 0;)
-    for_each_cell(g, edges[i], plan.params.cover, plan.params.reach,
-                  [&](uint32_t c) { cell_edges[--cell_start[c + 1]] = i; });
-  // Each cell_start[c + 1] now holds the start of cell c; shift back into place.
-  for (uint32_t c = 0; c < cells; ++c) cell_start[c] = cell_start[c + 1];
-  cell_start[cells] = plan.cell_pairs;
-  st.cell_pairs = plan.cell_pairs;
 
   uint32_t* first = static_cast<uint32_t*>(cutset_storage);
   Crossing* records = reinterpret_cast<Crossing*>(first + n + 1);
   Recorder rec{records, cutset_capacity(n, cutset_storage_bytes)};
-
-  // C6: every pair inside every cell.
-  for (uint32_t c = 0; c < cells; ++c) {
-    const uint32_t begin = cell_start[c], end = cell_start[c + 1];
-    for (uint32_t i = begin; i < end; ++i)
-      for (uint32_t j = i + 1; j < end; ++j) {
-        ++st.pairs_tested;
-        test_pair(g, c, edges, cell_edges[i], cell_edges[j], plan.params.reach, rec, st);
-      }
-    if (plan.params.progress && (c & 0x3ffu) == 0)
-      plan.params.progress(plan.params.progress_context, c, cells);
-  }
+  if (plan.params.compact_cells)
+    fill_and_test<CompactEntry>(plan, edges, scratch, rec, st);
+  else
+    fill_and_test<IndexEntry>(plan, edges, scratch, rec, st);
   if (plan.params.progress) plan.params.progress(plan.params.progress_context, cells, cells);
+  if (plan.params.phase) plan.params.phase(plan.params.phase_context, CutPhase::kPairsTested);
 
   if (stats) *stats = st;
   if (rec.overflow) {

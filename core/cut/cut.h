@@ -18,12 +18,23 @@ namespace haloplot {
 // Called now and then from the cell loop; the host tool draws a progress line with it.
 using ProgressFn = void (*)(void* context, uint32_t cells_done, uint32_t cells_total);
 
+// Phase boundaries inside run_cut(), for benchmarks that split the time as the paper's
+// table does (T1: preprocessing = plan + cell lists; T2: intersections = pairs + grouping).
+enum class CutPhase : uint8_t { kCellsFilled, kPairsTested };
+using PhaseFn = void (*)(void* context, CutPhase phase);
+
 struct CutParams {
   GridParams grid;
   CellCover cover = CellCover::kExact;
+  // Cell lists hold a copy of each edge's projected endpoints (20 bytes per (cell, edge) pair)
+  // instead of its index (4 bytes), so the pair loop reads memory in order rather than
+  // jumping through the edge array: faster, at 16 more bytes per pair. Off for tight RAM.
+  bool compact_cells = true;
   int32_t reach = 0;  // also record near misses up to this many steps apart (exact halo); 0: off
   ProgressFn progress = nullptr;
   void* progress_context = nullptr;
+  PhaseFn phase = nullptr;  // optional
+  void* phase_context = nullptr;
 };
 
 struct CutPlan {

@@ -6,12 +6,13 @@ namespace haloplot {
 
 uint32_t average_length(const Edge3* edges, uint32_t n) {
   if (n == 0) return 0;
-  uint64_t sum = 0;  // n < 2^32 edges of length < 2^21: the sum fits in 53 bits
-  for (uint32_t i = 0; i < n; ++i) {
+  const uint32_t stride = n > kLengthSample ? n / kLengthSample : 1;
+  uint64_t sum = 0, count = 0;  // at most 2^32 lengths below 2^21: fits in 53 bits
+  for (uint32_t i = 0; i < n; i += stride, ++count) {
     const int64_t dx = edges[i].b.x - edges[i].a.x, dy = edges[i].b.y - edges[i].a.y;
     sum += isqrt_u64(static_cast<uint64_t>(dx * dx + dy * dy));
   }
-  return static_cast<uint32_t>(sum / n);
+  return static_cast<uint32_t>(sum / count);
 }
 
 namespace {
@@ -54,9 +55,10 @@ Grid choose_grid(const Edge3* edges, uint32_t n, const GridParams& params) {
     // Grow by about 1/8 per step: close to the largest grid that fits the cap.
     cell += cell / 8 + 1;
   }
+  if (cell > kCoordLimit) cell = kCoordLimit;  // one cell covers the whole range already
   g.ox = xmin;
   g.oy = ymin;
-  g.cell = cell;
+  g.set_cell(cell);
   g.nx = static_cast<uint32_t>((width + cell - 1) / cell);
   g.ny = static_cast<uint32_t>((height + cell - 1) / cell);
   return g;

@@ -18,16 +18,25 @@ enum class CellCover : uint8_t {
 
 struct Grid {
   int32_t ox = 0, oy = 0;  // lower-left corner of cell (0, 0), in steps
-  int32_t cell = 1;        // side of a cell, in steps
+  int32_t cell = 1;        // side of a cell, in steps, at most 2^20
   uint32_t nx = 1, ny = 1;
+  // floor(v / cell) as (v * reciprocal) >> 42 with reciprocal = ceil(2^42 / cell): a multiply
+  // instead of a division in the hottest loops. Exact for 0 <= v < 2^21: the product exceeds
+  // v / cell by v * e / 2^42 < 2^-21 (0 <= e < 1), less than the 1 / cell that a quotient
+  // needs to move, since cell <= 2^20; and v * reciprocal < 2^21 * 2^42 fits 64 bits.
+  // tests/unit/test_numeric checks every boundary for many cell sides.
+  uint64_t reciprocal = uint64_t{1} << 42;
 
+  void set_cell(int32_t side) {
+    cell = side;
+    reciprocal = ((uint64_t{1} << 42) + uint64_t(side) - 1) / uint64_t(side);
+  }
+  uint32_t divide(uint32_t v) const {
+    return static_cast<uint32_t>((uint64_t{v} * reciprocal) >> 42);
+  }
   uint32_t cells() const { return nx * ny; }
-  uint32_t col(int32_t x) const {
-    return static_cast<uint32_t>(x - ox) / static_cast<uint32_t>(cell);
-  }
-  uint32_t row(int32_t y) const {
-    return static_cast<uint32_t>(y - oy) / static_cast<uint32_t>(cell);
-  }
+  uint32_t col(int32_t x) const { return divide(static_cast<uint32_t>(x - ox)); }
+  uint32_t row(int32_t y) const { return divide(static_cast<uint32_t>(y - oy)); }
   uint32_t cell_of(int32_t x, int32_t y) const { return row(y) * nx + col(x); }
 };
 
@@ -53,26 +62,30 @@ void for_each_cell(const Grid& g, const Edge3& e, CellCover cover, int32_t reach
   const int32_t ymax_scene = g.oy + static_cast<int32_t>(g.ny) * g.cell - 1;
   const uint32_t c0 = g.col(max_i32(x0 - reach, g.ox));
   const uint32_t c1 = g.col(min_i32(x1 + reach, xmax_scene));
-  if (cover == CellCover::kBoundingBox || reach > 0 || c0 == c1) {
-    const uint32_t r0 = g.row(max_i32(min_i32(y0, y1) - reach, g.oy));
-    const uint32_t r1 = g.row(min_i32(max_i32(y0, y1) + reach, ymax_scene));
+  const uint32_t r0 = g.row(max_i32(min_i32(y0, y1) - reach, g.oy));
+  const uint32_t r1 = g.row(min_i32(max_i32(y0, y1) + reach, ymax_scene));
+  // One column or one row: the bounding box is exact, and no division is needed.
+  if (cover == CellCover::kBoundingBox || reach > 0 || c0 == c1 || r0 == r1) {
     for (uint32_t r = r0; r <= r1; ++r)
       for (uint32_t c = c0; c <= c1; ++c) visit(r * g.nx + c);
     return;
   }
   // Exact walk: in column c the segment spans x in [xl, xh]; y is monotone in x, so its rows
   // lie between the rows of y(xl) and y(xh). Using the closed column (xh on the boundary)
-  // adds at most a cell the segment only touches at a grid corner: safe.
+  // adds at most a cell the segment only touches at a grid corner: safe. Only the interior
+  // column borders need a division: the ends are the endpoints themselves.
   const int64_t dx = x1 - x0, dy = y1 - y0;  // dx > 0 here, since c0 != c1
+  int32_t ya = y0;                           // floor(y) where the segment enters column c
   for (uint32_t c = c0; c <= c1; ++c) {
-    const int32_t xl = c == c0 ? x0 : g.ox + static_cast<int32_t>(c) * g.cell;
-    const int32_t xh = c == c1 ? x1 : g.ox + static_cast<int32_t>(c + 1) * g.cell;
-    // floor(y) at both ends; |dy * (x - x0)| < 2^41, so int64 is exact.
-    const int32_t ya = y0 + static_cast<int32_t>(floor_div(dy * (xl - x0), dx));
-    const int32_t yb = y0 + static_cast<int32_t>(floor_div(dy * (xh - x0), dx));
-    const uint32_t r0 = g.row(min_i32(ya, yb));
-    const uint32_t r1 = g.row(max_i32(ya, yb));
-    for (uint32_t r = r0; r <= r1; ++r) visit(r * g.nx + c);
+    int32_t yb = y1;
+    if (c != c1) {  // floor(y) on the border x = ox + (c + 1) * cell; |dy * (x - x0)| < 2^41
+      const int64_t xh = g.ox + static_cast<int64_t>(c + 1) * g.cell;
+      yb = y0 + static_cast<int32_t>(floor_div(dy * (xh - x0), dx));
+    }
+    const uint32_t lo = g.row(min_i32(ya, yb));
+    const uint32_t hi = g.row(max_i32(ya, yb));
+    for (uint32_t r = lo; r <= hi; ++r) visit(r * g.nx + c);
+    ya = yb;
   }
 }
 
@@ -85,7 +98,9 @@ struct GridParams {
 // Choose the grid for a scene (paper C1-C2). Edges must already be range-checked.
 Grid choose_grid(const Edge3* edges, uint32_t n, const GridParams& params);
 
-// Average projected length in steps (floor), from exact integer square roots.
+// Average projected length in steps (floor), from exact integer square roots over a fixed
+// stride sample of at most kLengthSample edges: the grid needs an estimate, not every edge.
+inline constexpr uint32_t kLengthSample = 4096;
 uint32_t average_length(const Edge3* edges, uint32_t n);
 
 }  // namespace haloplot

@@ -50,10 +50,10 @@ Gap disc_gap(const Edge3& behind, int64_t cx, int64_t cy, int32_t r) {
 
 }  // namespace
 
-uint64_t length_q16_ceil(int64_t dx, int64_t dy) {
-  const Wide l2 = mul_u64(static_cast<uint64_t>(dx * dx + dy * dy), uint64_t{1} << 32);
-  uint64_t s = isqrt(l2);
-  if (mul_u64(s, s) < l2) ++s;
+uint64_t length_q10_ceil(int64_t dx, int64_t dy) {
+  const uint64_t l2 = static_cast<uint64_t>(dx * dx + dy * dy) << 20;
+  uint64_t s = isqrt_u64(l2);
+  if (s * s < l2) ++s;
   return s;
 }
 
@@ -63,9 +63,9 @@ Gap paper_gap(const Edge3& behind, const Edge3& front, uint32_t t32, int32_t hal
   int64_t d = cross(pdx, pdy, qdx, qdy);  // nonzero: the edges cross properly
   if (d < 0) d = -d;
   if (d == 0) return kWhole;  // cannot happen for a CUT crossing; stay safe for bad input
-  // half-gap in t = W * |dq| / |d|; numerator < 2^20 * 2^37, denominator < 2^57.
-  const int64_t num = int64_t{halo} * static_cast<int64_t>(length_q16_ceil(qdx, qdy));
-  const int64_t h = q32_ceil_clamped(num, d << 16);  // d > 0 here
+  // half-gap in t = W * |dq| / |d|; numerator < 2^20 * 2^31.5, denominator < 2^51.
+  const int64_t num = int64_t{halo} * static_cast<int64_t>(length_q10_ceil(qdx, qdy));
+  const int64_t h = q32_ceil_clamped(num, d << 10);  // d > 0 here
   // The exact crossing lies in [t32, t32 + 1) / 2^32.
   return Gap{int64_t{t32} - h, int64_t{t32} + 1 + h};
 }
@@ -80,11 +80,11 @@ Gap exact_gap(const Edge3& behind, const Edge3& front, int32_t halo) {
   if (q2 != 0) {
     // The rectangle part of the stadium: within W of Q's line, and between the normals
     // through Q's endpoints. Distances to the line are cross / |dq|, so compare
-    // cross * 2^16 with W * |dq| * 2^16 (|dq| rounded up).
-    const int64_t width = int64_t{halo} * static_cast<int64_t>(length_q16_ceil(qdx, qdy));
+    // cross * 2^10 with W * |dq| * 2^10 (|dq| rounded up).
+    const int64_t width = int64_t{halo} * static_cast<int64_t>(length_q10_ceil(qdx, qdy));
     // Scale by multiplying: a left shift of a negative value is undefined in C++17.
-    constexpr int64_t kQ16 = int64_t{1} << 16;
-    const Gap strip = linear_band(cross(qdx, qdy, wx, wy) * kQ16, cross(qdx, qdy, pdx, pdy) * kQ16,
+    constexpr int64_t kQ10 = int64_t{1} << 10;
+    const Gap strip = linear_band(cross(qdx, qdy, wx, wy) * kQ10, cross(qdx, qdy, pdx, pdy) * kQ10,
                                   -width, width);
     const Gap slab = linear_band(dot(qdx, qdy, wx, wy), dot(qdx, qdy, pdx, pdy), 0, q2);
     g = hull(g, intersect(strip, slab));

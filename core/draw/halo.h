@@ -9,8 +9,9 @@
 //           for near-parallel edges, ends where Q ends, and also covers near misses.
 //
 // Rounding: gap ends are rounded outward (start down, end up) to the Q0.32 grid, and the
-// irrational lengths use integer square roots rounded outward, so a gap never comes out
-// smaller than the exact one; it is larger by less than 2^-11 steps plus W * 2^-16 / sin(theta).
+// irrational lengths use integer square roots rounded up, so a gap never comes out smaller
+// than the exact one; it is larger by less than 2^-11 steps plus W * 2^-10 / (|dq| sin(theta))
+// steps (the Q10 length of the front edge).
 #pragma once
 #include <stdint.h>
 
@@ -31,7 +32,8 @@ Gap paper_gap(const Edge3& behind, const Edge3& front, uint32_t t32, int32_t hal
 // The exact gap: positions of `behind` within distance `halo` of `front` (may be empty).
 Gap exact_gap(const Edge3& behind, const Edge3& front, int32_t halo);
 
-// |(dx, dy)| in Q16.16, rounded up: an upper bound within 2^-16 of the true length.
-uint64_t length_q16_ceil(int64_t dx, int64_t dy);
+// |(dx, dy)| in Q10, rounded up: an upper bound within 2^-10 steps of the true length.
+// dx^2 + dy^2 < 2^42, so (dx^2 + dy^2) << 20 < 2^62 and a 64-bit root suffices.
+uint64_t length_q10_ceil(int64_t dx, int64_t dy);
 
 }  // namespace haloplot

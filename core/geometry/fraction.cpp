@@ -10,6 +10,20 @@ uint32_t frac_q32_small(int64_t num, int64_t den) {
 }
 
 uint32_t frac_q32(int64_t num, int64_t den) {
+  if (den < (int64_t{1} << 41)) return frac_q32_small(num, den);
+  if (den < (int64_t{1} << 51)) {
+    // Three exact long-division steps of 12, 12 and 8 bits: rem < den < 2^51, so every
+    // shifted remainder stays below 2^63.
+    uint64_t rem = static_cast<uint64_t>(num), q = 0;
+    const uint64_t d = static_cast<uint64_t>(den);
+    constexpr int kSteps[3] = {12, 12, 8};
+    for (int bits : kSteps) {
+      rem <<= bits;
+      q = (q << bits) | (rem / d);
+      rem %= d;
+    }
+    return static_cast<uint32_t>(q);
+  }
   uint64_t rem = static_cast<uint64_t>(num);
   const uint64_t d = static_cast<uint64_t>(den);
   uint32_t q = 0;

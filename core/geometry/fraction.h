@@ -24,8 +24,8 @@ inline int64_t floor_div(int64_t a, int64_t b) {
 // takes 22 bits (num << 22 < 2^63), the second the remaining 10 from the remainder.
 uint32_t frac_q32_small(int64_t num, int64_t den);
 
-// floor(num * 2^32 / den) for 0 <= num < den < 2^62, by restoring long division: no hardware
-// division at all, 32 steps, exact.
+// floor(num * 2^32 / den) for 0 <= num < den < 2^62, exact: two or three hardware divisions
+// when den < 2^51, restoring long division (32 shift-and-subtract steps) above that.
 uint32_t frac_q32(int64_t num, int64_t den);
 
 // floor(num / den * 2^32) for den > 0 and |num| < 2^61; exact for t in [-1, 2), saturating

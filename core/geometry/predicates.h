@@ -25,7 +25,9 @@ struct CrossingTest {
 // other's line. A zero side value means an endpoint touches the other line (endpoint touch,
 // T-junction, shared vertex, collinear overlap, or a zero-length edge), and none of those is
 // a crossing under the contract, so strict signs are exactly the rule.
-inline CrossingTest test_crossing(const Edge3& p, const Edge3& q) {
+// E is any edge-like type with a.x, a.y, b.x, b.y: Edge3, or CUT's compact cell entries.
+template <typename E>
+inline CrossingTest test_crossing(const E& p, const E& q) {
   CrossingTest r;
   const int64_t pdx = p.b.x - p.a.x, pdy = p.b.y - p.a.y;
   const int64_t qdx = q.b.x - q.a.x, qdy = q.b.y - q.a.y;

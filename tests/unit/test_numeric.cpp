@@ -2,9 +2,11 @@
 // 128-bit limbs, integer square roots, Q0.32 fractions, and the documented rounding bound of
 // emitted positions: |emitted - exact| <= 1/2 + 2^-11 steps.
 #include <cstdint>
+#include <string>
 
 #include "../check.h"
 #include "../support/scenes.h"
+#include "cut/grid.h"
 #include "geometry/fraction.h"
 #include "geometry/predicates.h"
 #include "geometry/wide.h"
@@ -76,6 +78,23 @@ int main() {
   for (int i = 0; i < 20000; ++i) {
     const uint64_t v = r.next() >> (r.next() % 64);
     CHECK_MSG(u128(isqrt_u64(v)) == isqrt_ref(v), "isqrt_u64");
+  }
+  // The grid's multiply-shift division equals integer division for every offset below 2^21,
+  // for every cell side up to 2^20: all boundaries k * cell - 1, k * cell and random values.
+  for (int32_t cell : {1, 2, 3, 7, 10, 255, 1000, 10486, 65537, 123457, 524287, 1 << 20}) {
+    Grid g;
+    g.set_cell(cell);
+    bool same = true;
+    for (uint64_t k = 0; k * uint64_t(cell) < (1u << 21) && same; k += 1 + k / 4096) {
+      const uint32_t v = uint32_t(k * uint64_t(cell));
+      same = g.divide(v) == v / uint32_t(cell) &&
+             (v == 0 || g.divide(v - 1) == (v - 1) / uint32_t(cell));
+    }
+    for (int i = 0; i < 20000 && same; ++i) {
+      const uint32_t v = uint32_t(r.next() % (1u << 21));
+      same = g.divide(v) == v / uint32_t(cell);
+    }
+    CHECK_MSG(same, "grid division, cell " + std::to_string(cell));
   }
   // Q0.32 fractions: both division routines give floor(num * 2^32 / den) exactly.
   for (int i = 0; i < 50000; ++i) {
