@@ -139,6 +139,7 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
     for_each_cell(g, edges[i], plan.params.cover, plan.params.reach,
                   [&](uint32_t c) { ++cell_start[c + 1]; });
   for (uint32_t c = 0; c < cells; ++c) cell_start[c + 1] += cell_start[c];
+  const uint32_t total = cell_start[cells];
   for (uint32_t i = n; i-- > 0;) {
     const Entry e = Entry::make(edges[i], i);
     for_each_cell(g, edges[i], plan.params.cover, plan.params.reach,
@@ -146,8 +147,8 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
   }
   // Each cell_start[c + 1] now holds the start of cell c; shift back into place.
   for (uint32_t c = 0; c < cells; ++c) cell_start[c] = cell_start[c + 1];
-  cell_start[cells] = plan.cell_pairs;
-  st.cell_pairs = plan.cell_pairs;
+  cell_start[cells] = total;
+  st.cell_pairs = cell_start[cells];  // the exact count (the plan's is an upper bound)
   if (plan.params.phase) plan.params.phase(plan.params.phase_context, CutPhase::kCellsFilled);
 
   // C6: every pair inside every cell.
@@ -166,9 +167,9 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
       const int32_t py0 = min_i32(p.a.y, p.b.y) - r, py1 = max_i32(p.a.y, p.b.y) + r;
       for (uint32_t j = i + 1; j < end; ++j) {
         const auto& q = geometry(list[j], edges);
-        if (max_i32(q.a.x, q.b.x) < px0 || min_i32(q.a.x, q.b.x) > px1 ||
-            max_i32(q.a.y, q.b.y) < py0 || min_i32(q.a.y, q.b.y) > py1)
-          continue;
+        const int32_t qx0 = min_i32(q.a.x, q.b.x), qx1 = max_i32(q.a.x, q.b.x);
+        const int32_t qy0 = min_i32(q.a.y, q.b.y), qy1 = max_i32(q.a.y, q.b.y);
+        if (qx1 < px0 || qx0 > px1 || qy1 < py0 || qy0 > py1) continue;
         test_pair(g, cb, edges, list[i], list[j], r, rec, st);
       }
     }
@@ -193,9 +194,22 @@ Status plan_cut(const Edge3* edges, uint32_t n, const CutParams& params, CutPlan
   p.params = params;
   p.n_edges = n;
   p.grid = choose_grid(edges, n, params.grid);
+  // An upper bound on the (cell, edge) pairs from each edge's (dilated) bounding box: pure
+  // arithmetic, no walk. The exact cover visits a subset of these cells, so the scratch sized
+  // from the bound always suffices; run_cut() reports the exact count in its stats.
   uint64_t pairs = 0;
-  for (uint32_t i = 0; i < n; ++i)
-    for_each_cell(p.grid, edges[i], params.cover, params.reach, [&](uint32_t) { ++pairs; });
+  const Grid& g = p.grid;
+  const int32_t xmax = g.ox + static_cast<int32_t>(g.nx) * g.cell - 1;
+  const int32_t ymax = g.oy + static_cast<int32_t>(g.ny) * g.cell - 1;
+  const int32_t r = params.reach;
+  for (uint32_t i = 0; i < n; ++i) {
+    const Edge3& e = edges[i];
+    const uint32_t c0 = g.col(max_i32(min_i32(e.a.x, e.b.x) - r, g.ox));
+    const uint32_t c1 = g.col(min_i32(max_i32(e.a.x, e.b.x) + r, xmax));
+    const uint32_t r0 = g.row(max_i32(min_i32(e.a.y, e.b.y) - r, g.oy));
+    const uint32_t r1 = g.row(min_i32(max_i32(e.a.y, e.b.y) + r, ymax));
+    pairs += uint64_t{c1 - c0 + 1} * (r1 - r0 + 1);
+  }
   if (pairs > 0xffffffffu) return Status::kCellPairOverflow;
   p.cell_pairs = static_cast<uint32_t>(pairs);
   p.scratch_bytes = scratch_for(p.grid.cells(), p.cell_pairs, n, entry_bytes(params));

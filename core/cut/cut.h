@@ -40,13 +40,13 @@ struct CutParams {
 struct CutPlan {
   Grid grid;
   uint32_t n_edges = 0;
-  uint32_t cell_pairs = 0;   // (cell, edge) pairs: the paper's CEPAIR size
+  uint32_t cell_pairs = 0;   // upper bound on (cell, edge) pairs (bounding boxes); sizes scratch
   size_t scratch_bytes = 0;  // what run_cut() needs as scratch
   CutParams params;
 };
 
 struct CutStats {
-  uint32_t cell_pairs = 0;    // (cell, edge) pairs
+  uint32_t cell_pairs = 0;    // (cell, edge) pairs: the paper's CEPAIR size, exact
   uint64_t pairs_tested = 0;  // edge pairs examined inside cells (C6.1)
   uint64_t crossings = 0;     // crossings found, owned once each (also past capacity)
   uint64_t near_misses = 0;   // near-miss records found
@@ -55,7 +55,7 @@ struct CutStats {
   uint32_t max_per_edge = 0;  // the largest group, which sizes DRAW's scratch
 };
 
-// Check the scene, choose the grid and count (cell, edge) pairs: O(N + cell pairs).
+// Check the scene, choose the grid and bound the (cell, edge) pairs: O(N), no cell walk.
 Status plan_cut(const Edge3* edges, uint32_t n, const CutParams& params, CutPlan* plan);
 
 // Run CUT. On kCrossingCapacity, stats->crossings + stats->near_misses is the record count a
