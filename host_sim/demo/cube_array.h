@@ -1,19 +1,18 @@
-// The demo scene: the HALO paper's Figure 4, a regular array of cubes (28 x 28 gives 9408
-// edges) seen obliquely, projected orthographically with integer arithmetic only.
+// The demo scene on the host: the core's freestanding generator (core/scene/cube_array.h)
+// into a vector.
 #pragma once
 #include <vector>
 
-#include "geometry/contract.h"
+#include "scene/cube_array.h"
 
 namespace haloplot::host {
 
-struct CubeArrayParams {
-  int cubes = 28;         // cubes per side
-  int32_t width = 20000;  // plot area in steps (about 250 mm at 80 steps/mm)
-  int32_t height = 16000;
-  int32_t margin = 400;  // lower-left corner of the plot area
-};
+using haloplot::CubeArrayParams;
 
-std::vector<Edge3> cube_array(const CubeArrayParams& params);
+inline std::vector<Edge3> cube_array(const CubeArrayParams& params) {
+  std::vector<Edge3> edges(cube_array_edges(params));
+  if (!ok(haloplot::cube_array(params, edges.data(), uint32_t(edges.size())))) edges.clear();
+  return edges;
+}
 
 }  // namespace haloplot::host

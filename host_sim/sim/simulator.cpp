@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "motion/step_engine.h"
+#include "motion/virtual_run.h"
 #include "sim/trace.h"
 
 namespace haloplot::host {
@@ -78,23 +79,8 @@ Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostre
   hal.report = r;
   SegmentQueue<64> queue;
   StepEngine<RecordingHal, SegmentQueue<64>> engine(hal, queue);
-  // The main loop and the timer interrupt, interleaved: refill, then let the timer fire.
-  s = prep.fill(planner, queue);
+  s = run_virtual(planner, prep, queue, hal, engine);
   if (!ok(s)) return s;
-  uint32_t delay = engine.start();
-  while (delay != 0 || !queue.empty() || !prep.done()) {
-    if (delay == 0) {  // the queue ran dry between moves: resume (never happens mid-move)
-      s = prep.fill(planner, queue);
-      if (!ok(s)) return s;
-      delay = engine.start();
-      if (delay == 0 && queue.empty() && prep.done()) break;
-      continue;
-    }
-    hal.now += delay;
-    s = prep.fill(planner, queue);
-    if (!ok(s)) return s;
-    delay = engine.tick();
-  }
   r->end_tick = hal.now;
   r->planner = planner.counters();
   r->prep = prep.counters();

@@ -8,53 +8,11 @@
 
 namespace haloplot::host {
 
-TraceWriter::TraceWriter(std::ostream& out, const Machine& m) : out_(out) {
-  out_ << "haloplot-trace 1\ntick_hz " << m.tick_hz << "\nkinematics "
-       << (m.kinematics == Kinematics::kCoreXY ? "corexy" : "cartesian") << "\nsteps "
-       << m.steps_num << '/' << m.steps_den << "\nbacklash " << m.backlash[0] << ' '
-       << m.backlash[1] << '\n';
-}
+TraceWriter::TraceWriter(std::ostream& out, const Machine& m)
+    : encoder_(CharSink{&write, &out}, m) {}
 
-void TraceWriter::flush(uint8_t motor) {
-  Run& r = runs_[motor];
-  if (r.count == 0) return;
-  out_ << "m " << int(motor) << ' ' << r.t0 << ' ' << r.count << ' ' << r.dt << ' ' << r.ddt << ' '
-       << (r.backward ? '-' : '+') << '\n';
-  r = Run{};
-}
-
-void TraceWriter::step(uint64_t tick, uint8_t motor, bool backward) {
-  Run& r = runs_[motor];
-  if (r.count > 0 && r.backward == backward) {
-    const int64_t gap = int64_t(tick - r.last);
-    if (r.count == 1) {
-      r.dt = r.last_dt = gap;
-      r.last = tick;
-      ++r.count;
-      return;
-    }
-    if (r.count == 2) r.ddt = gap - r.last_dt;
-    if (gap == r.last_dt + r.ddt) {
-      r.last_dt = gap;
-      r.last = tick;
-      ++r.count;
-      return;
-    }
-  }
-  flush(motor);
-  r.t0 = r.last = tick;
-  r.count = 1;
-  r.backward = backward;
-}
-
-void TraceWriter::pen(uint64_t tick, bool down) {
-  out_ << "p " << tick << (down ? " down\n" : " up\n");
-}
-
-void TraceWriter::finish(uint64_t end_tick) {
-  flush(0);
-  flush(1);
-  out_ << "end " << end_tick << '\n';
+void TraceWriter::write(void* context, const char* text, uint32_t length) {
+  static_cast<std::ostream*>(context)->write(text, length);
 }
 
 InputError read_trace(std::istream& in, const std::string& name, Trace* out) {

@@ -21,6 +21,7 @@
 
 #include "io/input_error.h"
 #include "motion/machine.h"
+#include "trace/trace_encoder.h"
 
 namespace haloplot::host {
 
@@ -30,23 +31,17 @@ struct StepEvent {
   bool flag;      // motor: backward; pen: down
 };
 
+// Writes a trace to a stream through the core's encoder (the firmware uses the same one).
 class TraceWriter {
  public:
   TraceWriter(std::ostream& out, const Machine& m);
-  void step(uint64_t tick, uint8_t motor, bool backward);
-  void pen(uint64_t tick, bool down);
-  void finish(uint64_t end_tick);
+  void step(uint64_t tick, uint8_t motor, bool backward) { encoder_.step(tick, motor, backward); }
+  void pen(uint64_t tick, bool down) { encoder_.pen(tick, down); }
+  void finish(uint64_t end_tick) { encoder_.finish(end_tick); }
 
  private:
-  struct Run {
-    uint64_t t0 = 0, last = 0;
-    int64_t dt = 0, ddt = 0, last_dt = 0;
-    uint64_t count = 0;
-    bool backward = false;
-  };
-  void flush(uint8_t motor);
-  std::ostream& out_;
-  Run runs_[2];
+  static void write(void* context, const char* text, uint32_t length);
+  TraceEncoder encoder_;
 };
 
 struct Trace {

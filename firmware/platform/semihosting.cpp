@@ -1,0 +1,68 @@
+#include "platform/semihosting.h"
+
+namespace haloplot::fw {
+namespace {
+
+int32_t call(uint32_t op, const void* arg) {
+  register uint32_t r0 __asm__("r0") = op;
+  register const void* r1 __asm__("r1") = arg;
+  __asm__ volatile("bkpt 0xAB" : "+r"(r0) : "r"(r1) : "memory");
+  return static_cast<int32_t>(r0);
+}
+
+constexpr uint32_t kWrite = 0x05, kWrite0 = 0x04, kExit = 0x18, kExitExtended = 0x20,
+                   kElapsed = 0x30, kTickFreq = 0x31;
+constexpr uint32_t kApplicationExit = 0x20026;  // ADP_Stopped_ApplicationExit
+
+}  // namespace
+
+void semihost_write(const char* text, uint32_t length) {
+  const uint32_t args[3] = {1, reinterpret_cast<uint32_t>(text), length};  // handle 1: stdout
+  call(kWrite, args);
+}
+
+void semihost_print(const char* text) { call(kWrite0, text); }
+
+void semihost_exit(int status) {
+  const uint32_t args[2] = {kApplicationExit, static_cast<uint32_t>(status)};
+  call(kExitExtended, args);
+  call(kExit, reinterpret_cast<const void*>(kApplicationExit));  // older hosts
+  for (;;) {
+  }
+}
+
+uint64_t semihost_elapsed() {
+  uint32_t ticks[2] = {0, 0};
+  if (call(kElapsed, ticks) != 0) return 0;
+  return (uint64_t{ticks[1]} << 32) | ticks[0];
+}
+
+uint32_t semihost_tick_hz() { return static_cast<uint32_t>(call(kTickFreq, nullptr)); }
+
+char* append(char* out, const char* text) {
+  while (*text) *out++ = *text++;
+  *out = 0;
+  return out;
+}
+
+char* append_u64(char* out, uint64_t v) {
+  char digits[21];
+  int n = 0;
+  do {
+    digits[n++] = static_cast<char>('0' + v % 10);
+    v /= 10;
+  } while (v);
+  while (n) *out++ = digits[--n];
+  *out = 0;
+  return out;
+}
+
+char* append_i64(char* out, int64_t v) {
+  if (v < 0) {
+    *out++ = '-';
+    return append_u64(out, uint64_t(0) - uint64_t(v));
+  }
+  return append_u64(out, uint64_t(v));
+}
+
+}  // namespace haloplot::fw
