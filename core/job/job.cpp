@@ -20,6 +20,21 @@ struct SpanCollector {
   }
 };
 
+// The peak of the three stages (see job.h).
+size_t peak_of(const JobBytes& b) {
+  size_t peak = b.cut_scratch;
+  if (b.spans + b.draw_scratch > peak) peak = b.spans + b.draw_scratch;
+  if (b.spans + b.points + b.path > peak) peak = b.spans + b.points + b.path;
+  return b.cutset + peak;
+}
+
+// Span and path bytes for at most `spans` spans.
+void size_path_stages(uint64_t spans, JobBytes* b) {
+  b->spans = align8(size_t(spans) * sizeof(Segment2));
+  b->path = align8(path_plan_bytes(uint32_t(spans)));
+  b->points = align8(size_t{path_points_max(uint32_t(spans))} * sizeof(PathPoint));
+}
+
 }  // namespace
 
 Status job_bytes(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
@@ -33,7 +48,7 @@ Status job_bytes(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t c
     if (!ok(s)) return s;
     b.cut_scratch = align8(plan.scratch_bytes);
     b.cutset = align8(cutset_bytes(n, crossing_capacity));
-    // DRAW's scratch is at most one Gap per record of the busiest edge: bounded by all records.
+    // DRAW's scratch is one Gap per record of the busiest edge: at most all records.
     b.draw_scratch = align8(size_t{crossing_capacity} * sizeof(Gap));
     max_spans += crossing_capacity;  // each gap splits an edge at most once more
   } else {
@@ -41,9 +56,8 @@ Status job_bytes(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t c
       if (!in_range(edges[i])) return Status::kCoordinateOutOfRange;
   }
   if (max_spans > 0x7fffffffu) return Status::kTooManyEdges;
-  b.spans = align8(size_t(max_spans) * sizeof(Segment2));
-  b.path = align8(path_plan_bytes(uint32_t(max_spans)));
-  b.points = align8(size_t{path_points_max(uint32_t(max_spans))} * sizeof(PathPoint));
+  size_path_stages(max_spans, &b);
+  b.peak = peak_of(b);
   *bytes = b;
   return Status::kOk;
 }
@@ -51,49 +65,65 @@ Status job_bytes(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t c
 Status job_prepare(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
                    void* buffer, size_t buffer_bytes, PreparedJob* out, JobCounters* counters) {
   JobCounters c;
-  JobBytes b;
-  Status s = job_bytes(spec, edges, n, crossing_capacity, &b);
+  if (needs_faces(spec.drawing)) return Status::kBadParameter;
+  Status s = validate(spec.machine);
   if (!ok(s)) return s;
-  if (buffer_bytes < b.total()) return Status::kWorkspaceTooSmall;
-  s = validate(spec.machine);
-  if (!ok(s)) return s;
-  uint8_t* p = static_cast<uint8_t*>(buffer);
-  uint8_t* cut_scratch = p;
-  uint8_t* cutset_mem = cut_scratch + b.cut_scratch;
-  uint8_t* draw_scratch = cutset_mem + b.cutset;
-  Segment2* spans = reinterpret_cast<Segment2*>(draw_scratch + b.draw_scratch);
-  uint8_t* path_ws = reinterpret_cast<uint8_t*>(spans) + b.spans;
-  PathPoint* points = reinterpret_cast<PathPoint*>(path_ws + b.path);
-  const uint32_t span_capacity = uint32_t(b.spans / sizeof(Segment2));
-
-  SpanCollector collect{spans, span_capacity, 0};
+  uint8_t* base = static_cast<uint8_t*>(buffer);
   PreparedJob job;
+  uint64_t span_bound = n;
+  size_t cutset_size = 0;
+
+  SpanCollector collect{nullptr, 0, 0};
   if (spec.drawing == DrawingEffect::kHaloed) {
+    // Stage 1: CUT. The CUTSET first (it outlives CUT), its scratch after it.
     CutPlan plan;
     s = plan_cut(edges, n, spec.cut, &plan);
     if (!ok(s)) return s;
+    cutset_size = align8(cutset_bytes(n, crossing_capacity));
+    const size_t scratch = align8(plan.scratch_bytes);
+    if (buffer_bytes < cutset_size + scratch) return Status::kWorkspaceTooSmall;
     ++c.cut_runs;
-    s = run_cut(plan, edges, cut_scratch, b.cut_scratch, cutset_mem, b.cutset, &job.cutset, &c.cut);
+    s = run_cut(plan, edges, base + cutset_size, scratch, base, cutset_size, &job.cutset, &c.cut);
     if (!ok(s)) {
       if (counters) *counters = c;
       return s;
     }
+    // Stage 2: DRAW, into the space CUT's scratch held.
+    span_bound += job.cutset.n_crossings;
+    const size_t spans_size = align8(size_t(span_bound) * sizeof(Segment2));
+    const size_t draw_size = align8(draw_scratch_bytes(job.cutset));
+    if (buffer_bytes < cutset_size + spans_size + draw_size) return Status::kWorkspaceTooSmall;
+    collect =
+        SpanCollector{reinterpret_cast<Segment2*>(base + cutset_size), uint32_t(span_bound), 0};
     ++c.draw_runs;
-    s = draw(job.cutset, spec.draw, draw_scratch, b.draw_scratch,
+    s = draw(job.cutset, spec.draw, base + cutset_size + spans_size, draw_size,
              SpanSink{&SpanCollector::emit, &collect}, &c.draw);
     if (!ok(s)) return s;
   } else {
     for (uint32_t i = 0; i < n; ++i)
-      spans[collect.count++] = Segment2{edges[i].a.x, edges[i].a.y, edges[i].b.x, edges[i].b.y};
+      if (!in_range(edges[i])) return Status::kCoordinateOutOfRange;
+    if (buffer_bytes < align8(size_t{n} * sizeof(Segment2))) return Status::kWorkspaceTooSmall;
+    collect = SpanCollector{reinterpret_cast<Segment2*>(base), n, 0};
+    for (uint32_t i = 0; i < n; ++i)
+      collect.out[collect.count++] =
+          Segment2{edges[i].a.x, edges[i].a.y, edges[i].b.x, edges[i].b.y};
   }
+  // Stage 3: the path, after the spans (DRAW's scratch is dead).
+  JobBytes stage;
+  size_path_stages(collect.count, &stage);
+  const size_t spans_size = align8(size_t(span_bound) * sizeof(Segment2));
+  uint8_t* points_mem = base + cutset_size + spans_size;
+  if (buffer_bytes < cutset_size + spans_size + stage.points + stage.path)
+    return Status::kWorkspaceTooSmall;
+  PathPoint* points = reinterpret_cast<PathPoint*>(points_mem);
   ++c.path_runs;
   uint32_t n_points = 0;
-  s = plan_path(spans, collect.count, spec.start_x, spec.start_y, path_ws, b.path, points,
-                path_points_max(collect.count), &n_points, &c.path);
+  s = plan_path(collect.out, collect.count, spec.start_x, spec.start_y, points_mem + stage.points,
+                stage.path, points, path_points_max(collect.count), &n_points, &c.path);
   if (!ok(s)) return s;
   job.points = points;
   job.n_points = n_points;
-  job.spans = spans;
+  job.spans = collect.out;
   job.n_spans = collect.count;
   *out = job;
   if (counters) *counters = c;

@@ -32,10 +32,17 @@ struct JobSpec {
   int32_t start_x = 0, start_y = 0;  // where the pen is before the job
 };
 
-// Bytes each stage takes from the job buffer (0: the stage does not run).
+// Bytes each stage takes from the job buffer (0: the stage does not run), and the peak the
+// buffer must hold. Stages share the buffer where one is dead when the next begins:
+//   [CUTSET | CUT scratch                      ]   while CUT runs
+//   [CUTSET | spans | DRAW scratch             ]   while DRAW runs (CUT's scratch is dead)
+//   [CUTSET | spans | points | path workspace  ]   while the path is planned
+// job_bytes() bounds every stage with K = crossing_capacity; job_prepare() checks each stage
+// against the real K, so a smaller buffer works whenever the scene's crossings allow.
 struct JobBytes {
   size_t cut_scratch = 0, cutset = 0, draw_scratch = 0, spans = 0, path = 0, points = 0;
-  size_t total() const { return cut_scratch + cutset + draw_scratch + spans + path + points; }
+  size_t peak = 0;
+  size_t total() const { return peak; }
 };
 
 struct JobCounters {

@@ -41,21 +41,25 @@ uint32_t walk(const uint32_t* link, uint32_t start, Visit visit) {
 
 size_t align8(size_t v) { return (v + 7) & ~size_t{7}; }
 
+// Workspace layout. The endpoint sort is dead once the chains exist, so the nearest-
+// neighbour grid (cell starts and items) reuses its bytes.
 struct Layout {
-  size_t ends, link, chains, done, cell_start, cell_items, total;
+  size_t link, chains, done, ends, cell_start, cell_items, total;
   uint32_t cells_cap;
 };
 
 Layout layout(uint32_t n) {
   Layout l;
   l.cells_cap = n + 1;
-  l.ends = 0;
-  l.link = align8(l.ends + size_t{2} * n * sizeof(EndKey));
+  l.link = 0;
   l.chains = align8(l.link + size_t{2} * n * 4);
   l.done = align8(l.chains + size_t{n} * sizeof(Chain));
-  l.cell_start = align8(l.done + size_t{n});
+  l.ends = align8(l.done + size_t{n});
+  const size_t sort_end = align8(l.ends + size_t{2} * n * sizeof(EndKey));
+  l.cell_start = l.ends;  // overlaps the dead endpoint sort
   l.cell_items = align8(l.cell_start + (size_t{l.cells_cap} + 1) * 4);
-  l.total = align8(l.cell_items + size_t{2} * n * 4);
+  const size_t grid_end = align8(l.cell_items + size_t{2} * n * 4);
+  l.total = sort_end > grid_end ? sort_end : grid_end;
   return l;
 }
 

@@ -10,18 +10,35 @@ int32_t call(uint32_t op, const void* arg) {
   return static_cast<int32_t>(r0);
 }
 
-constexpr uint32_t kWrite = 0x05, kWrite0 = 0x04, kExit = 0x18, kExitExtended = 0x20,
-                   kElapsed = 0x30, kTickFreq = 0x31;
+constexpr uint32_t kOpen = 0x01, kWrite = 0x05, kExit = 0x18, kExitExtended = 0x20, kElapsed = 0x30,
+                   kTickFreq = 0x31;
+
+// The console is the special file ":tt", opened for writing (mode 4, "w"): writes to an
+// unopened handle go nowhere.
+int32_t console_handle() {
+  static int32_t handle = -1;
+  if (handle < 0) {
+    static const char name[] = ":tt";
+    const uint32_t args[3] = {reinterpret_cast<uint32_t>(name), 4, 3};
+    handle = call(kOpen, args);
+  }
+  return handle;
+}
 constexpr uint32_t kApplicationExit = 0x20026;  // ADP_Stopped_ApplicationExit
 
 }  // namespace
 
 void semihost_write(const char* text, uint32_t length) {
-  const uint32_t args[3] = {1, reinterpret_cast<uint32_t>(text), length};  // handle 1: stdout
+  const uint32_t args[3] = {static_cast<uint32_t>(console_handle()),
+                            reinterpret_cast<uint32_t>(text), length};
   call(kWrite, args);
 }
 
-void semihost_print(const char* text) { call(kWrite0, text); }
+void semihost_print(const char* text) {
+  uint32_t n = 0;
+  while (text[n]) ++n;
+  semihost_write(text, n);
+}
 
 void semihost_exit(int status) {
   const uint32_t args[2] = {kApplicationExit, static_cast<uint32_t>(status)};

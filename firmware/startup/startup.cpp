@@ -10,6 +10,7 @@ extern void (*__init_array_start[])(), (*__init_array_end[])();
 int main();
 [[noreturn]] void reset_handler();
 void default_handler();
+void systick_handler() __attribute__((weak, alias("default_handler")));
 }
 
 namespace {
@@ -63,5 +64,5 @@ __attribute__((section(".vectors"), used)) void (*const vector_table[16])() = {
     default_handler,  // DebugMonitor
     nullptr,
     default_handler,  // PendSV
-    default_handler,  // SysTick
+    systick_handler,  // SysTick (the instruction counter's wraps, when linked)
 };

@@ -1,0 +1,213 @@
+// On-target self-test, booted under QEMU by the CTest `firmware_plot`: builds a small cube
+// array on the chip, plots it haloed on a CoreXY machine with the shared core (CUT, DRAW,
+// path planning, planner, step prep, the step tick) and streams the step trace over
+// semihosting. The host compares the trace byte for byte with `haloplot sim` on the same job,
+// and reads the instruction counts this image measures under -icount (1 instruction = 1 ns
+// of virtual time, read with SYS_ELAPSED).
+#include "haloplot.h"
+#include "job/job.h"
+#include "motion/planner.h"
+#include "motion/step_engine.h"
+#include "motion/step_prep.h"
+#include "motion/virtual_run.h"
+#include "platform/instruction_counter.h"
+#include "platform/semihosting.h"
+#include "scene/cube_array.h"
+#include "trace/trace_encoder.h"
+
+using namespace haloplot;
+using namespace haloplot::fw;
+
+extern "C" uint32_t stack_unused_bytes();
+
+namespace {
+
+constexpr int32_t kCubes = 6;
+constexpr uint32_t kEdges = 12 * kCubes * kCubes;
+constexpr uint32_t kCrossingCapacity = kEdges + 128;  // this scene has 412 crossings
+
+Edge3 edges[kEdges];
+alignas(8) uint8_t job_buffer[84 * 1024];
+
+// Output through semihosting in 1 KB chunks: each call traps to the host, so batch them.
+struct Console {
+  char buf[1024];
+  uint32_t n = 0;
+  static void write(void* ctx, const char* text, uint32_t length) {
+    auto* c = static_cast<Console*>(ctx);
+    for (uint32_t i = 0; i < length; ++i) {
+      if (c->n == sizeof c->buf) c->flush();
+      c->buf[c->n++] = text[i];
+    }
+  }
+  void flush() {
+    if (n) semihost_write(buf, n);
+    n = 0;
+  }
+} console;
+
+void stat(const char* key, uint64_t value) {
+  char line[96];
+  char* p = append(line, "fw ");
+  p = append(p, key);
+  p = append(p, "=");
+  p = append_u64(p, value);
+  append(p, "\n");
+  Console::write(&console, line, uint32_t(p - line + 1));
+}
+
+[[noreturn]] void fail(const char* what, Status s) {
+  char line[128];
+  char* p = append(line, "fw FAILED: ");
+  p = append(p, what);
+  p = append(p, ": ");
+  p = append(p, status_name(s));
+  append(p, "\n");
+  console.flush();
+  semihost_print(line);
+  semihost_exit(1);
+}
+
+// The recording HAL: every step and pen change goes to the trace encoder at the virtual tick.
+struct TraceHal {
+  uint64_t now = 0;
+  bool backward[2] = {false, false};
+  TraceEncoder* trace = nullptr;
+  void set_direction(uint8_t m, bool b) { backward[m] = b; }
+  void step(uint8_t m) { trace->step(now, m, backward[m]); }
+  void pen(bool down) { trace->pen(now, down); }
+};
+
+// A HAL like a GPIO port: one store per call. For the step-event instruction count.
+struct GpioHal {
+  uint64_t now = 0;
+  volatile uint32_t bsrr = 0;
+  void set_direction(uint8_t m, bool b) { bsrr = b ? (1u << (m + 16)) : (1u << (m + 8)); }
+  void step(uint8_t m) { bsrr = 1u << m; }
+  void pen(bool down) { bsrr = down ? 1u << 4 : 1u << 20; }
+};
+
+SegmentQueue<64> queue;
+
+}  // namespace
+
+int main() {
+  counter_start();
+  {  // Calibration: a loop of exactly 2 instructions per pass (subs, bne), 2,000,000 passes.
+    const uint64_t a = counter_ticks();
+    uint32_t n = 2000000;
+    __asm__ volatile("1: subs %0, %0, #1\n bne 1b" : "+r"(n) : : "cc");
+    stat("calibration_4000000_instructions", ticks_to_instructions(counter_ticks() - a));
+  }
+  CubeArrayParams cp;
+  cp.cubes = kCubes;
+  Status s = cube_array(cp, edges, kEdges);
+  if (!ok(s)) fail("cube array", s);
+
+  // CUT and DRAW alone, for their instruction counts.
+  {
+    CutPlan plan;
+    CutParams tight;
+    tight.compact_cells = false;  // 4 bytes per (cell, edge) pair: RAM is tight here
+    s = plan_cut(edges, kEdges, tight, &plan);
+    if (!ok(s)) fail("plan_cut", s);
+    // Borrow the job buffer (the job has not started): CUTSET first, then CUT's scratch,
+    // which DRAW reuses once CUT is done.
+    uint8_t* cutset_mem = job_buffer;
+    const size_t cutset_size = (cutset_bytes(kEdges, kCrossingCapacity) + 7) & ~size_t{7};
+    uint8_t* scratch = job_buffer + cutset_size;
+    const size_t scratch_size = sizeof job_buffer - cutset_size;
+    CutSet set;
+    CutStats st;
+    const uint64_t t0 = counter_ticks();
+    s = run_cut(plan, edges, scratch, scratch_size, cutset_mem, cutset_size, &set, &st);
+    const uint64_t t1 = counter_ticks();
+    if (!ok(s)) fail("run_cut", s);
+    uint64_t spans = 0;
+    const SpanSink count{[](void* c, const Span&) {
+                           ++*static_cast<uint64_t*>(c);
+                           return Status::kOk;
+                         },
+                         &spans};
+    s = draw(set, DrawParams{50, HaloMode::kPaper}, scratch, scratch_size, count, nullptr);
+    const uint64_t t2 = counter_ticks();
+    if (!ok(s)) fail("draw", s);
+    stat("edges", kEdges);
+    stat("crossings", set.n_crossings);
+    stat("spans", spans);
+    stat("cut_scratch_bytes", plan.scratch_bytes);
+    stat("cut_instructions", ticks_to_instructions(t1 - t0));
+    stat("draw_instructions", ticks_to_instructions(t2 - t1));
+  }
+
+  // The plot: the same job as scenes/ of the host test (see tests/firmware/).
+  JobSpec spec;
+  spec.drawing = DrawingEffect::kHaloed;
+  spec.draw = DrawParams{50, HaloMode::kPaper};
+  spec.machine.kinematics = Kinematics::kCoreXY;
+  spec.cut.compact_cells = false;  // the same crossings, a quarter of the cell-list bytes
+  JobBytes bytes;
+  s = job_bytes(spec, edges, kEdges, kCrossingCapacity, &bytes);
+  if (!ok(s)) fail("job_bytes", s);
+  stat("job_bytes", bytes.total());
+  PreparedJob job;
+  JobCounters counters;
+  const uint64_t t3 = counter_ticks();
+  s = job_prepare(spec, edges, kEdges, kCrossingCapacity, job_buffer, sizeof job_buffer, &job,
+                  &counters);
+  const uint64_t t4 = counter_ticks();
+  if (!ok(s)) fail("job_prepare", s);
+  stat("prepare_instructions", ticks_to_instructions(t4 - t3));
+
+  alignas(8) static uint8_t planner_ws[MotionPlanner::kDefaultLookahead * 64];
+  MotionPlanner planner;
+  s = planner.init(spec.machine, spec.effects, job.points, job.n_points, planner_ws,
+                   sizeof planner_ws);
+  if (!ok(s)) fail("planner", s);
+  StepPrep prep;
+  s = prep.init(spec.machine, spec.effects);
+  if (!ok(s)) fail("prep", s);
+  TraceEncoder trace(CharSink{&Console::write, &console}, spec.machine);
+  TraceHal hal;
+  hal.trace = &trace;
+  StepEngine<TraceHal, SegmentQueue<64>> engine(hal, queue);
+  const uint64_t t5 = counter_ticks();
+  s = run_virtual(planner, prep, queue, hal, engine);
+  const uint64_t t6 = counter_ticks();
+  if (!ok(s)) fail("motion", s);
+  trace.finish(hal.now);
+  stat("step_events", engine.events());
+  stat("motion_instructions_with_trace", ticks_to_instructions(t6 - t5));
+
+  // One step event alone: synthetic segments like the prep's, a GPIO-like HAL.
+  {
+    GpioHal gpio;
+    SegmentQueue<64> q;
+    StepEngine<GpioHal, SegmentQueue<64>> e(gpio, q);
+    uint64_t spent = 0;
+    uint32_t delay = 0;
+    bool first = true;
+    while (e.events() < 200000) {
+      while (!q.full()) {
+        StepSegment seg;
+        seg.new_block = first;
+        first = false;
+        seg.major = 3000000;
+        seg.minor = 2000000;
+        seg.count = 16;
+        seg.interval_q8 = 100 * 256;
+        seg.add_q8 = -1;
+        q.push(seg);
+      }
+      if (delay == 0) delay = e.start();
+      const uint64_t a = counter_ticks();
+      for (int k = 0; k < 800; ++k) delay = e.tick();  // 50 segments: the queue holds 64
+      spent += counter_ticks() - a;
+    }
+    stat("tick_events", e.events());
+    stat("tick_instructions_x100_per_event", ticks_to_instructions(spent * 100) / e.events());
+  }
+  stat("stack_used_bytes", 16 * 1024 - stack_unused_bytes());
+  console.flush();
+  semihost_exit(0);
+}
