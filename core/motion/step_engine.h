@@ -3,9 +3,9 @@
 // Bresenham for the other motor, and returns how many ticks until the next event, so the
 // timer is set once per event (no fixed-rate polling, no idle interrupts).
 //
-// No division, no floating point, no virtual call: the HAL is a template parameter, so each
-// pin write inlines. Time is absolute, in Q8 ticks since the start, and every event fires at
-// floor(time): rounding never accumulates.
+// No division, no floating point, no virtual call, no 64-bit arithmetic: the HAL is a template
+// parameter, so each pin write inlines. Events fire at the floor of the exact running sum of
+// the Q8 intervals: rounding never accumulates.
 //
 // Hal must provide: void step(uint8_t motor); void set_direction(uint8_t motor, bool backward);
 //                   void pen(bool down);
@@ -32,33 +32,43 @@ class StepEngine {
   uint32_t tick() {
     if (pending_) {
       hal_.step(dominant_);
-      position_[dominant_] += backward_[dominant_] ? -1 : 1;
+      position_[dominant_] += step_[dominant_];
       error_ += minor_;
       if (error_ >= major_) {  // Bresenham: the other motor steps when its error overflows
         error_ -= major_;
         hal_.step(other_);
-        position_[other_] += backward_[other_] ? -1 : 1;
+        position_[other_] += step_[other_];
       }
       ++events_;
+    }
+    if (left_ > 0) {  // the common case, all in 32 bits
+      --left_;
+      return next_delay();
     }
     return advance();
   }
 
   int32_t position(uint8_t motor) const { return position_[motor]; }
-  uint64_t events() const { return events_; }
-  uint64_t now() const { return fired_q8_ >> 8; }
+  uint32_t events() const { return events_; }
 
  private:
-  // Schedule the next event: the next step of this segment, or the next segment. Pen changes
-  // happen here, at once, and their dwell becomes the delay.
+  // Time is the running sum of the Q8 intervals; the timer needs only whole ticks between
+  // events, floor(t + i) - floor(t) = (frac(t) + i) >> 8, so a byte of fraction carries the
+  // rest. No 64-bit arithmetic, no division: the events fire at the floor of the exact sum.
+  uint32_t next_delay() {
+    const uint32_t sum = fraction_ + static_cast<uint32_t>(interval_q8_);  // < 2^31 + 2^8
+    fraction_ = sum & 0xffu;
+    interval_q8_ += add_q8_;
+    pending_ = true;
+    return sum >> 8;
+  }
+
+  // Load the next segment: steps, or a pen change (done at once; its dwell is the delay).
   uint32_t advance() {
     for (;;) {
       if (left_ > 0) {
         --left_;
-        time_q8_ += interval_q8_;
-        interval_q8_ += add_q8_;
-        pending_ = true;
-        return fire();
+        return next_delay();
       }
       if (queue_.empty()) {
         pending_ = false;
@@ -67,11 +77,11 @@ class StepEngine {
       const StepSegment& s = queue_.front();
       if (s.kind == StepSegment::kPen) {
         hal_.pen(s.pen_down);
-        time_q8_ += s.interval_q8;
+        const uint32_t dwell = s.dwell_ticks;
         queue_.pop();
-        if (s.interval_q8 > 0) {
+        if (dwell > 0) {
           pending_ = false;
-          return fire();
+          return dwell;
         }
         continue;
       }
@@ -82,8 +92,9 @@ class StepEngine {
         minor_ = s.minor;
         error_ = s.major / 2;  // centred: the other motor is never more than 1/2 step off
         for (uint8_t m = 0; m < 2; ++m) {
-          backward_[m] = (s.dir_bits >> m) & 1u;
-          hal_.set_direction(m, backward_[m]);
+          const bool backward = (s.dir_bits >> m) & 1u;
+          step_[m] = backward ? -1 : 1;
+          hal_.set_direction(m, backward);
         }
       }
       left_ = s.count;
@@ -93,25 +104,17 @@ class StepEngine {
     }
   }
 
-  uint32_t fire() {
-    const uint64_t at = time_q8_ >> 8;
-    const uint32_t delay = static_cast<uint32_t>(at - (fired_q8_ >> 8));
-    fired_q8_ = time_q8_ & ~uint64_t{0xff};
-    return delay;
-  }
-
   Hal& hal_;
   Queue& queue_;
   bool pending_ = false;
   uint8_t dominant_ = 0, other_ = 1;
-  bool backward_[2] = {false, false};
+  int32_t step_[2] = {1, 1};
   uint32_t major_ = 1, minor_ = 0, error_ = 0;
   uint32_t left_ = 0;
-  int64_t interval_q8_ = 0, add_q8_ = 0;
-  uint64_t time_q8_ = 0;   // when the scheduled event is due
-  uint64_t fired_q8_ = 0;  // the tick (as Q8) of the last event handed to the timer
+  int32_t interval_q8_ = 0, add_q8_ = 0;
+  uint32_t fraction_ = 0;  // Q8 fraction of a tick carried between events
   int32_t position_[2] = {0, 0};
-  uint64_t events_ = 0;
+  uint32_t events_ = 0;
 };
 
 }  // namespace haloplot

@@ -94,8 +94,8 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
       if (it.kind == MotionItem::kPen) {
         out->kind = StepSegment::kPen;
         out->pen_down = it.pen_down;
-        out->interval_q8 = int64_t{it.dwell_ticks} * 256;
-        time_q8_ += uint64_t(out->interval_q8);
+        out->dwell_ticks = it.dwell_ticks;
+        time_q8_ += uint64_t{it.dwell_ticks} * 256;
         ++counters_.segments;
         *have = true;
         return Status::kOk;
@@ -121,7 +121,8 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
       out->major = m_.backlash[mo];
       out->minor = 0;
       out->count = uint16_t(m_.backlash[mo]);
-      out->interval_q8 = interval;
+      if (interval > INT32_MAX) return Status::kIntervalTooLong;
+      out->interval_q8 = int32_t(interval);
       out->add_q8 = 0;
       advance_time(out->count, interval, 0);
       counters_.motor_steps[mo] += m_.backlash[mo];
@@ -153,6 +154,11 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
     const int64_t add = m > 1 ? floor_div(2 * (total - m * first), m * (m - 1)) : 0;
     const int64_t floor_q8 = int64_t{m_.min_interval} * 256;
     if (first < floor_q8 || first + (m - 1) * add < floor_q8) return Status::kTimerFloor;
+    // The tick runs in 32 bits: every interval of the segment (linear, so its two ends) and
+    // the step between them must fit.
+    if (first > INT32_MAX || first + (m - 1) * add > INT32_MAX || add > INT32_MAX ||
+        add < INT32_MIN)
+      return Status::kIntervalTooLong;
     out->kind = StepSegment::kSteps;
     out->new_block = first_segment_;
     out->dominant = dominant_;
@@ -160,8 +166,8 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
     out->major = n_;
     out->minor = minor_;
     out->count = uint16_t(m);
-    out->interval_q8 = first;
-    out->add_q8 = add;
+    out->interval_q8 = int32_t(first);
+    out->add_q8 = int32_t(add);
     first_segment_ = false;
     advance_time(uint32_t(m), first, add);
     counters_.motor_steps[dominant_] += uint64_t(m);

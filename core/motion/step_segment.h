@@ -9,15 +9,18 @@ namespace haloplot {
 struct StepSegment {
   enum Kind : uint8_t { kSteps, kPen };
   Kind kind = kSteps;
-  bool new_block = false;   // kSteps: reset the Bresenham state and set directions
-  bool pen_down = false;    // kPen
-  uint8_t dominant = 0;     // kSteps: the motor that steps on every event
-  uint8_t dir_bits = 0;     // bit m set: motor m runs backwards
-  uint16_t count = 0;       // kSteps: events in this segment
-  uint32_t major = 0;       // Bresenham: dominant steps in the block
-  uint32_t minor = 0;       //            other motor's steps in the block
-  int64_t interval_q8 = 0;  // ticks * 256 before the first event (kPen: the dwell after it)
-  int64_t add_q8 = 0;       // change of the interval after each event
+  bool new_block = false;  // kSteps: reset the Bresenham state and set directions
+  bool pen_down = false;   // kPen
+  uint8_t dominant = 0;    // kSteps: the motor that steps on every event
+  uint8_t dir_bits = 0;    // bit m set: motor m runs backwards
+  uint16_t count = 0;      // kSteps: events in this segment
+  uint32_t major = 0;      // Bresenham: dominant steps in the block
+  uint32_t minor = 0;      //            other motor's steps in the block
+  // 32-bit on purpose: the tick does only 32-bit arithmetic on the M4. The prep guarantees
+  // every interval of the segment lies in [min_interval * 256, 2^31).
+  int32_t interval_q8 = 0;   // kSteps: ticks * 256 before the first event
+  int32_t add_q8 = 0;        // kSteps: change of the interval after each event
+  uint32_t dwell_ticks = 0;  // kPen: whole ticks to wait after the pen moves
 };
 
 template <uint32_t kCapacity>

@@ -30,6 +30,8 @@ const char* status_name(Status s) {
       return "step interval below the timer floor";
     case Status::kQueueFull:
       return "motion queue full";
+    case Status::kIntervalTooLong:
+      return "step interval too long for the tick";
   }
   return "unknown status";
 }

@@ -19,6 +19,7 @@ enum class Status : uint8_t {
   kStepRateExceeded,       // a speed needs more steps per second than a motor may take
   kTimerFloor,             // a step interval below the step clock's floor
   kQueueFull,              // a fixed-size motion queue has no room (try again after a tick)
+  kIntervalTooLong,        // a step interval beyond the tick's 32-bit Q8 field (2^23 ticks)
 };
 
 // A short, stable, human-readable name, e.g. "crossing capacity exceeded".
