@@ -18,8 +18,10 @@ esac
 missing=()
 for t in "${tools[@]}"; do command -v "$t" >/dev/null 2>&1 || missing+=("${package[$t]}"); done
 # The C++ runtime headers for the cross compiler ship separately from the compiler.
-if [ "${1:-test}" = test ] && ! dpkg -s libstdc++-arm-none-eabi-newlib >/dev/null 2>&1; then
-  missing+=(libstdc++-arm-none-eabi-newlib)
+if [ "${1:-test}" = test ]; then
+  for pkg in libstdc++-arm-none-eabi-newlib libclang-rt-14-dev; do  # cross C++ headers; libFuzzer
+    dpkg -s "$pkg" >/dev/null 2>&1 || missing+=("$pkg")
+  done
 fi
 [ ${#missing[@]} -eq 0 ] && exit 0
 mapfile -t missing < <(printf '%s\n' "${missing[@]}" | sort -u)

@@ -11,7 +11,9 @@ bool LineReader::next(std::vector<std::string>* fields, std::string* comment) {
   while (std::getline(in_, text)) {
     ++line_;
     if (!text.empty() && text.back() == '\r') text.pop_back();
-    size_t start = text.find_first_not_of(" \t");
+    // Blank means any whitespace the field split below skips (\v and \f too: the fuzzer
+    // found a line of vertical tabs that split into no fields at all).
+    size_t start = text.find_first_not_of(" \t\v\f\r");
     if (start == std::string::npos) continue;
     if (text[start] == '#') {
       if (comment) *comment += text.substr(start) + "\n";
@@ -21,6 +23,7 @@ bool LineReader::next(std::vector<std::string>* fields, std::string* comment) {
     std::istringstream words(text);
     std::string w;
     while (words >> w) fields->push_back(w);
+    if (fields->empty()) continue;  // whitespace the stream skips that the check above missed
     return true;
   }
   return false;

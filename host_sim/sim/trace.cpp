@@ -15,7 +15,7 @@ void TraceWriter::write(void* context, const char* text, uint32_t length) {
   static_cast<std::ostream*>(context)->write(text, length);
 }
 
-InputError read_trace(std::istream& in, const std::string& name, Trace* out) {
+InputError read_trace(std::istream& in, const std::string& name, Trace* out, uint64_t max_events) {
   *out = Trace{};
   LineReader reader(in);
   std::vector<std::string> f;
@@ -46,12 +46,16 @@ InputError read_trace(std::istream& in, const std::string& name, Trace* out) {
       out->machine.backlash[1] = uint32_t(v[1]);
     } else if (f[0] == "p" && f.size() == 3 && parse_int(f[1], 0, INT64_MAX, &v[0]) &&
                (f[2] == "down" || f[2] == "up")) {
+      if (out->events.size() >= max_events)
+        return bad("more than " + std::to_string(max_events) + " events: damaged or too large");
       out->events.push_back({uint64_t(v[0]), 2, f[2] == "down"});
     } else if (f[0] == "m" && f.size() == 7 && parse_int(f[1], 0, 1, &v[0]) &&
                parse_int(f[2], 0, INT64_MAX, &v[1]) && parse_int(f[3], 1, INT64_MAX, &v[2]) &&
                parse_int(f[4], -(int64_t(1) << 40), int64_t(1) << 40, &v[3]) &&
                parse_int(f[5], -(int64_t(1) << 40), int64_t(1) << 40, &v[4]) &&
                (f[6] == "+" || f[6] == "-")) {
+      if (uint64_t(v[2]) > max_events - out->events.size())
+        return bad("more than " + std::to_string(max_events) + " events: damaged or too large");
       // Ticks t0, t0 + dt, t0 + 2 dt + ddt, ...: the gap grows by ddt after each step.
       int64_t t = v[1], gap = v[3];
       for (int64_t i = 0; i < v[2]; ++i) {

@@ -50,6 +50,9 @@ struct Trace {
   uint64_t end_tick = 0;
 };
 
-InputError read_trace(std::istream& in, const std::string& name, Trace* out);
+// Reads a trace; more than max_events steps and pen changes is an error (a damaged count in a
+// run line must not exhaust memory: 16 bytes an event).
+InputError read_trace(std::istream& in, const std::string& name, Trace* out,
+                      uint64_t max_events = 200000000);
 
 }  // namespace haloplot::host

@@ -29,6 +29,8 @@ int main() {
   CHECK_EQ(e.size(), size_t{2});
   CHECK_EQ(e[1].b.z, 12);
   CHECK(!parse("", &e).failed() && e.empty());
+  // Found by fuzz_cut_file: a line of vertical tabs is blank, not a line with no fields.
+  CHECK(!parse("\v\v\v\n\f\n1 2 3 4 5 6\n", &e).failed() && e.size() == 1);
   CHECK(error_is(parse("1 2 3 4 5\n", &e), 1, "expected 6 integers"));
   CHECK(error_is(parse("# x\n1 2 3 4 5 6 7\n", &e), 2, "found 7 fields"));
   CHECK(error_is(parse("1 2 3 4 5 6\n1 2 x 4 5 6\n", &e), 2, "field 3 'x'"));
@@ -77,6 +79,11 @@ int main() {
   CHECK(cut_error(two + "c 1 0 5 5 7 cross\nc 0 1 5 5 7 cross\n", 4, "grouped"));
   CHECK(cut_error(two + "c 0 1 5 5 7 cross\ne 2 1 1 1 1 1 1\n", 4, "after the first"));
   CHECK(cut_error(two + "x 0 1\n", 3, "unknown record"));
+  {  // the fuzzer's crash input, replayed: no fault, no error
+    std::istringstream vt("\v\n");
+    LoadedCut l;
+    CHECK(!read_cut(vt, "t.cut", &l).failed());
+  }
 
   // Decimal positions against long double, including negative directions.
   scenes::Rng r(3);
