@@ -83,6 +83,22 @@ int main() {
                                     edge(1500, 1021, 9, 1500, 1500, 9)};
     CHECK_EQ(spans_of(plot(far, 20, exact, 20), 0), std::string("1000,1000-2000,1000;"));
   }
+  {  // Heger's occluded edge: a nearer edge lies along the middle of a farther one (a collinear
+     // overlap at different depths). No proper crossing, so the paper's DRAW cannot see it;
+     // the exact halo (reach >= W) hides the covered length and W beyond each end:
+     // x in [1300 - 5, 1700 + 5].
+    const std::vector<Edge3> e = {edge(1000, 1000, 0, 2000, 1000, 0),
+                                  edge(1300, 1000, 9, 1700, 1000, 9)};
+    CHECK_EQ(spans_of(plot(e, 5, exact, 5), 0),
+             std::string("1000,1000-1295,1000;1705,1000-2000,1000;"));
+    CHECK_EQ(spans_of(plot(e, 5, exact, 5), 1),
+             std::string("1300,1000-1700,1000;"));  // front: whole
+    CHECK_EQ(spans_of(plot(e, 5, paper, 5), 0), std::string("1000,1000-2000,1000;"));
+    // The same overlap at equal depth is one edge drawn twice, not an occlusion: no cut.
+    const std::vector<Edge3> same = {edge(1000, 1000, 4, 2000, 1000, 4),
+                                     edge(1300, 1000, 4, 1700, 1000, 4)};
+    CHECK_EQ(spans_of(plot(same, 5, exact, 5), 0), std::string("1000,1000-2000,1000;"));
+  }
   {  // W = 0 draws every edge whole, crossings or not.
     const std::vector<Edge3> e = {edge(1000, 1000, 0, 2000, 1000, 0),
                                   edge(1500, 500, 9, 1500, 1500, 9)};
