@@ -40,11 +40,20 @@ static size_t agree(const std::vector<Edge3>& edges, const std::string& label,
   return ref.records.size();
 }
 
-int main() {
+int main(int argc, char** argv) {
+  // With a family name, run only that family (each is its own CTest); without, run all.
+  const std::string only = argc > 1 ? argv[1] : "";
+  int matched = 0;
+  auto want = [&](const char* name) {
+    const bool yes = only.empty() || only == name;
+    matched += yes;
+    return yes;
+  };
   scenes::Rng rng(7);
   const int32_t M = kCoordMax;
 
-  {  // Axis-parallel lattice: every crossing on a grid corner when cells are 1000 steps.
+  if (want("cell_corners")) {  // Axis-parallel lattice: every crossing on a grid corner when cells
+                               // are 1000 steps.
     std::vector<Edge3> e;
     for (int i = 1; i <= 20; ++i) {
       e.push_back(edge(0, i * 1000, int32_t(rng.uniform(0, M)), 21000, i * 1000,
@@ -55,7 +64,7 @@ int main() {
     const size_t v = agree(e, "lattice on cell corners", 1000);
     CHECK_EQ(v, size_t{400});  // 20 x 20, minus ties in depth (probability ~0 with 20-bit z)
   }
-  {  // Many edges through one point: K edges c +/- d_i, all meeting at c.
+  if (want("one_point")) {  // Many edges through one point: K edges c +/- d_i, all meeting at c.
     std::vector<Edge3> e;
     const int32_t c = 500000;
     for (int i = 0; i < 40; ++i) {
@@ -73,7 +82,8 @@ int main() {
       }
     CHECK_EQ(v, expected);
   }
-  {  // Shared endpoints: a fan from one vertex, and a closed polygon: no crossings at all.
+  if (want("shared_endpoints")) {  // Shared endpoints: a fan from one vertex, and a closed polygon:
+                                   // no crossings at all.
     std::vector<Edge3> e;
     for (int i = 0; i < 30; ++i)
       e.push_back(
@@ -85,7 +95,8 @@ int main() {
     std::vector<Edge3> fan(e.begin(), e.begin() + 30);
     CHECK_EQ(run(fan).set.n_crossings, 0u);
   }
-  {  // T-junctions: stems ending exactly on a bar's interior, from both sides.
+  if (want("t_junctions")) {  // T-junctions: stems ending exactly on a bar's interior, from both
+                              // sides.
     std::vector<Edge3> e = {edge(0, 5000, 10, 100000, 5000, 10)};
     for (int i = 1; i < 50; ++i) {
       e.push_back(edge(i * 2000, 5000, 500, i * 2000 + 37, 9000, 600));
@@ -93,7 +104,8 @@ int main() {
     }
     CHECK_EQ(agree(e, "T-junctions", 2000), size_t{0});
   }
-  {  // Collinear overlaps and duplicates: never crossings among themselves.
+  if (want("collinear_duplicates")) {  // Collinear overlaps and duplicates: never crossings among
+                                       // themselves.
     std::vector<Edge3> e = {edge(0, 0, 1, 10000, 10000, 2), edge(5000, 5000, 3, 20000, 20000, 4),
                             edge(0, 0, 1, 10000, 10000, 2), edge(2000, 2000, 9, 3000, 3000, 9),
                             edge(0, 10000, 50, 10000, 0, 60)};
@@ -102,7 +114,8 @@ int main() {
     // duplicate, an endpoint of edge 1 (a touch), and beyond edge 3 (2000..3000).
     CHECK_EQ(v, size_t{2});
   }
-  {  // Near-parallel long edges: full-range edges offset by one step, crossing at tiny angles.
+  if (want("near_parallel")) {  // Near-parallel long edges: full-range edges offset by one step,
+                                // crossing at tiny angles.
     std::vector<Edge3> e;
     for (int i = 0; i < 30; ++i) {
       e.push_back(edge(0, 500000 + i, int32_t(rng.uniform(0, M)), M, 500000 + 30 - i,
@@ -111,7 +124,8 @@ int main() {
     }
     agree(e, "near-parallel long edges", 4096);
   }
-  {  // Coordinates at 0 and 2^20 - 1: the border and both diagonals of the whole range.
+  if (want("range_ends")) {  // Coordinates at 0 and 2^20 - 1: the border and both diagonals of the
+                             // whole range.
     std::vector<Edge3> e = {edge(0, 0, 0, M, M, M),
                             edge(0, M, M, M, 0, 0),
                             edge(0, 0, M, M, 0, 0),
@@ -128,12 +142,14 @@ int main() {
     CHECK_EQ(run(e).stats.equal_depth, uint64_t{1});
     CHECK_EQ(run(e).set.n_crossings, 5u);
   }
-  {  // Zero-length edges (seen end-on) never cross, even lying on another edge.
+  if (want("zero_length")) {  // Zero-length edges (seen end-on) never cross, even lying on another
+                              // edge.
     std::vector<Edge3> e = {edge(0, 0, 0, 1000, 1000, 0), edge(500, 500, 9, 500, 500, 99),
                             edge(300, 700, 5, 300, 700, 5), edge(0, 1000, 4, 1000, 0, 4)};
     CHECK_EQ(agree(e, "zero-length edges"), size_t{1});
   }
-  {  // Equal depth at the crossing: the edges meet in space and neither is cut.
+  if (want("equal_depth")) {  // Equal depth at the crossing: the edges meet in space and neither is
+                              // cut.
     std::vector<Edge3> e = {edge(0, 0, 100, 1000, 1000, 300), edge(0, 1000, 200, 1000, 0, 200),
                             edge(0, 500, 0, 1000, 500, 400)};  // all three have z=200 at (500,500)
     const host::HostCut c = run(e);
@@ -141,7 +157,8 @@ int main() {
     CHECK_EQ(c.stats.equal_depth, uint64_t{3});
     agree(e, "equal depth");
   }
-  {  // Crossings exactly on cell borders (cells 1024 steps): diagonals through border points.
+  if (want("cell_borders")) {  // Crossings exactly on cell borders (cells 1024 steps): diagonals
+                               // through border points.
     std::vector<Edge3> e;
     for (int i = 0; i < 30; ++i) {
       const int32_t bx = 1024 * int32_t(rng.uniform(1, 20)),
@@ -153,5 +170,6 @@ int main() {
     }
     agree(e, "crossings on cell borders", 1024);
   }
-  return check::finish("cut_families");
+  CHECK_MSG(matched > 0, "no family named '" + only + "'");  // a typo must not pass vacuously
+  return check::finish(only.empty() ? "cut_families" : ("stability_" + only).c_str());
 }
