@@ -24,7 +24,7 @@ namespace haloplot {
 struct MotionItem {
   enum Kind : uint8_t { kMove, kPen };
   Kind kind = kMove;
-  bool pen_down = false;      // kPen: the new state; kMove: the state during the move
+  bool pen_down = false;      // kPen: the state after the change; kMove: the state during the move
   int32_t delta[2] = {0, 0};  // motor steps
   uint32_t length_q8 = 0;     // plot steps * 256
   uint32_t accel = 0;         // plot steps / s^2; 0: constant speed

@@ -25,7 +25,7 @@ enum class FrameType : uint8_t {
   kSetHalo = 0x12,  // payload: width (u32), mode (u8)
   kSetEffects = 0x13,
   kPlot = 0x20,
-  kReplot = 0x21,  // a new halo width: DRAW only, CUT's result is kept
+  kReplot = 0x21,  // another halo width: DRAW only, CUT's result is kept
   kQueryStatus = 0x30,
   kStatus = 0x31,  // payload: state, last error, free bytes
   kAbort = 0x3F,

@@ -18,7 +18,7 @@ enum class Status : uint8_t {
   kCutsetInconsistent,     // a CUTSET read from outside breaks an invariant
   kStepRateExceeded,       // a speed needs more steps per second than a motor may take
   kTimerFloor,             // a step interval below the step clock's floor
-  kQueueFull,              // a fixed-size motion queue has no room (try again after a tick)
+  kQueueFull,              // a fixed-size motion queue has no room (retry after a tick)
   kIntervalTooLong,        // a step interval beyond the tick's 32-bit Q8 field (2^23 ticks)
 };
 

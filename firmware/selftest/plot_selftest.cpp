@@ -13,6 +13,7 @@
 #include "platform/instruction_counter.h"
 #include "platform/semihosting.h"
 #include "scene/cube_array.h"
+#include "tick_workload.h"
 #include "trace/trace_encoder.h"
 
 using namespace haloplot;
@@ -179,7 +180,8 @@ int main() {
   stat("step_events", engine.events());
   stat("motion_instructions_with_trace", ticks_to_instructions(t6 - t5));
 
-  // One step event alone: synthetic segments like the prep's, a GPIO-like HAL.
+  // One step event alone: the host benchmark's workload (tests/bench/tick_workload.h) on a
+  // GPIO-like HAL.
   {
     GpioHal gpio;
     SegmentQueue<64> q;
@@ -188,17 +190,7 @@ int main() {
     uint32_t delay = 0;
     bool first = true;
     while (e.events() < 200000) {
-      while (!q.full()) {
-        StepSegment seg;
-        seg.new_block = first;
-        first = false;
-        seg.major = 3000000;
-        seg.minor = 2000000;
-        seg.count = 16;
-        seg.interval_q8 = 100 * 256;
-        seg.add_q8 = -1;
-        q.push(seg);
-      }
+      bench::fill_tick_workload(q, &first);
       if (delay == 0) delay = e.start();
       const uint64_t a = counter_ticks();
       for (int k = 0; k < 800; ++k) delay = e.tick();  // 50 segments: the queue holds 64

@@ -48,6 +48,11 @@ int fail(const std::string& message) {
   return 1;
 }
 
+// Commands that take one input file and an -o output.
+bool one_input_and_output(const Options& o) {
+  return o.positional.size() == 1 && !o.get("-o").empty();
+}
+
 int fail_status(const char* stage, Status s) {
   return fail(std::string(stage) + " failed: " + status_name(s));
 }
@@ -251,8 +256,7 @@ int cmd_cut(int argc, char** argv) {
   std::set<std::string> valued = kCutValued;
   const Options o = parse_options(argc, argv, 2, valued, {"--stats"});
   if (!o.error.empty()) return fail(o.error);
-  if (o.positional.size() != 1 || o.get("-o").empty())
-    return fail(std::string("bad arguments\n") + kUsage);
+  if (!one_input_and_output(o)) return fail(std::string("bad arguments\n") + kUsage);
   CutParams cp;
   std::string error;
   if (!cut_params(o, &cp, &error)) return fail(error);
@@ -275,8 +279,7 @@ int cmd_draw(int argc, char** argv) {
   const Options o =
       parse_options(argc, argv, 2, {"-o", "--halo", "--spans"}, {"--exact-halo", "--stats"});
   if (!o.error.empty()) return fail(o.error);
-  if (o.positional.size() != 1 || o.get("-o").empty())
-    return fail(std::string("bad arguments\n") + kUsage);
+  if (!one_input_and_output(o)) return fail(std::string("bad arguments\n") + kUsage);
   DrawParams dp;
   std::string error;
   if (!draw_params(o, &dp, &error)) return fail(error);
@@ -301,8 +304,7 @@ int cmd_plot(int argc, char** argv) {
   valued.insert({"--halo", "--spans", "--cut"});
   const Options o = parse_options(argc, argv, 2, valued, {"--exact-halo", "--stats"});
   if (!o.error.empty()) return fail(o.error);
-  if (o.positional.size() != 1 || o.get("-o").empty())
-    return fail(std::string("bad arguments\n") + kUsage);
+  if (!one_input_and_output(o)) return fail(std::string("bad arguments\n") + kUsage);
   CutParams cp;
   DrawParams dp;
   std::string error;
@@ -343,8 +345,7 @@ std::string thousandths(uint64_t v) {
 int cmd_sim(int argc, char** argv) {
   const Options o = parse_options(argc, argv, 2, {"-o", "--gcode", "--hpgl"}, {"--stats"});
   if (!o.error.empty()) return fail(o.error);
-  if (o.positional.size() != 1 || o.get("-o").empty())
-    return fail(std::string("bad arguments\n") + kUsage);
+  if (!one_input_and_output(o)) return fail(std::string("bad arguments\n") + kUsage);
   JobFile jf;
   InputError ie = read_job_file(o.positional[0], &jf);
   if (ie.failed()) return fail(ie.message());
@@ -406,8 +407,7 @@ int cmd_sim(int argc, char** argv) {
 int cmd_replay(int argc, char** argv) {
   const Options o = parse_options(argc, argv, 2, {"-o"}, {"--stats"});
   if (!o.error.empty()) return fail(o.error);
-  if (o.positional.size() != 1 || o.get("-o").empty())
-    return fail(std::string("bad arguments\n") + kUsage);
+  if (!one_input_and_output(o)) return fail(std::string("bad arguments\n") + kUsage);
   std::ifstream in(o.positional[0]);
   if (!in) return fail(o.positional[0] + ": cannot open");
   Trace t;

@@ -5,6 +5,7 @@
 
 #include "motion/step_engine.h"
 #include "motion/step_segment.h"
+#include "tick_workload.h"
 
 using namespace haloplot;
 
@@ -24,26 +25,12 @@ static StepEngine<GpioHal, SegmentQueue<64>> engine(gpio, segments);
 __attribute__((noinline)) uint32_t isr_tick() { return engine.tick(); }
 
 int main() {
-  // A diagonal-ish move: 3 : 2 Bresenham, segments of 16 steps with a gentle ramp, the shape
-  // the step prep makes while cruising and ramping.
+  // The shared workload (tick_workload.h), also timed on the Cortex-M4.
   uint64_t events_wanted = 2000000, made = 0;
   bool first = true;
   uint32_t delay = 0;
   while (made < events_wanted) {
-    while (!segments.full()) {
-      StepSegment s;
-      s.kind = StepSegment::kSteps;
-      s.new_block = first;
-      first = false;
-      s.dominant = 0;
-      s.dir_bits = 0;
-      s.major = 3000000;
-      s.minor = 2000000;
-      s.count = 16;
-      s.interval_q8 = 100 * 256;
-      s.add_q8 = -1;
-      segments.push(s);
-    }
+    bench::fill_tick_workload(segments, &first);
     if (delay == 0) delay = engine.start();
     delay = isr_tick();
     made = engine.events();
