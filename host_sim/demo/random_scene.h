@@ -1,28 +1,21 @@
-// Random scenes in the HALO paper's EDGE distribution: each edge's dx and dy uniform in
-// [-L, L] on a 1 x 1 screen (scaled to [0, 2^20) steps), placed uniformly where it fits, with
-// independent uniform depths at both ends. Deterministic for a seed on every platform.
+// Random scenes in the HALO paper's EDGE distribution on the host: the core's freestanding
+// generator (core/scene/random_edges.h) into a vector, so the chip and the host build the
+// same scene from the same seed.
 #pragma once
 #include <cstdint>
 #include <vector>
 
-#include "geometry/contract.h"
+#include "scene/random_edges.h"
 
 namespace haloplot::host {
 
-// splitmix64: tiny, fast, and the same sequence everywhere.
-struct Rng {
-  uint64_t s;
-  explicit Rng(uint64_t seed) : s(seed) {}
-  uint64_t next() {
-    uint64_t z = (s += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-  int64_t uniform(int64_t lo, int64_t hi) { return lo + int64_t(next() % uint64_t(hi - lo + 1)); }
-};
+using Rng = haloplot::SplitMix64;
 
 // L in millionths of the screen side (the paper's L = 0.01 is 10000).
-std::vector<Edge3> paper_random(uint32_t n, int64_t l_millionths, uint64_t seed);
+inline std::vector<Edge3> paper_random(uint32_t n, int64_t l_millionths, uint64_t seed) {
+  std::vector<Edge3> out(n);
+  haloplot::random_edges(n, l_millionths, seed, out.data());
+  return out;
+}
 
 }  // namespace haloplot::host
