@@ -22,16 +22,11 @@
 #include "reference/draw_reference.h"
 
 using namespace haloplot;
+using bench::fmt;
 using bench::median;
 using bench::now_ms;
 
 namespace {
-
-std::string fmt(double v, int places = 2) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*f", places, v);
-  return b;
-}
 
 struct Decision {
   uint32_t behind, front;

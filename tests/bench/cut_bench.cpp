@@ -21,16 +21,11 @@
 
 using namespace haloplot;
 using namespace haloplot::host;
+using bench::fmt;
 using bench::median;
 using bench::now_ms;
 
 namespace {
-
-std::string fmt(double v, int places = 2) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*f", places, v);
-  return b;
-}
 
 // All pairs whose x-extents overlap, after a sort by x: the simple baseline, with the same
 // exact predicates as CUT so only the pairing strategy differs. Returns the crossing count.

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 #include "haloplot.h"
@@ -13,6 +15,13 @@ namespace bench {
 inline double now_ms() {
   using namespace std::chrono;
   return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
+}
+
+// A number with a fixed count of decimals, for the reports' tables.
+inline std::string fmt(double v, int places = 2) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*f", places, v);
+  return b;
 }
 
 inline double median(std::vector<double> v) {
