@@ -6,25 +6,7 @@
 #     arithmetic against the host's 64-bit build of the same core);
 #   - its crossing count equals the host's.
 # Usage: qemu_plot_test.sh FIRMWARE_DIR HALOPLOT_TOOL
-set -u
-fw="$1"
-tool="$2"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-pass=0 fail=0
-ok() { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAILED: $*" >&2; }
-qemu() {
-  timeout 600 qemu-system-arm -M netduinoplus2 -nographic -monitor none -serial none \
-    -semihosting-config enable=on,target=native -icount shift=0,align=off,sleep=off -kernel "$1"
-}
-for image in fw_hello.elf fw_plot_selftest.elf; do
-  if [ ! -f "$fw/$image" ]; then
-    echo "FAILED: $fw/$image is missing: build the firmware preset first (cmake --build --preset firmware)"
-    echo "firmware_plot: 0 passed, 1 failed"
-    exit 1
-  fi
-done
+source "$(dirname "$0")/qemu_common.sh" firmware_plot "$1" "$2" fw_hello.elf fw_plot_selftest.elf
 
 qemu "$fw/fw_hello.elf" > "$work/hello.out"
 rc=$?
@@ -49,5 +31,4 @@ fi
 host_crossings=$("$tool" plot scene.edges --halo 50 -o x.svg --stats 2>&1 | sed -n 's/^crossings=//p')
 fw_crossings=$(sed -n 's/^fw crossings=//p' fw.out)
 if [ -n "$fw_crossings" ] && [ "$fw_crossings" = "$host_crossings" ]; then ok; else bad "crossings: firmware $fw_crossings, host $host_crossings"; fi
-echo "firmware_plot: $pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+finish
