@@ -62,6 +62,49 @@ Status job_bytes(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t c
   return Status::kOk;
 }
 
+namespace {
+
+// Stage 3: the path, after the spans (DRAW's scratch is dead by now).
+Status plan_stage(const JobSpec& spec, uint8_t* base, size_t spans_offset, size_t spans_size,
+                  size_t buffer_bytes, const SpanCollector& collect, PreparedJob* job,
+                  JobCounters* c) {
+  JobBytes stage;
+  size_path_stages(collect.count, &stage);
+  uint8_t* points_mem = base + spans_offset + spans_size;
+  if (buffer_bytes < spans_offset + spans_size + stage.points + stage.path)
+    return Status::kWorkspaceTooSmall;
+  ++c->path_runs;
+  uint32_t n_points = 0;
+  const Status s =
+      plan_path(collect.out, collect.count, spec.start_x, spec.start_y, points_mem + stage.points,
+                stage.path, reinterpret_cast<PathPoint*>(points_mem),
+                path_points_max(collect.count), &n_points, &c->path);
+  if (!ok(s)) return s;
+  job->points = reinterpret_cast<PathPoint*>(points_mem);
+  job->n_points = n_points;
+  job->spans = collect.out;
+  job->n_spans = collect.count;
+  return Status::kOk;
+}
+
+// Stages 2 and 3 for a haloed drawing: DRAW from the CUTSET at the start of the buffer (into
+// the space CUT's scratch held), then the path.
+Status draw_stage(const JobSpec& spec, uint32_t n, size_t cutset_size, uint8_t* base,
+                  size_t buffer_bytes, PreparedJob* job, JobCounters* c) {
+  const uint64_t span_bound = uint64_t{n} + job->cutset.n_crossings;
+  const size_t spans_size = align8(size_t(span_bound) * sizeof(Segment2));
+  const size_t draw_size = align8(draw_scratch_bytes(job->cutset));
+  if (buffer_bytes < cutset_size + spans_size + draw_size) return Status::kWorkspaceTooSmall;
+  SpanCollector collect{reinterpret_cast<Segment2*>(base + cutset_size), uint32_t(span_bound), 0};
+  ++c->draw_runs;
+  const Status s = draw(job->cutset, spec.draw, base + cutset_size + spans_size, draw_size,
+                        SpanSink{&SpanCollector::emit, &collect}, &c->draw);
+  if (!ok(s)) return s;
+  return plan_stage(spec, base, cutset_size, spans_size, buffer_bytes, collect, job, c);
+}
+
+}  // namespace
+
 Status job_prepare(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
                    void* buffer, size_t buffer_bytes, PreparedJob* out, JobCounters* counters) {
   JobCounters c;
@@ -70,63 +113,48 @@ Status job_prepare(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t
   if (!ok(s)) return s;
   uint8_t* base = static_cast<uint8_t*>(buffer);
   PreparedJob job;
-  uint64_t span_bound = n;
-  size_t cutset_size = 0;
-
-  SpanCollector collect{nullptr, 0, 0};
   if (spec.drawing == DrawingEffect::kHaloed) {
     // Stage 1: CUT. The CUTSET first (it outlives CUT), its scratch after it.
     CutPlan plan;
     s = plan_cut(edges, n, spec.cut, &plan);
     if (!ok(s)) return s;
-    cutset_size = align8(cutset_bytes(n, crossing_capacity));
+    const size_t cutset_size = align8(cutset_bytes(n, crossing_capacity));
     const size_t scratch = align8(plan.scratch_bytes);
     if (buffer_bytes < cutset_size + scratch) return Status::kWorkspaceTooSmall;
     ++c.cut_runs;
     s = run_cut(plan, edges, base + cutset_size, scratch, base, cutset_size, &job.cutset, &c.cut);
-    if (!ok(s)) {
-      if (counters) *counters = c;
-      return s;
-    }
-    // Stage 2: DRAW, into the space CUT's scratch held.
-    span_bound += job.cutset.n_crossings;
-    const size_t spans_size = align8(size_t(span_bound) * sizeof(Segment2));
-    const size_t draw_size = align8(draw_scratch_bytes(job.cutset));
-    if (buffer_bytes < cutset_size + spans_size + draw_size) return Status::kWorkspaceTooSmall;
-    collect =
-        SpanCollector{reinterpret_cast<Segment2*>(base + cutset_size), uint32_t(span_bound), 0};
-    ++c.draw_runs;
-    s = draw(job.cutset, spec.draw, base + cutset_size + spans_size, draw_size,
-             SpanSink{&SpanCollector::emit, &collect}, &c.draw);
-    if (!ok(s)) return s;
+    if (ok(s)) s = draw_stage(spec, n, cutset_size, base, buffer_bytes, &job, &c);
   } else {
     for (uint32_t i = 0; i < n; ++i)
       if (!in_range(edges[i])) return Status::kCoordinateOutOfRange;
-    if (buffer_bytes < align8(size_t{n} * sizeof(Segment2))) return Status::kWorkspaceTooSmall;
-    collect = SpanCollector{reinterpret_cast<Segment2*>(base), n, 0};
+    const size_t spans_size = align8(size_t{n} * sizeof(Segment2));
+    if (buffer_bytes < spans_size) return Status::kWorkspaceTooSmall;
+    SpanCollector collect{reinterpret_cast<Segment2*>(base), n, 0};
     for (uint32_t i = 0; i < n; ++i)
       collect.out[collect.count++] =
           Segment2{edges[i].a.x, edges[i].a.y, edges[i].b.x, edges[i].b.y};
+    s = plan_stage(spec, base, 0, spans_size, buffer_bytes, collect, &job, &c);
   }
-  // Stage 3: the path, after the spans (DRAW's scratch is dead).
-  JobBytes stage;
-  size_path_stages(collect.count, &stage);
-  const size_t spans_size = align8(size_t(span_bound) * sizeof(Segment2));
-  uint8_t* points_mem = base + cutset_size + spans_size;
-  if (buffer_bytes < cutset_size + spans_size + stage.points + stage.path)
-    return Status::kWorkspaceTooSmall;
-  PathPoint* points = reinterpret_cast<PathPoint*>(points_mem);
-  ++c.path_runs;
-  uint32_t n_points = 0;
-  s = plan_path(collect.out, collect.count, spec.start_x, spec.start_y, points_mem + stage.points,
-                stage.path, points, path_points_max(collect.count), &n_points, &c.path);
-  if (!ok(s)) return s;
-  job.points = points;
-  job.n_points = n_points;
-  job.spans = collect.out;
-  job.n_spans = collect.count;
-  *out = job;
   if (counters) *counters = c;
+  if (!ok(s)) return s;
+  *out = job;
+  return Status::kOk;
+}
+
+Status job_redraw(const JobSpec& spec, uint32_t n, uint32_t crossing_capacity, void* buffer,
+                  size_t buffer_bytes, PreparedJob* job, JobCounters* counters) {
+  if (spec.drawing != DrawingEffect::kHaloed || job->cutset.edges == nullptr)
+    return Status::kBadParameter;
+  Status s = validate(spec.machine);
+  if (!ok(s)) return s;
+  JobCounters c;
+  PreparedJob next;
+  next.cutset = job->cutset;
+  s = draw_stage(spec, n, align8(cutset_bytes(n, crossing_capacity)), static_cast<uint8_t*>(buffer),
+                 buffer_bytes, &next, &c);
+  if (counters) *counters = c;
+  if (!ok(s)) return s;
+  *job = next;
   return Status::kOk;
 }
 

@@ -69,4 +69,10 @@ Status job_bytes(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t c
 Status job_prepare(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
                    void* buffer, size_t buffer_bytes, PreparedJob* out, JobCounters* counters);
 
+// Re-plot with another halo width (spec.draw): DRAW and the path run again from the CUTSET
+// that job_prepare() left at the start of the same buffer; CUT does not run (the paper's
+// point: a new halo width costs only DRAW). `job` is updated in place.
+Status job_redraw(const JobSpec& spec, uint32_t n, uint32_t crossing_capacity, void* buffer,
+                  size_t buffer_bytes, PreparedJob* job, JobCounters* counters);
+
 }  // namespace haloplot

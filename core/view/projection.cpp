@@ -1,0 +1,118 @@
+#include "view/projection.h"
+
+#include "view/trig.h"
+
+namespace haloplot {
+namespace {
+
+// Rotated values: |world| <= 2^20, |sin|, |cos| <= 2^30, two products summed: < 2^52.
+static_assert(2 * (int64_t{kWorldLimit} << kTrigFractionBits) < (int64_t{1} << 53), "rotation");
+
+struct Rotated {
+  int64_t x, y, d;  // Q30 world units
+};
+
+struct Rotation {
+  SinCos az, el;
+  Rotated apply(const Point3& p) const {
+    const int64_t xs = p.x * az.cos - p.y * az.sin;
+    // y1 stays exact in Q30 (< 2^51); its products with the elevation's sin and cos are
+    // rounded once, back to Q30.
+    const int64_t y1 = p.x * az.sin + p.y * az.cos;
+    return {xs, p.z * el.cos - mul_shift30(y1, el.sin), p.z * el.sin - mul_shift30(y1, el.cos)};
+  }
+  // round(a * b / 2^30) for |a| < 2^52 and |b| <= 2^30 without a 128-bit product: a is split
+  // into a high part and 26 low bits, each product below 2^56.
+  static int64_t mul_shift30(int64_t a, int64_t b) {
+    const bool neg = a < 0;
+    const uint64_t m = neg ? 0 - uint64_t(a) : uint64_t(a);
+    const int64_t high = int64_t(m >> 26) * b, low = int64_t(m & 0x3ffffffu) * b;
+    const int64_t q = high >> 4;        // floor(high / 16)
+    const int64_t rem = high - q * 16;  // [0, 16): the part of high below 2^30 after scaling
+    const int64_t r = q + (((rem << 26) + low + (int64_t{1} << 29)) >> 30);
+    return neg ? -r : r;
+  }
+};
+
+struct Bounds {
+  int64_t lo = INT64_MAX, hi = INT64_MIN;
+  void add(int64_t v) {
+    lo = v < lo ? v : lo;
+    hi = v > hi ? v : hi;
+  }
+};
+
+int bit_length(uint64_t v) {
+  int n = 0;
+  while (v) ++n, v >>= 1;
+  return n;
+}
+
+// One axis of the fit: out_lo + round((v - lo) * out_size / range). The range is pre-shifted
+// to 32 bits so the product stays in int64 (< 2^53); the shift drops less than 2^-31 of the
+// range, under 2^-11 step. Both screen axes share one (out_size, range) pair: the scale is
+// uniform, set by the axis that fills its side.
+struct AxisFit {
+  int64_t lo = 0, out_lo = 0, out_size = 0, range = 0;
+  int shift = 0;
+  AxisFit(int64_t lo_, uint64_t range_, int64_t out_lo_, int64_t out_size_)
+      : lo(lo_), out_lo(out_lo_), out_size(out_size_) {
+    shift = bit_length(range_) > 32 ? bit_length(range_) - 32 : 0;
+    range = int64_t(range_ >> shift);
+  }
+  int32_t operator()(int64_t v) const {
+    if (range == 0) return int32_t(out_lo);
+    const int64_t num = int64_t(uint64_t(v - lo) >> shift) * out_size;
+    return int32_t(out_lo + (2 * num + range) / (2 * range));
+  }
+};
+
+}  // namespace
+
+Status validate(const View& v) {
+  if (v.width < 1 || v.height < 1 || v.margin < 0 || int64_t{v.margin} + v.width > kCoordMax ||
+      int64_t{v.margin} + v.height > kCoordMax)
+    return Status::kBadParameter;
+  return Status::kOk;
+}
+
+Status project_points(const View& view, const Point3* world, uint32_t n, Point3* out) {
+  Status s = validate(view);
+  if (!ok(s)) return s;
+  const Rotation rot{sin_cos_mdeg(view.azimuth_mdeg), sin_cos_mdeg(view.elevation_mdeg)};
+  Bounds bx, by, bd;
+  for (uint32_t i = 0; i < n; ++i) {
+    const Point3& p = world[i];
+    if (p.x < -kWorldLimit || p.x > kWorldLimit || p.y < -kWorldLimit || p.y > kWorldLimit ||
+        p.z < -kWorldLimit || p.z > kWorldLimit)
+      return Status::kCoordinateOutOfRange;
+    const Rotated r = rot.apply(p);
+    bx.add(r.x), by.add(r.y), bd.add(r.d);
+  }
+  if (n == 0) return Status::kOk;
+  // Uniform scale: the axis whose range is larger relative to its side limits the scale.
+  // xr / w >= yr / h compares as xr * h >= yr * w on ranges pre-shifted to 40 bits.
+  const uint64_t xr = uint64_t(bx.hi - bx.lo), yr = uint64_t(by.hi - by.lo);
+  const int len = bit_length(xr > yr ? xr : yr), sh = len > 40 ? len - 40 : 0;
+  const bool x_limits = int64_t(xr >> sh) * view.height >= int64_t(yr >> sh) * view.width;
+  const uint64_t range = x_limits ? xr : yr;
+  const int64_t side = x_limits ? view.width : view.height;
+  const AxisFit fx(bx.lo, range, view.margin, side), fy(by.lo, range, view.margin, side),
+      fd(bd.lo, uint64_t(bd.hi - bd.lo), 0, kCoordMax);
+  for (uint32_t i = 0; i < n; ++i) {
+    const Rotated r = rot.apply(world[i]);
+    out[i] = Point3{fx(r.x), fy(r.y), fd(r.d)};
+  }
+  return Status::kOk;
+}
+
+Status edges_from_indices(const Point3* points, uint32_t n_points, const uint32_t* pairs,
+                          uint32_t n_edges, Edge3* out) {
+  for (uint32_t e = 0; e < n_edges; ++e)
+    if (pairs[2 * e] >= n_points || pairs[2 * e + 1] >= n_points) return Status::kBadParameter;
+  for (uint32_t e = 0; e < n_edges; ++e)
+    out[e] = Edge3{points[pairs[2 * e]], points[pairs[2 * e + 1]]};
+  return Status::kOk;
+}
+
+}  // namespace haloplot

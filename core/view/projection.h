@@ -1,0 +1,44 @@
+// The view transform: world vertices to plot steps, in fixed point (the README's convention).
+//
+//   x' = x cos(az) - y sin(az),  y1 = x sin(az) + y cos(az)
+//   screen y' = z cos(el) - y1 sin(el),  depth d = z sin(el) - y1 cos(el)   (larger d = nearer)
+//
+// then fitted uniformly into the plot area (the same steps per world unit on both axes,
+// centred on neither: the lower-left corner sits at the margin) and depth scaled to
+// [0, 2^20). Orthographic only; the perspective eye arrives with the solid-models issue.
+//
+// Numbers: world coordinates within +-2^20; sin and cos in Q2.30 (view/trig.h); the rotated
+// values are exact products in int64 (< 2^53) and are fitted with one rounding per output.
+// Error against exact real arithmetic: at most 1/2 step from the final rounding plus
+// 2^-9 step from the trigonometry and the fit's pre-shift (tested against long double).
+#pragma once
+#include <stdint.h>
+
+#include "geometry/contract.h"
+#include "status/status.h"
+
+namespace haloplot {
+
+inline constexpr int32_t kWorldLimit = int32_t{1} << 20;  // |world coordinate| <= this
+
+struct View {
+  int32_t azimuth_mdeg = 30000;  // millidegrees
+  int32_t elevation_mdeg = 40000;
+  int32_t width = 20000, height = 16000;  // plot area, steps
+  int32_t margin = 400;                   // lower-left corner of the plot area
+};
+
+// Validates the view (plot area inside the coordinate range).
+Status validate(const View& v);
+
+// Projects n world points into plot steps. `out` may be `world` itself (two passes: the
+// first finds the bounds, the second writes). kCoordinateOutOfRange names a world point
+// beyond kWorldLimit; kBadParameter a bad view. A single point, or points all on one screen
+// line, map to the margin on the degenerate axis.
+Status project_points(const View& view, const Point3* world, uint32_t n, Point3* out);
+
+// Edges from vertex index pairs (2 per edge); kBadParameter for an index beyond n_points.
+Status edges_from_indices(const Point3* points, uint32_t n_points, const uint32_t* pairs,
+                          uint32_t n_edges, Edge3* out);
+
+}  // namespace haloplot
