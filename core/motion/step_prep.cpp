@@ -138,14 +138,21 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
     }
     // Segment length: up to kSegmentSteps, halved while the exact interval changes by more
     // than 1/8 across it, so the tick's linear interval ramp stays close to the true curve
-    // (near rest, where t grows like sqrt(j), segments shrink to single, exact steps).
+    // (near rest, where t grows like sqrt(j), segments shrink to single, exact steps). The
+    // middle interval is checked too: a short move that accelerates and brakes within one
+    // segment has equal first and last intervals, yet a V-shaped profile no ramp can follow.
     uint32_t j1 = j_ + kSegmentSteps < n_ ? j_ + kSegmentSteps : n_;
     const uint64_t t_first = block_start_q8_ + block_time_q8(j_ + 1);
+    auto interval_at = [&](uint32_t j) {  // the exact interval before step j (1-based)
+      return int64_t(block_time_q8(j) - (j > 1 ? block_time_q8(j - 1) : 0));
+    };
     while (j1 > j_ + 1) {
-      const int64_t i_first = int64_t(block_time_q8(j_ + 1) - (j_ > 0 ? block_time_q8(j_) : 0));
-      const int64_t i_last = int64_t(block_time_q8(j1) - block_time_q8(j1 - 1));
+      const int64_t i_first = interval_at(j_ + 1), i_last = interval_at(j1);
+      const int64_t i_mid = interval_at(j_ + 1 + (j1 - j_ - 1) / 2);
+      const int64_t lo = i_first < i_last ? i_first : i_last;
       const int64_t diff = i_first > i_last ? i_first - i_last : i_last - i_first;
-      if (8 * diff <= (i_first < i_last ? i_first : i_last)) break;
+      const int64_t bend = 2 * i_mid - i_first - i_last;  // twice the mid's offset from a line
+      if (8 * diff <= lo && 4 * (bend < 0 ? -bend : bend) <= lo) break;
       j1 = j_ + (j1 - j_) / 2;
     }
     const int64_t m = j1 - j_;
