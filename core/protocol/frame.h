@@ -16,18 +16,24 @@ namespace haloplot {
 inline constexpr uint8_t kFrameStart = 0x7E;
 inline constexpr size_t kFrameOverhead = 1 + 2 + 1 + 1 + 4;
 
-// Message types. The job server that acts on them arrives with the firmware issue.
+// Message types; payload layouts are in protocol/messages.h, their handling in job_server.h.
 enum class FrameType : uint8_t {
-  kAck = 0x01,          // payload: the acknowledged seq
-  kNak = 0x02,          // payload: the seq expected next; the sender resends from there
-  kUploadEdges = 0x10,  // payload: a chunk of the scene (Edge3 records, little-endian)
+  kAck = 0x01,   // payload: acknowledged seq, status of the request
+  kNak = 0x02,   // payload: the seq expected next; the sender resends from there
+  kSync = 0x03,  // accepted with any seq: starts a session, the next seq expected is seq + 1
+  kUploadBegin = 0x0F,
+  kUploadEdges = 0x10,  // projected Edge3 records (.edges)
   kSetView = 0x11,
-  kSetHalo = 0x12,  // payload: width (u32), mode (u8)
+  kSetHalo = 0x12,
   kSetEffects = 0x13,
+  kUploadVertices = 0x14,     // world vertices, projected with the view on the controller
+  kUploadEdgeIndices = 0x15,  // vertex index pairs
+  kUploadFaces = 0x16,        // faces: refused until the solid-models issue lands
+  kSetMachine = 0x17,
   kPlot = 0x20,
   kReplot = 0x21,  // another halo width: DRAW only, CUT's result is kept
   kQueryStatus = 0x30,
-  kStatus = 0x31,  // payload: state, last error, free bytes
+  kStatus = 0x31,  // the reply to kQueryStatus
   kAbort = 0x3F,
 };
 

@@ -32,6 +32,26 @@ const char* status_name(Status s) {
       return "motion queue full";
     case Status::kIntervalTooLong:
       return "step interval too long for the tick";
+    case Status::kSceneTooLarge:
+      return "scene too large for the controller's memory";
+    case Status::kBusy:
+      return "busy plotting";
+    case Status::kNoScene:
+      return "no complete scene uploaded";
+    case Status::kNoCutset:
+      return "no CUT result for this scene and view: plot first";
+    case Status::kUploadMismatch:
+      return "upload does not match its declared counts";
+    case Status::kUnsupported:
+      return "not supported by this build";
+    case Status::kMalformedRequest:
+      return "malformed request";
+    case Status::kAborted:
+      return "aborted";
+    case Status::kLimitSwitch:
+      return "limit switch triggered";
+    case Status::kStepUnderrun:
+      return "step queue underrun";
   }
   return "unknown status";
 }

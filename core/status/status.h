@@ -20,6 +20,16 @@ enum class Status : uint8_t {
   kTimerFloor,             // a step interval below the step clock's floor
   kQueueFull,              // a fixed-size motion queue has no room (retry after a tick)
   kIntervalTooLong,        // a step interval beyond the tick's 32-bit Q8 field (2^23 ticks)
+  kSceneTooLarge,          // the uploaded scene does not fit the controller's memory
+  kBusy,                   // a plot is running: only status and abort are accepted
+  kNoScene,                // plot before a complete scene upload
+  kNoCutset,               // re-plot before a plot of this scene and view
+  kUploadMismatch,         // an upload chunk beyond, or short of, the declared counts
+  kUnsupported,            // a request this build cannot serve yet (names the reason)
+  kMalformedRequest,       // a request payload of the wrong length or with bad fields
+  kAborted,                // motion stopped by an abort request
+  kLimitSwitch,            // motion stopped by a limit switch
+  kStepUnderrun,           // the step timer found the queue empty in the middle of a move
 };
 
 // A short, stable, human-readable name, e.g. "crossing capacity exceeded".

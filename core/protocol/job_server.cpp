@@ -1,0 +1,279 @@
+#include "protocol/job_server.h"
+
+namespace haloplot {
+namespace {
+
+size_t align8(size_t v) { return (v + 7) & ~size_t{7}; }
+
+// Scene bytes at the front of the arena, by format (see the layout in job_server.h).
+size_t world_bytes(const UploadBegin& s) { return align8(size_t{s.vertices} * sizeof(Point3)); }
+size_t pair_bytes(const UploadBegin& s) { return align8(size_t{s.edges} * 2 * sizeof(uint32_t)); }
+size_t edge_bytes(const UploadBegin& s) { return align8(size_t{s.edges} * sizeof(Edge3)); }
+
+}  // namespace
+
+JobServer::JobServer(uint8_t* arena, size_t arena_bytes, uint8_t* rx_buffer, size_t rx_bytes,
+                     ByteOutput out, MotionPort motion)
+    : arena_(arena),
+      arena_bytes_(arena_bytes),
+      decoder_(rx_buffer, rx_bytes, kMaxPayload),
+      out_(out),
+      motion_(motion) {}
+
+size_t JobServer::job_offset() const {
+  // The indexed format keeps the world vertices and the pairs (a new view re-projects them)
+  // in front of the projected edges.
+  const size_t front =
+      scene_.format == SceneFormat::kIndexed ? world_bytes(scene_) + pair_bytes(scene_) : 0;
+  return front + edge_bytes(scene_);
+}
+
+void JobServer::push(uint8_t byte) {
+  on_event(decoder_.push(byte));
+  for (FrameDecoder::Event ev = decoder_.poll(); ev != FrameDecoder::Event::kNone;
+       ev = decoder_.poll())
+    on_event(ev);
+}
+
+void JobServer::idle() {
+  for (FrameDecoder::Event ev = decoder_.idle(); ev != FrameDecoder::Event::kNone;
+       ev = decoder_.poll())
+    on_event(ev);
+}
+
+void JobServer::on_event(FrameDecoder::Event ev) {
+  if (ev == FrameDecoder::Event::kFrame) {
+    on_frame(decoder_.frame());
+  } else if (ev == FrameDecoder::Event::kBadFrame) {
+    const uint8_t expected = expected_seq_;
+    reply(FrameType::kNak, &expected, 1);
+  }
+}
+
+void JobServer::on_frame(const Frame& f) {
+  if (f.type == uint8_t(FrameType::kSync)) {
+    expected_seq_ = f.seq;  // accepted below as the expected frame
+  } else if (f.seq == uint8_t(expected_seq_ - 1) && last_reply_bytes_ > 0) {
+    // The sender did not hear our reply and sent the frame again: answer again, act once.
+    out_.write(out_.ctx, last_reply_, last_reply_bytes_);
+    return;
+  } else if (f.seq != expected_seq_) {
+    const uint8_t expected = expected_seq_;
+    reply(FrameType::kNak, &expected, 1);
+    return;
+  }
+  ++expected_seq_;
+  if (f.type == uint8_t(FrameType::kQueryStatus)) {
+    send_status(f.seq);
+  } else {
+    const Status s = act(f);
+    if (!ok(s)) last_error_ = s;
+    const uint8_t ack[2] = {f.seq, uint8_t(s)};
+    reply(FrameType::kAck, ack, 2);
+  }
+  // Only replies to in-sequence frames are repeated for a duplicate; a NAK never is.
+}
+
+Status JobServer::act(const Frame& f) {
+  const FrameType type = FrameType(f.type);
+  if (type == FrameType::kSync) return Status::kOk;
+  if (type == FrameType::kAbort) {
+    if (state_ == ServerState::kPlotting) motion_.abort(motion_.ctx);
+    return Status::kOk;
+  }
+  if (state_ == ServerState::kPlotting) return Status::kBusy;
+  switch (type) {
+    case FrameType::kUploadBegin:
+      return upload_begin(f.payload, f.length);
+    case FrameType::kUploadEdges:
+    case FrameType::kUploadVertices:
+    case FrameType::kUploadEdgeIndices:
+      return upload_records(type, f.payload, f.length);
+    case FrameType::kUploadFaces:
+      return Status::kUnsupported;  // faces arrive with the solid-models issue
+    case FrameType::kSetView: {
+      View v;
+      Status s = decode_view(f.payload, f.length, &v);
+      if (ok(s)) s = validate(v);
+      if (!ok(s)) return s;
+      view_ = v;
+      if (scene_.format == SceneFormat::kIndexed) forget_cut();  // the projection changes
+      return Status::kOk;
+    }
+    case FrameType::kSetHalo: {
+      DrawParams d;
+      const Status s = decode_halo(f.payload, f.length, &d);
+      if (!ok(s)) return s;
+      // The exact halo needs CUT's near misses out to the width: a wider one needs a new CUT.
+      if (d.mode == HaloMode::kExact && d.halo > spec_.cut.reach) forget_cut();
+      spec_.draw = d;
+      if (d.mode == HaloMode::kExact)
+        spec_.cut.reach = d.halo > spec_.cut.reach ? d.halo : spec_.cut.reach;
+      return Status::kOk;
+    }
+    case FrameType::kSetEffects:
+      return decode_effects(f.payload, f.length, &spec_.drawing, &spec_.effects);
+    case FrameType::kSetMachine: {
+      JobSpec next = spec_;
+      Status s = decode_machine(f.payload, f.length, &next);
+      if (ok(s)) s = validate(next.machine);
+      if (ok(s)) spec_ = next;
+      return s;
+    }
+    case FrameType::kPlot:
+      return f.length == 0 ? plot() : Status::kMalformedRequest;
+    case FrameType::kReplot:
+      return replot(f.payload, f.length);
+    default:
+      return Status::kMalformedRequest;
+  }
+}
+
+Status JobServer::upload_begin(const uint8_t* p, uint16_t n) {
+  UploadBegin b;
+  const Status s = decode_upload_begin(p, n, &b);
+  if (!ok(s)) return s;
+  if (b.faces > 0) return Status::kUnsupported;
+  // 64-bit sums: a hostile count cannot wrap the check.
+  const uint64_t need = (b.format == SceneFormat::kIndexed
+                             ? uint64_t{b.vertices} * sizeof(Point3) + uint64_t{b.edges} * 8 + 16
+                             : 0) +
+                        uint64_t{b.edges} * sizeof(Edge3) + 8;
+  if (need > arena_bytes_) return Status::kSceneTooLarge;
+  scene_ = b;
+  received_vertices_ = received_edges_ = 0;
+  n_edges_ = 0;
+  forget_cut();
+  state_ = b.edges == 0 ? ServerState::kIdle : ServerState::kUploading;
+  return Status::kOk;
+}
+
+Status JobServer::upload_records(FrameType type, const uint8_t* p, uint16_t n) {
+  if (state_ != ServerState::kUploading) return Status::kUploadMismatch;
+  const bool indexed = scene_.format == SceneFormat::kIndexed;
+  if (type == FrameType::kUploadVertices) {
+    if (!indexed || n % kVertexRecordBytes) return Status::kUploadMismatch;
+    const uint32_t k = n / kVertexRecordBytes;
+    if (k > scene_.vertices - received_vertices_) return Status::kUploadMismatch;
+    Point3* world = reinterpret_cast<Point3*>(arena_);
+    for (uint32_t i = 0; i < k; ++i)
+      world[received_vertices_ + i] = decode_vertex(p + i * kVertexRecordBytes);
+    received_vertices_ += k;
+  } else {
+    const size_t size = type == FrameType::kUploadEdges ? kEdgeRecordBytes : kIndexRecordBytes;
+    if (indexed != (type == FrameType::kUploadEdgeIndices) || n % size)
+      return Status::kUploadMismatch;
+    const uint32_t k = uint32_t(n / size);
+    if (k > scene_.edges - received_edges_) return Status::kUploadMismatch;
+    if (indexed) {
+      uint32_t* pairs = reinterpret_cast<uint32_t*>(arena_ + world_bytes(scene_));
+      for (uint32_t i = 0; i < 2 * k; ++i) pairs[2 * received_edges_ + i] = get_u32(p + 4 * i);
+    } else {
+      Edge3* edges = reinterpret_cast<Edge3*>(arena_);
+      for (uint32_t i = 0; i < k; ++i) edges[received_edges_ + i] = decode_edge(p + i * size);
+    }
+    received_edges_ += k;
+  }
+  if (received_edges_ == scene_.edges && received_vertices_ == scene_.vertices) {
+    n_edges_ = scene_.edges;
+    state_ = ServerState::kReady;
+  }
+  return Status::kOk;
+}
+
+Status JobServer::plot() {
+  if (state_ != ServerState::kReady) return Status::kNoScene;
+  uint8_t* job_mem = arena_ + job_offset();
+  const size_t job_bytes = arena_bytes_ - job_offset();
+  Edge3* edges = reinterpret_cast<Edge3*>(arena_ + job_offset() - edge_bytes(scene_));
+  if (scene_.format == SceneFormat::kIndexed) {
+    // Project into the (still free) job buffer, then expand the pairs into edges.
+    if (size_t{scene_.vertices} * sizeof(Point3) > job_bytes) return Status::kWorkspaceTooSmall;
+    Point3* screen = reinterpret_cast<Point3*>(job_mem);
+    Status s =
+        project_points(view_, reinterpret_cast<const Point3*>(arena_), scene_.vertices, screen);
+    if (ok(s))
+      s = edges_from_indices(screen, scene_.vertices,
+                             reinterpret_cast<const uint32_t*>(arena_ + world_bytes(scene_)),
+                             n_edges_, edges);
+    if (!ok(s)) return s;
+  }
+  forget_cut();
+  // The crossing count is unknown before CUT: start from a guess and retry once with the
+  // exact count CUT reports (it never stores a partial CUTSET).
+  crossing_capacity_ = n_edges_ + 64;
+  Status s = Status::kOk;
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    s = job_prepare(spec_, edges, n_edges_, crossing_capacity_, job_mem, job_bytes, &job_,
+                    &counters_);
+    cut_runs_ += counters_.cut_runs;
+    draw_runs_ += counters_.draw_runs;
+    if (s != Status::kCrossingCapacity) break;
+    const uint64_t need = counters_.cut.crossings + counters_.cut.near_misses;
+    if (need > 0xffffffffu) break;
+    crossing_capacity_ = uint32_t(need);
+  }
+  if (!ok(s)) return s;
+  has_cut_ = spec_.drawing == DrawingEffect::kHaloed;
+  return start_motion();
+}
+
+Status JobServer::replot(const uint8_t* p, uint16_t n) {
+  DrawParams d;
+  Status s = decode_halo(p, n, &d);
+  if (!ok(s)) return s;
+  if (!has_cut_ || spec_.drawing != DrawingEffect::kHaloed) return Status::kNoCutset;
+  if (d.mode == HaloMode::kExact && d.halo > job_.cutset.reach) return Status::kNoCutset;
+  JobSpec next = spec_;
+  next.draw = d;
+  s = job_redraw(next, n_edges_, crossing_capacity_, arena_ + job_offset(),
+                 arena_bytes_ - job_offset(), &job_, &counters_);
+  draw_runs_ += counters_.draw_runs;
+  if (!ok(s)) return s;
+  spec_.draw = d;
+  return start_motion();
+}
+
+Status JobServer::start_motion() {
+  JobSpec run = spec_;
+  if (!run.effects.backlash) run.machine.backlash[0] = run.machine.backlash[1] = 0;
+  const Status s = motion_.begin(motion_.ctx, run, job_);
+  if (ok(s)) state_ = ServerState::kPlotting;
+  return s;
+}
+
+void JobServer::service() {
+  if (state_ != ServerState::kPlotting || motion_.running(motion_.ctx)) return;
+  const Status s = motion_.result(motion_.ctx);
+  if (!ok(s)) last_error_ = s;
+  state_ = ServerState::kReady;
+}
+
+void JobServer::send_status(uint8_t seq) {
+  StatusReport r;
+  r.seq = seq;
+  r.state = state_;
+  r.last_error = last_error_;
+  r.free_bytes = uint32_t(arena_bytes_ - job_offset());
+  r.edges = n_edges_;
+  r.crossings = has_cut_ ? job_.cutset.n_crossings : 0;
+  r.cut_runs = cut_runs_;
+  r.draw_runs = draw_runs_;
+  r.step_events = motion_.step_events(motion_.ctx);
+  r.bad_frames = decoder_.bad_frames();
+  uint8_t payload[kStatusBytes];
+  encode_status(r, payload);
+  reply(FrameType::kStatus, payload, kStatusBytes);
+}
+
+void JobServer::reply(FrameType type, const uint8_t* payload, uint16_t n) {
+  uint8_t frame[sizeof last_reply_];
+  const size_t bytes = encode_frame(uint8_t(type), payload[0], payload, n, frame, sizeof frame);
+  out_.write(out_.ctx, frame, uint32_t(bytes));
+  if (type != FrameType::kNak) {
+    for (size_t i = 0; i < bytes; ++i) last_reply_[i] = frame[i];
+    last_reply_bytes_ = uint16_t(bytes);
+  }
+}
+
+}  // namespace haloplot

@@ -1,0 +1,100 @@
+// The controller's side of the job protocol: frames in (byte by byte from the USART), replies
+// out, a stored scene and job settings, and plots handed to the platform's motion.
+//
+// Reliability: stop-and-wait with an 8-bit sequence number. A verified frame with the
+// expected seq is acted on and acknowledged (kAck carries the request's status: an error is
+// an answer, never a crash). A damaged frame, or one out of sequence, gets kNak with the seq
+// expected, and the sender resends from there. A repeat of the last frame (its ACK was lost)
+// gets the same reply again and is not acted on twice. The stored job changes only through
+// verified, in-sequence frames, so no damage on the line can corrupt it.
+//
+// Memory: one caller arena. The scene takes the front, sized by kUploadBegin (refused with
+// kSceneTooLarge when it cannot fit, before a byte of it is stored); the rest is the job
+// buffer for CUT, DRAW and the path (core/job). The CUTSET stays at the front of the job
+// buffer after a plot, so kReplot with a new halo width runs only DRAW and the path.
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "job/job.h"
+#include "protocol/frame.h"
+#include "protocol/messages.h"
+#include "view/projection.h"
+
+namespace haloplot {
+
+// What the server needs from the platform's motion (the step timer on the chip, a virtual run
+// on the host). begin() starts the plot and may return before it ends; the server polls
+// running() and reads the outcome with result().
+struct MotionPort {
+  void* ctx = nullptr;
+  Status (*begin)(void* ctx, const JobSpec& spec, const PreparedJob& job) = nullptr;
+  void (*abort)(void* ctx) = nullptr;
+  bool (*running)(void* ctx) = nullptr;
+  Status (*result)(void* ctx) = nullptr;
+  uint32_t (*step_events)(void* ctx) = nullptr;
+};
+
+struct ByteOutput {
+  void* ctx = nullptr;
+  void (*write)(void* ctx, const uint8_t* bytes, uint32_t n) = nullptr;
+};
+
+class JobServer {
+ public:
+  static constexpr uint16_t kMaxPayload = 1024;
+  // rx_buffer holds the frame decoder's bytes: at least kMaxPayload + kFrameOverhead.
+  JobServer(uint8_t* arena, size_t arena_bytes, uint8_t* rx_buffer, size_t rx_bytes, ByteOutput out,
+            MotionPort motion);
+
+  void push(uint8_t byte);  // one received byte
+  void idle();              // the line went quiet mid-frame (the link's idle timeout)
+  // Called by the main loop: notices a finished plot and records its outcome.
+  void service();
+
+  ServerState state() const { return state_; }
+  Status last_error() const { return last_error_; }
+  const JobCounters& counters() const { return counters_; }
+  const JobSpec& spec() const { return spec_; }
+  uint32_t edges() const { return n_edges_; }
+
+ private:
+  void on_event(FrameDecoder::Event ev);
+  void on_frame(const Frame& f);
+  Status act(const Frame& f);
+  Status upload_begin(const uint8_t* p, uint16_t n);
+  Status upload_records(FrameType type, const uint8_t* p, uint16_t n);
+  Status plot();
+  Status replot(const uint8_t* p, uint16_t n);
+  Status start_motion();
+  void reply(FrameType type, const uint8_t* payload, uint16_t n);
+  void send_status(uint8_t seq);
+  void forget_cut() { has_cut_ = false; }
+  size_t job_offset() const;
+
+  uint8_t* arena_;
+  size_t arena_bytes_;
+  FrameDecoder decoder_;
+  ByteOutput out_;
+  MotionPort motion_;
+
+  ServerState state_ = ServerState::kIdle;
+  Status last_error_ = Status::kOk;
+  uint8_t expected_seq_ = 0;
+  uint8_t last_reply_[kStatusBytes + kFrameOverhead] = {};
+  uint16_t last_reply_bytes_ = 0;
+
+  UploadBegin scene_;
+  uint32_t received_vertices_ = 0, received_edges_ = 0;
+  uint32_t n_edges_ = 0;
+  bool has_cut_ = false;
+  uint32_t crossing_capacity_ = 0;
+
+  JobSpec spec_;
+  View view_;
+  PreparedJob job_;
+  JobCounters counters_;
+  uint32_t cut_runs_ = 0, draw_runs_ = 0;
+};
+
+}  // namespace haloplot

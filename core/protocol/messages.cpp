@@ -1,0 +1,137 @@
+#include "protocol/messages.h"
+
+namespace haloplot {
+
+void encode_upload_begin(const UploadBegin& b, uint8_t out[kUploadBeginBytes]) {
+  out[0] = uint8_t(b.format);
+  put_u32(out + 1, b.vertices);
+  put_u32(out + 5, b.edges);
+  put_u32(out + 9, b.faces);
+}
+
+void encode_edge(const Edge3& e, uint8_t out[kEdgeRecordBytes]) {
+  encode_vertex(e.a, out);
+  encode_vertex(e.b, out + kVertexRecordBytes);
+}
+
+void encode_vertex(const Point3& p, uint8_t out[kVertexRecordBytes]) {
+  put_i32(out, p.x);
+  put_i32(out + 4, p.y);
+  put_i32(out + 8, p.z);
+}
+
+void encode_view(const View& v, uint8_t out[kViewBytes]) {
+  const int32_t f[5] = {v.azimuth_mdeg, v.elevation_mdeg, v.width, v.height, v.margin};
+  for (int i = 0; i < 5; ++i) put_i32(out + 4 * i, f[i]);
+}
+
+void encode_halo(const DrawParams& d, uint8_t out[kHaloBytes]) {
+  put_u32(out, uint32_t(d.halo));
+  out[4] = d.mode == HaloMode::kExact ? 1 : 0;
+}
+
+void encode_effects(DrawingEffect drawing, const PlotterEffects& e, uint8_t out[kEffectsBytes]) {
+  out[0] = uint8_t(drawing);
+  out[1] = uint8_t((e.acceleration ? 1 : 0) | (e.pen_servo ? 2 : 0) | (e.backlash ? 4 : 0));
+}
+
+namespace {
+// The machine's u32 fields in wire order.
+template <typename M, typename U>
+void machine_fields(M& m, U* (&f)[13]) {
+  U* fields[13] = {&m.steps_num,          &m.steps_den,        &m.tick_hz,          &m.min_interval,
+                   &m.max_step_rate,      &m.draw_speed,       &m.travel_speed,     &m.accel,
+                   &m.junction_deviation, &m.pen_travel_ticks, &m.pen_settle_ticks, &m.backlash[0],
+                   &m.backlash[1]};
+  for (int i = 0; i < 13; ++i) f[i] = fields[i];
+}
+}  // namespace
+
+void encode_machine(const JobSpec& spec, uint8_t out[kMachineBytes]) {
+  out[0] = uint8_t(spec.machine.kinematics);
+  const uint32_t* f[13];
+  machine_fields(spec.machine, f);
+  for (int i = 0; i < 13; ++i) put_u32(out + 1 + 4 * i, *f[i]);
+  put_i32(out + 53, spec.start_x);
+  put_i32(out + 57, spec.start_y);
+}
+
+void encode_status(const StatusReport& r, uint8_t out[kStatusBytes]) {
+  out[0] = r.seq;
+  out[1] = uint8_t(r.status);
+  out[2] = uint8_t(r.state);
+  out[3] = uint8_t(r.last_error);
+  const uint32_t f[7] = {r.free_bytes, r.edges,       r.crossings, r.cut_runs,
+                         r.draw_runs,  r.step_events, r.bad_frames};
+  for (int i = 0; i < 7; ++i) put_u32(out + 4 + 4 * i, f[i]);
+}
+
+Status decode_upload_begin(const uint8_t* p, size_t n, UploadBegin* out) {
+  if (n != kUploadBeginBytes || p[0] > uint8_t(SceneFormat::kIndexed))
+    return Status::kMalformedRequest;
+  out->format = SceneFormat(p[0]);
+  out->vertices = get_u32(p + 1);
+  out->edges = get_u32(p + 5);
+  out->faces = get_u32(p + 9);
+  if (out->format == SceneFormat::kEdges && out->vertices != 0) return Status::kMalformedRequest;
+  return Status::kOk;
+}
+
+Edge3 decode_edge(const uint8_t* p) {
+  return Edge3{decode_vertex(p), decode_vertex(p + kVertexRecordBytes)};
+}
+
+Point3 decode_vertex(const uint8_t* p) {
+  return Point3{get_i32(p), get_i32(p + 4), get_i32(p + 8)};
+}
+
+Status decode_view(const uint8_t* p, size_t n, View* out) {
+  if (n != kViewBytes) return Status::kMalformedRequest;
+  *out = View{get_i32(p), get_i32(p + 4), get_i32(p + 8), get_i32(p + 12), get_i32(p + 16)};
+  return Status::kOk;
+}
+
+Status decode_halo(const uint8_t* p, size_t n, DrawParams* out) {
+  if (n != kHaloBytes || p[4] > 1 || get_u32(p) > uint32_t(kCoordMax))
+    return Status::kMalformedRequest;
+  out->halo = int32_t(get_u32(p));
+  out->mode = p[4] ? HaloMode::kExact : HaloMode::kPaper;
+  return Status::kOk;
+}
+
+Status decode_effects(const uint8_t* p, size_t n, DrawingEffect* drawing, PlotterEffects* out) {
+  if (n != kEffectsBytes || p[0] > uint8_t(DrawingEffect::kHatch) || (p[1] & ~7u))
+    return Status::kMalformedRequest;
+  *drawing = DrawingEffect(p[0]);
+  out->acceleration = p[1] & 1;
+  out->pen_servo = p[1] & 2;
+  out->backlash = p[1] & 4;
+  return Status::kOk;
+}
+
+Status decode_machine(const uint8_t* p, size_t n, JobSpec* spec) {
+  if (n != kMachineBytes || p[0] > uint8_t(Kinematics::kCoreXY)) return Status::kMalformedRequest;
+  Machine m;
+  m.kinematics = Kinematics(p[0]);
+  uint32_t* f[13];
+  machine_fields(m, f);
+  for (int i = 0; i < 13; ++i) *f[i] = get_u32(p + 1 + 4 * i);
+  spec->machine = m;
+  spec->start_x = get_i32(p + 53);
+  spec->start_y = get_i32(p + 57);
+  return Status::kOk;
+}
+
+Status decode_status(const uint8_t* p, size_t n, StatusReport* out) {
+  if (n != kStatusBytes || p[2] > uint8_t(ServerState::kPlotting)) return Status::kMalformedRequest;
+  out->seq = p[0];
+  out->status = Status(p[1]);
+  out->state = ServerState(p[2]);
+  out->last_error = Status(p[3]);
+  uint32_t* f[7] = {&out->free_bytes, &out->edges,       &out->crossings, &out->cut_runs,
+                    &out->draw_runs,  &out->step_events, &out->bad_frames};
+  for (int i = 0; i < 7; ++i) *f[i] = get_u32(p + 4 + 4 * i);
+  return Status::kOk;
+}
+
+}  // namespace haloplot

@@ -1,0 +1,85 @@
+// Payload layouts of the job protocol (little-endian, packed, fixed length per type), with
+// the encoders the host tool uses and the decoders the controller uses. One definition for
+// both ends, so the two cannot drift apart.
+//
+//   kUploadBegin       u8 format (0 edges, 1 vertices + edge indices), u32 vertices,
+//                      u32 edges, u32 faces                                      13 bytes
+//   kUploadEdges       Edge3 records: 6 x i32 (x0 y0 z0 x1 y1 z1)            24 per edge
+//   kUploadVertices    world Point3: 3 x i32                                  12 per vertex
+//   kUploadEdgeIndices 2 x u32 vertex indices                                  8 per edge
+//   kSetView           i32 azimuth, elevation (millidegrees), width, height, margin   20
+//   kSetHalo           u32 width (steps), u8 mode (0 paper, 1 exact)                   5
+//   kSetEffects        u8 drawing (DrawingEffect), u8 flags (1 acceleration, 2 pen servo,
+//                      4 backlash)                                                      2
+//   kSetMachine        u8 kinematics, 13 x u32 (steps num, den, tick Hz, min interval,
+//                      max step rate, draw speed, travel speed, accel, junction deviation,
+//                      pen travel, pen settle, backlash 0, 1), 2 x i32 start x, y      61
+//   kReplot            as kSetHalo                                                      5
+//   kAck               u8 seq, u8 status                                                2
+//   kNak               u8 expected seq                                                  1
+//   kStatus            u8 seq, u8 status, u8 state, u8 last error, then u32 free bytes,
+//                      edges, crossings, CUT runs, DRAW runs, step events, bad frames  32
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "job/job.h"
+#include "status/status.h"
+#include "view/projection.h"
+
+namespace haloplot {
+
+inline constexpr size_t kUploadBeginBytes = 13, kEdgeRecordBytes = 24, kVertexRecordBytes = 12,
+                        kIndexRecordBytes = 8, kViewBytes = 20, kHaloBytes = 5, kEffectsBytes = 2,
+                        kMachineBytes = 61, kStatusBytes = 32;
+
+enum class SceneFormat : uint8_t { kEdges = 0, kIndexed = 1 };
+
+struct UploadBegin {
+  SceneFormat format = SceneFormat::kEdges;
+  uint32_t vertices = 0, edges = 0, faces = 0;
+};
+
+enum class ServerState : uint8_t { kIdle = 0, kUploading = 1, kReady = 2, kPlotting = 3 };
+
+struct StatusReport {
+  uint8_t seq = 0;
+  Status status = Status::kOk;  // of the query itself
+  ServerState state = ServerState::kIdle;
+  Status last_error = Status::kOk;
+  uint32_t free_bytes = 0, edges = 0, crossings = 0, cut_runs = 0, draw_runs = 0, step_events = 0,
+           bad_frames = 0;
+};
+
+// Little-endian field access, byte by byte: no alignment or endianness assumptions.
+inline void put_u32(uint8_t* p, uint32_t v) {
+  for (int i = 0; i < 4; ++i) p[i] = uint8_t(v >> (8 * i));
+}
+inline uint32_t get_u32(const uint8_t* p) {
+  return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
+}
+inline void put_i32(uint8_t* p, int32_t v) { put_u32(p, uint32_t(v)); }
+inline int32_t get_i32(const uint8_t* p) { return int32_t(get_u32(p)); }
+
+// Encoders write exactly the documented bytes into `out`.
+void encode_upload_begin(const UploadBegin& b, uint8_t out[kUploadBeginBytes]);
+void encode_edge(const Edge3& e, uint8_t out[kEdgeRecordBytes]);
+void encode_vertex(const Point3& p, uint8_t out[kVertexRecordBytes]);
+void encode_view(const View& v, uint8_t out[kViewBytes]);
+void encode_halo(const DrawParams& d, uint8_t out[kHaloBytes]);
+void encode_effects(DrawingEffect drawing, const PlotterEffects& e, uint8_t out[kEffectsBytes]);
+void encode_machine(const JobSpec& spec, uint8_t out[kMachineBytes]);
+void encode_status(const StatusReport& r, uint8_t out[kStatusBytes]);
+
+// Decoders check the length and every enumerated field: kMalformedRequest otherwise. Ranges
+// (speeds, plot area) are checked later by validate() of the machine and the view.
+Status decode_upload_begin(const uint8_t* p, size_t n, UploadBegin* out);
+Edge3 decode_edge(const uint8_t* p);
+Point3 decode_vertex(const uint8_t* p);
+Status decode_view(const uint8_t* p, size_t n, View* out);
+Status decode_halo(const uint8_t* p, size_t n, DrawParams* out);
+Status decode_effects(const uint8_t* p, size_t n, DrawingEffect* drawing, PlotterEffects* out);
+Status decode_machine(const uint8_t* p, size_t n, JobSpec* spec);
+Status decode_status(const uint8_t* p, size_t n, StatusReport* out);
+
+}  // namespace haloplot

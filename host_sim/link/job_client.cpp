@@ -1,0 +1,181 @@
+#include "link/job_client.h"
+
+#include <chrono>
+#include <thread>
+
+namespace haloplot::host {
+namespace {
+
+uint64_t splitmix(uint64_t* s) {
+  uint64_t z = (*s += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+// Frames of at most this many payload bytes: a whole number of records of every kind.
+constexpr size_t kChunk = 960;  // 40 edges, 80 vertices or 120 index pairs
+
+}  // namespace
+
+bool JobClient::read_frame(Frame* f, std::vector<uint8_t>* payload) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout_ms);
+  for (;;) {
+    while (!pending_.empty()) {
+      const uint8_t b = pending_.front();
+      pending_.erase(pending_.begin());
+      FrameDecoder::Event ev = decoder_.push(b);
+      if (ev == FrameDecoder::Event::kNone) ev = decoder_.poll();
+      if (ev == FrameDecoder::Event::kFrame) {
+        *f = decoder_.frame();
+        payload->assign(f->payload, f->payload + f->length);
+        f->payload = nullptr;
+        return true;
+      }
+    }
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+        deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) return false;
+    uint8_t buf[512];
+    const size_t n = t_.read(buf, sizeof buf, int(left.count()));
+    pending_.insert(pending_.end(), buf, buf + n);
+  }
+}
+
+bool JobClient::request(FrameType type, const std::vector<uint8_t>& payload, Status* status,
+                        std::vector<uint8_t>* reply_payload) {
+  std::vector<uint8_t> frame(payload.size() + kFrameOverhead);
+  const uint8_t seq = seq_;
+  frame.resize(encode_frame(uint8_t(type), seq, payload.data(), uint16_t(payload.size()),
+                            frame.data(), frame.size()));
+  ++stats_.frames;
+  for (int attempt = 0; attempt < tries; ++attempt) {
+    if (attempt > 0) ++stats_.resends;
+    std::vector<uint8_t> wire = frame;
+    if (attempt == 0 && faults_.corrupt_every && stats_.frames % faults_.corrupt_every == 0) {
+      // Flip one byte after the start byte: the length, header, payload or CRC.
+      const size_t at = 1 + size_t(splitmix(&faults_.seed) % (wire.size() - 1));
+      wire[at] ^= uint8_t(1 + splitmix(&faults_.seed) % 255);
+      ++stats_.corrupted;
+    } else if (attempt == 0 && faults_.truncate_every &&
+               stats_.frames % faults_.truncate_every == 0) {
+      wire.resize(wire.size() / 2);
+      ++stats_.truncated;
+    }
+    if (!t_.write(wire.data(), wire.size())) {
+      error_ = "link: write failed";
+      return false;
+    }
+    for (;;) {
+      Frame f;
+      std::vector<uint8_t> got;
+      if (!read_frame(&f, &got)) {
+        ++stats_.timeouts;
+        break;  // silence: resend
+      }
+      if (f.type == uint8_t(FrameType::kNak)) {
+        ++stats_.naks;
+        break;  // damaged or out of sequence: resend
+      }
+      if (got.size() < 2 || got[0] != seq) continue;  // a stale reply to an earlier frame
+      if (f.type != uint8_t(FrameType::kAck) && f.type != uint8_t(FrameType::kStatus)) continue;
+      *status = Status(got[1]);
+      if (reply_payload) *reply_payload = got;
+      ++seq_;
+      return true;
+    }
+  }
+  error_ = "link: no acknowledgement after " + std::to_string(tries) + " tries";
+  return false;
+}
+
+bool JobClient::sync() {
+  Status s;
+  return request(FrameType::kSync, {}, &s) && ok(s);
+}
+
+bool JobClient::settings(const JobSpec& spec, Status* status) {
+  std::vector<uint8_t> m(kMachineBytes), e(kEffectsBytes), h(kHaloBytes);
+  encode_machine(spec, m.data());
+  encode_effects(spec.drawing, spec.effects, e.data());
+  encode_halo(spec.draw, h.data());
+  for (auto [type, payload] :
+       {std::pair{FrameType::kSetMachine, &m}, std::pair{FrameType::kSetEffects, &e},
+        std::pair{FrameType::kSetHalo, &h}}) {
+    if (!request(type, *payload, status)) return false;
+    if (!ok(*status)) return true;
+  }
+  return true;
+}
+
+bool JobClient::chunks(FrameType type, const std::vector<uint8_t>& records, size_t record_bytes,
+                       Status* status) {
+  const size_t per = kChunk / record_bytes * record_bytes;
+  for (size_t at = 0; at < records.size(); at += per) {
+    const size_t n = std::min(per, records.size() - at);
+    if (!request(type,
+                 std::vector<uint8_t>(records.begin() + long(at), records.begin() + long(at + n)),
+                 status))
+      return false;
+    if (!ok(*status)) return true;
+  }
+  return true;
+}
+
+bool JobClient::upload(const JobSpec& spec, const std::vector<Edge3>& edges, Status* status) {
+  if (!settings(spec, status)) return false;
+  if (!ok(*status)) return true;
+  std::vector<uint8_t> begin(kUploadBeginBytes);
+  encode_upload_begin(UploadBegin{SceneFormat::kEdges, 0, uint32_t(edges.size()), 0}, begin.data());
+  if (!request(FrameType::kUploadBegin, begin, status)) return false;
+  if (!ok(*status)) return true;
+  std::vector<uint8_t> records(edges.size() * kEdgeRecordBytes);
+  for (size_t i = 0; i < edges.size(); ++i) encode_edge(edges[i], &records[i * kEdgeRecordBytes]);
+  return chunks(FrameType::kUploadEdges, records, kEdgeRecordBytes, status);
+}
+
+bool JobClient::upload_indexed(const JobSpec& spec, const View& view,
+                               const std::vector<Point3>& world, const std::vector<uint32_t>& pairs,
+                               Status* status) {
+  if (!settings(spec, status)) return false;
+  if (!ok(*status)) return true;
+  std::vector<uint8_t> v(kViewBytes);
+  encode_view(view, v.data());
+  if (!request(FrameType::kSetView, v, status)) return false;
+  if (!ok(*status)) return true;
+  std::vector<uint8_t> begin(kUploadBeginBytes);
+  encode_upload_begin(
+      UploadBegin{SceneFormat::kIndexed, uint32_t(world.size()), uint32_t(pairs.size() / 2), 0},
+      begin.data());
+  if (!request(FrameType::kUploadBegin, begin, status)) return false;
+  if (!ok(*status)) return true;
+  std::vector<uint8_t> records(world.size() * kVertexRecordBytes);
+  for (size_t i = 0; i < world.size(); ++i)
+    encode_vertex(world[i], &records[i * kVertexRecordBytes]);
+  if (!chunks(FrameType::kUploadVertices, records, kVertexRecordBytes, status)) return false;
+  if (!ok(*status)) return true;
+  records.assign(pairs.size() * 4, 0);
+  for (size_t i = 0; i < pairs.size(); ++i) put_u32(&records[4 * i], pairs[i]);
+  return chunks(FrameType::kUploadEdgeIndices, records, kIndexRecordBytes, status);
+}
+
+bool JobClient::query(StatusReport* report) {
+  Status s;
+  std::vector<uint8_t> reply;
+  if (!request(FrameType::kQueryStatus, {}, &s, &reply)) return false;
+  if (!ok(decode_status(reply.data(), reply.size(), report))) {
+    error_ = "link: malformed status reply";
+    return false;
+  }
+  return true;
+}
+
+bool JobClient::wait_idle(StatusReport* report, int poll_ms) {
+  for (;;) {
+    if (!query(report)) return false;
+    if (report->state != ServerState::kPlotting) return true;
+    if (poll_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(poll_ms));
+  }
+}
+
+}  // namespace haloplot::host
