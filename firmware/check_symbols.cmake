@@ -1,6 +1,9 @@
 # Fails the build if the library's symbol table (defined or referenced) names a software
 # floating-point routine, the heap, C++ exceptions or RTTI, or the printf family.
 set(PATTERN "__aeabi_[df](add|sub|rsub|mul|div|cmp|neg|2)|__aeabi_(u?i|u?l)2[df]|malloc|calloc|realloc| free$|_Znw|_Zna|_Zdl|_Zda|__cxa_throw|__cxa_allocate_exception|__gxx_personality|_ZTI|printf")
+if(NOT LIB AND IMAGE)
+  set(LIB ${IMAGE})
+endif()
 execute_process(COMMAND ${NM} ${LIB} OUTPUT_VARIABLE symbols RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "nm failed on ${LIB}")

@@ -31,9 +31,23 @@ class SegmentQueue {
   bool empty() const { return head_ == tail_; }
   bool full() const { return tail_ - head_ == kCapacity; }
   uint32_t size() const { return tail_ - head_; }
-  void push(const StepSegment& s) { items_[tail_++ % kCapacity] = s; }
-  const StepSegment& front() const { return items_[head_ % kCapacity]; }
-  void pop() { ++head_; }
+  // One producer (the main loop) and one consumer (the timer interrupt) on one core: the
+  // signal fences stop the compiler from moving the slot's stores past the index update
+  // (push) or the slot's loads past the release of the slot (pop); the indices are volatile.
+  void push(const StepSegment& s) {
+    items_[tail_ % kCapacity] = s;
+    __atomic_signal_fence(__ATOMIC_RELEASE);
+    tail_ = tail_ + 1;
+  }
+  const StepSegment& front() const {
+    __atomic_signal_fence(__ATOMIC_ACQUIRE);
+    return items_[head_ % kCapacity];
+  }
+  void pop() {
+    __atomic_signal_fence(__ATOMIC_RELEASE);
+    head_ = head_ + 1;
+  }
+  void clear() { head_ = tail_; }  // only while the consumer is stopped
 
  private:
   StepSegment items_[kCapacity];

@@ -125,6 +125,8 @@ Status JobServer::act(const Frame& f) {
     case FrameType::kReplot:
       return replot(f.payload, f.length);
     default:
+      if (f.type >= kPlatformTypeFirst && extension_.handle)
+        return extension_.handle(extension_.ctx, f);
       return Status::kMalformedRequest;
   }
 }
@@ -203,6 +205,7 @@ Status JobServer::plot() {
   // exact count CUT reports (it never stores a partial CUTSET).
   crossing_capacity_ = n_edges_ + 64;
   Status s = Status::kOk;
+  const uint64_t t0 = clock_ ? clock_() : 0;
   for (int attempt = 0; attempt < 2; ++attempt) {
     s = job_prepare(spec_, edges, n_edges_, crossing_capacity_, job_mem, job_bytes, &job_,
                     &counters_);
@@ -213,6 +216,7 @@ Status JobServer::plot() {
     if (need > 0xffffffffu) break;
     crossing_capacity_ = uint32_t(need);
   }
+  if (clock_) prepare_ticks_ = clock_() - t0;
   if (!ok(s)) return s;
   has_cut_ = spec_.drawing == DrawingEffect::kHaloed;
   return start_motion();
@@ -226,8 +230,10 @@ Status JobServer::replot(const uint8_t* p, uint16_t n) {
   if (d.mode == HaloMode::kExact && d.halo > job_.cutset.reach) return Status::kNoCutset;
   JobSpec next = spec_;
   next.draw = d;
+  const uint64_t t0 = clock_ ? clock_() : 0;
   s = job_redraw(next, n_edges_, crossing_capacity_, arena_ + job_offset(),
                  arena_bytes_ - job_offset(), &job_, &counters_);
+  if (clock_) redraw_ticks_ = clock_() - t0;
   draw_runs_ += counters_.draw_runs;
   if (!ok(s)) return s;
   spec_.draw = d;
@@ -238,7 +244,10 @@ Status JobServer::start_motion() {
   JobSpec run = spec_;
   if (!run.effects.backlash) run.machine.backlash[0] = run.machine.backlash[1] = 0;
   const Status s = motion_.begin(motion_.ctx, run, job_);
-  if (ok(s)) state_ = ServerState::kPlotting;
+  if (ok(s)) {
+    state_ = ServerState::kPlotting;
+    last_error_ = Status::kOk;  // from here on, last_error tells how this plot went
+  }
   return s;
 }
 

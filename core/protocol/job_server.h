@@ -10,8 +10,11 @@
 //
 // Memory: one caller arena. The scene takes the front, sized by kUploadBegin (refused with
 // kSceneTooLarge when it cannot fit, before a byte of it is stored); the rest is the job
-// buffer for CUT, DRAW and the path (core/job). The CUTSET stays at the front of the job
-// buffer after a plot, so kReplot with a new halo width runs only DRAW and the path.
+// buffer for CUT, DRAW and the path (core/job).
+//
+// last_error is the most recent failure: of a request, or of the plot in motion. A plot that
+// starts clears it, so after a plot it says how that plot ended. The CUTSET stays at the front of
+// the job buffer after a plot, so kReplot with a new halo width runs only DRAW and the path.
 #pragma once
 #include <stddef.h>
 #include <stdint.h>
@@ -40,8 +43,16 @@ struct ByteOutput {
   void (*write)(void* ctx, const uint8_t* bytes, uint32_t n) = nullptr;
 };
 
+// Request types from kPlatformTypeFirst up belong to the platform (test hooks, board
+// specifics): the server passes them to the extension, if one is set.
+inline constexpr uint8_t kPlatformTypeFirst = 0x70;
+
 class JobServer {
  public:
+  struct Extension {
+    void* ctx = nullptr;
+    Status (*handle)(void* ctx, const Frame& f) = nullptr;
+  };
   static constexpr uint16_t kMaxPayload = 1024;
   // rx_buffer holds the frame decoder's bytes: at least kMaxPayload + kFrameOverhead.
   JobServer(uint8_t* arena, size_t arena_bytes, uint8_t* rx_buffer, size_t rx_bytes, ByteOutput out,
@@ -51,6 +62,13 @@ class JobServer {
   void idle();              // the line went quiet mid-frame (the link's idle timeout)
   // Called by the main loop: notices a finished plot and records its outcome.
   void service();
+
+  void set_extension(Extension e) { extension_ = e; }
+  // A clock for the cost of each plot's preparation (CUT, DRAW, path) and each re-plot's
+  // (DRAW, path), in the clock's ticks; none is read without it.
+  void set_clock(uint64_t (*now)()) { clock_ = now; }
+  uint64_t prepare_ticks() const { return prepare_ticks_; }
+  uint64_t redraw_ticks() const { return redraw_ticks_; }
 
   ServerState state() const { return state_; }
   Status last_error() const { return last_error_; }
@@ -95,6 +113,9 @@ class JobServer {
   PreparedJob job_;
   JobCounters counters_;
   uint32_t cut_runs_ = 0, draw_runs_ = 0;
+  Extension extension_;
+  uint64_t (*clock_)() = nullptr;
+  uint64_t prepare_ticks_ = 0, redraw_ticks_ = 0;
 };
 
 }  // namespace haloplot

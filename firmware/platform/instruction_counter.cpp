@@ -1,35 +1,29 @@
 #include "platform/instruction_counter.h"
 
+#include "chip/stm32f405.h"
+
 namespace haloplot::fw {
 namespace {
-
-// SysTick registers (ARMv7-M Architecture Reference Manual, B3.3).
-volatile uint32_t& SYST_CSR = *reinterpret_cast<volatile uint32_t*>(0xE000E010u);
-volatile uint32_t& SYST_RVR = *reinterpret_cast<volatile uint32_t*>(0xE000E014u);
-volatile uint32_t& SYST_CVR = *reinterpret_cast<volatile uint32_t*>(0xE000E018u);
-constexpr uint32_t kReload = 0x00FFFFFFu;
-volatile uint32_t wraps = 0;
-
-}  // namespace
+uint32_t last = 0, high = 0;  // the software extension of the 32-bit count
+}
 
 void counter_start() {
-  SYST_CSR = 0;
-  SYST_RVR = kReload;
-  SYST_CVR = 0;
-  wraps = 0;
-  SYST_CSR = 0x7u;  // ENABLE | TICKINT | CLKSOURCE = processor clock
+  using namespace chip;
+  RCC.APB1ENR |= RCC_APB1ENR_TIM5EN;
+  TIM5.CR1 = 0;
+  TIM5.PSC = 0;
+  TIM5.ARR = 0xFFFFFFFFu;
+  TIM5.CNT = 0;
+  TIM5.CR1 = TIM_CR1_CEN;
+  last = high = 0;
 }
 
 uint64_t counter_ticks() {
-  // Read wraps on both sides of the current value, so a wrap in between is not lost.
-  uint32_t w, v;
-  do {
-    w = wraps;
-    v = SYST_CVR;
-  } while (w != wraps);
-  return uint64_t{w} * (kReload + 1) + (kReload - v);
+  // Called from the main loop only (not reentrant): a smaller reading means one wrap.
+  const uint32_t now = chip::TIM5.CNT;
+  if (now < last) ++high;
+  last = now;
+  return uint64_t{high} << 32 | now;
 }
 
 }  // namespace haloplot::fw
-
-extern "C" void systick_handler() { ++haloplot::fw::wraps; }

@@ -11,6 +11,10 @@ int main();
 [[noreturn]] void reset_handler();
 void default_handler();
 void systick_handler() __attribute__((weak, alias("default_handler")));
+// Peripheral interrupts the drivers use (firmware/drivers/); unused ones stay on the default.
+void exti0_irq_handler() __attribute__((weak, alias("default_handler")));
+void exti1_irq_handler() __attribute__((weak, alias("default_handler")));
+void usart1_irq_handler() __attribute__((weak, alias("default_handler")));
 }
 
 namespace {
@@ -64,5 +68,24 @@ __attribute__((section(".vectors"), used)) void (*const vector_table[16])() = {
     default_handler,  // DebugMonitor
     nullptr,
     default_handler,  // PendSV
-    systick_handler,  // SysTick (the instruction counter's wraps, when linked)
+    systick_handler,  // SysTick: the step timer (firmware/drivers/step_timer.h)
 };
+
+// The 82 peripheral interrupts (RM0090 table 61), placed right after the system exceptions
+// by the linker script. Built at compile time: the numbers are the manual's positions.
+namespace {
+using Handler = void (*)();
+struct PeripheralVectors {
+  Handler v[82];
+};
+constexpr PeripheralVectors make_peripheral_vectors() {
+  PeripheralVectors t{};
+  for (Handler& h : t.v) h = default_handler;
+  t.v[6] = exti0_irq_handler;
+  t.v[7] = exti1_irq_handler;
+  t.v[37] = usart1_irq_handler;
+  return t;
+}
+}  // namespace
+__attribute__((section(".vectors.irq"), used)) const PeripheralVectors peripheral_vectors =
+    make_peripheral_vectors();

@@ -41,7 +41,9 @@ const char* kUsage =
     "  haloplot plot SCENE.edges --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans]\n"
     "               [--cut OUT.cut] [cut options] [--stats]\n"
     "  haloplot sim JOB.job -o OUT.trace [--gcode OUT.gcode] [--hpgl OUT.hpgl] [--stats]\n"
-    "  haloplot replay IN.trace -o OUT.svg [--stats]\n";
+    "  haloplot replay IN.trace -o OUT.svg [--stats]\n"
+    "  haloplot send JOB.job --port PATH [--replot W] [--corrupt-every K] [--truncate-every K]\n"
+    "               [--test-exit]   (upload to a controller over its serial port or socket)\n";
 
 int fail(const std::string& message) {
   std::cerr << "haloplot: " << message << "\n";
@@ -440,6 +442,10 @@ int cmd_replay(int argc, char** argv) {
 
 }  // namespace
 
+namespace haloplot::host {
+int cmd_send(int argc, char** argv);  // cli/cmd_send.cpp
+}
+
 int main(int argc, char** argv) {
   if (argc < 2) return fail(kUsage);
   const std::string cmd = argv[1];
@@ -454,5 +460,6 @@ int main(int argc, char** argv) {
   if (cmd == "plot") return cmd_plot(argc, argv);
   if (cmd == "sim") return cmd_sim(argc, argv);
   if (cmd == "replay") return cmd_replay(argc, argv);
+  if (cmd == "send") return haloplot::host::cmd_send(argc, argv);
   return fail("unknown command '" + cmd + "'\n" + kUsage);
 }

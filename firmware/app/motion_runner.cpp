@@ -1,0 +1,119 @@
+#include "app/motion_runner.h"
+
+#include <new>  // placement construction into static storage: no heap
+
+#include "drivers/gpio.h"
+#include "drivers/servo_pwm.h"
+#include "drivers/step_timer.h"
+
+namespace haloplot::fw {
+
+void ChipHal::set_direction(uint8_t m, bool b) {
+  backward[m] = b;
+  dir_pin(m, b);
+}
+// The trace is test instrumentation: only test images compile it onto the step path (its
+// decimal text needs division; the flashed image's step path has none, see check_image.cmake).
+void ChipHal::step(uint8_t m) {
+  step_pin_high(m);
+#ifdef HALOPLOT_FW_TEST_HOOKS
+  if (trace) trace->step(now, m, backward[m]);
+#endif
+}
+void ChipHal::pen(bool down) {
+  servo_pen(down);
+#ifdef HALOPLOT_FW_TEST_HOOKS
+  if (trace) trace->pen(now, down);
+#endif
+}
+
+MotionPort MotionRunner::port() {
+  MotionPort p;
+  p.ctx = this;
+  p.begin = [](void* c, const JobSpec& s, const PreparedJob& j) {
+    return static_cast<MotionRunner*>(c)->begin(s, j);
+  };
+  p.abort = [](void* c) { static_cast<MotionRunner*>(c)->abort_ = true; };
+  p.running = [](void* c) { return static_cast<MotionRunner*>(c)->active_ == true; };
+  p.result = [](void* c) { return static_cast<MotionRunner*>(c)->result_; };
+  p.step_events = [](void* c) { return static_cast<MotionRunner*>(c)->events(); };
+  return p;
+}
+
+Status MotionRunner::begin(const JobSpec& spec, const PreparedJob& job) {
+  if (active_) return Status::kBusy;
+  Status s = step_timer_init(spec.machine.tick_hz, time_scale_);
+  if (ok(s))
+    s = planner_.init(spec.machine, spec.effects, job.points, job.n_points, planner_ws_,
+                      sizeof planner_ws_);
+  if (ok(s)) s = prep_.init(spec.machine, spec.effects);
+  if (!ok(s)) return s;
+  queue_.clear();
+  engine_.~StepEngine();
+  new (&engine_) StepEngine<ChipHal, Queue>(hal_, queue_);
+  hal_ = ChipHal{};
+  trace_ = tracing_ ? new (trace_storage_) TraceEncoder(trace_sink_, spec.machine) : nullptr;
+  hal_.trace = trace_;
+  abort_ = false;
+  limit_ = 0;
+  result_ = Status::kOk;
+  underruns_ = 0;
+  timer_idle_ = true;
+  s = prep_.fill(planner_, queue_);
+  if (!ok(s)) return s;
+  drivers_enable(true);
+  active_ = true;
+  service();  // starts the timer
+  return Status::kOk;
+}
+
+void MotionRunner::finish(Status s) {
+  step_timer_stop();
+  step_pins_low();
+  queue_.clear();
+  if (!ok(s)) servo_pen(false);  // an interrupted plot lifts the pen
+  if (trace_) trace_->finish(hal_.now);
+  result_ = s;
+  active_ = false;
+}
+
+void MotionRunner::service() {
+  if (!active_) return;
+  if (limit_) return finish(Status::kLimitSwitch);
+  if (abort_) return finish(Status::kAborted);
+  const Status s = prep_.fill(planner_, queue_);
+  if (!ok(s)) return finish(s);
+  if (!timer_idle_) return;
+  // The interrupt found the queue empty (or the plot is starting): resume, or end.
+  const bool mid_plot = engine_.events() > 0 || hal_.now > 0;
+  const uint32_t d = engine_.start();
+  if (d == 0) {
+    if (queue_.empty() && prep_.done()) finish(Status::kOk);
+    return;
+  }
+  if (mid_plot) ++underruns_;
+  delay_ = d;
+  timer_idle_ = false;
+  step_timer_start(d);
+}
+
+void MotionRunner::on_timer() {
+  step_pins_low();
+  hal_.now += delay_;
+  const uint32_t d = engine_.tick();
+  if (d == 0) {  // the queue is dry: the main loop refills and restarts (or ends the plot)
+    step_timer_stop();
+    timer_idle_ = true;
+    return;
+  }
+  delay_ = d;
+  step_timer_next(d);
+}
+
+void MotionRunner::on_limit(uint8_t motor) {
+  step_timer_stop();  // first: no further step, whatever the main loop is doing
+  timer_idle_ = true;
+  limit_ = uint8_t(motor + 1);
+}
+
+}  // namespace haloplot::fw

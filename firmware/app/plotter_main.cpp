@@ -1,0 +1,148 @@
+// The plotter controller: boots the chip's drivers, then serves the job protocol on USART1
+// forever (core/protocol/job_server.h), plotting through the step timer (motion_runner.h).
+//
+// Memory (SRAM, 128 KB): one arena for the scene and the job buffer, and the small fixed
+// parts (frame buffer, USART ring, step queue, planner window). The stack has 16 KB at the
+// top of SRAM (see linker/stm32f405.ld).
+//
+// Test images (HALOPLOT_FW_TEST_HOOKS, booted under QEMU) also stream the step trace over
+// semihosting, answer the test-only request kTestExit with their counters, and exit through
+// SYS_EXIT_EXTENDED. The flashed image has none of that: semihosting would fault without a
+// debugger attached.
+#include "app/motion_runner.h"
+#include "drivers/gpio.h"
+#include "drivers/limit_switches.h"
+#include "drivers/servo_pwm.h"
+#include "drivers/step_timer.h"
+#include "drivers/usart.h"
+#include "drivers/watchdog.h"
+#include "platform/instruction_counter.h"
+#include "protocol/job_server.h"
+
+#ifdef HALOPLOT_FW_TEST_HOOKS
+#include "platform/semihosting.h"
+#endif
+
+using namespace haloplot;
+using namespace haloplot::fw;
+
+namespace {
+
+constexpr uint8_t kTestExitType = 0x7F;  // test images only: print the counters and exit
+// Test images run the step clock 8x fast: QEMU needs no real-time pacing, the trace's ticks
+// are the same, and a plot of minutes takes seconds.
+constexpr uint32_t kQemuTimeScale = 8;
+
+#ifndef HALOPLOT_FW_ARENA_KB
+#define HALOPLOT_FW_ARENA_KB 96
+#endif
+alignas(8) uint8_t arena[HALOPLOT_FW_ARENA_KB * 1024];
+uint8_t rx_frame[JobServer::kMaxPayload + kFrameOverhead];
+MotionRunner motion;
+
+// Quiet time that ends a frame in progress: 2 ms at 168 MHz, about 23 byte times at 115200
+// baud (a sender never pauses inside a frame that long).
+constexpr uint64_t kIdleTicks = 336000;
+
+#ifdef HALOPLOT_FW_TEST_HOOKS
+struct Console {
+  char buf[1024];
+  uint32_t n = 0;
+  static void write(void* ctx, const char* text, uint32_t length) {
+    auto* c = static_cast<Console*>(ctx);
+    for (uint32_t i = 0; i < length; ++i) {
+      if (c->n == sizeof c->buf) c->flush();
+      c->buf[c->n++] = text[i];
+    }
+  }
+  void flush() {
+    if (n) semihost_write(buf, n);
+    n = 0;
+  }
+} console;
+
+void stat(const char* key, uint64_t value) {
+  char line[96];
+  char* p = append(line, "fw ");
+  p = append(p, key);
+  p = append(p, "=");
+  p = append_u64(p, value);
+  append(p, "\n");
+  Console::write(&console, line, uint32_t(p - line + 1));
+}
+#endif
+
+}  // namespace
+
+extern "C" void systick_handler() {
+  if (step_timer_chunk_pending()) return;  // a long delay (a pen dwell) is still running
+  motion.on_timer();
+}
+
+extern "C" uint32_t stack_unused_bytes();
+
+int main() {
+  gpio_init();
+  servo_init();
+  usart_init(board::kUsartBaud);
+  limit_switches_init([](uint8_t m) { motion.on_limit(m); });
+  counter_start();
+  watchdog_start();
+#ifdef HALOPLOT_FW_TEST_HOOKS
+  motion.set_trace(CharSink{&Console::write, &console});
+  motion.set_time_scale(kQemuTimeScale);
+  bool exit_requested = false;
+  JobServer::Extension ext{&exit_requested, [](void* c, const Frame& f) {
+                             if (f.type != kTestExitType) return Status::kMalformedRequest;
+                             *static_cast<bool*>(c) = true;
+                             return Status::kOk;
+                           }};
+#endif
+  JobServer server(
+      arena, sizeof arena, rx_frame, sizeof rx_frame,
+      ByteOutput{nullptr, [](void*, const uint8_t* b, uint32_t n) { usart_write(b, n); }},
+      motion.port());
+#ifdef HALOPLOT_FW_TEST_HOOKS
+  server.set_extension(ext);
+#endif
+  server.set_clock(&counter_ticks);
+  uint64_t last_byte = counter_ticks();
+  bool quiet = true;
+  for (;;) {
+    watchdog_kick();
+    uint8_t b;
+    while (usart_read(&b)) {
+      server.push(b);
+      last_byte = counter_ticks();
+      quiet = false;
+    }
+    if (!quiet && counter_ticks() - last_byte > kIdleTicks) {
+      server.idle();
+      quiet = true;
+    }
+    motion.service();
+    server.service();
+    // While plotting, sleep until the next interrupt (a step, a received byte); QEMU with
+    // -icount sleep=off then skips the idle virtual time at no cost. Idle, the loop polls,
+    // so the frame idle timeout keeps counting.
+    // Interrupts are masked across the check, so one that stops the timer in between still
+    // wakes the WFI (a pending interrupt ends it even while masked) and runs on cpsie.
+    __asm__ volatile("cpsid i" ::: "memory");
+    if (motion.stepping()) __asm__ volatile("wfi");
+    __asm__ volatile("cpsie i" ::: "memory");
+#ifdef HALOPLOT_FW_TEST_HOOKS
+    if (!motion.running()) console.flush();  // each plot's trace whole, before the next
+    if (exit_requested && !motion.running()) {
+      stat("edges", server.edges());
+      stat("prepare_instructions", ticks_to_instructions(server.prepare_ticks()));
+      stat("replot_instructions", ticks_to_instructions(server.redraw_ticks()));
+      stat("underruns", motion.underruns());
+      stat("usart_overruns", usart_overruns());
+      stat("stack_used_bytes", 16 * 1024 - stack_unused_bytes());
+      stat("arena_bytes", sizeof arena);
+      console.flush();
+      semihost_exit(0);
+    }
+#endif
+  }
+}

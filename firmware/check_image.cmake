@@ -1,0 +1,81 @@
+# Gates on a linked firmware image, run after every link (the build fails when one fails):
+#  1. no heap, exception, RTTI, printf-family or software floating-point symbol anywhere in
+#     the image (the same list as the core's gate, check_symbols.cmake);
+#  2. no division on the step path: the step timer's interrupt and every function it reaches
+#     in the image hold neither a call to a software division routine (__aeabi_*div*) nor a
+#     hardware UDIV/SDIV (the tick is built to need none);
+#  3. flash and RAM within budget (arm-none-eabi-size: text + data for flash, data + bss for
+#     RAM, the stack being inside the linker script's own check).
+# Arguments: NM OBJDUMP SIZE IMAGE FLASH_BUDGET RAM_BUDGET STEP_ROOT
+cmake_minimum_required(VERSION 3.20)  # IN_LIST and POP_FRONT in script mode
+include(${CMAKE_CURRENT_LIST_DIR}/check_symbols.cmake)  # gate 1, with LIB = IMAGE
+
+# Gate 2: walk the call graph from STEP_ROOT through direct calls (bl/b.w to a symbol).
+execute_process(COMMAND ${OBJDUMP} -d --no-show-raw-insn ${IMAGE} OUTPUT_VARIABLE dis)
+string(REPLACE "\n" ";" dis_lines "${dis}")
+set(current "")
+foreach(line IN LISTS dis_lines)
+  if(line MATCHES "^[0-9a-f]+ <([^>]+)>:$")
+    set(current "${CMAKE_MATCH_1}")
+    string(MAKE_C_IDENTIFIER "${current}" key)
+    set(body_${key} "")
+    set(name_${key} "${current}")
+  elseif(current)
+    string(MAKE_C_IDENTIFIER "${current}" key)
+    string(APPEND body_${key} "${line}\n")
+  endif()
+endforeach()
+if(NOT STEP_ROOT)
+  set(queue "")
+else()
+  set(queue ${STEP_ROOT})
+endif()
+set(seen "")
+set(bad_div "")
+while(queue)
+  list(POP_FRONT queue fn)
+  if(fn IN_LIST seen)
+    continue()
+  endif()
+  list(APPEND seen ${fn})
+  string(MAKE_C_IDENTIFIER "${fn}" key)
+  if(NOT DEFINED body_${key})
+    message(FATAL_ERROR "step-path gate: ${fn} not found in ${IMAGE}")
+  endif()
+  set(body "${body_${key}}")
+  if(fn MATCHES "__aeabi_.*div" OR body MATCHES "\t(u|s)div")
+    string(APPEND bad_div "  ${fn}\n")
+  endif()
+  string(REGEX MATCHALL "\t(bl|b\\.w|b)\t[0-9a-f]+ <[^>+]+>" calls "${body}")
+  foreach(c IN LISTS calls)
+    string(REGEX REPLACE ".*<([^>+]+)>" "\\1" callee "${c}")
+    if(NOT callee STREQUAL fn)
+      list(APPEND queue ${callee})
+    endif()
+  endforeach()
+endwhile()
+if(bad_div)
+  message(FATAL_ERROR "division on the step path of ${IMAGE} (from ${STEP_ROOT}):\n${bad_div}")
+endif()
+list(LENGTH seen n_seen)
+if(STEP_ROOT)
+  message(STATUS "step-path gate passed: ${n_seen} functions reachable from ${STEP_ROOT}, no division")
+endif()
+
+# Gate 3: sizes.
+execute_process(COMMAND ${SIZE} -A ${IMAGE} OUTPUT_VARIABLE sections)
+set(flash 0)
+set(ram 0)
+string(REPLACE "\n" ";" section_lines "${sections}")
+foreach(line IN LISTS section_lines)
+  if(line MATCHES "^\\.(vectors|text|ARM\\.exidx|init_array|data)[ \t]+([0-9]+)")
+    math(EXPR flash "${flash} + ${CMAKE_MATCH_2}")
+  endif()
+  if(line MATCHES "^\\.(data|bss|ccm)[ \t]+([0-9]+)")
+    math(EXPR ram "${ram} + ${CMAKE_MATCH_2}")
+  endif()
+endforeach()
+if(flash GREATER FLASH_BUDGET OR ram GREATER RAM_BUDGET)
+  message(FATAL_ERROR "${IMAGE}: flash ${flash} (budget ${FLASH_BUDGET}), RAM ${ram} (budget ${RAM_BUDGET}) bytes")
+endif()
+message(STATUS "size gate passed: ${IMAGE}: flash ${flash} of ${FLASH_BUDGET}, RAM ${ram} of ${RAM_BUDGET} bytes")

@@ -1,0 +1,103 @@
+// haloplot send JOB.job --port PATH: upload a job to a plotter controller and plot it, over
+// the job protocol (core/protocol). Options re-plot with another halo width (DRAW only on
+// the controller), damage frames on purpose (to test the link), and end a QEMU test image.
+#include <iostream>
+
+#include "cli/options.h"
+#include "io/edges_file.h"
+#include "io/job_file.h"
+#include "io/line_reader.h"
+#include "link/job_client.h"
+#include "link/serial_port.h"
+
+namespace haloplot::host {
+namespace {
+
+int send_fail(const std::string& m) {
+  std::cerr << "haloplot: send: " << m << "\n";
+  return 1;
+}
+
+bool read_u32(const Options& o, const std::string& name, uint32_t* out, std::string* error) {
+  const std::string v = o.get(name);
+  if (v.empty()) return true;
+  int64_t x = 0;
+  if (!parse_int(v, 0, 0xFFFFF, &x)) {
+    *error = name + " '" + v + "' must be an integer in [0, 1048575]";
+    return false;
+  }
+  *out = uint32_t(x);
+  return true;
+}
+
+void print_status(const char* when, const StatusReport& r) {
+  std::cout << when << ": state=" << int(r.state) << " last_error=" << status_name(r.last_error)
+            << " edges=" << r.edges << " crossings=" << r.crossings << " cut_runs=" << r.cut_runs
+            << " draw_runs=" << r.draw_runs << " step_events=" << r.step_events
+            << " bad_frames=" << r.bad_frames << " free_bytes=" << r.free_bytes << "\n";
+}
+
+}  // namespace
+
+int cmd_send(int argc, char** argv) {
+  const Options o = parse_options(
+      argc, argv, 2, {"--port", "--replot", "--corrupt-every", "--truncate-every", "--seed"},
+      {"--test-exit"});
+  if (!o.error.empty()) return send_fail(o.error);
+  if (o.positional.size() != 1 || o.get("--port").empty())
+    return send_fail(
+        "usage: haloplot send JOB.job --port PATH [--replot W] [--corrupt-every K] "
+        "[--truncate-every K] [--test-exit]");
+  JobFile jf;
+  InputError ie = read_job_file(o.positional[0], &jf);
+  if (ie.failed()) return send_fail(ie.message());
+  std::vector<Edge3> edges;
+  ie = read_edges_file(jf.scene_path, &edges);
+  if (ie.failed()) return send_fail(ie.message());
+  FaultPlan faults;
+  uint32_t replot = 0, seed = 1;
+  std::string error;
+  if (!read_u32(o, "--corrupt-every", &faults.corrupt_every, &error) ||
+      !read_u32(o, "--truncate-every", &faults.truncate_every, &error) ||
+      !read_u32(o, "--replot", &replot, &error) || !read_u32(o, "--seed", &seed, &error))
+    return send_fail(error);
+  faults.seed = seed;
+  auto port = open_port(o.get("--port"), 20000, &error);
+  if (!port) return send_fail(error);
+  JobClient client(*port, faults);
+  client.timeout_ms = 3000;
+  Status s = Status::kOk;
+  auto link_or_status = [&](bool sent, const char* what) {
+    if (!sent) return send_fail(std::string(what) + ": " + client.error());
+    if (!ok(s))
+      return send_fail(std::string(what) + ": the controller answered: " + status_name(s));
+    return 0;
+  };
+  StatusReport r;
+  if (int e = link_or_status(client.sync(), "sync")) return e;
+  if (int e = link_or_status(client.upload(jf.spec, edges, &s), "upload")) return e;
+  if (int e = link_or_status(client.request(FrameType::kPlot, {}, &s), "plot")) return e;
+  if (!client.wait_idle(&r)) return send_fail("status: " + client.error());
+  print_status("plot", r);
+  if (r.last_error != Status::kOk)
+    return send_fail(std::string("plot: ") + status_name(r.last_error));
+  if (replot > 0) {
+    std::vector<uint8_t> halo(kHaloBytes);
+    encode_halo(DrawParams{int32_t(replot), jf.spec.draw.mode}, halo.data());
+    if (int e = link_or_status(client.request(FrameType::kReplot, halo, &s), "replot")) return e;
+    if (!client.wait_idle(&r)) return send_fail("status: " + client.error());
+    print_status("replot", r);
+    if (r.last_error != Status::kOk)
+      return send_fail(std::string("replot: ") + status_name(r.last_error));
+  }
+  if (o.has("--test-exit")) {
+    if (int e = link_or_status(client.request(FrameType(0x7F), {}, &s), "test-exit")) return e;
+  }
+  const LinkStats& st = client.stats();
+  std::cout << "link: frames=" << st.frames << " resends=" << st.resends << " naks=" << st.naks
+            << " timeouts=" << st.timeouts << " corrupted=" << st.corrupted
+            << " truncated=" << st.truncated << "\n";
+  return 0;
+}
+
+}  // namespace haloplot::host

@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# The plotter controller image end to end under QEMU: the host tool uploads a job over the
+# emulated USART (a Unix socket on QEMU's side), the controller plots it from its step-timer
+# interrupt and re-plots it with a new halo width, and the test checks that:
+#   - both step traces equal `haloplot sim` for the same jobs, byte for byte;
+#   - the re-plot ran DRAW only (CUT once in all), as the paper promises;
+#   - damaged and truncated frames were each NAKed once and resent, and the plots are still
+#     identical (the stored job was never damaged);
+#   - a scene too large for the controller is refused by name, and the next job still plots;
+#   - the image exits 0 through semihosting with no step underrun.
+# Usage: qemu_link_test.sh FIRMWARE_DIR HALOPLOT_TOOL
+source "$(dirname "$0")/qemu_common.sh" firmware_link "$1" "$2" fw_plotter_qemu.elf
+
+cd "$work"
+"$tool" demo-scene --cubes 2 -o scene.edges
+"$tool" demo-scene --cubes 40 -o huge.edges
+job() {  # job NAME SCENE HALO
+  printf 'scene %s\ndrawing haloed\nhalo %s\nhalo-mode paper\nkinematics corexy\n' "$2" "$3" > "$1"
+}
+job plot.job scene.edges 50
+job replot.job scene.edges 120
+job huge.job huge.edges 50
+"$tool" sim plot.job -o host_plot.trace
+"$tool" sim replot.job -o host_replot.trace
+
+timeout 600 qemu-system-arm -M netduinoplus2 -nographic -monitor none \
+  -chardev socket,id=link,path="$work/link.sock",server=on,wait=off -serial chardev:link \
+  -semihosting-config enable=on,target=native -icount shift=0,align=off,sleep=off \
+  -kernel "$fw/fw_plotter_qemu.elf" > fw.out 2> qemu.err &
+qemu_pid=$!
+
+# 1. Too large: refused by name (the controller keeps serving).
+start=$SECONDS
+if "$tool" send huge.job --port "$work/link.sock" > huge.out 2>&1; then
+  bad "an oversized scene was accepted"
+elif grep -q "scene too large" huge.out; then
+  ok
+else
+  bad "oversized scene: $(cat huge.out)"
+fi
+# 2. Plot and re-plot with damaged frames on the way.
+"$tool" send plot.job --port "$work/link.sock" --replot 120 --corrupt-every 5 \
+  --truncate-every 11 --seed 7 --test-exit > send.out 2>&1
+rc=$?
+cat send.out
+if [ "$rc" -eq 0 ]; then ok; else bad "send failed ($rc)"; kill "$qemu_pid"; fi
+wait "$qemu_pid"
+rc=$?
+if [ "$rc" -eq 0 ]; then ok; else bad "controller exit status $rc: $(cat qemu.err)"; fi
+grep '^fw ' fw.out
+echo "controller session: $((SECONDS - start)) s"
+
+awk '/^haloplot-trace 1$/ { k++; on = 1 } on { print > ("fw_" k ".trace") } /^end / { on = 0 }' fw.out
+for pair in "1 host_plot" "2 host_replot"; do
+  set -- $pair
+  if [ -s "fw_$1.trace" ] && cmp -s "fw_$1.trace" "$2.trace"; then
+    ok
+    echo "trace $1 identical: $(wc -c < "$2.trace") bytes"
+  else
+    bad "controller trace $1 ($(wc -c < "fw_$1.trace" 2>/dev/null) bytes) differs from $2.trace ($(wc -c < "$2.trace") bytes)"
+  fi
+done
+if grep -q "^replot: .* cut_runs=1 draw_runs=2 " send.out; then ok; else bad "re-plot did not run DRAW alone"; fi
+read -r corrupted truncated naks < <(sed -n 's/^link: .* naks=\([0-9]*\) .* corrupted=\([0-9]*\) truncated=\([0-9]*\)/\2 \3 \1/p' send.out)
+if [ -n "$naks" ] && [ "$corrupted" -gt 0 ] && [ "$truncated" -gt 0 ] && [ "$naks" -ge $((corrupted + truncated)) ]; then
+  ok
+else
+  bad "damaged frames: corrupted=$corrupted truncated=$truncated naks=$naks"
+fi
+if grep -q '^fw underruns=0$' fw.out; then ok; else bad "step underruns: $(grep underruns fw.out)"; fi
+finish
