@@ -30,8 +30,11 @@ Status emit(const SpanSink& sink, const Edge3& edge, uint32_t e, int64_t t0, int
 
 }  // namespace
 
-Status draw(const CutSet& cs, const DrawParams& params, void* scratch, size_t scratch_bytes,
-            SpanSink sink, DrawStats* stats) {
+template <typename Precision>
+Status draw_with(const CutSet& cs, const DrawParams& params, void* scratch, size_t scratch_bytes,
+                 SpanSink sink, DrawStats* stats) {
+  using Sqrt = typename Precision::Sqrt;
+  using Position = typename Precision::Position;
   DrawStats st;
   if (params.halo < 0 || params.halo > kCoordMax) return Status::kBadParameter;
   if (scratch_bytes < draw_scratch_bytes(cs)) return Status::kWorkspaceTooSmall;
@@ -48,11 +51,13 @@ Status draw(const CutSet& cs, const DrawParams& params, void* scratch, size_t sc
         const Edge3& front = cs.edges[c[i].front_edge()];
         Gap g;
         if (params.mode == HaloMode::kExact)
-          g = exact_gap(edge, front, params.halo);
+          g = exact_gap<Sqrt>(edge, front, params.halo);
         else if (c[i].near_miss())
           continue;  // the paper's DRAW knows only crossings
         else
-          g = paper_gap(edge, front, c[i].t, params.halo);
+          g = paper_gap<Sqrt>(edge, front, c[i].t, params.halo);
+        g.lo = Position::floor(g.lo);
+        g.hi = Position::ceil(g.hi);
         if (g.lo < 0) g.lo = 0;  // clip to the edge (a halo running off its end)
         if (g.hi > kFracOne) g.hi = kFracOne;
         if (!g.empty()) gaps[k++] = g;
@@ -82,5 +87,21 @@ Status draw(const CutSet& cs, const DrawParams& params, void* scratch, size_t sc
   if (stats) *stats = st;
   return Status::kOk;
 }
+
+Status draw(const CutSet& cs, const DrawParams& params, void* scratch, size_t scratch_bytes,
+            SpanSink sink, DrawStats* stats) {
+  return draw_with<DefaultDrawPrecision>(cs, params, scratch, scratch_bytes, sink, stats);
+}
+
+#define HALOPLOT_DRAW_WITH(S, B)                                \
+  template Status draw_with<DrawPrecision<S, PositionBits<B>>>( \
+      const CutSet&, const DrawParams&, void*, size_t, SpanSink, DrawStats*);
+HALOPLOT_DRAW_WITH(SqrtExact, 32)
+HALOPLOT_DRAW_WITH(SqrtNewton, 32)
+HALOPLOT_DRAW_WITH(SqrtTable, 32)
+HALOPLOT_DRAW_WITH(SqrtExact, 16)
+HALOPLOT_DRAW_WITH(SqrtNewton, 16)
+HALOPLOT_DRAW_WITH(SqrtTable, 16)
+#undef HALOPLOT_DRAW_WITH
 
 }  // namespace haloplot

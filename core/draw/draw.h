@@ -6,6 +6,7 @@
 
 #include "cut/cutset.h"
 #include "draw/halo.h"
+#include "draw/precision.h"
 #include "status/status.h"
 
 namespace haloplot {
@@ -41,6 +42,13 @@ struct DrawStats {
 // Scratch DRAW needs for this CUTSET: one Gap per record of the busiest edge.
 size_t draw_scratch_bytes(const CutSet& cutset);
 
+// DRAW with a precision policy (draw/precision.h): instantiated for every pairing of the
+// square-root and position policies there.
+template <typename Precision>
+Status draw_with(const CutSet& cutset, const DrawParams& params, void* scratch,
+                 size_t scratch_bytes, SpanSink sink, DrawStats* stats);
+
+// DRAW in the default precision: exact roots, Q0.32 positions.
 Status draw(const CutSet& cutset, const DrawParams& params, void* scratch, size_t scratch_bytes,
             SpanSink sink, DrawStats* stats);
 

@@ -50,13 +50,9 @@ Gap disc_gap(const Edge3& behind, int64_t cx, int64_t cy, int32_t r) {
 
 }  // namespace
 
-uint64_t length_q10_ceil(int64_t dx, int64_t dy) {
-  const uint64_t l2 = static_cast<uint64_t>(dx * dx + dy * dy) << 20;
-  uint64_t s = isqrt_u64(l2);
-  if (s * s < l2) ++s;
-  return s;
-}
+uint64_t length_q10_ceil(int64_t dx, int64_t dy) { return SqrtExact::length_q10_ceil(dx, dy); }
 
+template <typename Sqrt>
 Gap paper_gap(const Edge3& behind, const Edge3& front, uint32_t t32, int32_t halo) {
   const int64_t pdx = behind.b.x - behind.a.x, pdy = behind.b.y - behind.a.y;
   const int64_t qdx = front.b.x - front.a.x, qdy = front.b.y - front.a.y;
@@ -64,12 +60,13 @@ Gap paper_gap(const Edge3& behind, const Edge3& front, uint32_t t32, int32_t hal
   if (d < 0) d = -d;
   if (d == 0) return kWhole;  // cannot happen for a CUT crossing; stay safe for bad input
   // half-gap in t = W * |dq| / |d|; numerator < 2^20 * 2^31.5, denominator < 2^51.
-  const int64_t num = int64_t{halo} * static_cast<int64_t>(length_q10_ceil(qdx, qdy));
+  const int64_t num = int64_t{halo} * static_cast<int64_t>(Sqrt::length_q10_ceil(qdx, qdy));
   const int64_t h = q32_ceil_clamped(num, d << 10);  // d > 0 here
   // The exact crossing lies in [t32, t32 + 1) / 2^32.
   return Gap{int64_t{t32} - h, int64_t{t32} + 1 + h};
 }
 
+template <typename Sqrt>
 Gap exact_gap(const Edge3& behind, const Edge3& front, int32_t halo) {
   const int64_t pdx = behind.b.x - behind.a.x, pdy = behind.b.y - behind.a.y;
   const int64_t qdx = front.b.x - front.a.x, qdy = front.b.y - front.a.y;
@@ -81,7 +78,7 @@ Gap exact_gap(const Edge3& behind, const Edge3& front, int32_t halo) {
     // The rectangle part of the stadium: within W of Q's line, and between the normals
     // through Q's endpoints. Distances to the line are cross / |dq|, so compare
     // cross * 2^10 with W * |dq| * 2^10 (|dq| rounded up).
-    const int64_t width = int64_t{halo} * static_cast<int64_t>(length_q10_ceil(qdx, qdy));
+    const int64_t width = int64_t{halo} * static_cast<int64_t>(Sqrt::length_q10_ceil(qdx, qdy));
     // Scale by multiplying: a left shift of a negative value is undefined in C++17.
     constexpr int64_t kQ10 = int64_t{1} << 10;
     const Gap strip = linear_band(cross(qdx, qdy, wx, wy) * kQ10, cross(qdx, qdy, pdx, pdy) * kQ10,
@@ -91,5 +88,12 @@ Gap exact_gap(const Edge3& behind, const Edge3& front, int32_t halo) {
   }
   return g;
 }
+
+template Gap paper_gap<SqrtExact>(const Edge3&, const Edge3&, uint32_t, int32_t);
+template Gap paper_gap<SqrtNewton>(const Edge3&, const Edge3&, uint32_t, int32_t);
+template Gap paper_gap<SqrtTable>(const Edge3&, const Edge3&, uint32_t, int32_t);
+template Gap exact_gap<SqrtExact>(const Edge3&, const Edge3&, int32_t);
+template Gap exact_gap<SqrtNewton>(const Edge3&, const Edge3&, int32_t);
+template Gap exact_gap<SqrtTable>(const Edge3&, const Edge3&, int32_t);
 
 }  // namespace haloplot

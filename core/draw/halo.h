@@ -15,6 +15,7 @@
 #pragma once
 #include <stdint.h>
 
+#include "draw/precision.h"
 #include "geometry/contract.h"
 
 namespace haloplot {
@@ -26,10 +27,13 @@ struct Gap {
   bool empty() const { return lo > hi; }
 };
 
-// The paper's gap around a crossing at t32 (floor of the exact position).
+// The paper's gap around a crossing at t32 (floor of the exact position). Sqrt is a square
+// root policy of draw/precision.h (instantiated for the three there).
+template <typename Sqrt = SqrtExact>
 Gap paper_gap(const Edge3& behind, const Edge3& front, uint32_t t32, int32_t halo);
 
 // The exact gap: positions of `behind` within distance `halo` of `front` (may be empty).
+template <typename Sqrt = SqrtExact>
 Gap exact_gap(const Edge3& behind, const Edge3& front, int32_t halo);
 
 // |(dx, dy)| in Q10, rounded up: an upper bound within 2^-10 steps of the true length.

@@ -5,31 +5,52 @@
 namespace haloplot {
 namespace {
 
-// Rotated values: |world| <= 2^20, |sin|, |cos| <= 2^30, two products summed: < 2^52.
+// Rotated values: |world| <= 2^20, |sin|, |cos| <= 2^B, two products summed: < 2^(22 + B).
 static_assert(2 * (int64_t{kWorldLimit} << kTrigFractionBits) < (int64_t{1} << 53), "rotation");
 
 struct Rotated {
-  int64_t x, y, d;  // Q30 world units
+  int64_t x, y, d;  // world units in Q(B)
 };
 
+template <int B>
 struct Rotation {
+  static_assert(B == 16 || B == 30, "Q16.16 or Q2.30 trigonometry");
   SinCos az, el;
+  Rotation(int32_t az_mdeg, int32_t el_mdeg)
+      : az(round_trig(sin_cos_mdeg(az_mdeg))), el(round_trig(sin_cos_mdeg(el_mdeg))) {}
+  // The Q2.30 values rounded to B fraction bits.
+  static SinCos round_trig(SinCos v) {
+    if constexpr (B == kTrigFractionBits) {
+      return v;
+    } else {
+      constexpr int drop = kTrigFractionBits - B;
+      constexpr int64_t half = int64_t{1} << (drop - 1);
+      return {(v.sin + half) >> drop, (v.cos + half) >> drop};
+    }
+  }
   Rotated apply(const Point3& p) const {
     const int64_t xs = p.x * az.cos - p.y * az.sin;
-    // y1 stays exact in Q30 (< 2^51); its products with the elevation's sin and cos are
-    // rounded once, back to Q30.
+    // y1 stays exact in Q(B); its products with the elevation's sin and cos are rounded once,
+    // back to Q(B).
     const int64_t y1 = p.x * az.sin + p.y * az.cos;
-    return {xs, p.z * el.cos - mul_shift30(y1, el.sin), p.z * el.sin - mul_shift30(y1, el.cos)};
+    return {xs, p.z * el.cos - mul_shift(y1, el.sin), p.z * el.sin - mul_shift(y1, el.cos)};
   }
-  // round(a * b / 2^30) for |a| < 2^52 and |b| <= 2^30 without a 128-bit product: a is split
-  // into a high part and 26 low bits, each product below 2^56.
-  static int64_t mul_shift30(int64_t a, int64_t b) {
+  // round(a * b / 2^B) for |a| < 2^(22 + B) and |b| <= 2^B. For B = 16 the product fits
+  // (< 2^54); for B = 30 a 128-bit product is avoided by splitting a into a high part and 26
+  // low bits, each product below 2^56.
+  static int64_t mul_shift(int64_t a, int64_t b) {
     const bool neg = a < 0;
     const uint64_t m = neg ? 0 - uint64_t(a) : uint64_t(a);
-    const int64_t high = int64_t(m >> 26) * b, low = int64_t(m & 0x3ffffffu) * b;
-    const int64_t q = high >> 4;        // floor(high / 16)
-    const int64_t rem = high - q * 16;  // [0, 16): the part of high below 2^30 after scaling
-    const int64_t r = q + (((rem << 26) + low + (int64_t{1} << 29)) >> 30);
+    int64_t r;
+    if constexpr (B <= 20) {
+      r = (int64_t(m) * b + (int64_t{1} << (B - 1))) >> B;
+    } else {
+      const int64_t high = int64_t(m >> 26) * b, low = int64_t(m & 0x3ffffffu) * b;
+      constexpr int kHighShift = B - 26;  // high carries 2^26: divide by 2^(B - 26)
+      const int64_t q = high >> kHighShift;
+      const int64_t rem = high - q * (int64_t{1} << kHighShift);
+      r = q + (((rem << 26) + low + (int64_t{1} << (B - 1))) >> B);
+    }
     return neg ? -r : r;
   }
 };
@@ -76,10 +97,11 @@ Status validate(const View& v) {
   return Status::kOk;
 }
 
-Status project_points(const View& view, const Point3* world, uint32_t n, Point3* out) {
+template <int kTrigBits>
+Status project_points_with(const View& view, const Point3* world, uint32_t n, Point3* out) {
   Status s = validate(view);
   if (!ok(s)) return s;
-  const Rotation rot{sin_cos_mdeg(view.azimuth_mdeg), sin_cos_mdeg(view.elevation_mdeg)};
+  const Rotation<kTrigBits> rot(view.azimuth_mdeg, view.elevation_mdeg);
   Bounds bx, by, bd;
   for (uint32_t i = 0; i < n; ++i) {
     const Point3& p = world[i];
@@ -105,6 +127,12 @@ Status project_points(const View& view, const Point3* world, uint32_t n, Point3*
   }
   return Status::kOk;
 }
+
+Status project_points(const View& view, const Point3* world, uint32_t n, Point3* out) {
+  return project_points_with<kTrigFractionBits>(view, world, n, out);
+}
+template Status project_points_with<16>(const View&, const Point3*, uint32_t, Point3*);
+template Status project_points_with<30>(const View&, const Point3*, uint32_t, Point3*);
 
 Status edges_from_indices(const Point3* points, uint32_t n_points, const uint32_t* pairs,
                           uint32_t n_edges, Edge3* out) {

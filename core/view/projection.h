@@ -37,6 +37,12 @@ Status validate(const View& v);
 // line, map to the margin on the degenerate axis.
 Status project_points(const View& view, const Point3* world, uint32_t n, Point3* out);
 
+// The same with sine and cosine in Q16.16 (kTrigBits = 16: 17-bit constants, products that
+// need no splitting, error up to about 2^-16 of the scene's extent) or Q2.30 (30, the
+// default above). The accuracy benchmark measures both (docs/accuracy.md).
+template <int kTrigBits>
+Status project_points_with(const View& view, const Point3* world, uint32_t n, Point3* out);
+
 // Edges from vertex index pairs (2 per edge); kBadParameter for an index beyond n_points.
 Status edges_from_indices(const Point3* points, uint32_t n_points, const uint32_t* pairs,
                           uint32_t n_edges, Edge3* out);

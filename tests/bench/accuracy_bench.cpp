@@ -19,6 +19,7 @@
 #include "demo/cube_array.h"
 #include "demo/random_scene.h"
 #include "perf_common.h"
+#include "precision_modes.h"
 #include "reference/draw_reference.h"
 
 using namespace haloplot;
@@ -293,6 +294,7 @@ int main(int argc, char** argv) {
         "discriminants) "
         "and buys bounded gaps for near-parallel edges and the near misses the paper's gap cannot "
         "see.\n\n";
+  bench::precision_modes_section(dir, runs, md);
   std::ofstream(dir + "/accuracy.body.md") << md.str();
   return 0;
 }

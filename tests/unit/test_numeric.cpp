@@ -7,6 +7,7 @@
 #include "../check.h"
 #include "../support/scenes.h"
 #include "cut/grid.h"
+#include "draw/precision.h"
 #include "geometry/fraction.h"
 #include "geometry/predicates.h"
 #include "geometry/wide.h"
@@ -30,6 +31,45 @@ static u128 isqrt_ref(u128 v) {
   while (x * x > v) --x;
   while ((x + 1) * (x + 1) <= v) ++x;
   return x;
+}
+
+// The square-root policies of draw/precision.h against the exact ceiling of sqrt((dx^2 +
+// dy^2) 2^20), computed here by binary search on __int128 squares: SqrtExact must equal it;
+// SqrtNewton and SqrtTable must never be below it and stay within 2.5 % and 0.8 % (plus one).
+static uint64_t ceil_root_reference(int64_t dx, int64_t dy) {
+  const unsigned __int128 v = (unsigned __int128)(dx * dx + dy * dy) << 20;
+  uint64_t lo = 0, hi = uint64_t(1) << 32;
+  while (lo < hi) {
+    const uint64_t mid = lo + (hi - lo) / 2;
+    if ((unsigned __int128)mid * mid >= v)
+      hi = mid;
+    else
+      lo = mid + 1;
+  }
+  return lo;
+}
+
+static void check_sqrt_policies(scenes::Rng& r) {
+  int bad_exact = 0, bad_newton = 0, bad_table = 0;
+  auto one = [&](int64_t dx, int64_t dy) {
+    const uint64_t want = ceil_root_reference(dx, dy);
+    if (SqrtExact::length_q10_ceil(dx, dy) != want) ++bad_exact;
+    const uint64_t n = SqrtNewton::length_q10_ceil(dx, dy), t = SqrtTable::length_q10_ceil(dx, dy);
+    if (n < want || n > want + want / 40 + 1) ++bad_newton;
+    if (t < want || t > want + want / 125 + 1) ++bad_table;
+  };
+  const int64_t edge = (int64_t(1) << 21) - 1;
+  for (int64_t a :
+       {int64_t(0), int64_t(1), int64_t(2), int64_t(3), int64_t(15), int64_t(16), edge, -edge})
+    for (int64_t b : {int64_t(0), int64_t(1), int64_t(7), int64_t(255), edge, -edge}) one(a, b);
+  for (int i = 0; i < 200000; ++i) {
+    const int bits = int(r.next() % 22);
+    const int64_t m = (int64_t(1) << bits) - 1;
+    one(int64_t(r.next() % uint64_t(2 * m + 1)) - m, int64_t(r.next() % uint64_t(2 * m + 1)) - m);
+  }
+  CHECK_EQ(bad_exact, 0);
+  CHECK_EQ(bad_newton, 0);
+  CHECK_EQ(bad_table, 0);
 }
 
 int main() {
@@ -134,5 +174,6 @@ int main() {
                 "rounding bound");
     }
   CHECK(crossings > 1000);
+  check_sqrt_policies(r);
   return check::finish("numeric");
 }
