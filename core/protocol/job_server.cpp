@@ -155,7 +155,7 @@ Status JobServer::upload_records(FrameType type, const uint8_t* p, uint16_t n) {
   const bool indexed = scene_.format == SceneFormat::kIndexed;
   if (type == FrameType::kUploadVertices) {
     if (!indexed || n % kVertexRecordBytes) return Status::kUploadMismatch;
-    const uint32_t k = n / kVertexRecordBytes;
+    const uint32_t k = uint32_t(n / kVertexRecordBytes);
     if (k > scene_.vertices - received_vertices_) return Status::kUploadMismatch;
     Point3* world = reinterpret_cast<Point3*>(arena_);
     for (uint32_t i = 0; i < k; ++i)
