@@ -52,6 +52,10 @@ const char* status_name(Status s) {
       return "limit switch triggered";
     case Status::kStepUnderrun:
       return "step queue underrun";
+    case Status::kSelfIntersecting:
+      return "polygon is self-intersecting";
+    case Status::kVisibilityInconsistent:
+      return "visibility walk inconsistent";
   }
   return "unknown status";
 }

@@ -1,7 +1,9 @@
 // haloplot send JOB.job --port PATH: upload a job to a plotter controller and plot it, over
 // the job protocol (core/protocol). Options re-plot with another halo width (DRAW only on
 // the controller), damage frames on purpose (to test the link), and end a QEMU test image.
+#include <chrono>
 #include <iostream>
+#include <thread>
 
 #include "cli/options.h"
 #include "io/edges_file.h"
@@ -62,8 +64,20 @@ int cmd_send(int argc, char** argv) {
       !read_u32(o, "--replot", &replot, &error) || !read_u32(o, "--seed", &seed, &error))
     return send_fail(error);
   faults.seed = seed;
-  auto port = open_port(o.get("--port"), 20000, &error);
-  if (!port) return send_fail(error);
+  // A socket server that still holds the previous session may close a new connection at
+  // once (QEMU's chardev serves one client): reconnect a few times before giving up.
+  std::unique_ptr<Transport> port;
+  for (int attempt = 0; attempt < 20; ++attempt) {
+    port = open_port(o.get("--port"), 20000, &error);
+    if (!port) return send_fail(error);
+    JobClient probe(*port);
+    probe.timeout_ms = 3000;
+    if (probe.sync()) break;
+    if (!port->closed()) return send_fail("sync: " + probe.error());
+    port.reset();
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+  }
+  if (!port) return send_fail("the controller keeps closing the link");
   JobClient client(*port, faults);
   client.timeout_ms = 3000;
   Status s = Status::kOk;

@@ -43,7 +43,9 @@ const char* kUsage =
     "  haloplot sim JOB.job -o OUT.trace [--gcode OUT.gcode] [--hpgl OUT.hpgl] [--stats]\n"
     "  haloplot replay IN.trace -o OUT.svg [--stats]\n"
     "  haloplot send JOB.job --port PATH [--replot W] [--corrupt-every K] [--truncate-every K]\n"
-    "               [--test-exit]   (upload to a controller over its serial port or socket)\n";
+    "               [--test-exit]   (upload to a controller over its serial port or socket)\n"
+    "  haloplot view2d POLYGON.txt --from X,Y -o OUT.svg [--spans OUT.spans] [--trace OUT.trace]\n"
+    "               [--stats]   (which parts of a polygon are visible from a point)\n";
 
 int fail(const std::string& message) {
   std::cerr << "haloplot: " << message << "\n";
@@ -443,8 +445,9 @@ int cmd_replay(int argc, char** argv) {
 }  // namespace
 
 namespace haloplot::host {
-int cmd_send(int argc, char** argv);  // cli/cmd_send.cpp
-}
+int cmd_send(int argc, char** argv);    // cli/cmd_send.cpp
+int cmd_view2d(int argc, char** argv);  // cli/cmd_view2d.cpp
+}  // namespace haloplot::host
 
 int main(int argc, char** argv) {
   if (argc < 2) return fail(kUsage);
@@ -461,5 +464,6 @@ int main(int argc, char** argv) {
   if (cmd == "sim") return cmd_sim(argc, argv);
   if (cmd == "replay") return cmd_replay(argc, argv);
   if (cmd == "send") return haloplot::host::cmd_send(argc, argv);
+  if (cmd == "view2d") return haloplot::host::cmd_view2d(argc, argv);
   return fail("unknown command '" + cmd + "'\n" + kUsage);
 }

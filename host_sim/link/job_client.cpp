@@ -38,6 +38,7 @@ bool JobClient::read_frame(Frame* f, std::vector<uint8_t>* payload) {
     if (left.count() <= 0) return false;
     uint8_t buf[512];
     const size_t n = t_.read(buf, sizeof buf, int(left.count()));
+    if (n == 0 && t_.closed()) return false;
     pending_.insert(pending_.end(), buf, buf + n);
   }
 }
@@ -62,14 +63,18 @@ bool JobClient::request(FrameType type, const std::vector<uint8_t>& payload, Sta
       wire.resize(wire.size() / 2);
       ++stats_.truncated;
     }
-    if (!t_.write(wire.data(), wire.size())) {
-      error_ = "link: write failed";
+    if (!t_.write(wire.data(), wire.size()) || t_.closed()) {
+      error_ = "link: closed by the other end";
       return false;
     }
     for (;;) {
       Frame f;
       std::vector<uint8_t> got;
       if (!read_frame(&f, &got)) {
+        if (t_.closed()) {
+          error_ = "link: closed by the other end";
+          return false;
+        }
         ++stats_.timeouts;
         break;  // silence: resend
       }

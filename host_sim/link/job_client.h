@@ -20,6 +20,8 @@ class Transport {
   virtual bool write(const uint8_t* bytes, size_t n) = 0;
   // Up to `cap` bytes; 0 when nothing arrived within timeout_ms.
   virtual size_t read(uint8_t* out, size_t cap, int timeout_ms) = 0;
+  // The other end hung up (a socket's server closed it): reads will never return data.
+  virtual bool closed() const { return false; }
 };
 
 // Deliberate damage to the first transmission of chosen frames.

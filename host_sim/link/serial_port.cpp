@@ -33,11 +33,14 @@ class FdTransport : public Transport {
     pollfd p{fd_, POLLIN, 0};
     if (::poll(&p, 1, timeout_ms) <= 0) return 0;
     const ssize_t r = ::read(fd_, out, cap);
+    if (r == 0) closed_ = true;  // readable with no data: end of stream
     return r > 0 ? size_t(r) : 0;
   }
+  bool closed() const override { return closed_; }
 
  private:
   int fd_;
+  bool closed_ = false;
 };
 
 int connect_socket(const std::string& path) {

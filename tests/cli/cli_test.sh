@@ -47,5 +47,25 @@ expect 'grep -q "^cut_ran=0" stats2.txt' "draw reports that CUT did not run"
 "$tool" draw b.cut --halo 60 --exact-halo -o f.svg 2> warn.txt
 expect 'grep -q "rerun cut with --reach 60" warn.txt' "reach warning"
 expect 'grep -q "<svg" a.svg && grep -q "</svg>" a.svg' "SVG is complete"
+# view2d: the 2-D visibility tool and its input errors.
+printf '0 0\n0 10\n10 10\n10 0\n' > square.txt
+"$tool" view2d square.txt --from -5,5 -o sq.svg --spans sq.spans --stats > sq.stats
+expect '[ $? -eq 0 ] && grep -q "<circle" sq.svg && grep -q "^configuration=free exterior" sq.stats' "view2d draws and reports"
+expect '[ "$(grep -c "^s 0 0 0 0 10$" sq.spans)" = 1 ] && [ "$(grep -c "^s " sq.spans)" = 1 ]' "from the left only the left edge, whole: $(cat sq.spans)"
+"$tool" view2d square.txt --from -5,5 -o sq2.svg --trace sq.trace
+expect '[ $? -eq 0 ] && grep -q "^end " sq.trace' "view2d plots its visible parts to a step trace"
+"$tool" replay sq.trace -o sq_replay.svg --stats > sq_replay.txt 2>&1
+expect '[ $? -eq 0 ]' "the view2d trace replays"
+printf '0 0\n10 10\n# a comment\n10 zero\n0 10\n' > broken.txt
+"$tool" view2d broken.txt --from -5,5 -o b2.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "broken.txt:4: field 2 .zero." err.txt && [ ! -e b2.svg ]' "view2d names file and line: $(cat err.txt)"
+printf '0 0\n10 10\n10 0\n0 10\n' > bow.txt
+"$tool" view2d bow.txt --from -5,5 -o b3.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "not simple: edges" err.txt' "self-intersection is named: $(cat err.txt)"
+"$tool" view2d square.txt --from 0,5 -o b4.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "lies on the polygon" err.txt' "E on the polygon is an error: $(cat err.txt)"
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

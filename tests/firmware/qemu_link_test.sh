@@ -38,7 +38,8 @@ elif grep -q "scene too large" huge.out; then
 else
   bad "oversized scene: $(cat huge.out)"
 fi
-# 2. Plot and re-plot with damaged frames on the way.
+# 2. Plot and re-plot with damaged frames on the way (a new connection: `send` reconnects if
+#    QEMU still holds the last one).
 "$tool" send plot.job --port "$work/link.sock" --replot 120 --corrupt-every 5 \
   --truncate-every 11 --seed 7 --test-exit > send.out 2>&1
 rc=$?
