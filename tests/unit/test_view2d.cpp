@@ -2,7 +2,8 @@
 // visible parts of every edge must agree exactly, as ratios, on thousands of random simple
 // polygons of every configuration (star-shaped seen from inside and out, spirals seen from
 // their centre, combs, lattice polygons with vertices collinear with E and E collinear with
-// edges); hand-worked cases for each configuration type; and the input errors.
+// edges); the paper's Figure 5 rebuilt with its labels; hand-worked cases for each
+// configuration type; and the input errors.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -175,6 +176,57 @@ void random_families() {
   std::printf("view2d: %d random cases against the brute force\n", cases);
 }
 
+// The paper's Figure 5, rebuilt: a blocked exterior with A1..A20 in the paper's labelling
+// (A1 the most clockwise vertex, E at the origin; built from polar positions, rounded).
+// The paper's account: a1 hidden from A1 to B1 and visible from B1 to A2; a2, a3, a4 visible;
+// a backward bay at A5 hides a5 and a6, and a7 is visible only from B7 to A8; a forward bay
+// marked by A11 hides a9 and a10, and a8 is visible only from A8 to C8; a11 is visible (A11
+// to Q, and Q to A12 where the walk began); a12 to a20 are invisible by Proposition 3.
+// B1, B7 and C8 lie exactly on the rays E A12, E A5 and E A11.
+void figure5() {
+  const std::vector<Point2> p = {{1000, 0},     {766, 643},    {174, 985},    {-500, 866},
+                                 {-940, 342},   {-1149, 964},  {-1638, 1147}, {-1879, -684},
+                                 {-684, -1879}, {-650, -1126}, {-771, -919},  {750, 150},
+                                 {640, -113},   {222, -611},   {1026, -2819}, {-2819, -1026},
+                                 {-1500, 2598}, {2298, 1928},  {2954, 521},   {1494, 131}};
+  const Point2 e{0, 0};
+  const Run r = run(p, e);
+  CHECK(ok(r.status));
+  CHECK(r.stats.config == ViewConfig::kBlockedExterior);
+  CHECK_EQ(r.stats.prop3_edges, 9u);    // a12 .. a20
+  CHECK_EQ(r.stats.backward_bays, 2u);  // at A5, and at A12 after the start at Q
+  CHECK_EQ(r.stats.forward_bays, 1u);   // marked by A11
+  auto piece = [&](uint32_t edge) -> const reference::Interval* {
+    for (const auto& s : r.spans)
+      if (s.edge == edge) return &s;
+    return nullptr;
+  };
+  const reference::Frac zero{0, 1}, one{1, 1};
+  // On the ray from E through vertex k: cross(A + s D, V_k) = 0.
+  auto on_ray = [&](const reference::Interval* s, bool start, uint32_t k) {
+    const Point2 a = p[s->edge], b = p[(s->edge + 1) % p.size()], v = p[k];
+    const reference::Frac f = start ? s->s0 : s->s1;
+    const __int128 c0 = (__int128)a.x * v.y - (__int128)a.y * v.x;
+    const __int128 cd = (__int128)(b.x - a.x) * v.y - (__int128)(b.y - a.y) * v.x;
+    return f.num * cd + f.den * c0 == 0;
+  };
+  const auto* a1 = piece(0);
+  CHECK(a1 && !reference::frac_eq(a1->s0, zero) && reference::frac_eq(a1->s1, one) &&
+        on_ray(a1, true, 11));
+  for (uint32_t k : {1u, 2u, 3u, 10u}) {
+    const auto* s = piece(k);
+    CHECK_MSG(s && reference::frac_eq(s->s0, zero) && reference::frac_eq(s->s1, one),
+              "a" + std::to_string(k + 1) + " visible whole");
+  }
+  const auto* a7 = piece(6);
+  CHECK(a7 && reference::frac_eq(a7->s1, one) && on_ray(a7, true, 4));  // from B7 (ray E A5)
+  const auto* a8 = piece(7);
+  CHECK(a8 && reference::frac_eq(a8->s0, zero) && on_ray(a8, false, 10));  // to C8 (ray E A11)
+  for (uint32_t k : {4u, 5u, 8u, 9u, 11u, 12u, 13u, 14u, 15u, 16u, 17u, 18u, 19u})
+    CHECK_MSG(piece(k) == nullptr, "a" + std::to_string(k + 1) + " invisible");
+  CHECK(agrees(p, e, "Figure 5"));
+}
+
 void hand_cases() {
   // Free exterior: a square seen from the left: only the left edge, whole.
   const std::vector<Point2> square = {{0, 0}, {0, 10}, {10, 10}, {10, 0}};
@@ -241,6 +293,7 @@ void errors() {
 }  // namespace
 
 int main() {
+  figure5();
   hand_cases();
   errors();
   random_families();
