@@ -15,6 +15,7 @@
 #include "scene/cube_array.h"
 #include "tick_workload.h"
 #include "trace/trace_encoder.h"
+#include "view/projection.h"
 
 using namespace haloplot;
 using namespace haloplot::fw;
@@ -139,6 +140,42 @@ int main() {
     stat("cut_scratch_bytes", plan.scratch_bytes);
     stat("cut_instructions", ticks_to_instructions(t1 - t0));
     stat("draw_instructions", ticks_to_instructions(t2 - t1));
+    // Every DRAW precision mode (draw/precision.h) on the same CUTSET: what each costs on the
+    // Cortex-M4, where a 64-bit division is a library call (docs/accuracy.md quotes these).
+    auto mode = [&](const char* name, auto tag) {
+      using P = decltype(tag);
+      const uint64_t a = counter_ticks();
+      const Status ms = draw_with<P>(set, DrawParams{50, HaloMode::kPaper}, scratch, scratch_size,
+                                     count, nullptr);
+      const uint64_t b = counter_ticks();
+      if (!ok(ms)) fail(name, ms);
+      stat(name, ticks_to_instructions(b - a));
+    };
+    mode("draw_mode_exact_q32", DrawPrecision<SqrtExact, PositionBits<32>>{});
+    mode("draw_mode_newton_q32", DrawPrecision<SqrtNewton, PositionBits<32>>{});
+    mode("draw_mode_table_q32", DrawPrecision<SqrtTable, PositionBits<32>>{});
+    mode("draw_mode_exact_q16", DrawPrecision<SqrtExact, PositionBits<16>>{});
+    mode("draw_mode_newton_q16", DrawPrecision<SqrtNewton, PositionBits<16>>{});
+    mode("draw_mode_table_q16", DrawPrecision<SqrtTable, PositionBits<16>>{});
+    // The view transform, both fixed-point modes, on the cube array's 288 world corners.
+    {
+      static Point3 world[8 * kCubes * kCubes], screen[8 * kCubes * kCubes];
+      uint32_t nv = 0;
+      for (int32_t i = 0; i < kCubes; ++i)
+        for (int32_t j = 0; j < kCubes; ++j)
+          for (int k = 0; k < 8; ++k)
+            world[nv++] = Point3{i * 125 + (k & 1) * 100, j * 125 + ((k >> 1) & 1) * 100,
+                                 ((k >> 2) & 1) * 100};
+      const View view;
+      const uint64_t a = counter_ticks();
+      Status ps = project_points_with<16>(view, world, nv, screen);
+      const uint64_t b = counter_ticks();
+      if (ok(ps)) ps = project_points_with<30>(view, world, nv, screen);
+      const uint64_t c = counter_ticks();
+      if (!ok(ps)) fail("projection", ps);
+      stat("project_q16_instructions_per_vertex", ticks_to_instructions(b - a) / nv);
+      stat("project_q30_instructions_per_vertex", ticks_to_instructions(c - b) / nv);
+    }
   }
 
   // The plot: the same job as scenes/ of the host test (see tests/firmware/).
