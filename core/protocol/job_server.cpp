@@ -81,6 +81,9 @@ Status JobServer::act(const Frame& f) {
     if (state_ == ServerState::kPlotting) motion_.abort(motion_.ctx);
     return Status::kOk;
   }
+  // Platform requests decide for themselves what a running plot allows.
+  if (f.type >= kPlatformTypeFirst && extension_.handle)
+    return extension_.handle(extension_.ctx, f);
   if (state_ == ServerState::kPlotting) return Status::kBusy;
   switch (type) {
     case FrameType::kUploadBegin:
@@ -125,8 +128,6 @@ Status JobServer::act(const Frame& f) {
     case FrameType::kReplot:
       return replot(f.payload, f.length);
     default:
-      if (f.type >= kPlatformTypeFirst && extension_.handle)
-        return extension_.handle(extension_.ctx, f);
       return Status::kMalformedRequest;
   }
 }

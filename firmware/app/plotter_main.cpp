@@ -29,6 +29,10 @@ using namespace haloplot::fw;
 namespace {
 
 constexpr uint8_t kTestExitType = 0x7F;  // test images only: print the counters and exit
+// Test images only: "close" limit switch 0. QEMU models neither the switch's pin nor EXTI's
+// software trigger, so the test sets the EXTI0 interrupt pending in the NVIC: the real
+// handler and stop path run, as on a falling edge of PE0.
+constexpr uint8_t kTestLimitType = 0x7E;
 // Test images run the step clock 8x fast: QEMU needs no real-time pacing, the trace's ticks
 // are the same, and a plot of minutes takes seconds.
 constexpr uint32_t kQemuTimeScale = 8;
@@ -40,9 +44,16 @@ alignas(8) uint8_t arena[HALOPLOT_FW_ARENA_KB * 1024];
 uint8_t rx_frame[JobServer::kMaxPayload + kFrameOverhead];
 MotionRunner motion;
 
-// Quiet time that ends a frame in progress: 2 ms at 168 MHz, about 23 byte times at 115200
-// baud (a sender never pauses inside a frame that long).
-constexpr uint64_t kIdleTicks = 336000;
+// Quiet time that ends a frame in progress, in counter ticks (TIM5). On the board: 2 ms at
+// TIM5's 84 MHz, about 23 byte times at 115200 baud (a sender never pauses that long inside
+// a frame). Under QEMU bytes arrive with no baud pacing, whenever its I/O thread runs, and on
+// a loaded machine that thread can stall for milliseconds of virtual time while the CPU spins:
+// the test image waits 100 ms of virtual time (one count per nanosecond there).
+#ifdef HALOPLOT_FW_TEST_HOOKS
+constexpr uint64_t kIdleTicks = 100000000;
+#else
+constexpr uint64_t kIdleTicks = 168000;
+#endif
 
 #ifdef HALOPLOT_FW_TEST_HOOKS
 struct Console {
@@ -93,6 +104,10 @@ int main() {
   motion.set_time_scale(kQemuTimeScale);
   bool exit_requested = false;
   JobServer::Extension ext{&exit_requested, [](void* c, const Frame& f) {
+                             if (f.type == kTestLimitType) {
+                               chip::nvic_set_pending(chip::kExti0);
+                               return Status::kOk;
+                             }
                              if (f.type != kTestExitType) return Status::kMalformedRequest;
                              *static_cast<bool*>(c) = true;
                              return Status::kOk;

@@ -84,6 +84,10 @@ inline void nvic_enable(Irq irq) {
 inline void nvic_disable(Irq irq) {
   reinterpret_cast<reg*>(0xE000E180u)[irq / 32] = 1u << (irq % 32);
 }
+// Set an interrupt pending from software (NVIC_ISPR): it runs as if its line had fired.
+inline void nvic_set_pending(Irq irq) {
+  reinterpret_cast<reg*>(0xE000E200u)[irq / 32] = 1u << (irq % 32);
+}
 // Interrupt priority (8 bits per IRQ, upper 4 implemented): lower is more urgent.
 inline void nvic_priority(Irq irq, uint8_t prio) {
   reinterpret_cast<volatile uint8_t*>(0xE000E400u)[irq] = uint8_t(prio << 4);

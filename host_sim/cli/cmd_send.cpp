@@ -15,8 +15,14 @@
 namespace haloplot::host {
 namespace {
 
-int send_fail(const std::string& m) {
+int send_fail(const std::string& m, const JobClient* client = nullptr) {
   std::cerr << "haloplot: send: " << m << "\n";
+  if (client) {  // what the link saw, for diagnosis
+    const LinkStats& st = client->stats();
+    std::cerr << "link: frames=" << st.frames << " resends=" << st.resends << " naks=" << st.naks
+              << " timeouts=" << st.timeouts << " corrupted=" << st.corrupted
+              << " truncated=" << st.truncated << "\n";
+  }
   return 1;
 }
 
@@ -42,9 +48,10 @@ void print_status(const char* when, const StatusReport& r) {
 }  // namespace
 
 int cmd_send(int argc, char** argv) {
-  const Options o = parse_options(
-      argc, argv, 2, {"--port", "--replot", "--corrupt-every", "--truncate-every", "--seed"},
-      {"--test-exit"});
+  const Options o = parse_options(argc, argv, 2,
+                                  {"--port", "--replot", "--corrupt-every", "--truncate-every",
+                                   "--seed", "--stop-after", "--stop"},
+                                  {"--test-exit"});
   if (!o.error.empty()) return send_fail(o.error);
   if (o.positional.size() != 1 || o.get("--port").empty())
     return send_fail(
@@ -82,7 +89,7 @@ int cmd_send(int argc, char** argv) {
   client.timeout_ms = 3000;
   Status s = Status::kOk;
   auto link_or_status = [&](bool sent, const char* what) {
-    if (!sent) return send_fail(std::string(what) + ": " + client.error());
+    if (!sent) return send_fail(std::string(what) + ": " + client.error(), &client);
     if (!ok(s))
       return send_fail(std::string(what) + ": the controller answered: " + status_name(s));
     return 0;
@@ -91,9 +98,29 @@ int cmd_send(int argc, char** argv) {
   if (int e = link_or_status(client.sync(), "sync")) return e;
   if (int e = link_or_status(client.upload(jf.spec, edges, &s), "upload")) return e;
   if (int e = link_or_status(client.request(FrameType::kPlot, {}, &s), "plot")) return e;
+  if (!o.get("--stop-after").empty()) {
+    // Stop the plot once it has made this many step events: with an abort request, or (test
+    // images) by closing limit switch 0. The controller must report how the plot ended.
+    uint32_t after = 0;
+    if (!read_u32(o, "--stop-after", &after, &error)) return send_fail(error);
+    const bool limit = o.get("--stop", "abort") == "limit";
+    do {
+      if (!client.query(&r)) return send_fail("status: " + client.error());
+    } while (r.state == ServerState::kPlotting && r.step_events < after);
+    const FrameType stop = limit ? FrameType(0x7E) : FrameType::kAbort;
+    if (int e = link_or_status(client.request(stop, {}, &s), "stop")) return e;
+    if (!client.wait_idle(&r)) return send_fail("status: " + client.error());
+    print_status("stopped", r);
+    const Status want = limit ? Status::kLimitSwitch : Status::kAborted;
+    if (r.last_error != want)
+      return send_fail(std::string("stop: expected '") + status_name(want) +
+                       "', the plot ended with '" + status_name(r.last_error) + "'");
+    std::cout << "stopped by " << (limit ? "the limit switch" : "abort") << " after "
+              << r.step_events << " step events\n";
+  }
   if (!client.wait_idle(&r)) return send_fail("status: " + client.error());
   print_status("plot", r);
-  if (r.last_error != Status::kOk)
+  if (r.last_error != Status::kOk && o.get("--stop-after").empty())
     return send_fail(std::string("plot: ") + status_name(r.last_error));
   if (replot > 0) {
     std::vector<uint8_t> halo(kHaloBytes);

@@ -7,6 +7,9 @@
 #   - damaged and truncated frames were each NAKed once and resent, and the plots are still
 #     identical (the stored job was never damaged);
 #   - a scene too large for the controller is refused by name, and the next job still plots;
+#   - an abort request, and a limit switch (its interrupt set pending: QEMU models neither
+#     the pin nor EXTI's software trigger), each stop a plot within a few step events and
+#     are reported as how the plot ended;
 #   - the image exits 0 through semihosting with no step underrun.
 # Usage: qemu_link_test.sh FIRMWARE_DIR HALOPLOT_TOOL
 source "$(dirname "$0")/qemu_common.sh" firmware_link "$1" "$2" fw_plotter_qemu.elf
@@ -38,7 +41,19 @@ elif grep -q "scene too large" huge.out; then
 else
   bad "oversized scene: $(cat huge.out)"
 fi
-# 2. Plot and re-plot with damaged frames on the way (a new connection: `send` reconnects if
+# 2. Stop a plot by abort, then one by the limit switch, each after 20,000 step events.
+for how in abort limit; do
+  "$tool" send plot.job --port "$work/link.sock" --stop-after 20000 --stop "$how" > "stop_$how.out" 2>&1
+  rc=$?
+  events=$(sed -n 's/^stopped by .* after \([0-9]*\) step events$/\1/p' "stop_$how.out")
+  if [ "$rc" -eq 0 ] && [ -n "$events" ] && [ "$events" -lt 20100 ]; then
+    ok
+    echo "stopped by $how after $events step events"
+  else
+    bad "stop by $how: $(cat "stop_$how.out")"
+  fi
+done
+# 3. Plot and re-plot with damaged frames on the way (a new connection: `send` reconnects if
 #    QEMU still holds the last one).
 "$tool" send plot.job --port "$work/link.sock" --replot 120 --corrupt-every 5 \
   --truncate-every 11 --seed 7 --test-exit > send.out 2>&1
@@ -52,7 +67,8 @@ grep '^fw ' fw.out
 echo "controller session: $((SECONDS - start)) s"
 
 awk '/^haloplot-trace 1$/ { k++; on = 1 } on { print > ("fw_" k ".trace") } /^end / { on = 0 }' fw.out
-for pair in "1 host_plot" "2 host_replot"; do
+# Traces 1 and 2 are the stopped plots; 3 and 4 the plot and the re-plot.
+for pair in "3 host_plot" "4 host_replot"; do
   set -- $pair
   if [ -s "fw_$1.trace" ] && cmp -s "fw_$1.trace" "$2.trace"; then
     ok
@@ -61,7 +77,15 @@ for pair in "1 host_plot" "2 host_replot"; do
     bad "controller trace $1 ($(wc -c < "fw_$1.trace" 2>/dev/null) bytes) differs from $2.trace ($(wc -c < "$2.trace") bytes)"
   fi
 done
-if grep -q "^replot: .* cut_runs=1 draw_runs=2 " send.out; then ok; else bad "re-plot did not run DRAW alone"; fi
+# The counters run over the controller's whole session: compare the re-plot with the plot.
+runs() { sed -n "s/^$1: .* cut_runs=\([0-9]*\) draw_runs=\([0-9]*\) .*/\1 \2/p" send.out; }
+read -r plot_cut plot_draw < <(runs plot)
+read -r re_cut re_draw < <(runs replot)
+if [ -n "$re_cut" ] && [ "$re_cut" = "$plot_cut" ] && [ "$re_draw" = $((plot_draw + 1)) ]; then
+  ok
+else
+  bad "re-plot did not run DRAW alone: plot CUT/DRAW runs $plot_cut/$plot_draw, re-plot $re_cut/$re_draw"
+fi
 read -r corrupted truncated naks < <(sed -n 's/^link: .* naks=\([0-9]*\) .* corrupted=\([0-9]*\) truncated=\([0-9]*\)/\2 \3 \1/p' send.out)
 if [ -n "$naks" ] && [ "$corrupted" -gt 0 ] && [ "$truncated" -gt 0 ] && [ "$naks" -ge $((corrupted + truncated)) ]; then
   ok
