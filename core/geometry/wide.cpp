@@ -105,4 +105,25 @@ uint32_t isqrt_u64(uint64_t v) {
   return static_cast<uint32_t>(root);
 }
 
+uint64_t divide_round(Wide num, uint64_t den, bool* overflow) {
+  // One quotient bit per step from the top: the remainder stays below den, so (rem << 1)
+  // needs one bit more than den has; den < 2^63 keeps it in 64 bits.
+  uint64_t q = 0, rem = 0;
+  *overflow = false;
+  for (int bit = 127; bit >= 0; --bit) {
+    const uint64_t in = bit >= 64 ? (num.hi >> (bit - 64)) & 1u : (num.lo >> bit) & 1u;
+    rem = (rem << 1) | in;
+    if (rem >= den) {
+      rem -= den;
+      if (bit >= 63)
+        *overflow = true;
+      else
+        q |= uint64_t{1} << bit;
+    }
+  }
+  if (rem >= den - rem) ++q;  // round half up: 2 rem >= den
+  if (*overflow) q = (uint64_t{1} << 63) - 1;
+  return q;
+}
+
 }  // namespace haloplot

@@ -36,6 +36,10 @@ inline bool operator==(Wide a, Wide b) { return a.lo == b.lo && a.hi == b.hi; }
 
 // floor(sqrt(v)) for 0 <= v < 2^126. Digit-by-digit, no division: exact on every target.
 uint64_t isqrt(Wide v);
+
+// round(num / den) for num >= 0 and den > 0, by binary long division; *overflow is set (and
+// the result saturated) when the quotient does not fit in 63 bits.
+uint64_t divide_round(Wide num, uint64_t den, bool* overflow);
 // floor(sqrt(v)) for a 64-bit value.
 uint32_t isqrt_u64(uint64_t v);
 

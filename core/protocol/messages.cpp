@@ -21,8 +21,9 @@ void encode_vertex(const Point3& p, uint8_t out[kVertexRecordBytes]) {
 }
 
 void encode_view(const View& v, uint8_t out[kViewBytes]) {
-  const int32_t f[5] = {v.azimuth_mdeg, v.elevation_mdeg, v.width, v.height, v.margin};
-  for (int i = 0; i < 5; ++i) put_i32(out + 4 * i, f[i]);
+  const int32_t f[6] = {v.azimuth_mdeg, v.elevation_mdeg, v.width,
+                        v.height,       v.margin,         v.perspective};
+  for (int i = 0; i < 6; ++i) put_i32(out + 4 * i, f[i]);
 }
 
 void encode_halo(const DrawParams& d, uint8_t out[kHaloBytes]) {
@@ -87,7 +88,8 @@ Point3 decode_vertex(const uint8_t* p) {
 
 Status decode_view(const uint8_t* p, size_t n, View* out) {
   if (n != kViewBytes) return Status::kMalformedRequest;
-  *out = View{get_i32(p), get_i32(p + 4), get_i32(p + 8), get_i32(p + 12), get_i32(p + 16)};
+  *out = View{get_i32(p),      get_i32(p + 4),  get_i32(p + 8),
+              get_i32(p + 12), get_i32(p + 16), get_i32(p + 20)};
   return Status::kOk;
 }
 

@@ -7,7 +7,8 @@
 //   kUploadEdges       Edge3 records: 6 x i32 (x0 y0 z0 x1 y1 z1)            24 per edge
 //   kUploadVertices    world Point3: 3 x i32                                  12 per vertex
 //   kUploadEdgeIndices 2 x u32 vertex indices                                  8 per edge
-//   kSetView           i32 azimuth, elevation (millidegrees), width, height, margin   20
+//   kSetView           i32 azimuth, elevation (millidegrees), width, height, margin,
+//                      perspective distance (0: orthographic)                         24
 //   kSetHalo           u32 width (steps), u8 mode (0 paper, 1 exact)                   5
 //   kSetEffects        u8 drawing (DrawingEffect), u8 flags (1 acceleration, 2 pen servo,
 //                      4 backlash)                                                      2
@@ -30,7 +31,7 @@
 namespace haloplot {
 
 inline constexpr size_t kUploadBeginBytes = 13, kEdgeRecordBytes = 24, kVertexRecordBytes = 12,
-                        kIndexRecordBytes = 8, kViewBytes = 20, kHaloBytes = 5, kEffectsBytes = 2,
+                        kIndexRecordBytes = 8, kViewBytes = 24, kHaloBytes = 5, kEffectsBytes = 2,
                         kMachineBytes = 61, kStatusBytes = 32;
 
 enum class SceneFormat : uint8_t { kEdges = 0, kIndexed = 1 };

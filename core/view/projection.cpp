@@ -1,5 +1,6 @@
 #include "view/projection.h"
 
+#include "geometry/wide.h"
 #include "view/trig.h"
 
 namespace haloplot {
@@ -92,8 +93,29 @@ struct AxisFit {
 
 Status validate(const View& v) {
   if (v.width < 1 || v.height < 1 || v.margin < 0 || int64_t{v.margin} + v.width > kCoordMax ||
-      int64_t{v.margin} + v.height > kCoordMax)
+      int64_t{v.margin} + v.height > kCoordMax || v.perspective < 0 ||
+      v.perspective > 2 * kWorldLimit)
     return Status::kBadParameter;
+  return Status::kOk;
+}
+
+// Perspective: (x, y) * D / (D - d), to Q16 world units, in one rounded 128-bit division. The
+// eye is at depth D (Q(B): eye_q); kCoordinateOutOfRange for points within kEyeClearance of
+// the eye plane or behind it.
+template <int B>
+Status perspective(const Rotated& r, int64_t eye_q, int32_t distance, Rotated* out) {
+  const int64_t gap = eye_q - r.d;
+  if (gap < (int64_t{kEyeClearance} << B)) return Status::kCoordinateOutOfRange;
+  auto scale = [&](int64_t v) {
+    const bool neg = v < 0;
+    // |v| < 2^(22 + B) times distance * 2^16 < 2^37: below 2^(59 + B), in 128 bits; the
+    // quotient by gap >= 2^B stays below 2^59.
+    const Wide num = mul_u64(uint64_t(neg ? -v : v), uint64_t(distance) << 16);
+    bool overflow = false;
+    const uint64_t q = divide_round(num, uint64_t(gap), &overflow);
+    return neg ? -int64_t(q) : int64_t(q);
+  };
+  *out = Rotated{scale(r.x), scale(r.y), r.d};
   return Status::kOk;
 }
 
@@ -102,13 +124,21 @@ Status project_points_with(const View& view, const Point3* world, uint32_t n, Po
   Status s = validate(view);
   if (!ok(s)) return s;
   const Rotation<kTrigBits> rot(view.azimuth_mdeg, view.elevation_mdeg);
+  const int64_t eye_q = int64_t{view.perspective} << kTrigBits;
+  auto place = [&](const Point3& p, Rotated* r) {
+    *r = rot.apply(p);
+    return view.perspective > 0 ? perspective<kTrigBits>(*r, eye_q, view.perspective, r)
+                                : Status::kOk;
+  };
   Bounds bx, by, bd;
   for (uint32_t i = 0; i < n; ++i) {
     const Point3& p = world[i];
     if (p.x < -kWorldLimit || p.x > kWorldLimit || p.y < -kWorldLimit || p.y > kWorldLimit ||
         p.z < -kWorldLimit || p.z > kWorldLimit)
       return Status::kCoordinateOutOfRange;
-    const Rotated r = rot.apply(p);
+    Rotated r;
+    s = place(p, &r);
+    if (!ok(s)) return s;
     bx.add(r.x), by.add(r.y), bd.add(r.d);
   }
   if (n == 0) return Status::kOk;
@@ -122,7 +152,8 @@ Status project_points_with(const View& view, const Point3* world, uint32_t n, Po
   const AxisFit fx(bx.lo, range, view.margin, side), fy(by.lo, range, view.margin, side),
       fd(bd.lo, uint64_t(bd.hi - bd.lo), 0, kCoordMax);
   for (uint32_t i = 0; i < n; ++i) {
-    const Rotated r = rot.apply(world[i]);
+    Rotated r;
+    place(world[i], &r);  // succeeded in the first pass
     out[i] = Point3{fx(r.x), fy(r.y), fd(r.d)};
   }
   return Status::kOk;

@@ -5,12 +5,16 @@
 //
 // then fitted uniformly into the plot area (the same steps per world unit on both axes,
 // centred on neither: the lower-left corner sits at the margin) and depth scaled to
-// [0, 2^20). Orthographic only; the perspective eye arrives with the solid-models issue.
+// [0, 2^20). With View::perspective = D, the eye sits on the view axis at depth D and a point
+// at depth d is scaled by D / (D - d) before the fit (depth itself is kept: along a ray from
+// the eye it still orders nearer and farther).
 //
 // Numbers: world coordinates within +-2^20; sin and cos in Q2.30 (view/trig.h); the rotated
 // values are exact products in int64 (< 2^53) and are fitted with one rounding per output.
-// Error against exact real arithmetic: at most 1/2 step from the final rounding plus
-// 2^-9 step from the trigonometry and the fit's pre-shift (tested against long double).
+// Perspective divides once, in 128 bits, to Q16 world units (points at least kEyeClearance
+// from the eye plane keep the quotient below 2^59). Error against exact real arithmetic: at
+// most 1/2 step from the final rounding plus 2^-9 step from the trigonometry, the division
+// and the fit's pre-shift (tested against long double, near the eye plane too).
 #pragma once
 #include <stdint.h>
 
@@ -26,7 +30,14 @@ struct View {
   int32_t elevation_mdeg = 40000;
   int32_t width = 20000, height = 16000;  // plot area, steps
   int32_t margin = 400;                   // lower-left corner of the plot area
+  // Perspective: the eye on the view axis at this depth (world units, in front of the world
+  // origin); 0 is orthographic. A point at depth d maps to (x', y') * D / (D - d).
+  int32_t perspective = 0;
 };
+
+// Points nearer the eye plane than this (world units) are refused: the perspective divisor
+// would magnify them beyond the format (kCoordinateOutOfRange).
+inline constexpr int32_t kEyeClearance = 1;
 
 // Validates the view (plot area inside the coordinate range).
 Status validate(const View& v);

@@ -4,6 +4,7 @@
 // out-of-range world points and bad edge indices refused by name.
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "../check.h"
@@ -48,8 +49,13 @@ std::vector<Point3> reference(const View& v, const std::vector<Point3>& w,
   for (const Point3& p : w) {
     const long double xs = p.x * std::cos(az) - p.y * std::sin(az);
     const long double y1 = p.x * std::sin(az) + p.y * std::cos(az);
-    r.push_back(
-        {xs, p.z * std::cos(el) - y1 * std::sin(el), p.z * std::sin(el) - y1 * std::cos(el)});
+    long double x = xs, y = p.z * std::cos(el) - y1 * std::sin(el);
+    const long double d = p.z * std::sin(el) - y1 * std::cos(el);
+    if (v.perspective > 0) {  // the README's perspective: scale by D / (D - d)
+      x = x * v.perspective / (v.perspective - d);
+      y = y * v.perspective / (v.perspective - d);
+    }
+    r.push_back({x, y, d});
   }
   long double xl = 1e30L, xh = -1e30L, yl = 1e30L, yh = -1e30L, dl = 1e30L, dh = -1e30L;
   for (const R& q : r) {
@@ -76,6 +82,7 @@ void check_projection() {
     View v;
     v.azimuth_mdeg = int32_t(rng() % 720001) - 360000;
     v.elevation_mdeg = int32_t(rng() % 180001) - 90000;
+    if (k % 2) v.perspective = int32_t(3 * kWorldLimit / 2 + rng() % 1000);  // beyond every point
     // World extents from tiny to the full 2^20: the fit magnifies small worlds the most.
     const int32_t extent = int32_t(1) << (8 + rng() % 13);
     std::vector<Point3> w;
@@ -106,6 +113,45 @@ void check_projection() {
     CHECK(w[i].x == copy[i].x && w[i].y == copy[i].y && w[i].z == copy[i].z);
 }
 
+// Perspective near the eye plane: with azimuth and elevation 0 the depth is exactly -y, so
+// the eye plane is exact. Points down to 1 world unit from it (a magnification of D) land
+// within the same bound of the long-double projection; on or behind it they are refused.
+void check_near_eye_plane() {
+  View v;
+  v.azimuth_mdeg = 0;
+  v.elevation_mdeg = 0;
+  long double worst = 0;
+  for (int32_t eye : {1000, 65536, 1 << 20}) {
+    v.perspective = eye;
+    for (int32_t gap : {1, 2, 3, 7, 100}) {
+      std::vector<Point3> w = {{0, 0, 0},
+                               {5000, 0, 3000},
+                               {-7000, 2000, -1000},
+                               {300, -(eye - gap), 200},
+                               {-300, -(eye - gap - 1), -250},
+                               {kWorldLimit, kWorldLimit, kWorldLimit}};
+      std::vector<Point3> got(w.size());
+      CHECK(ok(project_points(v, w.data(), uint32_t(w.size()), got.data())));
+      std::vector<long double> exact;
+      reference(v, w, &exact);
+      for (size_t i = 0; i < w.size(); ++i) {
+        worst = std::max(worst, std::fabs(got[i].x - exact[3 * i]));
+        worst = std::max(worst, std::fabs(got[i].y - exact[3 * i + 1]));
+        CHECK(in_range(got[i].x) && in_range(got[i].y) && in_range(got[i].z));
+      }
+    }
+    // On the eye plane, and behind it: refused by name, nothing written.
+    for (int32_t y : {-eye, -eye - 1, -(kWorldLimit)}) {
+      if (y > -eye) continue;
+      Point3 p[2] = {{0, 0, 0}, {10, y, 10}}, out[2] = {{7, 7, 7}, {7, 7, 7}};
+      CHECK(project_points(v, p, 2, out) == Status::kCoordinateOutOfRange);
+      CHECK(out[0].x == 7);
+    }
+  }
+  CHECK_MSG(worst <= 0.5L + 1.0L / 512, "near-eye error " + std::to_string((double)worst));
+  std::printf("near the eye plane: worst error %.6f steps\n", (double)worst);
+}
+
 void check_errors() {
   View v;
   Point3 p[2] = {{0, 0, 0}, {kWorldLimit + 1, 0, 0}};
@@ -126,9 +172,14 @@ void check_errors() {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "near_eye_plane") {  // the stability family alone
+    check_near_eye_plane();
+    return check::finish("stability_near_eye_plane");
+  }
   check_trig();
   check_projection();
+  check_near_eye_plane();
   check_errors();
   return check::finish("view");
 }
