@@ -21,6 +21,7 @@
 #include "io/line_reader.h"
 #include "io/spans_file.h"
 #include "pipeline/host_pipeline.h"
+#include "pipeline/scene_input.h"
 #include "render/svg.h"
 #include "sim/replay.h"
 #include "sim/simulator.h"
@@ -38,8 +39,9 @@ const char* kUsage =
     "  haloplot cut SCENE.edges -o SCENE.cut [--lambda X] [--cell G] [--cover exact|bbox]\n"
     "               [--reach R] [--stats]\n"
     "  haloplot draw SCENE.cut --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans] [--stats]\n"
-    "  haloplot plot SCENE.edges --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans]\n"
+    "  haloplot plot SCENE.edges|MODEL.obj --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans]\n"
     "               [--cut OUT.cut] [cut options] [--stats]\n"
+    "               [--view AZ,EL] [--perspective D] [--dump-edges OUT.edges]   (for .obj)\n"
     "  haloplot sim JOB.job -o OUT.trace [--gcode OUT.gcode] [--hpgl OUT.hpgl] [--stats]\n"
     "  haloplot replay IN.trace -o OUT.svg [--stats]\n"
     "  haloplot send JOB.job --port PATH [--replot W] [--corrupt-every K] [--truncate-every K]\n"
@@ -265,8 +267,7 @@ int cmd_cut(int argc, char** argv) {
   std::string error;
   if (!cut_params(o, &cp, &error)) return fail(error);
   std::vector<Edge3> edges;
-  const InputError ie = read_edges_file(o.positional[0], &edges);
-  if (ie.failed()) return fail(ie.message());
+  if (!load_scene(o, o.positional[0], &edges, &error)) return fail(error);
   HostCut c;
   const Status s = host_cut(std::move(edges), cp, &c);
   if (!ok(s)) return fail_status("CUT", s);
@@ -306,6 +307,7 @@ int cmd_draw(int argc, char** argv) {
 int cmd_plot(int argc, char** argv) {
   std::set<std::string> valued = kCutValued;
   valued.insert({"--halo", "--spans", "--cut"});
+  valued.insert(std::begin(kSceneOptions), std::end(kSceneOptions));
   const Options o = parse_options(argc, argv, 2, valued, {"--exact-halo", "--stats"});
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return fail(std::string("bad arguments\n") + kUsage);
@@ -316,8 +318,7 @@ int cmd_plot(int argc, char** argv) {
   // In one process the halo width is known before CUT: let the exact halo see near misses.
   if (dp.mode == HaloMode::kExact && o.get("--reach").empty()) cp.reach = dp.halo;
   std::vector<Edge3> edges;
-  const InputError ie = read_edges_file(o.positional[0], &edges);
-  if (ie.failed()) return fail(ie.message());
+  if (!load_scene(o, o.positional[0], &edges, &error)) return fail(error);
   HostCut c;
   Status s = host_cut(std::move(edges), cp, &c);
   if (!ok(s)) return fail_status("CUT", s);

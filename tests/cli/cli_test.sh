@@ -67,5 +67,18 @@ expect '[ $rc -ne 0 ] && grep -q "not simple: edges" err.txt' "self-intersection
 "$tool" view2d square.txt --from 0,5 -o b4.svg 2> err.txt
 rc=$?
 expect '[ $rc -ne 0 ] && grep -q "lies on the polygon" err.txt' "E on the polygon is an error: $(cat err.txt)"
+# OBJ in: projected with the view, dumped as .edges, the same drawing as plotting the dump.
+printf 'v 0 0 0\nv 4 0 0\nv 4 4 0\nv 0 4 0\nv 0 0 4\nv 4 0 4\nv 4 4 4\nv 0 4 4\nf 1 2 3 4\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n' > cube.obj
+"$tool" plot cube.obj --view 30,40 --halo 40 -o obj.svg --spans obj.spans --dump-edges obj.edges
+rc=$?
+expect '[ $rc -eq 0 ] && [ "$(grep -vc "^#" obj.edges)" = 12 ]' "an OBJ cube plots and dumps its 12 edges"
+"$tool" plot obj.edges --halo 40 -o obj2.svg --spans obj2.spans
+expect 'cmp -s obj.spans obj2.spans' "plotting the dumped edges gives the same spans"
+"$tool" plot cube.obj --view 30,40 --perspective 2 --halo 40 -o objp.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "eye plane" err.txt && [ ! -e objp.svg ]' "an eye inside the model is refused: $(cat err.txt)"
+"$tool" plot cube.obj --view 30,forty --halo 40 -o objv.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q -- "--view" err.txt' "a bad --view is named: $(cat err.txt)"
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

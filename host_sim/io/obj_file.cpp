@@ -1,0 +1,105 @@
+#include "io/obj_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <unordered_set>
+
+#include "io/line_reader.h"
+
+namespace haloplot::host {
+namespace {
+
+bool parse_real(const std::string& s, double* out) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  *out = std::strtod(s.c_str(), &end);
+  return end == s.c_str() + s.size() && std::isfinite(*out);
+}
+
+// One face or line corner: the vertex index before the first '/', 1-based or negative.
+bool parse_index(const std::string& corner, size_t n_vertices, uint32_t* out, std::string* why) {
+  const std::string v = corner.substr(0, corner.find('/'));
+  int64_t i = 0;
+  if (!parse_int(v, -int64_t(n_vertices), int64_t(n_vertices), &i) || i == 0) {
+    *why = "vertex index '" + v + "' is not in 1.." + std::to_string(n_vertices) + " or -1..-" +
+           std::to_string(n_vertices) + " (vertices defined so far)";
+    return false;
+  }
+  *out = uint32_t(i > 0 ? i - 1 : int64_t(n_vertices) + i);
+  return true;
+}
+
+}  // namespace
+
+InputError read_obj(std::istream& in, const std::string& name, ObjModel* out) {
+  *out = ObjModel{};
+  std::vector<double> xyz;
+  LineReader reader(in);
+  std::vector<std::string> f;
+  std::unordered_set<uint64_t> seen;
+  auto add_edge = [&](uint32_t a, uint32_t b) {
+    if (a == b) return;
+    const uint64_t key = uint64_t(std::min(a, b)) << 32 | std::max(a, b);
+    if (seen.insert(key).second) out->edge_pairs.insert(out->edge_pairs.end(), {a, b});
+  };
+  while (reader.next(&f)) {
+    const std::string& k = f[0];
+    if (k == "v") {
+      if (f.size() < 4 || f.size() > 5)
+        return {name, reader.line(), "a vertex needs x y z (and an optional w)"};
+      double c[3];
+      for (int i = 0; i < 3; ++i)
+        if (!parse_real(f[1 + i], &c[i]))
+          return {name, reader.line(), "coordinate '" + f[1 + i] + "' is not a number"};
+      xyz.insert(xyz.end(), c, c + 3);
+    } else if (k == "f" || k == "l") {
+      const size_t need = k == "f" ? 3 : 2;
+      if (f.size() - 1 < need)
+        return {name, reader.line(),
+                std::string(k == "f" ? "a face" : "a line") + " needs at least " +
+                    std::to_string(need) + " vertices, found " + std::to_string(f.size() - 1)};
+      std::vector<uint32_t> idx;
+      for (size_t i = 1; i < f.size(); ++i) {
+        uint32_t v;
+        std::string why;
+        if (!parse_index(f[i], xyz.size() / 3, &v, &why)) return {name, reader.line(), why};
+        idx.push_back(v);
+      }
+      for (size_t i = 0; i + 1 < idx.size(); ++i) add_edge(idx[i], idx[i + 1]);
+      if (k == "f") {
+        add_edge(idx.back(), idx.front());
+        out->faces.push_back(idx);
+      } else {
+        ++out->lines;
+      }
+    }
+  }
+  if (in.bad()) return {name, 0, "read error"};
+  if (xyz.empty()) return {name, reader.line(), "no vertices"};
+  // Centre and scale uniformly: the largest extent spans 2^19 world units.
+  double lo[3], hi[3];
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = hi[a] = xyz[size_t(a)];
+    for (size_t i = size_t(a); i < xyz.size(); i += 3)
+      lo[a] = std::min(lo[a], xyz[i]), hi[a] = std::max(hi[a], xyz[i]);
+  }
+  const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  const double scale = extent > 0 ? double(1 << 19) / extent : 1.0;
+  for (size_t i = 0; i < xyz.size(); i += 3) {
+    int32_t c[3];
+    for (int a = 0; a < 3; ++a)
+      c[a] = int32_t(std::lround((xyz[i + size_t(a)] - (lo[a] + hi[a]) / 2) * scale));
+    out->vertices.push_back(Point3{c[0], c[1], c[2]});
+  }
+  return {};
+}
+
+InputError read_obj_file(const std::string& path, ObjModel* out) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {path, 0, "cannot open"};
+  return read_obj(in, path, out);
+}
+
+}  // namespace haloplot::host

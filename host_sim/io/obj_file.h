@@ -1,0 +1,31 @@
+// Wavefront OBJ on the host: `v x y z [w]`, `f` n-gons (indices in the v, v/vt, v//vn and
+// v/vt/vn forms, negative indices counting back from the last vertex), `l` polylines; other
+// statements (vt, vn, o, g, s, usemtl, mtllib, ...) are skipped. Comments, blank lines, CRLF
+// and a last line without a newline are fine. Errors name the file, the line and the reason.
+//
+// The model becomes integer world coordinates for the core: centred on its bounding box and
+// scaled uniformly so its largest extent spans 2^19 units (within the view's +-2^20). Edges
+// are the distinct undirected vertex pairs of the face boundaries and lines, in the order they
+// first appear: the edge order every output uses.
+#pragma once
+#include <cstdint>
+#include <istream>
+#include <string>
+#include <vector>
+
+#include "geometry/contract.h"
+#include "io/input_error.h"
+
+namespace haloplot::host {
+
+struct ObjModel {
+  std::vector<Point3> vertices;              // integer world coordinates (see above)
+  std::vector<uint32_t> edge_pairs;          // 2 vertex indices per edge
+  std::vector<std::vector<uint32_t>> faces;  // vertex indices per face, as given
+  uint32_t lines = 0;                        // `l` statements read
+};
+
+InputError read_obj(std::istream& in, const std::string& name, ObjModel* out);
+InputError read_obj_file(const std::string& path, ObjModel* out);
+
+}  // namespace haloplot::host

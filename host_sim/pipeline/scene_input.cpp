@@ -1,0 +1,91 @@
+#include "pipeline/scene_input.h"
+
+#include "io/atomic_file.h"
+#include "io/edges_file.h"
+#include "io/line_reader.h"
+#include "io/obj_file.h"
+#include "view/projection.h"
+
+namespace haloplot::host {
+
+const char* const kSceneOptions[3] = {"--view", "--perspective", "--dump-edges"};
+
+namespace {
+
+// "30", "-12.5", "40.125" degrees to millidegrees, exactly (no floating point).
+bool parse_mdeg(const std::string& s, int32_t* out) {
+  const size_t dot = s.find('.');
+  const std::string whole = s.substr(0, dot);
+  std::string frac = dot == std::string::npos ? "" : s.substr(dot + 1);
+  if (frac.size() > 3 || frac.find_first_not_of("0123456789") != std::string::npos) return false;
+  int64_t w = 0;
+  if (!parse_int(whole == "-" ? "-0" : whole, -360000, 360000, &w)) return false;
+  while (frac.size() < 3) frac += '0';
+  const int64_t f = std::stoll(frac);
+  const bool neg = !whole.empty() && whole[0] == '-';
+  *out = int32_t(w * 1000 + (neg ? -f : f));
+  return true;
+}
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+}  // namespace
+
+bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* edges,
+                std::string* error) {
+  if (!ends_with(path, ".obj")) {
+    const InputError ie = read_edges_file(path, edges);
+    if (ie.failed()) *error = ie.message();
+    return !ie.failed();
+  }
+  View view;
+  const std::string v = o.get("--view", "30,40");
+  const size_t comma = v.find(',');
+  if (comma == std::string::npos || !parse_mdeg(v.substr(0, comma), &view.azimuth_mdeg) ||
+      !parse_mdeg(v.substr(comma + 1), &view.elevation_mdeg)) {
+    *error = "--view '" + v + "' must be AZ,EL in degrees (up to three decimals)";
+    return false;
+  }
+  if (!o.get("--perspective").empty()) {
+    int64_t d = 0;
+    if (!parse_int(o.get("--perspective"), 1, 2 * kWorldLimit, &d)) {
+      *error = "--perspective '" + o.get("--perspective") + "' must be an integer in [1, 2097152]";
+      return false;
+    }
+    view.perspective = int32_t(d);
+  }
+  ObjModel model;
+  const InputError ie = read_obj_file(path, &model);
+  if (ie.failed()) {
+    *error = ie.message();
+    return false;
+  }
+  std::vector<Point3> screen(model.vertices.size());
+  Status s = project_points(view, model.vertices.data(), uint32_t(screen.size()), screen.data());
+  if (s == Status::kCoordinateOutOfRange && view.perspective > 0) {
+    *error = path +
+             ": a vertex lies within 1 unit of the eye plane or behind it: move the eye "
+             "back (--perspective larger than the model's depth, about 524288 units)";
+    return false;
+  }
+  edges->resize(model.edge_pairs.size() / 2);
+  if (ok(s))
+    s = edges_from_indices(screen.data(), uint32_t(screen.size()), model.edge_pairs.data(),
+                           uint32_t(edges->size()), edges->data());
+  if (!ok(s)) {
+    *error = path + ": projection failed: " + status_name(s);
+    return false;
+  }
+  if (!o.get("--dump-edges").empty()) {
+    *error = write_atomically(o.get("--dump-edges"), [&](std::ostream& out) {
+      write_edges(out, *edges, "# projected from " + path + " with --view " + v + "\n");
+      return true;
+    });
+    if (!error->empty()) return false;
+  }
+  return true;
+}
+
+}  // namespace haloplot::host

@@ -1,0 +1,22 @@
+// Scenes for the commands that take one: a projected `.edges` file as it is, or a Wavefront
+// `.obj` model projected with the view (core/view: the README's convention, fixed point).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "cli/options.h"
+#include "geometry/contract.h"
+
+namespace haloplot::host {
+
+// The options every scene-taking command accepts (valued): --view AZ,EL (degrees, up to three
+// decimals; default 30,40), --perspective D (world units after the OBJ's scaling to 2^19;
+// default orthographic), --dump-edges FILE (the projected scene, in the order all outputs use).
+extern const char* const kSceneOptions[3];
+
+// Loads and, for OBJ, projects. On failure *error is a complete message (file:line: reason,
+// or the option or projection problem).
+bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* edges,
+                std::string* error);
+
+}  // namespace haloplot::host
