@@ -16,6 +16,7 @@
 #include "drivers/step_timer.h"
 #include "drivers/usart.h"
 #include "drivers/watchdog.h"
+#include "platform/console.h"
 #include "platform/instruction_counter.h"
 #include "protocol/job_server.h"
 
@@ -56,31 +57,8 @@ constexpr uint64_t kIdleTicks = 168000;
 #endif
 
 #ifdef HALOPLOT_FW_TEST_HOOKS
-struct Console {
-  char buf[1024];
-  uint32_t n = 0;
-  static void write(void* ctx, const char* text, uint32_t length) {
-    auto* c = static_cast<Console*>(ctx);
-    for (uint32_t i = 0; i < length; ++i) {
-      if (c->n == sizeof c->buf) c->flush();
-      c->buf[c->n++] = text[i];
-    }
-  }
-  void flush() {
-    if (n) semihost_write(buf, n);
-    n = 0;
-  }
-} console;
-
-void stat(const char* key, uint64_t value) {
-  char line[96];
-  char* p = append(line, "fw ");
-  p = append(p, key);
-  p = append(p, "=");
-  p = append_u64(p, value);
-  append(p, "\n");
-  Console::write(&console, line, uint32_t(p - line + 1));
-}
+Console console;
+void stat(const char* key, uint64_t value) { console.stat(key, value); }
 #endif
 
 }  // namespace
@@ -100,7 +78,7 @@ int main() {
   counter_start();
   watchdog_start();
 #ifdef HALOPLOT_FW_TEST_HOOKS
-  motion.set_trace(CharSink{&Console::write, &console});
+  motion.set_trace(console.sink());
   motion.set_time_scale(kQemuTimeScale);
   bool exit_requested = false;
   JobServer::Extension ext{&exit_requested, [](void* c, const Frame& f) {

@@ -10,6 +10,7 @@
 #include "motion/step_engine.h"
 #include "motion/step_prep.h"
 #include "motion/virtual_run.h"
+#include "platform/console.h"
 #include "platform/instruction_counter.h"
 #include "platform/semihosting.h"
 #include "scene/cube_array.h"
@@ -32,31 +33,8 @@ Edge3 edges[kEdges];
 alignas(8) uint8_t job_buffer[84 * 1024];
 
 // Output through semihosting in 1 KB chunks: each call traps to the host, so batch them.
-struct Console {
-  char buf[1024];
-  uint32_t n = 0;
-  static void write(void* ctx, const char* text, uint32_t length) {
-    auto* c = static_cast<Console*>(ctx);
-    for (uint32_t i = 0; i < length; ++i) {
-      if (c->n == sizeof c->buf) c->flush();
-      c->buf[c->n++] = text[i];
-    }
-  }
-  void flush() {
-    if (n) semihost_write(buf, n);
-    n = 0;
-  }
-} console;
-
-void stat(const char* key, uint64_t value) {
-  char line[96];
-  char* p = append(line, "fw ");
-  p = append(p, key);
-  p = append(p, "=");
-  p = append_u64(p, value);
-  append(p, "\n");
-  Console::write(&console, line, uint32_t(p - line + 1));
-}
+Console console;
+void stat(const char* key, uint64_t value) { console.stat(key, value); }
 
 [[noreturn]] void fail(const char* what, Status s) {
   char line[128];
@@ -205,7 +183,7 @@ int main() {
   StepPrep prep;
   s = prep.init(spec.machine, spec.effects);
   if (!ok(s)) fail("prep", s);
-  TraceEncoder trace(CharSink{&Console::write, &console}, spec.machine);
+  TraceEncoder trace(console.sink(), spec.machine);
   TraceHal hal;
   hal.trace = &trace;
   StepEngine<TraceHal, SegmentQueue<64>> engine(hal, queue);

@@ -74,6 +74,23 @@ std::vector<Point3> reference(const View& v, const std::vector<Point3>& w,
   return out;
 }
 
+// Projects w with the core and returns the largest distance of a coordinate from the
+// long-double projection (depth included when with_depth); every output must be in range.
+long double worst_error(const View& v, const std::vector<Point3>& w, bool with_depth) {
+  std::vector<Point3> got(w.size());
+  CHECK(ok(project_points(v, w.data(), uint32_t(w.size()), got.data())));
+  std::vector<long double> exact;
+  reference(v, w, &exact);
+  long double worst = 0;
+  for (size_t i = 0; i < w.size(); ++i) {
+    worst = std::max(worst, std::fabs(got[i].x - exact[3 * i]));
+    worst = std::max(worst, std::fabs(got[i].y - exact[3 * i + 1]));
+    if (with_depth) worst = std::max(worst, std::fabs(got[i].z - exact[3 * i + 2]));
+    CHECK(in_range(got[i].x) && in_range(got[i].y) && in_range(got[i].z));
+  }
+  return worst;
+}
+
 void check_projection() {
   std::mt19937_64 rng(11);
   long double worst = 0;
@@ -90,16 +107,7 @@ void check_projection() {
       auto c = [&] { return int32_t(rng() % (2 * uint64_t(extent) + 1)) - extent; };
       w.push_back(Point3{c(), c(), c()});
     }
-    std::vector<Point3> got(w.size());
-    CHECK(ok(project_points(v, w.data(), uint32_t(w.size()), got.data())));
-    std::vector<long double> exact;
-    reference(v, w, &exact);
-    for (size_t i = 0; i < w.size(); ++i) {
-      worst = std::max(worst, std::fabs(got[i].x - exact[3 * i]));
-      worst = std::max(worst, std::fabs(got[i].y - exact[3 * i + 1]));
-      worst = std::max(worst, std::fabs(got[i].z - exact[3 * i + 2]));
-      CHECK(in_range(got[i].x) && in_range(got[i].y) && in_range(got[i].z));
-    }
+    worst = std::max(worst, worst_error(v, w, true));
     ++scenes;
   }
   CHECK_MSG(worst <= 0.5L + 1.0L / 512, "projection error " + std::to_string((double)worst));
@@ -130,15 +138,7 @@ void check_near_eye_plane() {
                                {300, -(eye - gap), 200},
                                {-300, -(eye - gap - 1), -250},
                                {kWorldLimit, kWorldLimit, kWorldLimit}};
-      std::vector<Point3> got(w.size());
-      CHECK(ok(project_points(v, w.data(), uint32_t(w.size()), got.data())));
-      std::vector<long double> exact;
-      reference(v, w, &exact);
-      for (size_t i = 0; i < w.size(); ++i) {
-        worst = std::max(worst, std::fabs(got[i].x - exact[3 * i]));
-        worst = std::max(worst, std::fabs(got[i].y - exact[3 * i + 1]));
-        CHECK(in_range(got[i].x) && in_range(got[i].y) && in_range(got[i].z));
-      }
+      worst = std::max(worst, worst_error(v, w, false));
     }
     // On the eye plane, and behind it: refused by name, nothing written.
     for (int32_t y : {-eye, -eye - 1, -(kWorldLimit)}) {
