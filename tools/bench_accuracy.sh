@@ -20,6 +20,34 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
   echo "Q2.30, DRAW's square roots and position grids) on the same scenes, with the default marked."
   echo
   cat "$out/accuracy.body.md"
+  # 3b'. Host instruction counts per DRAW mode (callgrind: only inside draw_with).
+  if command -v valgrind >/dev/null 2>&1; then
+    echo "### 3b'. DRAW instructions on the host (callgrind)"
+    echo
+    echo "One DRAW of the demo cube array (9408 edges, W = 50) per mode, counting only the"
+    echo "instructions inside \`draw_with\` (valgrind --toggle-collect). Repeatable to the instruction."
+    echo
+    echo "| square root | Q0.32 positions | Q0.16 positions |"
+    echo "|---|---:|---:|"
+    count() {
+      valgrind --tool=callgrind --callgrind-out-file=/dev/null --toggle-collect='*draw_with*' \
+        build/host/tests/bench/accuracy_bench --draw-mode "$1" 2>&1 |
+        sed -n 's/.*Collected : *\([0-9]*\).*/\1/p'
+    }
+    names=(exact newton table)
+    declare -a counted
+    for m in 0 1 2 3 4 5; do counted[$m]=$(count $m); done
+    for m in 0 1 2; do
+      echo "| ${names[$m]} | ${counted[$m]} | ${counted[$((m + 3))]} |"
+    done
+    echo
+    cheapest=$(printf '%s\n' "${counted[@]}" | sort -n | head -1)
+    awk -v a="${counted[0]}" -v b="$cheapest" 'BEGIN {
+      r = a / b
+      printf "The default (exact root, Q0.32) takes %.2fx the instructions of the cheapest mode: %s the goal of 1.2x.\n", r, (r <= 1.2 ? "within" : "above")
+    }'
+    echo
+  fi
   # 3c. The same modes on the Cortex-M4 under QEMU -icount, when the firmware is built.
   elf=build/firmware/firmware/fw_plot_selftest.elf
   if [ -f "$elf" ] && command -v qemu-system-arm >/dev/null 2>&1; then

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <set>
@@ -153,6 +154,8 @@ std::vector<Edge3> hard_scene(uint64_t seed) {
 
 int main(int argc, char** argv) {
   if (argc < 2) return 2;
+  if (std::string(argv[1]) == "--draw-mode" && argc == 3)  // one DRAW, for callgrind
+    return bench::draw_once_in_mode(std::atoi(argv[2])) > 0 ? 0 : 1;
   const std::string dir = argv[1];
   const int runs = 5;
   std::ostringstream md;

@@ -348,7 +348,10 @@ void precision_modes_section(const std::string& dir, int runs, std::ostringstrea
      << fmt(default_ratio, 2) << "x the cheapest mode's DRAW time on the worst scene, and "
      << fmt(default_pipeline_ratio, 2)
      << "x its CUT + DRAW time (the goal: at most 1.2x; the mode changes DRAW only, so the "
-        "plot's whole cost is CUT + DRAW). The exact root is the table's upper bound, two "
+        "plot's whole cost is CUT + DRAW). Time on a shared machine is noisy at a few hundred "
+        "microseconds; "
+        "sections 3b' and 3c count instructions instead, which noise cannot blur. The exact root "
+        "is the table's upper bound, two "
         "Newton steps and a check of squares (exact against a 128-bit reference in the "
         "`numeric` test); the bit-pair root it replaced made DRAW 5x slower. "
         "The table root saves the two divisions (on the Cortex-M4 each is a library call of "
@@ -356,9 +359,59 @@ void precision_modes_section(const std::string& dir, int runs, std::ostringstrea
         "because W / sin(theta) magnifies its 0.8 % excess; Newton's 2.5 % is worse still. Q0.16 "
         "positions are the one mode whose error grows with the edges: "
         "a long edge's gap ends move by up to |edge| / 65536 steps.\n\n"
-     << "Not measured here yet: callgrind instruction counts and Cortex-M4 counts per mode, "
-        "and a 15-bit coordinate mode (every predicate already fits int64 at 20 bits; only the "
-        "exact halo's discriminant needs 128 bits).\n\n";
+     << "### Coordinate resolution: why there is no separate 15-bit mode\n\n"
+     << "The bit budgets, from `core/geometry/contract.h` (static_asserted there):\n\n"
+     << "| product | 15-bit coordinates | 20-bit coordinates | int64? |\n|---|---:|---:|---|\n"
+     << "| coordinate difference | 16 | 21 | yes |\n"
+     << "| orientation (cross product): CUT's crossing test | 32 | 42 | yes |\n"
+     << "| exact depth at a crossing (coordinate x cross) | 47 | 62 | yes |\n"
+     << "| exact halo discriminant b^2 - a c | 65 | 85 | no: 128-bit limbs |\n\n"
+     << "Every CUT predicate already fits int64 at 20 bits, so a 15-bit mode would run the "
+        "same instructions; the one product that needs more than 64 bits, the exact halo's "
+        "discriminant, still does at 15 bits. The resolution axis is therefore the plot "
+        "area itself (steps per unit), not a separate arithmetic mode.\n\n";
+}
+
+size_t draw_once_in_mode(int k) {
+  View view;
+  const World w = cube_world(28);
+  std::vector<Point3> p(w.vertices.size());
+  project_points(view, w.vertices.data(), uint32_t(p.size()), p.data());
+  const std::vector<Edge3> edges = edges_of(p, w.pairs);
+  std::vector<uint64_t> storage;
+  CutSet set;
+  time_cut(edges, CutParams{}, 1, &storage, &set);
+  std::vector<Gap> scratch(draw_scratch_bytes(set) / sizeof(Gap) + 1);
+  size_t spans = 0;
+  const SpanSink sink{[](void* c, const Span&) {
+                        ++*static_cast<size_t*>(c);
+                        return Status::kOk;
+                      },
+                      &spans};
+  const DrawParams dp{50, HaloMode::kPaper};
+  void* s = scratch.data();
+  const size_t b = scratch.size() * sizeof(Gap);
+  switch (k) {
+    case 0:
+      draw_with<DrawPrecision<SqrtExact, PositionBits<32>>>(set, dp, s, b, sink, nullptr);
+      break;
+    case 1:
+      draw_with<DrawPrecision<SqrtNewton, PositionBits<32>>>(set, dp, s, b, sink, nullptr);
+      break;
+    case 2:
+      draw_with<DrawPrecision<SqrtTable, PositionBits<32>>>(set, dp, s, b, sink, nullptr);
+      break;
+    case 3:
+      draw_with<DrawPrecision<SqrtExact, PositionBits<16>>>(set, dp, s, b, sink, nullptr);
+      break;
+    case 4:
+      draw_with<DrawPrecision<SqrtNewton, PositionBits<16>>>(set, dp, s, b, sink, nullptr);
+      break;
+    default:
+      draw_with<DrawPrecision<SqrtTable, PositionBits<16>>>(set, dp, s, b, sink, nullptr);
+      break;
+  }
+  return spans;
 }
 
 }  // namespace bench

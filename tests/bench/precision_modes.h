@@ -13,4 +13,8 @@ namespace bench {
 // Appends the section to md and writes precision_pareto.svg into dir.
 void precision_modes_section(const std::string& dir, int runs, std::ostringstream& md);
 
+// For callgrind (tools/bench_accuracy.sh): CUT the demo cube array, then one DRAW in mode k
+// (0..5: exact, Newton, table roots with Q0.32, then with Q0.16), once. Returns the spans.
+size_t draw_once_in_mode(int k);
+
 }  // namespace bench
