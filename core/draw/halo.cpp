@@ -50,8 +50,6 @@ Gap disc_gap(const Edge3& behind, int64_t cx, int64_t cy, int32_t r) {
 
 }  // namespace
 
-uint64_t length_q10_ceil(int64_t dx, int64_t dy) { return SqrtExact::length_q10_ceil(dx, dy); }
-
 template <typename Sqrt>
 Gap paper_gap(const Edge3& behind, const Edge3& front, uint32_t t32, int32_t halo) {
   const int64_t pdx = behind.b.x - behind.a.x, pdy = behind.b.y - behind.a.y;

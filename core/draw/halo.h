@@ -36,8 +36,4 @@ Gap paper_gap(const Edge3& behind, const Edge3& front, uint32_t t32, int32_t hal
 template <typename Sqrt = SqrtExact>
 Gap exact_gap(const Edge3& behind, const Edge3& front, int32_t halo);
 
-// |(dx, dy)| in Q10, rounded up: an upper bound within 2^-10 steps of the true length.
-// dx^2 + dy^2 < 2^42, so (dx^2 + dy^2) << 20 < 2^62 and a 64-bit root suffices.
-uint64_t length_q10_ceil(int64_t dx, int64_t dy);
-
 }  // namespace haloplot
