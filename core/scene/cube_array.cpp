@@ -13,7 +13,7 @@ struct Projected {
 Projected project(int64_t x, int64_t y, int64_t z) {
   const int64_t xs = x * kCosAz - y * kSinAz;
   const int64_t y1 = (x * kSinAz + y * kCosAz) >> 16;
-  return {xs, z * kCosEl - y1 * kSinEl, z * kSinEl - y1 * kCosEl};
+  return {xs, z * kCosEl + y1 * kSinEl, z * kSinEl - y1 * kCosEl};
 }
 
 Projected corner(int32_t i, int32_t j, int k) {

@@ -5,7 +5,7 @@
 // View: azimuth 30 degrees, elevation 40 degrees, as Q16 constants (cos 30 = 0.8660,
 // sin 30 = 0.5, cos 40 = 0.7660, sin 40 = 0.6428), with the README's convention:
 //   x' = x cos(az) - y sin(az);  y1 = x sin(az) + y cos(az)
-//   screen y' = z cos(el) - y1 sin(el);  depth d = z sin(el) - y1 cos(el)   (larger d = nearer)
+//   screen y' = z cos(el) + y1 sin(el);  depth d = z sin(el) - y1 cos(el)   (larger d = nearer)
 #pragma once
 #include <stdint.h>
 

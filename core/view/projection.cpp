@@ -34,7 +34,7 @@ struct Rotation {
     // y1 stays exact in Q(B); its products with the elevation's sin and cos are rounded once,
     // back to Q(B).
     const int64_t y1 = p.x * az.sin + p.y * az.cos;
-    return {xs, p.z * el.cos - mul_shift(y1, el.sin), p.z * el.sin - mul_shift(y1, el.cos)};
+    return {xs, p.z * el.cos + mul_shift(y1, el.sin), p.z * el.sin - mul_shift(y1, el.cos)};
   }
   // round(a * b / 2^B) for |a| < 2^(22 + B) and |b| <= 2^B. For B = 16 the product fits
   // (< 2^54); for B = 30 a 128-bit product is avoided by splitting a into a high part and 26

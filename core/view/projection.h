@@ -1,7 +1,7 @@
 // The view transform: world vertices to plot steps, in fixed point (the README's convention).
 //
 //   x' = x cos(az) - y sin(az),  y1 = x sin(az) + y cos(az)
-//   screen y' = z cos(el) - y1 sin(el),  depth d = z sin(el) - y1 cos(el)   (larger d = nearer)
+//   screen y' = z cos(el) + y1 sin(el),  depth d = z sin(el) - y1 cos(el)   (larger d = nearer)
 //
 // then fitted uniformly into the plot area (the same steps per world unit on both axes,
 // centred on neither: the lower-left corner sits at the margin) and depth scaled to

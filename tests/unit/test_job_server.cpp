@@ -270,7 +270,7 @@ void indexed_scene() {
   for (const Point3& p : world) {
     const long double y1 = p.x * std::sin(az) + p.y * std::cos(az);
     xs.push_back(p.x * std::cos(az) - p.y * std::sin(az));
-    ys.push_back(p.z * std::cos(el) - y1 * std::sin(el));
+    ys.push_back(p.z * std::cos(el) + y1 * std::sin(el));
   }
   const long double xl = *std::min_element(xs.begin(), xs.end()),
                     xh = *std::max_element(xs.begin(), xs.end());

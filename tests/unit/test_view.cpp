@@ -49,7 +49,7 @@ std::vector<Point3> reference(const View& v, const std::vector<Point3>& w,
   for (const Point3& p : w) {
     const long double xs = p.x * std::cos(az) - p.y * std::sin(az);
     const long double y1 = p.x * std::sin(az) + p.y * std::cos(az);
-    long double x = xs, y = p.z * std::cos(el) - y1 * std::sin(el);
+    long double x = xs, y = p.z * std::cos(el) + y1 * std::sin(el);
     const long double d = p.z * std::sin(el) - y1 * std::cos(el);
     if (v.perspective > 0) {  // the README's perspective: scale by D / (D - d)
       x = x * v.perspective / (v.perspective - d);
