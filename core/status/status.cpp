@@ -56,6 +56,10 @@ const char* status_name(Status s) {
       return "polygon is self-intersecting";
     case Status::kVisibilityInconsistent:
       return "visibility walk inconsistent";
+    case Status::kIncidenceCapacity:
+      return "more vertex-on-edge incidences than the buffer holds";
+    case Status::kNotManifold:
+      return "mesh is not a closed, consistently oriented manifold";
   }
   return "unknown status";
 }

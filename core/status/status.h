@@ -32,6 +32,8 @@ enum class Status : uint8_t {
   kStepUnderrun,            // the step timer found the queue empty in the middle of a move
   kSelfIntersecting,        // a polygon's edges meet other than at consecutive shared vertices
   kVisibilityInconsistent,  // the visibility walk lost its way (a bug: never on valid input)
+  kIncidenceCapacity,       // more vertex-on-edge incidences than the caller's buffer holds
+  kNotManifold,             // the QI method needs a closed, consistently oriented mesh
 };
 
 // A short, stable, human-readable name, e.g. "crossing capacity exceeded".

@@ -1,0 +1,59 @@
+#include "solid/classify.h"
+
+#include "geometry/wide.h"
+#include "solid/cover.h"
+
+namespace haloplot {
+namespace {
+
+uint32_t far_corner(const Triangle& t, uint32_t a, uint32_t b) {
+  for (int k = 0; k < 3; ++k)
+    if (t.v[k] != a && t.v[k] != b) return t.v[k];
+  return t.v[0];
+}
+
+}  // namespace
+
+bool convex_edge(const Topology& topo, uint32_t edge) {
+  const SolidEdge& e = topo.edges[edge];
+  const Triangle& f0 = topo.triangles[e.face[0]];
+  const Point3& a = topo.vertices[f0.v[0]];
+  const Point3& b = topo.vertices[f0.v[1]];
+  const Point3& c = topo.vertices[f0.v[2]];
+  const Point3& q = topo.vertices[far_corner(topo.triangles[e.face[1]], e.v0, e.v1)];
+  // Outward normal n = (b - a) x (c - a): components below 2^42; n . (q - a) below 2^65.
+  const int64_t ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
+  const int64_t vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+  const int64_t nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+  const Wide s = mul_i64(nx, q.x - a.x) + mul_i64(ny, q.y - a.y) + mul_i64(nz, q.z - a.z);
+  return s.negative();
+}
+
+ClassCounts classify(Topology* topo, uint8_t* front) {
+  ClassCounts k;
+  for (uint32_t t = 0; t < topo->n_triangles; ++t) {
+    const uint32_t* v = topo->triangles[t].v;
+    const bool f =
+        projected_area2(topo->vertices[v[0]], topo->vertices[v[1]], topo->vertices[v[2]]) > 0;
+    front[t] = f ? 1 : 0;
+    ++(f ? k.front_faces : k.back_faces);
+  }
+  for (uint32_t i = 0; i < topo->n_edges; ++i) {
+    SolidEdge& e = topo->edges[i];
+    EdgeClass c = EdgeClass::kLoose;
+    if (e.regular) {
+      const int fronts = front[e.face[0]] + front[e.face[1]];
+      if (fronts == 0)
+        c = EdgeClass::kH1;
+      else if (fronts == 2)
+        c = EdgeClass::kH4;
+      else
+        c = convex_edge(*topo, i) ? EdgeClass::kH3 : EdgeClass::kH2;
+    }
+    e.cls = c;
+    ++k.h[static_cast<int>(c)];
+  }
+  return k;
+}
+
+}  // namespace haloplot

@@ -1,0 +1,23 @@
+// Step 1 and 2 of Kira's program flow: faces front or back, edges into Loutrel's classes.
+// A face seen exactly edge-on counts as back, Heger's convention, which keeps every contour on
+// the side nearer the viewer.
+#pragma once
+#include <stdint.h>
+
+#include "solid/topology.h"
+
+namespace haloplot {
+
+struct ClassCounts {
+  uint32_t front_faces = 0, back_faces = 0;
+  uint32_t h[5] = {0, 0, 0, 0, 0};  // h[0]: loose edges, h[1..4]: H1..H4
+};
+
+// Writes front[t] (1 front, 0 back) and every edge's class; returns the counts.
+ClassCounts classify(Topology* topo, uint8_t* front);
+
+// True when the edge between faces f0 and f1 (f0 runs v0 -> v1) is convex: f1's far corner
+// lies behind f0's plane, seen from outside. Exact (a 3-D orientation in 128 bits).
+bool convex_edge(const Topology& topo, uint32_t edge);
+
+}  // namespace haloplot

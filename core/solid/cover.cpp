@@ -1,0 +1,103 @@
+#include "solid/cover.h"
+
+namespace haloplot {
+namespace {
+
+// Slope comparison: z differences (|.| < 2^20) times cross products of differences (< 2^41),
+// two of them summed; and dir_z times the doubled area.
+static_assert((int64_t{1} << 20) * (int64_t{1} << 41) * 2 <= (int64_t{1} << 62),
+              "the slope comparison must fit int64_t");
+
+int wide_sign(Wide w) { return w.negative() ? -1 : (w.is_zero() ? 0 : 1); }
+
+// Side of P against the directed line u -> v, times d: cross(v - u, P - u) * d.
+Wide side_times_d(const Point3& u, const Point3& v, const CoverPoint& p) {
+  const int64_t ex = v.x - u.x, ey = v.y - u.y;
+  const int64_t px = p.x - int64_t{u.x} * p.d, py = p.y - int64_t{u.y} * p.d;
+  return mul_i64(ex, py) - mul_i64(ey, px);
+}
+
+// The sign P takes against u -> v after the nudge; 0 only when P is on the line and the nudge
+// runs along it.
+int nudged_side(const Point3& u, const Point3& v, const CoverPoint& p) {
+  const int s = wide_sign(side_times_d(u, v, p));
+  if (s != 0) return s;
+  const int64_t c = int64_t{v.x - u.x} * p.dir_y - int64_t{v.y - u.y} * p.dir_x;
+  return (c > 0) - (c < 0);
+}
+
+// Halves of cover for a counter-clockwise triangle, by the nudged sides alone.
+int inside_halves(const Point3& a, const Point3& b, const Point3& c, const CoverPoint& p) {
+  const int s0 = nudged_side(a, b, p), s1 = nudged_side(b, c, p), s2 = nudged_side(c, a, p);
+  if (s0 < 0 || s1 < 0 || s2 < 0) return 0;
+  const int zeros = (s0 == 0) + (s1 == 0) + (s2 == 0);
+  return zeros == 0 ? 2 : (zeros == 1 ? 1 : 0);
+}
+
+}  // namespace
+
+Wide mul_wide_i64(Wide a, int64_t b) {
+  const bool neg = a.negative() != (b < 0);
+  const Wide ma = a.negative() ? -a : a;
+  const uint64_t mb = b < 0 ? uint64_t(0) - uint64_t(b) : uint64_t(b);
+  const Wide r = mul_wide_u64(ma, mb);
+  return neg ? -r : r;
+}
+
+CoverPoint vertex_toward(const Point3& p, const Point3& to) {
+  CoverPoint c;
+  c.x = p.x;
+  c.y = p.y;
+  c.d = 1;
+  c.zn = Wide::from_i64(p.z);
+  c.zd = 1;
+  c.dir_x = to.x - p.x;
+  c.dir_y = to.y - p.y;
+  c.dir_z = to.z - p.z;
+  return c;
+}
+
+int plane_depth_sign(const Point3& a, const Point3& b, const Point3& c, const CoverPoint& p) {
+  int64_t area = projected_area2(a, b, c);
+  if (area == 0) return 0;
+  // z_T(P) * A * d = za*A*d + (zb - za) * cross(P - a, c - a) * d + (zc - za) * cross(b - a, P - a)
+  // * d
+  const Wide cb = side_times_d(c, a, p);  // cross(a - c, P - c)*d equals cross(P - a, c - a)*d
+  const Wide cc = side_times_d(a, b, p);  // cross(b - a, P - a) * d
+  Wide lhs = mul_i64(int64_t{a.z} * area, p.d) + mul_wide_i64(cb, int64_t{b.z} - a.z) +
+             mul_wide_i64(cc, int64_t{c.z} - a.z);
+  Wide rhs;
+  if (p.zd == p.d) {
+    rhs = mul_wide_i64(p.zn, area);
+  } else {
+    lhs = mul_wide_i64(lhs, p.zd);  // d == 1 here
+    rhs = mul_wide_i64(p.zn, area);
+  }
+  // Dividing by A flips the comparison for a clockwise triangle.
+  const int s = compare(lhs, rhs);
+  return area > 0 ? s : -s;
+}
+
+int cover_halves(const Point3& a, const Point3& b, const Point3& c, const CoverPoint& p) {
+  const int64_t area = projected_area2(a, b, c);
+  if (area <= 0) return 0;  // back faces and edge-on faces hide nothing in the count
+  const int h = inside_halves(a, b, c, p);
+  if (h == 0) return 0;
+  const int s = plane_depth_sign(a, b, c, p);
+  if (s != 0) return s > 0 ? h : 0;
+  // Level at P: compare the rise along the nudge, both times A.
+  const int64_t gx = int64_t{p.dir_x}, gy = int64_t{p.dir_y};
+  const int64_t rise_t = int64_t{b.z - a.z} * (gx * (c.y - a.y) - gy * (c.x - a.x)) +
+                         int64_t{c.z - a.z} * (int64_t{b.x - a.x} * gy - int64_t{b.y - a.y} * gx);
+  const int64_t rise_p = int64_t{p.dir_z} * area;
+  return rise_t > rise_p ? h : 0;
+}
+
+int projection_cover_halves(const Point3& a, const Point3& b, const Point3& c,
+                            const CoverPoint& p) {
+  const int64_t area = projected_area2(a, b, c);
+  if (area == 0) return 0;
+  return area > 0 ? inside_halves(a, b, c, p) : inside_halves(a, c, b, p);
+}
+
+}  // namespace haloplot

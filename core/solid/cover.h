@@ -1,0 +1,57 @@
+// The one exact question every hidden-line rule asks: does triangle T cover the point P,
+// nudged an infinitesimal step along direction `dir`, and is T in front of it there?
+//
+// The nudge is what makes the singular cases exact instead of special: P on a side of T,
+// P on a corner of T (Heger's wedge test), P where a contour ends (half and quarter q.i.),
+// and P on an edge running along a side of T (occluded edges). When `dir` itself runs along
+// a side of T the point is exactly on T's boundary and T covers it by one half: the average
+// of nudging it to either side, which is Heger's fractional q.i. Counts are therefore in
+// halves: 2 = covers, 1 = on the boundary, 0 = does not.
+//
+// In front: T's plane is nearer (larger depth) than the point at P, or level with it there
+// and rising faster along `dir` than the point's own line. Level and equally steep means the
+// point lies in T's plane: not covered.
+//
+// Bit budget (geometry/contract.h: coordinates below 2^20): P is (x/d, y/d) with d = 1 or
+// d = 2^32 (a Q0.32 position along an edge), so |x|, |y| < 2^52; a side test times d is a
+// 21-bit difference times a 53-bit one, below 2^75; T's depth at P times its doubled area and
+// d is below 2^97, times the point's depth denominator (up to 2^42) below 2^127. Those use
+// geometry/wide.h. The slope comparison stays below 2^63 (static_assert in cover.cpp).
+#pragma once
+#include <stdint.h>
+
+#include "geometry/contract.h"
+#include "geometry/wide.h"
+
+namespace haloplot {
+
+struct CoverPoint {
+  int64_t x = 0, y = 0, d = 1;   // P = (x / d, y / d); d is 1 or 2^32
+  Wide zn;                       // the point's depth is zn / zd ...
+  int64_t zd = 1;                // ... with zd == d, or d == 1 and 0 < zd < 2^42
+  int32_t dir_x = 0, dir_y = 0;  // the nudge: never (0, 0)
+  int32_t dir_z = 0;             // the point's depth change along dir (same scale as dir)
+};
+
+// A vertex of the mesh nudged toward `to` along the edge that joins them.
+CoverPoint vertex_toward(const Point3& p, const Point3& to);
+
+// Doubled signed area of the projection: > 0 is a front face (counter-clockwise on paper).
+inline int64_t projected_area2(const Point3& a, const Point3& b, const Point3& c) {
+  return int64_t{b.x - a.x} * (c.y - a.y) - int64_t{b.y - a.y} * (c.x - a.x);
+}
+
+// Halves of cover of P by front-facing T = (a, b, c) in front of P (0 for a back face).
+int cover_halves(const Point3& a, const Point3& b, const Point3& c, const CoverPoint& p);
+
+// Halves of cover of P by T's projection alone, whatever T's facing and depth (Kira's outline
+// condition: is any face around this point at all?). 0 for an edge-on T.
+int projection_cover_halves(const Point3& a, const Point3& b, const Point3& c, const CoverPoint& p);
+
+// The sign of the depth of T's plane minus the point's depth, at P (without the nudge).
+int plane_depth_sign(const Point3& a, const Point3& b, const Point3& c, const CoverPoint& p);
+
+// Wide times a signed 64-bit value, for products the caller's budget keeps below 2^126.
+Wide mul_wide_i64(Wide a, int64_t b);
+
+}  // namespace haloplot

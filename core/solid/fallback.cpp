@@ -1,0 +1,229 @@
+#include "solid/fallback.h"
+
+#include "cut/grid.h"
+#include "geometry/wide.h"
+#include "memory/carve.h"
+#include "solid/cover.h"
+#include "solid/qi.h"
+
+namespace haloplot {
+namespace {
+
+constexpr int64_t kOne = int64_t{1} << 32;
+
+enum Vc : uint8_t { kVcUnknown = 0, kVcVisible = 1, kVcHidden = 2, kVcUnusable = 3 };
+
+// About one face per cell, over the vertices' bounding box.
+Grid face_grid(const Topology& topo) {
+  Grid g;
+  int32_t x0 = kCoordMax, y0 = kCoordMax, x1 = 0, y1 = 0;
+  for (uint32_t v = 0; v < topo.n_vertices; ++v) {
+    x0 = min_i32(x0, topo.vertices[v].x);
+    y0 = min_i32(y0, topo.vertices[v].y);
+    x1 = max_i32(x1, topo.vertices[v].x);
+    y1 = max_i32(y1, topo.vertices[v].y);
+  }
+  if (topo.n_vertices == 0) x0 = y0 = x1 = y1 = 0;
+  const uint32_t per_axis = isqrt_u64(topo.n_triangles) + 1;
+  const int32_t extent = max_i32(x1 - x0, y1 - y0) + 1;
+  g.ox = x0;
+  g.oy = y0;
+  g.set_cell(max_i32(1, static_cast<int32_t>((uint32_t(extent) + per_axis - 1) / per_axis)));
+  g.nx = g.divide(static_cast<uint32_t>(x1 - x0)) + 1;
+  g.ny = g.divide(static_cast<uint32_t>(y1 - y0)) + 1;
+  return g;
+}
+
+Edge3 face_box(const Topology& topo, uint32_t t) {
+  const uint32_t* v = topo.triangles[t].v;
+  const Point3 a = topo.vertices[v[0]], b = topo.vertices[v[1]], c = topo.vertices[v[2]];
+  Edge3 box;
+  box.a = Point3{min_i32(a.x, min_i32(b.x, c.x)), min_i32(a.y, min_i32(b.y, c.y)), 0};
+  box.b = Point3{max_i32(a.x, max_i32(b.x, c.x)), max_i32(a.y, max_i32(b.y, c.y)), 0};
+  return box;
+}
+
+uint64_t count_cell_faces(const Topology& topo, const Grid& g) {
+  uint64_t n = 0;
+  for (uint32_t t = 0; t < topo.n_triangles; ++t)
+    for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0, [&](uint32_t) { ++n; });
+  return n;
+}
+
+int fold_front_side(const Topology& topo, const uint8_t* front, const SolidEdge& e) {
+  const uint32_t f = front[e.face[0]] ? e.face[0] : e.face[1];
+  const uint32_t* t = topo.triangles[f].v;
+  uint32_t q = t[0];
+  for (int k = 0; k < 3; ++k)
+    if (t[k] != e.v0 && t[k] != e.v1) q = t[k];
+  const Point3 a = topo.vertices[e.v0], b = topo.vertices[e.v1], p = topo.vertices[q];
+  const int64_t s = int64_t{b.x - a.x} * (p.y - a.y) - int64_t{b.y - a.y} * (p.x - a.x);
+  return s > 0 ? 1 : -1;
+}
+
+}  // namespace
+
+size_t fallback_bytes(const Topology& topo) {
+  const Grid g = face_grid(topo);
+  ByteCounter c;
+  c.take<uint32_t>(size_t{g.cells()} + 1);
+  c.take<uint32_t>(count_cell_faces(topo, g));
+  c.take<uint8_t>(topo.n_vertices);
+  return c.total + 8;
+}
+
+Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cutset,
+                    const Incidences& inc, const FallbackParams& params, void* buffer, size_t bytes,
+                    FallbackSink sink, FallbackStats* stats) {
+  if (cutset.n_edges != topo.n_edges) return Status::kBadParameter;
+  if ((params.use_classes || params.use_vc || !params.any_facing) && front == nullptr)
+    return Status::kBadParameter;
+  const Grid g = face_grid(topo);
+  const uint64_t pairs = count_cell_faces(topo, g);
+  Carver carve(buffer, bytes);
+  uint32_t* cell_first = carve.take<uint32_t>(size_t{g.cells()} + 1);
+  uint32_t* cell_faces = carve.take<uint32_t>(pairs);
+  uint8_t* vc = carve.take<uint8_t>(topo.n_vertices);
+  if (carve.short_) return Status::kWorkspaceTooSmall;
+  FallbackStats st;
+  st.grid_cells = g.cells();
+  st.cell_faces = static_cast<uint32_t>(pairs);
+
+  for (uint32_t c = 0; c <= g.cells(); ++c) cell_first[c] = 0;
+  for (uint32_t t = 0; t < topo.n_triangles; ++t)
+    for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0,
+                  [&](uint32_t c) { ++cell_first[c + 1]; });
+  for (uint32_t c = 0; c < g.cells(); ++c) cell_first[c + 1] += cell_first[c];
+  for (uint32_t t = 0; t < topo.n_triangles; ++t)
+    for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0,
+                  [&](uint32_t c) { cell_faces[cell_first[c]++] = t; });
+  for (uint32_t c = g.cells(); c > 0; --c) cell_first[c] = cell_first[c - 1];
+  cell_first[0] = 0;
+
+  // The V.C. table starts unknown except where it must never be used.
+  for (uint32_t v = 0; v < topo.n_vertices; ++v) {
+    const bool singular = inc.same_next[v] != v || inc.vertex_first[v] != inc.vertex_first[v + 1];
+    vc[v] = (params.use_vc && !singular) ? kVcUnknown : kVcUnusable;
+  }
+  if (params.use_vc) {
+    // Contour vectors run with the front face on their right (Kira): count starts and ends.
+    // Peculiar vertices, and vertices on a hidden fold (H2), keep no V.C.
+    for (uint32_t v = 0; v < topo.n_vertices; ++v) {
+      uint32_t starts = 0, ends = 0;
+      bool h2 = false;
+      for (uint32_t k = topo.vertex_edge_first[v]; k < topo.vertex_edge_first[v + 1]; ++k) {
+        const SolidEdge& e = topo.edges[topo.vertex_edges[k]];
+        if (e.cls == EdgeClass::kH2) h2 = true;
+        if (e.cls != EdgeClass::kH3) continue;
+        // Front face on the left of v0 -> v1 means the vector runs v1 -> v0.
+        const bool from_v1 = fold_front_side(topo, front, e) > 0;
+        const uint32_t start = from_v1 ? e.v1 : e.v0;
+        ++(start == v ? starts : ends);
+      }
+      if (ends >= 2) ++st.peculiar_a;
+      if (starts >= 2) ++st.peculiar_b;
+      if (ends >= 2 || starts >= 2 || h2) vc[v] = kVcUnusable;
+    }
+  }
+
+  const bool use_front = !params.any_facing;
+  for (uint32_t e = 0; e < topo.n_drawn; ++e) {
+    const SolidEdge& se = topo.edges[e];
+    const Point3 a = topo.vertices[se.v0], b = topo.vertices[se.v1];
+    const int64_t dx = b.x - a.x, dy = b.y - a.y, dz = b.z - a.z;
+    if (dx == 0 && dy == 0) continue;  // a point on paper: nothing to draw
+    const bool by_class =
+        params.use_classes && (se.cls == EdgeClass::kH1 || se.cls == EdgeClass::kH2);
+    const bool vc_edge = params.use_vc && (se.cls == EdgeClass::kH3 || se.cls == EdgeClass::kH4);
+    FallbackPiece pending{e, 0, 0, 0, false};
+    bool have = false;
+    Status status = Status::kOk;
+    int32_t last_q = 0;
+    bool last_hidden = false;
+    auto emit = [&](int64_t t0, int64_t t1) {
+      if (t1 <= t0 || status != Status::kOk) return;
+      ++st.pieces;
+      int32_t q = kQiUnknown;
+      bool hidden = false;
+      if (by_class) {
+        ++st.class_saved;
+        hidden = true;
+      } else if (t1 - t0 < 2) {
+        ++st.short_pieces;
+        q = last_q;
+        hidden = last_hidden;
+      } else {
+        const uint32_t end_v = t0 == 0 ? se.v0 : (t1 == kOne ? se.v1 : kNoFace);
+        if (vc_edge && end_v != kNoFace && (vc[end_v] == kVcVisible || vc[end_v] == kVcHidden)) {
+          ++st.vc_saved;
+          hidden = vc[end_v] == kVcHidden;
+        } else {
+          const int64_t m = t0 + (t1 - t0) / 2;
+          CoverPoint p;
+          p.d = kOne;
+          p.x = int64_t{a.x} * kOne + dx * m;
+          p.y = int64_t{a.y} * kOne + dy * m;
+          p.zn = Wide::from_i64(int64_t{a.z} * kOne + dz * m);
+          p.zd = kOne;
+          p.dir_x = static_cast<int32_t>(dx);
+          p.dir_y = static_cast<int32_t>(dy);
+          p.dir_z = static_cast<int32_t>(dz);
+          const uint32_t cell =
+              g.cell_of(static_cast<int32_t>(p.x >> 32), static_cast<int32_t>(p.y >> 32));
+          q = 0;
+          for (uint32_t k = cell_first[cell]; k < cell_first[cell + 1]; ++k) {
+            const uint32_t t = cell_faces[k];
+            const uint32_t* v = topo.triangles[t].v;
+            const Point3 &fa = topo.vertices[v[0]], &fb = topo.vertices[v[1]],
+                         &fc = topo.vertices[v[2]];
+            ++st.face_tests;
+            if (use_front) {
+              if (front[t]) q += cover_halves(fa, fb, fc, p);
+            } else {
+              q += projected_area2(fa, fb, fc) >= 0 ? cover_halves(fa, fb, fc, p)
+                                                    : cover_halves(fa, fc, fb, p);
+            }
+          }
+          ++st.tests;
+          hidden = q != 0;
+          if (vc_edge && end_v != kNoFace && vc[end_v] == kVcUnknown)
+            vc[end_v] = hidden ? kVcHidden : kVcVisible;
+        }
+      }
+      last_q = q;
+      last_hidden = hidden;
+      if (have && pending.q == q && pending.hidden == hidden && pending.t1 == t0) {
+        pending.t1 = t1;
+        return;
+      }
+      if (have) status = sink.emit(sink.context, pending);
+      pending = FallbackPiece{e, t0, t1, q, hidden};
+      have = true;
+    };
+    // Cut points: every crossing behind another edge, every vertex the edge passes through.
+    const Crossing* cx = cutset.begin(e);
+    const uint32_t ncx = cutset.count(e);
+    const Incidence* ix = inc.by_edge + inc.edge_first[e];
+    const uint32_t nix = inc.edge_first[e + 1] - inc.edge_first[e];
+    int64_t at = 0;
+    uint32_t i = 0, j = 0;
+    while (i < ncx || j < nix) {
+      int64_t t;
+      if (j >= nix || (i < ncx && cx[i].t <= ix[j].t))
+        t = cx[i++].t;
+      else
+        t = ix[j++].t;
+      // A cut at floor(t * 2^32): the true point lies in [t, t + 1). The middle of [at, t) is
+      // at least at + 1 and at most t - 1, so strictly between the true cut points.
+      emit(at, t);
+      at = t;
+    }
+    emit(at, kOne);
+    if (have && status == Status::kOk) status = sink.emit(sink.context, pending);
+    if (status != Status::kOk) return status;
+  }
+  if (stats != nullptr) *stats = st;
+  return Status::kOk;
+}
+
+}  // namespace haloplot

@@ -1,0 +1,64 @@
+// The topology-free method (Franklin 1980's step 10): cut every drawn edge wherever it passes
+// behind another edge or through a vertex, and test the middle of each piece against the faces
+// in the grid cell that holds it. It needs no edge-face links, so it is what non-manifold and
+// misoriented meshes get, and it is the independent cross-check of the QI propagation.
+//
+// Kira's savings, when the mesh is manifold and classified (use_classes):
+//   - H1 and H2 edges are hidden whole without a test (they cannot be seen on a closed solid);
+//   - the vertex condition in visibility (V.C.): the first test of a piece that touches an
+//     ordinary vertex decides every other piece touching it. Peculiar vertices (two or more
+//     contour vectors ending, type A, or starting, type B, there) and vertices with singular
+//     neighbours (another vertex or an edge on the same point) never use it.
+// The middle of a piece is a Q0.32 position, so a piece needs at least two positions of length
+// (2^-31 of the edge, under 2^-10 steps) to have one strictly inside; shorter ones are reported
+// with the QI of the piece before them (counted in FallbackStats::short_pieces).
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "cut/cutset.h"
+#include "solid/incidence.h"
+#include "solid/topology.h"
+#include "status/status.h"
+
+namespace haloplot {
+
+struct FallbackParams {
+  bool any_facing = false;  // count back faces too (open or non-manifold surfaces: both sides show)
+  bool use_classes = false;  // Kira: skip H1/H2 edges (needs classify())
+  bool use_vc = false;       // Kira: the V.C. table (needs classify())
+};
+
+struct FallbackStats {
+  uint64_t pieces = 0;
+  uint64_t tests = 0;        // midpoint tests made
+  uint64_t face_tests = 0;   // face-against-point predicates inside those tests
+  uint64_t vc_saved = 0;     // tests the V.C. table answered
+  uint64_t class_saved = 0;  // pieces of H1/H2 edges, hidden by class
+  uint64_t short_pieces = 0;
+  uint32_t peculiar_a = 0, peculiar_b = 0;
+  uint32_t grid_cells = 0, cell_faces = 0;
+};
+
+struct FallbackPiece {
+  uint32_t edge;
+  int64_t t0, t1;
+  int32_t q;    // halves of cover; kQiUnknown when a class or the V.C. decided
+  bool hidden;  // q != 0, or the class or V.C. said so
+};
+
+struct FallbackSink {
+  Status (*emit)(void* context, const FallbackPiece& piece);
+  void* context;
+};
+
+// Scratch bytes for the face grid and the tables (walks the faces once to count cell pairs).
+size_t fallback_bytes(const Topology& topo);
+
+// `cutset` is CUT over topo's edges in topo's order; `front` may be null unless classes or
+// V.C. are asked for (then classify() must have run).
+Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cutset,
+                    const Incidences& inc, const FallbackParams& params, void* buffer, size_t bytes,
+                    FallbackSink sink, FallbackStats* stats);
+
+}  // namespace haloplot

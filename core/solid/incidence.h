@@ -1,0 +1,41 @@
+// The singular places of a projected mesh, found exactly: a vertex lying inside another
+// edge's projection (an edge through a vertex, or a vertex on a contour), and vertices that
+// project onto the same point (vertex on vertex). CUT reports only proper crossings; these
+// are the touches it leaves out, and the places Heger's half, quarter and delta q.i. are for.
+//
+// Found with a uniform grid of vertices (about one vertex per cell): each edge walks the cells
+// its projection passes (cut/grid.h) and tests the vertices there exactly, so the cost is
+// linear in the edges' cell counts, not quadratic.
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "solid/topology.h"
+#include "status/status.h"
+
+namespace haloplot {
+
+struct Incidence {
+  uint32_t edge;      // the edge whose interior passes through ...
+  uint32_t vertex;    // ... this vertex's projection (not one of its endpoints)
+  uint32_t t;         // floor(position along the edge * 2^32), from its v0
+  uint32_t num, den;  // the exact position along the edge: num / den (0 < num < den <= 2^20)
+};
+
+struct Incidences {
+  Incidence* by_edge = nullptr;  // sorted by (edge, t, vertex)
+  uint32_t n = 0;
+  uint32_t* edge_first = nullptr;    // [n_edges + 1] into by_edge
+  uint32_t* by_vertex = nullptr;     // indices into by_edge, grouped by vertex
+  uint32_t* vertex_first = nullptr;  // [n_vertices + 1] into by_vertex
+  uint32_t* same_next = nullptr;     // next vertex at the same projected point (itself if alone)
+  uint32_t coincident_vertices = 0;  // vertices sharing their point with another
+};
+
+size_t incidence_bytes(const Topology& topo, uint32_t capacity);
+
+// kIncidenceCapacity when more than `capacity` incidences exist (`*needed` says how many).
+Status find_incidences(const Topology& topo, uint32_t capacity, void* buffer, size_t bytes,
+                       Incidences* out, uint32_t* needed);
+
+}  // namespace haloplot

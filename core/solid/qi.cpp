@@ -1,0 +1,275 @@
+#include "solid/qi.h"
+
+#include "memory/carve.h"
+#include "solid/cover.h"
+
+namespace haloplot {
+namespace {
+
+struct Ctx {
+  const Topology& topo;
+  const uint8_t* front;
+  const CutSet& cs;
+  const Incidences& inc;
+};
+
+int face_cover(const Ctx& c, uint32_t t, const CoverPoint& p) {
+  if (!c.front[t]) return 0;
+  const uint32_t* v = c.topo.triangles[t].v;
+  return cover_halves(c.topo.vertices[v[0]], c.topo.vertices[v[1]], c.topo.vertices[v[2]], p);
+}
+
+int faces_of_vertex(const Ctx& c, uint32_t v, const CoverPoint& p) {
+  int sum = 0;
+  for (uint32_t k = c.topo.vertex_face_first[v]; k < c.topo.vertex_face_first[v + 1]; ++k)
+    sum += face_cover(c, c.topo.vertex_faces[k], p);
+  return sum;
+}
+
+// The faces whose boundary passes through v's point, asked with p's nudge, by rule.
+struct Local {
+  int star = 0, same = 0, through = 0;
+  int total() const { return star + same + through; }
+};
+
+Local local_cover(const Ctx& c, uint32_t v, const CoverPoint& p) {
+  Local l;
+  l.star = faces_of_vertex(c, v, p);
+  for (uint32_t u = c.inc.same_next[v]; u != v; u = c.inc.same_next[u])
+    l.same += faces_of_vertex(c, u, p);
+  for (uint32_t k = c.inc.vertex_first[v]; k < c.inc.vertex_first[v + 1]; ++k) {
+    const SolidEdge& g = c.topo.edges[c.inc.by_edge[c.inc.by_vertex[k]].edge];
+    for (int s = 0; s < 2; ++s)
+      if (g.face[s] != kNoFace) l.through += face_cover(c, g.face[s], p);
+  }
+  return l;
+}
+
+void count_local(const Local& l, QiStats* st) {
+  if (st == nullptr) return;
+  if (l.star != 0) ++st->wedge;
+  if (l.same != 0) ++st->quarter;
+  if (l.through != 0) ++st->delta;
+}
+
+// The side of fold edge g (v0 -> v1) on which its front face lies: +1 left, -1 right.
+int fold_side(const Ctx& c, uint32_t g) {
+  const SolidEdge& e = c.topo.edges[g];
+  const uint32_t f = c.front[e.face[0]] ? e.face[0] : e.face[1];
+  const uint32_t* t = c.topo.triangles[f].v;
+  uint32_t q = t[0];
+  for (int k = 0; k < 3; ++k)
+    if (t[k] != e.v0 && t[k] != e.v1) q = t[k];
+  const Point3 a = c.topo.vertices[e.v0], b = c.topo.vertices[e.v1], p = c.topo.vertices[q];
+  const int64_t s = int64_t{b.x - a.x} * (p.y - a.y) - int64_t{b.y - a.y} * (p.x - a.x);
+  return s > 0 ? 1 : -1;
+}
+
+// The change of QI where the walk along e (direction dx, dy, dz) crosses behind edge g.
+int crossing_change(const Ctx& c, uint32_t g, int64_t dx, int64_t dy) {
+  const SolidEdge& ge = c.topo.edges[g];
+  if (!is_fold(ge.cls)) return 0;
+  const Point3 a = c.topo.vertices[ge.v0], b = c.topo.vertices[ge.v1];
+  const int64_t s = int64_t{b.x - a.x} * dy - int64_t{b.y - a.y} * dx;
+  return ((s > 0 ? 1 : -1) == fold_side(c, g)) ? 2 : -2;
+}
+
+// The change of QI where the walk passes through the point of vertex w (incidence r), with
+// the walk's direction `sign` (+1 from v0, -1 from v1).
+int passage_change(const Ctx& c, const Incidence& r, int sign) {
+  const SolidEdge& e = c.topo.edges[r.edge];
+  const Point3 a = c.topo.vertices[e.v0], b = c.topo.vertices[e.v1];
+  const Point3 w = c.topo.vertices[r.vertex];
+  CoverPoint after;
+  after.x = w.x;
+  after.y = w.y;
+  after.d = 1;
+  after.zn = Wide::from_i64(int64_t{a.z} * r.den + int64_t{b.z - a.z} * r.num);
+  after.zd = r.den;
+  after.dir_x = sign * (b.x - a.x);
+  after.dir_y = sign * (b.y - a.y);
+  after.dir_z = sign * (b.z - a.z);
+  CoverPoint before = after;
+  before.dir_x = -after.dir_x;
+  before.dir_y = -after.dir_y;
+  before.dir_z = -after.dir_z;
+  return faces_of_vertex(c, r.vertex, after) - faces_of_vertex(c, r.vertex, before);
+}
+
+// Walks edge e from v0 (forward) or from v1, starting with QI q; calls piece(t0, t1, q) for
+// each stretch when forward. Returns the QI on arrival.
+template <typename Piece>
+int32_t walk(const Ctx& c, uint32_t e, bool forward, int32_t q, QiStats* st, Piece piece) {
+  const SolidEdge& se = c.topo.edges[e];
+  const Point3 a = c.topo.vertices[se.v0], b = c.topo.vertices[se.v1];
+  const int sign = forward ? 1 : -1;
+  const int64_t dx = sign * int64_t{b.x - a.x}, dy = sign * int64_t{b.y - a.y};
+  const Crossing* cx = c.cs.begin(e);
+  const uint32_t ncx = c.cs.count(e);
+  const Incidence* ix = c.inc.by_edge + c.inc.edge_first[e];
+  const uint32_t nix = c.inc.edge_first[e + 1] - c.inc.edge_first[e];
+  int64_t at = forward ? 0 : (int64_t{1} << 32);
+  uint32_t i = 0, j = 0;  // events taken from each list
+  while (i < ncx || j < nix) {
+    // Next crossing and next incidence in walking order.
+    const Crossing* nc = i < ncx ? (forward ? cx + i : cx + (ncx - 1 - i)) : nullptr;
+    const Incidence* ni = j < nix ? (forward ? ix + j : ix + (nix - 1 - j)) : nullptr;
+    bool take_crossing = ni == nullptr;
+    if (nc != nullptr && ni != nullptr) take_crossing = forward ? nc->t <= ni->t : nc->t >= ni->t;
+    const int64_t t = take_crossing ? nc->t : ni->t;
+    int change = 0;
+    if (take_crossing) {
+      change = crossing_change(c, nc->front_edge(), dx, dy);
+      if (st != nullptr && change != 0) ++st->crossings;
+      ++i;
+    } else {
+      change = passage_change(c, *ni, sign);
+      if (st != nullptr && change != 0) ++st->half;
+      ++j;
+    }
+    if (change == 0) continue;
+    if (forward) piece(at, t, q);
+    at = t;
+    q += change;
+    if (st != nullptr && (q & 1) != 0) ++st->occluded;
+  }
+  if (forward) piece(at, int64_t{1} << 32, q);
+  return q;
+}
+
+bool degenerate(const Ctx& c, uint32_t e) {
+  const Point3 a = c.topo.vertices[c.topo.edges[e].v0], b = c.topo.vertices[c.topo.edges[e].v1];
+  return a.x == b.x && a.y == b.y;
+}
+
+uint32_t other_end(const SolidEdge& e, uint32_t v) { return e.v0 == v ? e.v1 : e.v0; }
+
+// base(v) from a ray cast along edge (v -> to).
+int32_t cast_base(const Ctx& c, uint32_t v, uint32_t to) {
+  const CoverPoint p = vertex_toward(c.topo.vertices[v], c.topo.vertices[to]);
+  return ray_cast_qi(c.topo, c.front, v, to) - local_cover(c, v, p).total();
+}
+
+}  // namespace
+
+int32_t ray_cast_qi(const Topology& topo, const uint8_t* front, uint32_t from, uint32_t to) {
+  const CoverPoint p = vertex_toward(topo.vertices[from], topo.vertices[to]);
+  int32_t q = 0;
+  for (uint32_t t = 0; t < topo.n_triangles; ++t) {
+    if (!front[t]) continue;
+    const uint32_t* v = topo.triangles[t].v;
+    q += cover_halves(topo.vertices[v[0]], topo.vertices[v[1]], topo.vertices[v[2]], p);
+  }
+  return q;
+}
+
+size_t qi_bytes(const Topology& topo) {
+  ByteCounter c;
+  c.take<int32_t>(topo.n_vertices);
+  c.take<int32_t>(topo.n_edges);
+  c.take<uint32_t>(topo.n_vertices);
+  return c.total + 8;
+}
+
+Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cutset,
+                    const Incidences& inc, void* buffer, size_t bytes, QiState* out,
+                    QiStats* stats) {
+  if (!topo.check.manifold()) return Status::kNotManifold;
+  if (cutset.n_edges != topo.n_edges) return Status::kBadParameter;
+  Carver carve(buffer, bytes);
+  QiState s;
+  s.base = carve.take<int32_t>(topo.n_vertices);
+  s.q_at_v0 = carve.take<int32_t>(topo.n_edges);
+  uint32_t* queue = carve.take<uint32_t>(topo.n_vertices);
+  if (carve.short_) return Status::kWorkspaceTooSmall;
+  const Ctx c{topo, front, cutset, inc};
+  QiStats st;
+  for (uint32_t v = 0; v < topo.n_vertices; ++v) s.base[v] = kQiUnknown;
+  for (uint32_t e = 0; e < topo.n_edges; ++e) s.q_at_v0[e] = kQiUnknown;
+
+  for (uint32_t seed = 0; seed < topo.n_vertices; ++seed) {
+    if (s.base[seed] != kQiUnknown) continue;
+    // A seed needs an edge that is not a point on paper, to ask the faces with a direction.
+    uint32_t via = kNoFace;
+    for (uint32_t k = topo.vertex_edge_first[seed]; k < topo.vertex_edge_first[seed + 1]; ++k)
+      if (!degenerate(c, topo.vertex_edges[k])) via = topo.vertex_edges[k];
+    if (via == kNoFace) continue;
+    s.base[seed] = cast_base(c, seed, other_end(topo.edges[via], seed));
+    ++st.ray_casts;
+    ++st.components;
+    uint32_t head = 0, tail = 0;
+    queue[tail++] = seed;
+    while (head < tail) {
+      const uint32_t v = queue[head++];
+      for (uint32_t k = topo.vertex_edge_first[v]; k < topo.vertex_edge_first[v + 1]; ++k) {
+        const uint32_t e = topo.vertex_edges[k];
+        if (s.q_at_v0[e] != kQiUnknown) continue;
+        const SolidEdge& se = topo.edges[e];
+        const uint32_t x = other_end(se, v);
+        int32_t arrive_base;
+        if (degenerate(c, e)) {
+          ++st.degenerate;
+          arrive_base = s.base[v];
+          s.q_at_v0[e] = s.base[v];  // a point: nothing is drawn from it
+        } else {
+          const Point3 pv = topo.vertices[v], px = topo.vertices[x];
+          const Local start = local_cover(c, v, vertex_toward(pv, px));
+          count_local(start, &st);
+          const int32_t q0 = s.base[v] + start.total();
+          if ((q0 & 1) != 0) ++st.occluded;
+          const bool forward = se.v0 == v;
+          const int32_t q1 = walk(c, e, forward, q0, &st, [](int64_t, int64_t, int32_t) {});
+          const Local end = local_cover(c, x, vertex_toward(px, pv));
+          count_local(end, &st);
+          arrive_base = q1 - end.total();
+          s.q_at_v0[e] = forward ? q0 : q1;
+        }
+        ++st.edges_walked;
+        if (s.base[x] == kQiUnknown) {
+          s.base[x] = arrive_base;
+          queue[tail++] = x;
+        } else if (s.base[x] != arrive_base) {
+          // Two paths disagree: Heger re-initialises. Exact predicates should never get here.
+          ++st.conflicts;
+          if (!degenerate(c, e)) {
+            s.base[x] = cast_base(c, x, v);
+            ++st.ray_casts;
+          }
+        }
+      }
+    }
+  }
+  *out = s;
+  if (stats != nullptr) *stats = st;
+  return Status::kOk;
+}
+
+Status emit_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& cutset,
+                      const Incidences& inc, const QiState& state, QiSink sink) {
+  const Ctx c{topo, front, cutset, inc};
+  for (uint32_t e = 0; e < topo.n_drawn; ++e) {
+    if (degenerate(c, e) || state.q_at_v0[e] == kQiUnknown) continue;
+    Status status = Status::kOk;
+    QiPiece pending{e, 0, 0, 0};
+    bool have = false;
+    auto flush = [&]() {
+      if (have && status == Status::kOk) status = sink.emit(sink.context, pending);
+      have = false;
+    };
+    walk(c, e, true, state.q_at_v0[e], nullptr, [&](int64_t t0, int64_t t1, int32_t q) {
+      if (t1 <= t0) return;
+      if (have && pending.q == q && pending.t1 == t0) {
+        pending.t1 = t1;
+        return;
+      }
+      flush();
+      pending = QiPiece{e, t0, t1, q};
+      have = true;
+    });
+    flush();
+    if (status != Status::kOk) return status;
+  }
+  return Status::kOk;
+}
+
+}  // namespace haloplot

@@ -1,0 +1,80 @@
+// Appel's quantitative invisibility with Heger's refinements: the QI of a point is the number
+// of front faces in front of it; an edge is visible where its QI is 0.
+//
+// Propagation (breadth first, Heger's queue): the QI is found once per connected part by a
+// ray cast at a start vertex, then carried along every edge. Along an edge it changes only
+//   - where the edge passes behind a fold (H2 or H3) edge: +-1, the sign from the side the
+//     fold's front face lies on (exact orientation). These crossings are CUT's (cut/cut.h).
+//   - where the edge passes exactly through another vertex: the faces around that vertex are
+//     asked before and after (half q.i.: each fold ending there contributes a half).
+// Around a vertex the QI depends on the direction the next edge leaves in. Split it into
+//   base(v): faces that cover v's point outright (the same for every direction), plus
+//   local(v, edge): faces whose boundary passes through v's point, asked with the edge's
+//     direction (solid/cover.h): v's own faces (Heger's wedge test), the faces of other
+//     vertices on the same point (quarter q.i.), and of edges passing through it (delta q.i.:
+//     a vertex on a contour). On an edge running along a face side the cover is a half: the
+//     occluded edges, whose QI is then an odd number of halves.
+// QI values are counted in halves throughout. Two paths that reach a vertex with different
+// base values trigger a new ray cast there (counted: exact arithmetic should make it 0).
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "cut/cutset.h"
+#include "solid/incidence.h"
+#include "solid/topology.h"
+#include "status/status.h"
+
+namespace haloplot {
+
+inline constexpr int32_t kQiUnknown = -0x7fffffff;
+
+struct QiStats {
+  uint32_t components = 0;  // parts of the mesh graph, each seeded by a ray cast
+  uint32_t ray_casts = 0;   // initialisations (seeds plus re-initialisations)
+  uint32_t conflicts = 0;   // a vertex reached with two different QIs (re-initialised)
+  uint32_t edges_walked = 0;
+  uint64_t crossings = 0;   // Appel's rule: passing behind a fold edge, +-1
+  uint64_t wedge = 0;       // an edge starts or ends under one of its own vertex's faces
+  uint64_t delta = 0;       // a vertex on a contour (fold edge through the vertex's point)
+  uint64_t quarter = 0;     // vertex on vertex: another vertex's faces at the same point
+  uint64_t half = 0;        // an edge passing exactly through a vertex changed its QI
+  uint64_t occluded = 0;    // pieces lying along a face side (odd number of halves)
+  uint64_t degenerate = 0;  // edges seen end-on (a point on paper): QI carried unchanged
+};
+
+struct QiState {
+  int32_t* base = nullptr;     // [n_vertices], in halves, kQiUnknown before it is reached
+  int32_t* q_at_v0 = nullptr;  // [n_edges]: the QI at the start of each edge, leaving v0
+};
+
+size_t qi_bytes(const Topology& topo);
+
+// `cutset` must be CUT's result over topo's edges in topo's order (reach 0); `front` is from
+// classify(). kNotManifold if topo.check says the mesh is not a closed oriented manifold.
+Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cutset,
+                    const Incidences& inc, void* buffer, size_t bytes, QiState* out,
+                    QiStats* stats);
+
+// A piece of an edge with one QI: positions in Q0.32 along the edge from v0 (t1 <= 2^32).
+struct QiPiece {
+  uint32_t edge;
+  int64_t t0, t1;
+  int32_t q;  // halves: 0 visible, 2 behind one front face, odd: along a face side
+};
+
+struct QiSink {
+  Status (*emit)(void* context, const QiPiece& piece);
+  void* context;
+};
+
+// The pieces of every drawn edge, in edge order, then along each edge. Neighbouring pieces
+// with the same QI are merged; empty pieces are left out.
+Status emit_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& cutset,
+                      const Incidences& inc, const QiState& state, QiSink sink);
+
+// The QI at the start of `edge` leaving vertex `from`, by brute force over every face (the ray
+// cast; exported for the tests and the fallback's cross-check).
+int32_t ray_cast_qi(const Topology& topo, const uint8_t* front, uint32_t from, uint32_t to);
+
+}  // namespace haloplot

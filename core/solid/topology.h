@@ -1,0 +1,53 @@
+// The mesh's topology from its triangles: every edge with its two faces, the stars of every
+// vertex (its edges and its faces), and the checks the QI method relies on.
+//
+// Appel's propagation is only right on a closed, consistently oriented 2-manifold: each edge
+// between exactly two faces that traverse it in opposite directions. build_topology() counts
+// every way a mesh breaks that (MeshCheck) instead of guessing; the caller then uses the
+// topology-free fallback (solid/fallback.h) and says why.
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "solid/mesh.h"
+#include "status/status.h"
+
+namespace haloplot {
+
+struct MeshCheck {
+  uint32_t boundary_edges = 0;     // triangle sides with one face: the surface is open
+  uint32_t nonmanifold_edges = 0;  // sides shared by three or more faces
+  uint32_t misoriented_edges = 0;  // two faces traverse the side the same way
+  uint32_t loose_edges = 0;        // drawn edges on no face (`l` lines)
+  bool manifold() const {
+    return boundary_edges == 0 && nonmanifold_edges == 0 && misoriented_edges == 0;
+  }
+};
+
+struct Topology {
+  const Point3* vertices = nullptr;
+  uint32_t n_vertices = 0;
+  const Triangle* triangles = nullptr;
+  uint32_t n_triangles = 0;
+  SolidEdge* edges = nullptr;  // drawn edges first (input order), then diagonals
+  uint32_t n_edges = 0;
+  uint32_t n_drawn = 0;
+  uint32_t* side_edge = nullptr;  // edge of triangle t's side k (corner k to k+1): [3t + k]
+  // Stars: the edges and the faces at vertex v are [first[v], first[v + 1]) of each list.
+  uint32_t* vertex_edge_first = nullptr;
+  uint32_t* vertex_edges = nullptr;
+  uint32_t* vertex_face_first = nullptr;
+  uint32_t* vertex_faces = nullptr;
+  MeshCheck check;
+
+  Edge3 edge3(uint32_t e) const { return Edge3{vertices[edges[e].v0], vertices[edges[e].v1]}; }
+};
+
+// Bytes build_topology() needs for this input (kept: the Topology lives in them).
+size_t topology_bytes(const SolidInput& in);
+
+// kBadParameter names an index beyond the vertices, an edge from a vertex to itself, a repeated
+// drawn edge or a triangle with a repeated corner; kWorkspaceTooSmall a short buffer.
+Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology* out);
+
+}  // namespace haloplot

@@ -1,0 +1,54 @@
+// Hidden lines of a solid model on the host: the core's stages in order (topology, classes,
+// CUT over every edge, incidences, then QI propagation or the topology-free fallback), each
+// in a buffer sized by the core's own query, and the pieces of every drawn edge with its QI.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "haloplot.h"
+#include "pipeline/host_pipeline.h"
+#include "solid/classify.h"
+#include "solid/fallback.h"
+#include "solid/qi.h"
+
+namespace haloplot::host {
+
+struct SolidScene {
+  std::vector<Point3> vertices;      // projected
+  std::vector<uint32_t> edge_pairs;  // drawn edges, output order
+  std::vector<Triangle> triangles;
+};
+
+enum class HiddenMethod { kAuto, kQi, kFallback };
+
+// A piece of a drawn edge: t in Q0.32 from its first vertex; q in halves (kQiUnknown when a
+// class or the V.C. table decided, then only `hidden` is known).
+struct SolidPiece {
+  uint32_t edge;
+  int64_t t0, t1;
+  int32_t q;
+  bool hidden;
+};
+
+struct SolidRun {
+  bool used_qi = false;
+  std::string fallback_reason;  // why the fallback ran (empty when QI did)
+  MeshCheck check;
+  ClassCounts classes;
+  CutStats cut;
+  QiStats qi;
+  FallbackStats fallback;
+  uint32_t incidences = 0, coincident_vertices = 0;
+  size_t bytes_topology = 0, bytes_incidence = 0, bytes_qi = 0, bytes_fallback = 0, bytes_cut = 0;
+  double ms_total = 0;
+  std::vector<SolidPiece> pieces;
+  std::vector<Edge3> drawn_edges;  // the drawn edges as projected, for spans
+};
+
+// kAuto: QI on a closed oriented manifold, the fallback otherwise. `kira` chooses the
+// fallback's shortcuts (classes, V.C.); they are only used on manifold meshes.
+Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackParams kira,
+                        SolidRun* out);
+
+}  // namespace haloplot::host
