@@ -244,30 +244,37 @@ Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cu
   return Status::kOk;
 }
 
+Status emit_edge_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& cutset,
+                           const Incidences& inc, const QiState& state, uint32_t e, QiSink sink) {
+  const Ctx c{topo, front, cutset, inc};
+  if (degenerate(c, e) || state.q_at_v0[e] == kQiUnknown) return Status::kOk;
+  Status status = Status::kOk;
+  QiPiece pending{e, 0, 0, 0};
+  bool have = false;
+  auto flush = [&]() {
+    if (have && status == Status::kOk) status = sink.emit(sink.context, pending);
+    have = false;
+  };
+  walk(c, e, true, state.q_at_v0[e], nullptr, [&](int64_t t0, int64_t t1, int32_t q) {
+    if (t1 <= t0) return;
+    if (have && pending.q == q && pending.t1 == t0) {
+      pending.t1 = t1;
+      return;
+    }
+    flush();
+    pending = QiPiece{e, t0, t1, q};
+    have = true;
+  });
+  flush();
+  return status;
+}
+
 Status emit_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& cutset,
                       const Incidences& inc, const QiState& state, QiSink sink) {
-  const Ctx c{topo, front, cutset, inc};
-  for (uint32_t e = 0; e < topo.n_drawn; ++e) {
-    if (degenerate(c, e) || state.q_at_v0[e] == kQiUnknown) continue;
-    Status status = Status::kOk;
-    QiPiece pending{e, 0, 0, 0};
-    bool have = false;
-    auto flush = [&]() {
-      if (have && status == Status::kOk) status = sink.emit(sink.context, pending);
-      have = false;
-    };
-    walk(c, e, true, state.q_at_v0[e], nullptr, [&](int64_t t0, int64_t t1, int32_t q) {
-      if (t1 <= t0) return;
-      if (have && pending.q == q && pending.t1 == t0) {
-        pending.t1 = t1;
-        return;
-      }
-      flush();
-      pending = QiPiece{e, t0, t1, q};
-      have = true;
-    });
-    flush();
-    if (status != Status::kOk) return status;
+  for (uint32_t e = 0; e < topo.n_edges; ++e) {
+    if (e >= topo.n_drawn && topo.edges[e].cls != EdgeClass::kH3) continue;
+    const Status s = emit_edge_qi_pieces(topo, front, cutset, inc, state, e, sink);
+    if (s != Status::kOk) return s;
   }
   return Status::kOk;
 }

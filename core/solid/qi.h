@@ -68,10 +68,16 @@ struct QiSink {
   void* context;
 };
 
-// The pieces of every drawn edge, in edge order, then along each edge. Neighbouring pieces
-// with the same QI are merged; empty pieces are left out.
+// The pieces of every drawn edge, in edge order, then along each edge; then those of the
+// contour (H3) diagonals, numbered from topo.n_drawn up: a triangulated polygon that is not
+// flat can show its silhouette along a diagonal, and a hidden-line drawing needs that line.
+// Neighbouring pieces with the same QI are merged; empty pieces are left out.
 Status emit_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& cutset,
                       const Incidences& inc, const QiState& state, QiSink sink);
+
+// The pieces of one edge (any edge, drawn or not), the same way.
+Status emit_edge_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& cutset,
+                           const Incidences& inc, const QiState& state, uint32_t edge, QiSink sink);
 
 // The QI at the start of `edge` leaving vertex `from`, by brute force over every face (the ray
 // cast; exported for the tests and the fallback's cross-check).

@@ -9,8 +9,14 @@ namespace haloplot::host {
 namespace {
 
 Status collect_qi(void* context, const QiPiece& p) {
-  static_cast<std::vector<SolidPiece>*>(context)->push_back(
-      SolidPiece{p.edge, p.t0, p.t1, p.q, p.q != 0});
+  SolidRun* r = static_cast<SolidRun*>(context);
+  (p.edge < r->n_drawn ? r->pieces : r->contour_diagonals)
+      .push_back(SolidPiece{p.edge, p.t0, p.t1, p.q, p.q != 0});
+  return Status::kOk;
+}
+
+Status collect_outline(void* context, const OutlineSegment& s) {
+  static_cast<std::vector<OutlineSegment>*>(context)->push_back(s);
   return Status::kOk;
 }
 
@@ -36,7 +42,7 @@ std::string check_text(const MeshCheck& c) {
 }  // namespace
 
 Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackParams kira,
-                        SolidRun* out) {
+                        SolidRun* out, bool outlines) {
   const auto t0 = std::chrono::steady_clock::now();
   *out = SolidRun{};
   SolidInput in;
@@ -58,7 +64,8 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
 
   std::vector<Edge3> all(topo.n_edges);
   for (uint32_t e = 0; e < topo.n_edges; ++e) all[e] = topo.edge3(e);
-  out->drawn_edges.assign(all.begin(), all.begin() + topo.n_drawn);
+  out->edges = all;
+  out->n_drawn = topo.n_drawn;
   HostCut cut;
   s = host_cut(all, CutParams{}, &cut);
   if (!ok(s)) return s;
@@ -89,8 +96,15 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
     s = propagate_qi(topo, front.data(), cut.set, inc, qi_buf.data(), qi_buf.size() * 8, &state,
                      &out->qi);
     if (!ok(s)) return s;
-    s = emit_qi_pieces(topo, front.data(), cut.set, inc, state, QiSink{&collect_qi, &out->pieces});
+    s = emit_qi_pieces(topo, front.data(), cut.set, inc, state, QiSink{&collect_qi, out});
     if (!ok(s)) return s;
+    if (outlines) {
+      out->bytes_outline = outline_bytes(topo, cut.set, inc);
+      std::vector<uint64_t> ol_buf(out->bytes_outline / 8 + 1);
+      s = find_outlines(topo, front.data(), cut.set, inc, state, ol_buf.data(), ol_buf.size() * 8,
+                        OutlineSink{&collect_outline, &out->outline}, &out->outline_stats);
+      if (!ok(s)) return s;
+    }
     out->used_qi = true;
   } else {
     if (method == HiddenMethod::kAuto)

@@ -10,6 +10,7 @@
 #include "pipeline/host_pipeline.h"
 #include "solid/classify.h"
 #include "solid/fallback.h"
+#include "solid/outline.h"
 #include "solid/qi.h"
 
 namespace haloplot::host {
@@ -42,13 +43,19 @@ struct SolidRun {
   uint32_t incidences = 0, coincident_vertices = 0;
   size_t bytes_topology = 0, bytes_incidence = 0, bytes_qi = 0, bytes_fallback = 0, bytes_cut = 0;
   double ms_total = 0;
-  std::vector<SolidPiece> pieces;
-  std::vector<Edge3> drawn_edges;  // the drawn edges as projected, for spans
+  std::vector<SolidPiece> pieces;             // drawn edges
+  std::vector<SolidPiece> contour_diagonals;  // H3 diagonals (QI only): edge >= drawn count
+  std::vector<Edge3> edges;  // every edge as projected (drawn first, then diagonals)
+  uint32_t n_drawn = 0;
+  // Kira's outlines (QI method only, when asked).
+  std::vector<OutlineSegment> outline;
+  OutlineStats outline_stats;
+  size_t bytes_outline = 0;
 };
 
 // kAuto: QI on a closed oriented manifold, the fallback otherwise. `kira` chooses the
 // fallback's shortcuts (classes, V.C.); they are only used on manifold meshes.
 Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackParams kira,
-                        SolidRun* out);
+                        SolidRun* out, bool outlines = false);
 
 }  // namespace haloplot::host

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "check.h"
+#include "solid/cover.h"
 #include "support/solid_scenes.h"
 
 using namespace haloplot;
@@ -40,6 +41,7 @@ struct Totals {
   uint64_t scenes = 0, pieces = 0, edges = 0;
   QiStats qi;
   uint64_t vc_saved = 0, tests_with = 0, tests_without = 0, class_saved = 0;
+  uint64_t outline_tests = 0, outline_segments = 0, circuits = 0, one_by_one = 0;
 } totals;
 
 // Visible length of edge e in steps (pieces with hidden == false), from positions.
@@ -52,9 +54,70 @@ double visible_length(const std::vector<SolidPiece>& p, const std::vector<size_t
   return sum;
 }
 
+// Kira's outlines against their definition, by brute force: a point is on an outline exactly
+// when the picture's faces (any facing, any depth) lie on one side of it and not on the other.
+// Every face is asked on both sides of: the middle of every traced outline segment (none may
+// be wrong), and 4 points of every edge (each on the boundary must lie on a traced segment,
+// of whichever edge: collinear edges share one outline).
+bool on_boundary(const SolidScene& scene, const Edge3& ed, int64_t m) {
+  const int64_t dx = ed.b.x - ed.a.x, dy = ed.b.y - ed.a.y;
+  CoverPoint p;
+  p.d = int64_t{1} << 32;
+  p.x = int64_t{ed.a.x} * p.d + dx * m;
+  p.y = int64_t{ed.a.y} * p.d + dy * m;
+  int side[2] = {0, 0};
+  for (int sgn = 0; sgn < 2; ++sgn) {
+    p.dir_x = int32_t(sgn ? dy : -dy);
+    p.dir_y = int32_t(sgn ? -dx : dx);
+    for (const Triangle& t : scene.triangles)
+      side[sgn] += projection_cover_halves(scene.vertices[t.v[0]], scene.vertices[t.v[1]],
+                                           scene.vertices[t.v[2]], p);
+  }
+  return (side[0] == 0) != (side[1] == 0);
+}
+
+void check_outlines(const SolidScene& scene, const SolidRun& qi, const std::string& label) {
+  int wrong = 0;
+  for (const auto& o : qi.outline) {
+    if (o.t1 - o.t0 < 2) continue;
+    if (!on_boundary(scene, qi.edges[o.edge], o.t0 + (o.t1 - o.t0) / 2) && ++wrong <= 3)
+      CHECK_MSG(false, label + ": traced outline on edge " + std::to_string(o.edge) + " [" +
+                           std::to_string(o.t0) + ", " + std::to_string(o.t1) +
+                           ") is not on the picture's boundary");
+  }
+  for (uint32_t e = 0; e < qi.edges.size(); ++e) {
+    const Edge3& ed = qi.edges[e];
+    if (ed.a.x == ed.b.x && ed.a.y == ed.b.y) continue;
+    for (int k = 0; k < 4; ++k) {
+      const int64_t m = (int64_t(2 * k + 1) << 32) / 8 + 12345;
+      if (!on_boundary(scene, ed, m)) continue;
+      const double px = ed.a.x + (ed.b.x - ed.a.x) * std::ldexp(double(m), -32);
+      const double py = ed.a.y + (ed.b.y - ed.a.y) * std::ldexp(double(m), -32);
+      bool found = false;
+      for (const auto& o : qi.outline) {
+        const Edge3& oe = qi.edges[o.edge];
+        const double ox = oe.b.x - oe.a.x, oy = oe.b.y - oe.a.y, l2 = ox * ox + oy * oy;
+        const double t = ((px - oe.a.x) * ox + (py - oe.a.y) * oy) / l2;
+        const double dist = std::fabs((px - oe.a.x) * oy - (py - oe.a.y) * ox) / std::sqrt(l2);
+        if (dist < 1e-3 && t >= std::ldexp(double(o.t0), -32) - 1e-9 &&
+            t <= std::ldexp(double(o.t1), -32) + 1e-9)
+          found = true;
+      }
+      if (!found && ++wrong <= 3)
+        CHECK_MSG(false, label + ": edge " + std::to_string(e) + " at t=" + std::to_string(m) +
+                             " is on the picture's boundary but on no traced outline");
+    }
+  }
+  CHECK_MSG(wrong == 0, label + ": " + std::to_string(wrong) + " outline samples wrong");
+  totals.outline_tests += qi.outline_stats.condition_tests;
+  totals.outline_segments += qi.outline_stats.unit_segments;
+  totals.circuits += qi.outline_stats.circuits;
+  totals.one_by_one += qi.outline_stats.one_by_one;
+}
+
 void agree(const SolidScene& scene, const std::string& label) {
   SolidRun qi, fb, kira;
-  const Status s1 = run_hidden_lines(scene, HiddenMethod::kQi, FallbackParams{}, &qi);
+  const Status s1 = run_hidden_lines(scene, HiddenMethod::kQi, FallbackParams{}, &qi, true);
   const Status s2 = run_hidden_lines(scene, HiddenMethod::kFallback, FallbackParams{}, &fb);
   FallbackParams k;
   k.use_classes = k.use_vc = true;
@@ -87,11 +150,12 @@ void agree(const SolidScene& scene, const std::string& label) {
   CHECK_MSG(mismatches == 0, label + ": " + std::to_string(mismatches) + " disagreements");
   double worst = 0;
   for (uint32_t e = 0; e < n; ++e) {
-    const double a = visible_length(qi.pieces, fq, e, qi.drawn_edges[e]);
-    const double b = visible_length(fb.pieces, ff, e, qi.drawn_edges[e]);
+    const double a = visible_length(qi.pieces, fq, e, qi.edges[e]);
+    const double b = visible_length(fb.pieces, ff, e, qi.edges[e]);
     worst = std::max(worst, std::fabs(a - b));
   }
   CHECK_MSG(worst <= 1.0, label + ": visible length differs by " + std::to_string(worst));
+  if (scene.triangles.size() <= 800) check_outlines(scene, qi, label);
   ++totals.scenes;
   totals.pieces += fb.pieces.size();
   totals.edges += n;
@@ -194,5 +258,10 @@ int main(int argc, char** argv) {
       (unsigned long long)totals.qi.ray_casts, (unsigned long long)totals.tests_without,
       (unsigned long long)totals.tests_with, (unsigned long long)totals.vc_saved,
       (unsigned long long)totals.class_saved);
+  std::printf(
+      "outlines: %llu contour unit segments, %llu circuits, %llu condition tests, "
+      "%llu segments asked one by one\n",
+      (unsigned long long)totals.outline_segments, (unsigned long long)totals.circuits,
+      (unsigned long long)totals.outline_tests, (unsigned long long)totals.one_by_one);
   return check::finish("solid_qi");
 }

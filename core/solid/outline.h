@@ -1,0 +1,58 @@
+// Kira's outline detection: the outlines are the boundary of the region the whole picture
+// covers, and they run along contour (H3) edges only. Each contour edge becomes a vector with
+// its front face on the right and is cut into unit segments at its crossings with other contour
+// edges (CUT's, both ways). Circuits are traced from an unused segment: at a crossing the
+// trace turns onto the partner edge, at a vertex it takes the contour vector starting there.
+// A circuit with an invisible segment (QI > 0) cannot be an outline; for the others one
+// segment is asked the necessary and sufficient condition (no face at all just outside it)
+// and the answer holds for the whole circuit.
+//
+// Peculiar vertices: type A (two or more contour vectors end there): a segment arriving there
+// is asked the condition itself, and the circuit is abandoned if it fails. Type B (two or more
+// start there): the most counterclockwise turn is taken. A trace that cannot close (a dead
+// end, a loop that misses its start, or a contour edge with a singular touch: another vertex
+// on it or on its end, where edges may overlap collinearly and CUT reports no crossing) leaves
+// its segments to be asked one by one: slower, never wrong.
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "cut/cutset.h"
+#include "solid/incidence.h"
+#include "solid/qi.h"
+#include "solid/topology.h"
+#include "status/status.h"
+
+namespace haloplot {
+
+struct OutlineStats {
+  uint32_t contour_edges = 0;
+  uint32_t contour_crossings = 0;  // H3 with H3
+  uint32_t unit_segments = 0;
+  uint32_t circuits = 0;   // closed circuits traced
+  uint32_t potential = 0;  // circuits with no invisible segment
+  uint32_t outlines = 0;   // circuits that passed the condition
+  uint32_t outline_segments = 0;
+  uint32_t condition_tests = 0;  // necessary-and-sufficient tests made
+  uint32_t one_by_one = 0;       // segments asked individually after a trace failed
+  uint32_t peculiar_a = 0, peculiar_b = 0;
+};
+
+struct OutlineSegment {
+  uint32_t edge;
+  int64_t t0, t1;  // Q0.32 from the edge's v0
+};
+
+struct OutlineSink {
+  Status (*emit)(void* context, const OutlineSegment& segment);
+  void* context;
+};
+
+size_t outline_bytes(const Topology& topo, const CutSet& cutset, const Incidences& inc);
+
+// Needs classify() (front, classes), CUT over all edges and the QI state.
+Status find_outlines(const Topology& topo, const uint8_t* front, const CutSet& cutset,
+                     const Incidences& inc, const QiState& qi, void* buffer, size_t bytes,
+                     OutlineSink sink, OutlineStats* stats);
+
+}  // namespace haloplot
