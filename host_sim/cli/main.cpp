@@ -30,6 +30,10 @@
 using namespace haloplot;
 using namespace haloplot::host;
 
+namespace haloplot::host {
+int cmd_plot_solid(const Options& o);  // cli/cmd_plot_solid.cpp
+}  // namespace haloplot::host
+
 namespace {
 
 const char* kUsage =
@@ -42,6 +46,9 @@ const char* kUsage =
     "  haloplot plot SCENE.edges|MODEL.obj --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans]\n"
     "               [--cut OUT.cut] [cut options] [--stats]\n"
     "               [--view AZ,EL] [--perspective D] [--dump-edges OUT.edges]   (for .obj)\n"
+    "  haloplot plot MODEL.obj --mode all|hidden-removed|hidden-dashed -o OUT.svg [--outline]\n"
+    "               [--dash LEN,GAP (mm)] [--steps-per-mm N] [--method auto|qi|fallback]\n"
+    "               [--spans OUT.spans] [--view AZ,EL] [--perspective D] [--stats]\n"
     "  haloplot sim JOB.job -o OUT.trace [--gcode OUT.gcode] [--hpgl OUT.hpgl] [--stats]\n"
     "  haloplot replay IN.trace -o OUT.svg [--stats]\n"
     "  haloplot send JOB.job --port PATH [--replot W] [--corrupt-every K] [--truncate-every K]\n"
@@ -306,11 +313,15 @@ int cmd_draw(int argc, char** argv) {
 
 int cmd_plot(int argc, char** argv) {
   std::set<std::string> valued = kCutValued;
-  valued.insert({"--halo", "--spans", "--cut"});
+  valued.insert({"--halo", "--spans", "--cut", "--mode", "--dash", "--steps-per-mm", "--method"});
   valued.insert(std::begin(kSceneOptions), std::end(kSceneOptions));
-  const Options o = parse_options(argc, argv, 2, valued, {"--exact-halo", "--stats"});
+  const Options o = parse_options(argc, argv, 2, valued, {"--exact-halo", "--stats", "--outline"});
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return fail(std::string("bad arguments\n") + kUsage);
+  if (o.get("--mode", "haloed") != "haloed") return cmd_plot_solid(o);
+  if (o.has("--outline"))
+    return fail(
+        "--outline needs the faces: use it with --mode all, hidden-removed or hidden-dashed");
   CutParams cp;
   DrawParams dp;
   std::string error;

@@ -31,15 +31,7 @@ bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
-}  // namespace
-
-bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* edges,
-                std::string* error) {
-  if (!ends_with(path, ".obj")) {
-    const InputError ie = read_edges_file(path, edges);
-    if (ie.failed()) *error = ie.message();
-    return !ie.failed();
-  }
+bool parse_view(const Options& o, View* out, std::string* error) {
   View view;
   const std::string v = o.get("--view", "30,40");
   const size_t comma = v.find(',');
@@ -56,20 +48,60 @@ bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* e
     }
     view.perspective = int32_t(d);
   }
-  ObjModel model;
-  const InputError ie = read_obj_file(path, &model);
+  *out = view;
+  return true;
+}
+
+// Reads and projects an OBJ model; on failure *error is complete.
+bool project_obj(const Options& o, const std::string& path, ObjModel* model,
+                 std::vector<Point3>* screen, std::string* error) {
+  View view;
+  if (!parse_view(o, &view, error)) return false;
+  const InputError ie = read_obj_file(path, model);
   if (ie.failed()) {
     *error = ie.message();
     return false;
   }
-  std::vector<Point3> screen(model.vertices.size());
-  Status s = project_points(view, model.vertices.data(), uint32_t(screen.size()), screen.data());
+  screen->resize(model->vertices.size());
+  const Status s =
+      project_points(view, model->vertices.data(), uint32_t(screen->size()), screen->data());
   if (s == Status::kCoordinateOutOfRange && view.perspective > 0) {
     *error = path +
              ": a vertex lies within 1 unit of the eye plane or behind it: move the eye "
              "back (--perspective larger than the model's depth, about 524288 units)";
     return false;
   }
+  if (!ok(s)) {
+    *error = path + ": projection failed: " + status_name(s);
+    return false;
+  }
+  return true;
+}
+
+bool dump_edges(const Options& o, const std::string& path, const std::vector<Edge3>& edges,
+                std::string* error) {
+  if (o.get("--dump-edges").empty()) return true;
+  *error = write_atomically(o.get("--dump-edges"), [&](std::ostream& out) {
+    write_edges(out, edges,
+                "# projected from " + path + " with --view " + o.get("--view", "30,40") + "\n");
+    return true;
+  });
+  return error->empty();
+}
+
+}  // namespace
+
+bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* edges,
+                std::string* error) {
+  if (!ends_with(path, ".obj")) {
+    const InputError ie = read_edges_file(path, edges);
+    if (ie.failed()) *error = ie.message();
+    return !ie.failed();
+  }
+  ObjModel model;
+  std::vector<Point3> screen;
+  if (!project_obj(o, path, &model, &screen, error)) return false;
+  Status s = Status::kOk;
   edges->resize(model.edge_pairs.size() / 2);
   if (ok(s))
     s = edges_from_indices(screen.data(), uint32_t(screen.size()), model.edge_pairs.data(),
@@ -78,14 +110,28 @@ bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* e
     *error = path + ": projection failed: " + status_name(s);
     return false;
   }
-  if (!o.get("--dump-edges").empty()) {
-    *error = write_atomically(o.get("--dump-edges"), [&](std::ostream& out) {
-      write_edges(out, *edges, "# projected from " + path + " with --view " + v + "\n");
-      return true;
-    });
-    if (!error->empty()) return false;
+  return dump_edges(o, path, *edges, error);
+}
+
+bool load_solid_scene(const Options& o, const std::string& path, SolidScene* scene,
+                      TriangulateStats* stats, std::string* error) {
+  if (!ends_with(path, ".obj")) {
+    *error = path + ": hidden-line modes need faces: give a Wavefront .obj model";
+    return false;
   }
-  return true;
+  ObjModel model;
+  if (!project_obj(o, path, &model, &scene->vertices, error)) return false;
+  scene->edge_pairs = model.edge_pairs;
+  scene->triangles = triangulate(model.vertices, model.faces, stats);
+  std::vector<Edge3> edges(model.edge_pairs.size() / 2);
+  const Status s =
+      edges_from_indices(scene->vertices.data(), uint32_t(scene->vertices.size()),
+                         model.edge_pairs.data(), uint32_t(edges.size()), edges.data());
+  if (!ok(s)) {
+    *error = path + ": " + status_name(s);
+    return false;
+  }
+  return dump_edges(o, path, edges, error);
 }
 
 }  // namespace haloplot::host

@@ -6,6 +6,8 @@
 
 #include "cli/options.h"
 #include "geometry/contract.h"
+#include "pipeline/solid_pipeline.h"
+#include "pipeline/triangulate.h"
 
 namespace haloplot::host {
 
@@ -18,5 +20,10 @@ extern const char* const kSceneOptions[3];
 // or the option or projection problem).
 bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* edges,
                 std::string* error);
+
+// An OBJ model with its faces for the hidden-line modes: projected vertices, the drawn edges
+// (in the order every output uses) and the polygons split into triangles.
+bool load_solid_scene(const Options& o, const std::string& path, SolidScene* scene,
+                      TriangulateStats* stats, std::string* error);
 
 }  // namespace haloplot::host

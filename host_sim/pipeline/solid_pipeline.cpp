@@ -106,13 +106,26 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
       if (!ok(s)) return s;
     }
     out->used_qi = true;
-  } else {
-    if (method == HiddenMethod::kAuto)
-      out->fallback_reason = topo.check.manifold() ? std::to_string(topo.check.loose_edges) +
-                                                         " loose edges (lines on no face)"
-                                                   : check_text(topo.check);
-    else
-      out->fallback_reason = "asked for";
+    if (method == HiddenMethod::kAuto && out->qi.conflicts > 0) {
+      // Exact propagation only disagrees with itself on a mesh that pierces itself (or
+      // another): the fallback asks the faces directly instead.
+      out->fallback_reason = std::to_string(out->qi.conflicts) +
+                             " vertices reached with two different QIs (does the mesh pierce "
+                             "itself?)";
+      out->used_qi = false;
+      out->pieces.clear();
+      out->contour_diagonals.clear();
+      out->outline.clear();
+      use_qi = false;
+    }
+  }
+  if (!use_qi) {
+    if (out->fallback_reason.empty())  // else the QI conflicts above say why
+      out->fallback_reason = method != HiddenMethod::kAuto
+                                 ? "asked for"
+                                 : (topo.check.manifold() ? std::to_string(topo.check.loose_edges) +
+                                                                " loose edges (lines on no face)"
+                                                          : check_text(topo.check));
     FallbackParams p = kira;
     if (!topo.check.manifold()) {
       // Open or broken surfaces: both sides of a face show, and no class or V.C. holds.

@@ -32,7 +32,15 @@ void write_svg(std::ostream& out, const std::vector<Span>& spans, const SvgStyle
       << "\" d=\"";
   // One path, y negated: the viewBox above starts at -(ymax + margin).
   for (const Span& s : spans) out << 'M' << s.x0 << ' ' << -s.y0 << 'L' << s.x1 << ' ' << -s.y1;
-  out << "\"/>\n</svg>\n";
+  out << "\"/>\n";
+  if (style.second_pen != nullptr && !style.second_pen->empty()) {
+    out << "<path fill=\"none\" stroke=\"black\" stroke-linecap=\"round\" stroke-width=\""
+        << stroke * style.second_pen_width << "\" d=\"";
+    for (const Span& s : *style.second_pen)
+      out << 'M' << s.x0 << ' ' << -s.y0 << 'L' << s.x1 << ' ' << -s.y1;
+    out << "\"/>\n";
+  }
+  out << "</svg>\n";
 }
 
 }  // namespace haloplot::host

@@ -1,0 +1,103 @@
+// haloplot plot MODEL.obj --mode all|hidden-removed|hidden-dashed [--outline] ...: hidden
+// lines of a solid model (the HALO paper's Figure 1 modes), by Appel/Heger QI propagation on
+// closed oriented meshes and by the topology-free fallback otherwise (said on stderr).
+#include <cstdio>
+#include <iostream>
+
+#include "cli/options.h"
+#include "cli/solid_options.h"
+#include "io/atomic_file.h"
+#include "io/line_reader.h"
+#include "io/spans_file.h"
+#include "pipeline/drawing_modes.h"
+#include "pipeline/scene_input.h"
+#include "render/svg.h"
+
+namespace haloplot::host {
+namespace {
+
+int fail(const std::string& message) {
+  std::cerr << "haloplot: " << message << "\n";
+  return 1;
+}
+
+void print_solid_stats(const SolidRun& r, const TriangulateStats& tri) {
+  const QiStats& q = r.qi;
+  const FallbackStats& f = r.fallback;
+  const OutlineStats& o = r.outline_stats;
+  std::fprintf(stderr,
+               "method=%s\npolygons=%u\ntriangles=%u\nconcave_polygons=%u\nfront_faces=%u\n"
+               "back_faces=%u\nh1=%u\nh2=%u\nh3=%u\nh4=%u\nloose_edges=%u\nboundary_edges=%u\n"
+               "nonmanifold_edges=%u\nmisoriented_edges=%u\ncrossings=%llu\nincidences=%u\n"
+               "coincident_vertices=%u\n",
+               r.used_qi ? "qi" : "fallback", tri.polygons, tri.triangles, tri.concave,
+               r.classes.front_faces, r.classes.back_faces, r.classes.h[1], r.classes.h[2],
+               r.classes.h[3], r.classes.h[4], r.classes.h[0], r.check.boundary_edges,
+               r.check.nonmanifold_edges, r.check.misoriented_edges,
+               (unsigned long long)r.cut.crossings, r.incidences, r.coincident_vertices);
+  if (r.used_qi)
+    std::fprintf(stderr,
+                 "qi_components=%u\nqi_ray_casts=%u\nqi_conflicts=%u\nrule_crossing=%llu\n"
+                 "rule_wedge=%llu\nrule_delta=%llu\nrule_quarter=%llu\nrule_half=%llu\n"
+                 "rule_occluded=%llu\nrule_degenerate=%llu\n",
+                 q.components, q.ray_casts, q.conflicts, (unsigned long long)q.crossings,
+                 (unsigned long long)q.wedge, (unsigned long long)q.delta,
+                 (unsigned long long)q.quarter, (unsigned long long)q.half,
+                 (unsigned long long)q.occluded, (unsigned long long)q.degenerate);
+  else
+    std::fprintf(stderr,
+                 "fallback_pieces=%llu\nfallback_tests=%llu\nfallback_face_tests=%llu\n"
+                 "vc_saved=%llu\nclass_saved=%llu\npeculiar_a=%u\npeculiar_b=%u\n",
+                 (unsigned long long)f.pieces, (unsigned long long)f.tests,
+                 (unsigned long long)f.face_tests, (unsigned long long)f.vc_saved,
+                 (unsigned long long)f.class_saved, f.peculiar_a, f.peculiar_b);
+  if (o.contour_edges > 0)
+    std::fprintf(stderr,
+                 "outline_contour_segments=%u\noutline_circuits=%u\noutline_potential=%u\n"
+                 "outlines=%u\noutline_condition_tests=%u\noutline_one_by_one=%u\n",
+                 o.unit_segments, o.circuits, o.potential, o.outlines, o.condition_tests,
+                 o.one_by_one);
+  std::fprintf(stderr,
+               "bytes_topology=%zu\nbytes_incidence=%zu\nbytes_cut=%zu\nbytes_qi=%zu\n"
+               "bytes_fallback=%zu\nbytes_outline=%zu\nhidden_ms=%.3f\n",
+               r.bytes_topology, r.bytes_incidence, r.bytes_cut, r.bytes_qi, r.bytes_fallback,
+               r.bytes_outline, r.ms_total);
+}
+
+}  // namespace
+
+int cmd_plot_solid(const Options& o) {
+  std::string error;
+  SolidOptions so;
+  if (!parse_solid_options(o, &so, &error)) return fail(error);
+  if (!o.get("--halo").empty() || o.has("--exact-halo"))
+    return fail("--halo belongs to --mode haloed (HALO needs no faces)");
+  SolidScene scene;
+  TriangulateStats tri;
+  if (!load_solid_scene(o, o.positional[0], &scene, &tri, &error)) return fail(error);
+  SolidRun run;
+  const Status s = run_solid_options(scene, so, &run);
+  if (!ok(s)) return fail(o.positional[0] + ": hidden lines failed: " + status_name(s));
+  if (!run.fallback_reason.empty() && so.method == HiddenMethod::kAuto)
+    std::cerr << "haloplot: " << o.positional[0] << ": " << run.fallback_reason
+              << ": hidden lines by the topology-free fallback\n";
+  const ModeDrawing d = make_mode_drawing(run, so.spec);
+  SvgStyle style;
+  style.second_pen = &d.outline;
+  error = write_atomically(o.get("-o"), [&](std::ostream& out) {
+    write_svg(out, d.spans, style);
+    return true;
+  });
+  if (!error.empty()) return fail(error);
+  if (!o.get("--spans").empty()) {
+    error = write_atomically(o.get("--spans"), [&](std::ostream& out) {
+      write_spans_qi(out, d.spans, d.qi, d.outline);
+      return true;
+    });
+    if (!error.empty()) return fail(error);
+  }
+  if (o.has("--stats")) print_solid_stats(run, tri);
+  return 0;
+}
+
+}  // namespace haloplot::host

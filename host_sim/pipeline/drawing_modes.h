@@ -1,0 +1,39 @@
+// The HALO paper's Figure 1 drawing modes for solid models, from the hidden-line pieces:
+//   all             every edge whole (the pieces keep their QI for the .spans file)
+//   hidden-removed  the pieces with QI 0 (and the visible parts of contour diagonals)
+//   hidden-dashed   those, plus the hidden pieces cut into dashes (length and gap in mm)
+//   haloed          not here: HALO needs no faces (CUT and DRAW on the edges)
+// --outline adds Kira's outlines as a second pass (a second pen, or the same pen again).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "draw/draw.h"
+#include "pipeline/solid_pipeline.h"
+
+namespace haloplot::host {
+
+enum class SolidMode { kAll, kHiddenRemoved, kHiddenDashed };
+
+struct ModeSpec {
+  SolidMode mode = SolidMode::kHiddenRemoved;
+  int32_t dash_steps = 160, gap_steps = 80;  // 2 mm and 1 mm at 80 steps/mm
+  bool outline = false;
+};
+
+struct ModeDrawing {
+  std::vector<Span> spans;    // first pen, in edge order then along each edge
+  std::vector<int32_t> qi;    // QI of each span, in halves (kQiUnknown when not counted)
+  std::vector<Span> outline;  // second pass
+};
+
+// "all", "hidden-removed", "hidden-dashed"; false for anything else.
+bool parse_solid_mode(const std::string& s, SolidMode* out);
+
+ModeDrawing make_mode_drawing(const SolidRun& run, const ModeSpec& spec);
+
+// "0", "1", "0.5": a QI counted in halves, as the .spans file writes it.
+std::string qi_text(int32_t halves);
+
+}  // namespace haloplot::host
