@@ -366,15 +366,19 @@ int cmd_sim(int argc, char** argv) {
   InputError ie = read_job_file(o.positional[0], &jf);
   if (ie.failed()) return fail(ie.message());
   std::vector<Edge3> edges;
-  ie = read_edges_file(jf.scene_path, &edges);
-  if (ie.failed()) return fail(ie.message());
+  std::string error;
+  if (!load_job_scene(jf, &edges, &error)) return fail(error);
   if (isatty(2)) jf.spec.cut.progress = &progress;
   JobSpec spec = jf.spec;
+  // Hidden-line drawings are decided on the host; the controller's job then draws the chosen
+  // strokes whole (their z no longer matters).
+  if (spec.drawing == DrawingEffect::kHiddenRemoved || spec.drawing == DrawingEffect::kHiddenDashed)
+    spec.drawing = DrawingEffect::kAllEdges;
   if (!spec.effects.backlash)
     spec.machine.backlash[0] = spec.machine.backlash[1] = 0;  // not simulated
   SimReport r;
   Status s = Status::kOk;
-  std::string error = write_atomically(o.get("-o"), [&](std::ostream& out) {
+  error = write_atomically(o.get("-o"), [&](std::ostream& out) {
     s = simulate(spec, edges, &out, &r);
     return ok(s);
   });

@@ -2,7 +2,9 @@
 
 #include <fstream>
 
+#include "cli/solid_options.h"
 #include "io/line_reader.h"
+#include "pipeline/scene_input.h"
 
 namespace haloplot::host {
 
@@ -33,11 +35,27 @@ InputError read_job_file(const std::string& path, JobFile* out) {
         j.drawing = DrawingEffect::kAllEdges;
       else if (f[1] == "haloed")
         j.drawing = DrawingEffect::kHaloed;
-      else if (f[1] == "hidden-removed" || f[1] == "hidden-dashed" || f[1] == "outline" ||
-               f[1] == "hatch")
-        return bad("drawing '" + f[1] + "' needs faces; this build draws 'all' and 'haloed'");
+      else if (f[1] == "hidden-removed" || f[1] == "hidden-dashed") {
+        j.drawing =
+            f[1] == "hidden-removed" ? DrawingEffect::kHiddenRemoved : DrawingEffect::kHiddenDashed;
+        out->solid_options["--mode"] = f[1];
+      } else if (f[1] == "hatch")
+        return bad("drawing 'hatch' arrives with the hidden-surface issue");
       else
-        return bad("drawing must be all or haloed, not '" + f[1] + "'");
+        return bad("drawing must be all, haloed, hidden-removed or hidden-dashed, not '" + f[1] +
+                   "'");
+    } else if ((key == "view" || key == "perspective" || key == "method" || key == "dash") &&
+               f.size() == (key == "dash" ? 3u : 2u)) {
+      out->solid_options["--" + key] = key == "dash" ? f[1] + "," + f[2] : f[1];
+      // Checked here, so a bad value is reported with its line.
+      Options o;
+      o.values = out->solid_options;
+      SolidOptions so;
+      View view;
+      std::string error;
+      if (!parse_solid_options(o, &so, &error) || !parse_view(o, &view, &error)) return bad(error);
+    } else if (key == "outline" && f.size() == 2 && (f[1] == "on" || f[1] == "off")) {
+      out->outline = f[1] == "on";
     } else if (key == "halo") {
       if (!number(0, 1048575, &v32)) return bad("halo needs a width in [0, 1048575] steps");
       j.draw.halo = int32_t(v32);
@@ -102,6 +120,10 @@ InputError read_job_file(const std::string& path, JobFile* out) {
     }
   }
   if (out->scene_path.empty()) return {path, 0, "no 'scene' line"};
+  const bool obj = out->scene_path.size() > 4 &&
+                   out->scene_path.compare(out->scene_path.size() - 4, 4, ".obj") == 0;
+  if (out->solid_options.count("--mode") != 0 && !obj)
+    return {path, 0, "drawing " + out->solid_options["--mode"] + " needs an .obj scene (faces)"};
   if (j.draw.mode == HaloMode::kExact) j.cut.reach = j.draw.halo;
   const Status s = validate(j.machine);
   if (!ok(s)) return {path, 0, std::string("machine settings rejected: ") + status_name(s)};

@@ -1,8 +1,13 @@
 // The .job file: what `haloplot sim` plots and how. One "key value..." per line, '#' comments.
 //
 //   scene demo.edges          the scene, relative to the job file's folder (required)
-//   drawing haloed            all | haloed  (hidden-removed, hidden-dashed, outline and hatch
-//                             arrive with the solid-model and hidden-surface issues)
+//   drawing haloed            all | haloed | hidden-removed | hidden-dashed (the last two need
+//                             an .obj scene with faces; hatch arrives with hidden surfaces)
+//   view 30,25                for an .obj scene: azimuth,elevation in degrees (README)
+//   perspective 1500000       for an .obj scene: eye distance (default orthographic)
+//   dash 2 1                  hidden-dashed: dash and gap in mm
+//   outline on                hidden-line modes: redraw Kira's outlines in a second pass
+//   method auto               hidden-line method: auto | qi | fallback
 //   halo 50                   halo width, plot steps
 //   halo-mode paper           paper | exact
 //   effects acceleration pen-servo    plotter effects to simulate: any of acceleration,
@@ -14,6 +19,7 @@
 //   pen-travel-ticks 150000   pen-settle-ticks 50000   backlash 0 0
 //   steps-per-mm 80           for the G-code and HPGL exporters
 #pragma once
+#include <map>
 #include <string>
 
 #include "export/exporters.h"
@@ -26,6 +32,10 @@ struct JobFile {
   std::string scene_path;
   JobSpec spec;
   ExportStyle style;
+  // Hidden-line settings, as the plot command's options (--mode, --view, --dash, ...): the
+  // simulator hands them to the same parser.
+  std::map<std::string, std::string> solid_options;
+  bool outline = false;
 };
 
 InputError read_job_file(const std::string& path, JobFile* out);

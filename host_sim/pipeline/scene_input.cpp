@@ -1,7 +1,9 @@
 #include "pipeline/scene_input.h"
 
+#include "cli/solid_options.h"
 #include "io/atomic_file.h"
 #include "io/edges_file.h"
+#include "io/job_file.h"
 #include "io/line_reader.h"
 #include "io/obj_file.h"
 #include "view/projection.h"
@@ -29,27 +31,6 @@ bool parse_mdeg(const std::string& s, int32_t* out) {
 
 bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
-bool parse_view(const Options& o, View* out, std::string* error) {
-  View view;
-  const std::string v = o.get("--view", "30,40");
-  const size_t comma = v.find(',');
-  if (comma == std::string::npos || !parse_mdeg(v.substr(0, comma), &view.azimuth_mdeg) ||
-      !parse_mdeg(v.substr(comma + 1), &view.elevation_mdeg)) {
-    *error = "--view '" + v + "' must be AZ,EL in degrees (up to three decimals)";
-    return false;
-  }
-  if (!o.get("--perspective").empty()) {
-    int64_t d = 0;
-    if (!parse_int(o.get("--perspective"), 1, 2 * kWorldLimit, &d)) {
-      *error = "--perspective '" + o.get("--perspective") + "' must be an integer in [1, 2097152]";
-      return false;
-    }
-    view.perspective = int32_t(d);
-  }
-  *out = view;
-  return true;
 }
 
 // Reads and projects an OBJ model; on failure *error is complete.
@@ -90,6 +71,27 @@ bool dump_edges(const Options& o, const std::string& path, const std::vector<Edg
 }
 
 }  // namespace
+
+bool parse_view(const Options& o, View* out, std::string* error) {
+  View view;
+  const std::string v = o.get("--view", "30,40");
+  const size_t comma = v.find(',');
+  if (comma == std::string::npos || !parse_mdeg(v.substr(0, comma), &view.azimuth_mdeg) ||
+      !parse_mdeg(v.substr(comma + 1), &view.elevation_mdeg)) {
+    *error = "--view '" + v + "' must be AZ,EL in degrees (up to three decimals)";
+    return false;
+  }
+  if (!o.get("--perspective").empty()) {
+    int64_t d = 0;
+    if (!parse_int(o.get("--perspective"), 1, 2 * kWorldLimit, &d)) {
+      *error = "--perspective '" + o.get("--perspective") + "' must be an integer in [1, 2097152]";
+      return false;
+    }
+    view.perspective = int32_t(d);
+  }
+  *out = view;
+  return true;
+}
 
 bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* edges,
                 std::string* error) {
@@ -132,6 +134,30 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
     return false;
   }
   return dump_edges(o, path, edges, error);
+}
+
+bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* error) {
+  Options o;
+  o.values = jf.solid_options;
+  if (jf.outline) o.flags.insert("--outline");
+  if (jf.spec.drawing != DrawingEffect::kHiddenRemoved &&
+      jf.spec.drawing != DrawingEffect::kHiddenDashed)
+    return load_scene(o, jf.scene_path, edges, error);
+  SolidOptions so;
+  if (!parse_solid_options(o, &so, error)) return false;
+  SolidScene scene;
+  if (!load_solid_scene(o, jf.scene_path, &scene, nullptr, error)) return false;
+  SolidRun run;
+  const Status s = run_solid_options(scene, so, &run);
+  if (!ok(s)) {
+    *error = jf.scene_path + ": hidden lines failed: " + status_name(s);
+    return false;
+  }
+  const ModeDrawing d = make_mode_drawing(run, so.spec);
+  edges->clear();
+  for (const auto* list : {&d.spans, &d.outline})
+    for (const Span& x : *list) edges->push_back(Edge3{{x.x0, x.y0, 0}, {x.x1, x.y1, 0}});
+  return true;
 }
 
 }  // namespace haloplot::host

@@ -8,6 +8,7 @@
 #include "geometry/contract.h"
 #include "pipeline/solid_pipeline.h"
 #include "pipeline/triangulate.h"
+#include "view/projection.h"
 
 namespace haloplot::host {
 
@@ -18,8 +19,17 @@ extern const char* const kSceneOptions[3];
 
 // Loads and, for OBJ, projects. On failure *error is a complete message (file:line: reason,
 // or the option or projection problem).
+// --view and --perspective into a View; false with *error saying what is wrong.
+bool parse_view(const Options& o, View* out, std::string* error);
+
 bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* edges,
                 std::string* error);
+
+struct JobFile;
+// The scene a .job file names, as the edges its job draws: an .edges file as it is; an .obj
+// model projected with the job's view; for the hidden-line drawings, the strokes of that mode
+// (visible pieces, dashes, and the outline pass redrawn last), decided on the host.
+bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* error);
 
 // An OBJ model with its faces for the hidden-line modes: projected vertices, the drawn edges
 // (in the order every output uses) and the polygons split into triangles.

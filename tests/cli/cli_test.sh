@@ -80,5 +80,52 @@ expect '[ $rc -ne 0 ] && grep -q "eye plane" err.txt && [ ! -e objp.svg ]' "an e
 "$tool" plot cube.obj --view 30,forty --halo 40 -o objv.svg 2> err.txt
 rc=$?
 expect '[ $rc -ne 0 ] && grep -q -- "--view" err.txt' "a bad --view is named: $(cat err.txt)"
+
+# Hidden-line modes from a solid model (the cube above has its bottom face wound the wrong way:
+# the checks must say so and fall back; the fixed cube runs the QI method).
+sed 's/^f 1 2 3 4$/f 4 3 2 1/' cube.obj > good.obj
+for mode in all hidden-removed hidden-dashed; do
+  "$tool" plot good.obj --view 30,25 --mode $mode --outline -o m_$mode.svg --spans m_$mode.spans --stats 2> m_$mode.txt
+  rc=$?
+  expect '[ $rc -eq 0 ] && grep -q "^method=qi" m_$mode.txt && grep -q "^rule_wedge=" m_$mode.txt' "--mode $mode plots a closed cube by QI: $(cat m_$mode.txt)"
+  expect '[ "$(grep "^s " m_$mode.spans | awk "NF != 7" | wc -l)" = 0 ] && grep -q "^o " m_$mode.spans' "--mode $mode writes s EDGE X0 Y0 X1 Y1 QI and the outline pass"
+done
+expect '[ "$(grep -c "^s .* 0$" m_hidden-removed.spans)" = 9 ]' "a cube shows 9 visible edges"
+expect '[ "$(grep -c "^s " m_all.spans)" = 12 ]' "all: the 12 edges whole"
+expect '[ "$(grep -c "^s .* 1$" m_hidden-dashed.spans)" -gt 3 ]' "dashed: the 3 hidden edges cut into dashes"
+"$tool" plot cube.obj --view 30,25 --mode hidden-removed -o bad_orient.svg --stats 2> err.txt
+rc=$?
+expect '[ $rc -eq 0 ] && grep -q "disagree on orientation: hidden lines by the topology-free fallback" err.txt && grep -q "^method=fallback" err.txt' "a misoriented mesh is reported and drawn by the fallback: $(cat err.txt)"
+printf 'v 0 0 0\nv 4 0 0\nv 4 4 0\nv 0 4 1\nf 1 2 3 4\n' > sheet.obj
+"$tool" plot sheet.obj --mode hidden-removed -o sheet.svg 2> err.txt
+rc=$?
+expect '[ $rc -eq 0 ] && grep -q "boundary edges (open surface)" err.txt' "an open surface is reported: $(cat err.txt)"
+"$tool" plot good.obj --mode hidden-sketchy -o x.svg 2> err.txt
+expect '[ $? -ne 0 ] && grep -q -- "--mode .hidden-sketchy. must be" err.txt && [ ! -e x.svg ]' "a bad --mode is named"
+"$tool" plot obj.edges --mode hidden-removed -o x.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "need faces" err.txt' "hidden lines from an .edges file are refused: $(cat err.txt)"
+"$tool" plot good.obj --mode hidden-dashed --dash 2,zero -o x.svg 2> err.txt
+expect '[ $? -ne 0 ] && grep -q -- "--dash" err.txt' "a bad --dash is named"
+"$tool" plot good.obj --halo 40 --outline -o x.svg 2> err.txt
+expect '[ $? -ne 0 ] && grep -q -- "--outline needs the faces" err.txt' "--outline with haloed lines is refused"
+"$tool" plot good.obj --mode hidden-removed --halo 40 -o x.svg 2> err.txt
+expect '[ $? -ne 0 ] && grep -q -- "--halo belongs to --mode haloed" err.txt' "--halo with a hidden-line mode is refused"
+
+# The same modes reach the step trace, the G-code and the HPGL through a .job file.
+printf 'scene good.obj\ndrawing hidden-dashed\nview 30,25\ndash 1 0.5\noutline on\n' > solid.job
+"$tool" sim solid.job -o solid.trace --gcode solid.gcode --hpgl solid.hpgl --stats 2> err.txt
+rc=$?
+expect '[ $rc -eq 0 ] && [ -s solid.trace ] && grep -q "^G1" solid.gcode && grep -q "PD" solid.hpgl' "sim draws a hidden-dashed job: $(cat err.txt)"
+"$tool" replay solid.trace -o solid_replay.svg --stats 2> replay.txt
+expect '[ "$(grep "^strokes=" replay.txt | cut -d= -f2)" -gt 12 ]' "the replayed trace holds the dashes"
+printf 'scene good.obj\ndrawing hidden-removed\ndash 1 nothing\n' > badjob.job
+"$tool" sim badjob.job -o x.trace 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "badjob.job:3:" err.txt && [ ! -e x.trace ]' "a bad job setting names its line: $(cat err.txt)"
+printf 'scene obj.edges\ndrawing hidden-removed\n' > edgesjob.job
+"$tool" sim edgesjob.job -o x.trace 2> err.txt
+expect '[ $? -ne 0 ] && grep -q "needs an .obj scene" err.txt' "hidden lines of an .edges scene are refused in a job"
+
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
