@@ -1,9 +1,9 @@
 #include "solid/fallback.h"
 
-#include "cut/grid.h"
 #include "geometry/wide.h"
 #include "memory/carve.h"
 #include "solid/cover.h"
+#include "solid/face_grid.h"
 #include "solid/qi.h"
 
 namespace haloplot {
@@ -12,43 +12,6 @@ namespace {
 constexpr int64_t kOne = int64_t{1} << 32;
 
 enum Vc : uint8_t { kVcUnknown = 0, kVcVisible = 1, kVcHidden = 2, kVcUnusable = 3 };
-
-// About one face per cell, over the vertices' bounding box.
-Grid face_grid(const Topology& topo) {
-  Grid g;
-  int32_t x0 = kCoordMax, y0 = kCoordMax, x1 = 0, y1 = 0;
-  for (uint32_t v = 0; v < topo.n_vertices; ++v) {
-    x0 = min_i32(x0, topo.vertices[v].x);
-    y0 = min_i32(y0, topo.vertices[v].y);
-    x1 = max_i32(x1, topo.vertices[v].x);
-    y1 = max_i32(y1, topo.vertices[v].y);
-  }
-  if (topo.n_vertices == 0) x0 = y0 = x1 = y1 = 0;
-  const uint32_t per_axis = isqrt_u64(topo.n_triangles) + 1;
-  const int32_t extent = max_i32(x1 - x0, y1 - y0) + 1;
-  g.ox = x0;
-  g.oy = y0;
-  g.set_cell(max_i32(1, static_cast<int32_t>((uint32_t(extent) + per_axis - 1) / per_axis)));
-  g.nx = g.divide(static_cast<uint32_t>(x1 - x0)) + 1;
-  g.ny = g.divide(static_cast<uint32_t>(y1 - y0)) + 1;
-  return g;
-}
-
-Edge3 face_box(const Topology& topo, uint32_t t) {
-  const uint32_t* v = topo.triangles[t].v;
-  const Point3 a = topo.vertices[v[0]], b = topo.vertices[v[1]], c = topo.vertices[v[2]];
-  Edge3 box;
-  box.a = Point3{min_i32(a.x, min_i32(b.x, c.x)), min_i32(a.y, min_i32(b.y, c.y)), 0};
-  box.b = Point3{max_i32(a.x, max_i32(b.x, c.x)), max_i32(a.y, max_i32(b.y, c.y)), 0};
-  return box;
-}
-
-uint64_t count_cell_faces(const Topology& topo, const Grid& g) {
-  uint64_t n = 0;
-  for (uint32_t t = 0; t < topo.n_triangles; ++t)
-    for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0, [&](uint32_t) { ++n; });
-  return n;
-}
 
 int fold_front_side(const Topology& topo, const uint8_t* front, const SolidEdge& e) {
   const uint32_t f = front[e.face[0]] ? e.face[0] : e.face[1];
@@ -64,10 +27,8 @@ int fold_front_side(const Topology& topo, const uint8_t* front, const SolidEdge&
 }  // namespace
 
 size_t fallback_bytes(const Topology& topo) {
-  const Grid g = face_grid(topo);
   ByteCounter c;
-  c.take<uint32_t>(size_t{g.cells()} + 1);
-  c.take<uint32_t>(count_cell_faces(topo, g));
+  c.take<uint8_t>(face_grid_bytes(topo));
   c.take<uint8_t>(topo.n_vertices);
   return c.total + 8;
 }
@@ -78,27 +39,17 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
   if (cutset.n_edges != topo.n_edges) return Status::kBadParameter;
   if ((params.use_classes || params.use_vc || !params.any_facing) && front == nullptr)
     return Status::kBadParameter;
-  const Grid g = face_grid(topo);
-  const uint64_t pairs = count_cell_faces(topo, g);
   Carver carve(buffer, bytes);
-  uint32_t* cell_first = carve.take<uint32_t>(size_t{g.cells()} + 1);
-  uint32_t* cell_faces = carve.take<uint32_t>(pairs);
+  const size_t grid_bytes = face_grid_bytes(topo);
+  uint8_t* grid_buffer = carve.take<uint8_t>(grid_bytes);
   uint8_t* vc = carve.take<uint8_t>(topo.n_vertices);
   if (carve.short_) return Status::kWorkspaceTooSmall;
+  FaceGrid fg;
+  const Status gs = build_face_grid(topo, grid_buffer, grid_bytes, &fg);
+  if (gs != Status::kOk) return gs;
   FallbackStats st;
-  st.grid_cells = g.cells();
-  st.cell_faces = static_cast<uint32_t>(pairs);
-
-  for (uint32_t c = 0; c <= g.cells(); ++c) cell_first[c] = 0;
-  for (uint32_t t = 0; t < topo.n_triangles; ++t)
-    for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0,
-                  [&](uint32_t c) { ++cell_first[c + 1]; });
-  for (uint32_t c = 0; c < g.cells(); ++c) cell_first[c + 1] += cell_first[c];
-  for (uint32_t t = 0; t < topo.n_triangles; ++t)
-    for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0,
-                  [&](uint32_t c) { cell_faces[cell_first[c]++] = t; });
-  for (uint32_t c = g.cells(); c > 0; --c) cell_first[c] = cell_first[c - 1];
-  cell_first[0] = 0;
+  st.grid_cells = fg.grid.cells();
+  st.cell_faces = fg.pairs;
 
   // The V.C. table starts unknown except where it must never be used.
   for (uint32_t v = 0; v < topo.n_vertices; ++v) {
@@ -168,11 +119,11 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
           p.dir_x = static_cast<int32_t>(dx);
           p.dir_y = static_cast<int32_t>(dy);
           p.dir_z = static_cast<int32_t>(dz);
-          const uint32_t cell =
-              g.cell_of(static_cast<int32_t>(p.x >> 32), static_cast<int32_t>(p.y >> 32));
+          const int32_t cx = static_cast<int32_t>(p.x >> 32);
+          const int32_t cy = static_cast<int32_t>(p.y >> 32);
           q = 0;
-          for (uint32_t k = cell_first[cell]; k < cell_first[cell + 1]; ++k) {
-            const uint32_t t = cell_faces[k];
+          for (const uint32_t* k = fg.begin(cx, cy); k != fg.end(cx, cy); ++k) {
+            const uint32_t t = *k;
             const uint32_t* v = topo.triangles[t].v;
             const Point3 &fa = topo.vertices[v[0]], &fb = topo.vertices[v[1]],
                          &fc = topo.vertices[v[2]];

@@ -2,6 +2,7 @@
 
 #include "memory/carve.h"
 #include "solid/cover.h"
+#include "solid/face_grid.h"
 
 namespace haloplot {
 namespace {
@@ -144,10 +145,14 @@ bool degenerate(const Ctx& c, uint32_t e) {
 
 uint32_t other_end(const SolidEdge& e, uint32_t v) { return e.v0 == v ? e.v1 : e.v0; }
 
-// base(v) from a ray cast along edge (v -> to).
-int32_t cast_base(const Ctx& c, uint32_t v, uint32_t to) {
-  const CoverPoint p = vertex_toward(c.topo.vertices[v], c.topo.vertices[to]);
-  return ray_cast_qi(c.topo, c.front, v, to) - local_cover(c, v, p).total();
+// base(v) from a ray cast along edge (v -> to): only the faces of v's grid cell can cover it.
+int32_t cast_base(const Ctx& c, const FaceGrid& fg, uint32_t v, uint32_t to) {
+  const Point3 pv = c.topo.vertices[v];
+  const CoverPoint p = vertex_toward(pv, c.topo.vertices[to]);
+  int32_t q = 0;
+  for (const uint32_t* t = fg.begin(pv.x, pv.y); t != fg.end(pv.x, pv.y); ++t)
+    q += face_cover(c, *t, p);
+  return q - local_cover(c, v, p).total();
 }
 
 }  // namespace
@@ -165,6 +170,7 @@ int32_t ray_cast_qi(const Topology& topo, const uint8_t* front, uint32_t from, u
 
 size_t qi_bytes(const Topology& topo) {
   ByteCounter c;
+  c.take<uint8_t>(face_grid_bytes(topo));
   c.take<int32_t>(topo.n_vertices);
   c.take<int32_t>(topo.n_edges);
   c.take<uint32_t>(topo.n_vertices);
@@ -177,11 +183,16 @@ Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cu
   if (!topo.check.manifold()) return Status::kNotManifold;
   if (cutset.n_edges != topo.n_edges) return Status::kBadParameter;
   Carver carve(buffer, bytes);
+  const size_t grid_bytes = face_grid_bytes(topo);
+  uint8_t* grid_buffer = carve.take<uint8_t>(grid_bytes);
   QiState s;
   s.base = carve.take<int32_t>(topo.n_vertices);
   s.q_at_v0 = carve.take<int32_t>(topo.n_edges);
   uint32_t* queue = carve.take<uint32_t>(topo.n_vertices);
   if (carve.short_) return Status::kWorkspaceTooSmall;
+  FaceGrid fg;
+  const Status gs = build_face_grid(topo, grid_buffer, grid_bytes, &fg);
+  if (gs != Status::kOk) return gs;
   const Ctx c{topo, front, cutset, inc};
   QiStats st;
   for (uint32_t v = 0; v < topo.n_vertices; ++v) s.base[v] = kQiUnknown;
@@ -194,7 +205,7 @@ Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cu
     for (uint32_t k = topo.vertex_edge_first[seed]; k < topo.vertex_edge_first[seed + 1]; ++k)
       if (!degenerate(c, topo.vertex_edges[k])) via = topo.vertex_edges[k];
     if (via == kNoFace) continue;
-    s.base[seed] = cast_base(c, seed, other_end(topo.edges[via], seed));
+    s.base[seed] = cast_base(c, fg, seed, other_end(topo.edges[via], seed));
     ++st.ray_casts;
     ++st.components;
     uint32_t head = 0, tail = 0;
@@ -232,7 +243,7 @@ Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cu
           // Two paths disagree: Heger re-initialises. Exact predicates should never get here.
           ++st.conflicts;
           if (!degenerate(c, e)) {
-            s.base[x] = cast_base(c, x, v);
+            s.base[x] = cast_base(c, fg, x, v);
             ++st.ray_casts;
           }
         }

@@ -2,7 +2,8 @@
 // of front faces in front of it; an edge is visible where its QI is 0.
 //
 // Propagation (breadth first, Heger's queue): the QI is found once per connected part by a
-// ray cast at a start vertex, then carried along every edge. Along an edge it changes only
+// ray cast at a start vertex (against the faces of its grid cell, solid/face_grid.h), then
+// carried along every edge. Along an edge it changes only
 //   - where the edge passes behind a fold (H2 or H3) edge: +-1, the sign from the side the
 //     fold's front face lies on (exact orientation). These crossings are CUT's (cut/cut.h).
 //   - where the edge passes exactly through another vertex: the faces around that vertex are

@@ -38,7 +38,7 @@ namespace {
 
 const char* kUsage =
     "usage:\n"
-    "  haloplot demo-scene [--cubes N] -o SCENE.edges\n"
+    "  haloplot demo-scene [--cubes N] -o SCENE.edges|MODEL.obj   (.obj: the cubes as solids)\n"
     "  haloplot random-scene --edges N --length L [--seed S] -o SCENE.edges\n"
     "  haloplot cut SCENE.edges -o SCENE.cut [--lambda X] [--cell G] [--cover exact|bbox]\n"
     "               [--reach R] [--stats]\n"
@@ -212,6 +212,28 @@ int cmd_demo_scene(int argc, char** argv) {
   int64_t cubes = 28;
   std::string error;
   if (!read_int_option(o, "--cubes", 1, 200, &cubes, &error)) return fail(error);
+  const std::string path = o.get("-o");
+  if (path.size() > 4 && path.compare(path.size() - 4, 4, ".obj") == 0) {
+    // The same array as a solid model in world units (side 100, pitch 125), for the
+    // hidden-line modes: six quads per cube, counter-clockwise seen from outside.
+    error = write_atomically(path, [&](std::ostream& out) {
+      out << "# haloplot demo: " << cubes << " x " << cubes
+          << " cubes (HALO paper, Figure 4) as a solid model\n";
+      for (int64_t i = 0; i < cubes; ++i)
+        for (int64_t j = 0; j < cubes; ++j)
+          for (int k = 0; k < 8; ++k)
+            out << "v " << i * 125 + (k & 1) * 100 << ' ' << j * 125 + ((k >> 1) & 1) * 100 << ' '
+                << ((k >> 2) & 1) * 100 << '\n';
+      static const int kFaces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                       {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+      for (int64_t c = 0; c < cubes * cubes; ++c)
+        for (const auto& f : kFaces)
+          out << "f " << c * 8 + f[0] + 1 << ' ' << c * 8 + f[1] + 1 << ' ' << c * 8 + f[2] + 1
+              << ' ' << c * 8 + f[3] + 1 << '\n';
+      return true;
+    });
+    return error.empty() ? 0 : fail(error);
+  }
   CubeArrayParams p;
   p.cubes = int(cubes);
   const std::vector<Edge3> edges = cube_array(p);

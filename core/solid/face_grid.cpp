@@ -1,0 +1,80 @@
+#include "solid/face_grid.h"
+
+#include "geometry/wide.h"
+#include "memory/carve.h"
+
+namespace haloplot {
+namespace {
+
+Grid choose_grid(const Topology& topo) {
+  Grid g;
+  int32_t x0 = kCoordMax, y0 = kCoordMax, x1 = 0, y1 = 0;
+  for (uint32_t v = 0; v < topo.n_vertices; ++v) {
+    x0 = min_i32(x0, topo.vertices[v].x);
+    y0 = min_i32(y0, topo.vertices[v].y);
+    x1 = max_i32(x1, topo.vertices[v].x);
+    y1 = max_i32(y1, topo.vertices[v].y);
+  }
+  if (topo.n_vertices == 0) x0 = y0 = x1 = y1 = 0;
+  const uint32_t per_axis = isqrt_u64(topo.n_triangles) + 1;
+  const int32_t extent = max_i32(x1 - x0, y1 - y0) + 1;
+  g.ox = x0;
+  g.oy = y0;
+  g.set_cell(max_i32(1, static_cast<int32_t>((uint32_t(extent) + per_axis - 1) / per_axis)));
+  g.nx = g.divide(static_cast<uint32_t>(x1 - x0)) + 1;
+  g.ny = g.divide(static_cast<uint32_t>(y1 - y0)) + 1;
+  return g;
+}
+
+Edge3 face_box(const Topology& topo, uint32_t t) {
+  const uint32_t* v = topo.triangles[t].v;
+  const Point3 a = topo.vertices[v[0]], b = topo.vertices[v[1]], c = topo.vertices[v[2]];
+  Edge3 box;
+  box.a = Point3{min_i32(a.x, min_i32(b.x, c.x)), min_i32(a.y, min_i32(b.y, c.y)), 0};
+  box.b = Point3{max_i32(a.x, max_i32(b.x, c.x)), max_i32(a.y, max_i32(b.y, c.y)), 0};
+  return box;
+}
+
+uint64_t count_pairs(const Topology& topo, const Grid& g) {
+  uint64_t n = 0;
+  for (uint32_t t = 0; t < topo.n_triangles; ++t)
+    for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0, [&](uint32_t) { ++n; });
+  return n;
+}
+
+}  // namespace
+
+size_t face_grid_bytes(const Topology& topo) {
+  const Grid g = choose_grid(topo);
+  ByteCounter c;
+  c.take<uint32_t>(size_t{g.cells()} + 1);
+  c.take<uint32_t>(count_pairs(topo, g));
+  return c.total + 8;
+}
+
+Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGrid* out) {
+  const Grid g = choose_grid(topo);
+  const uint64_t pairs = count_pairs(topo, g);
+  if (pairs > 0xffffffffu) return Status::kCellPairOverflow;
+  Carver carve(buffer, bytes);
+  uint32_t* first = carve.take<uint32_t>(size_t{g.cells()} + 1);
+  uint32_t* faces = carve.take<uint32_t>(pairs);
+  if (carve.short_) return Status::kWorkspaceTooSmall;
+  for (uint32_t c = 0; c <= g.cells(); ++c) first[c] = 0;
+  for (uint32_t t = 0; t < topo.n_triangles; ++t)
+    for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0,
+                  [&](uint32_t c) { ++first[c + 1]; });
+  for (uint32_t c = 0; c < g.cells(); ++c) first[c + 1] += first[c];
+  for (uint32_t t = 0; t < topo.n_triangles; ++t)
+    for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0,
+                  [&](uint32_t c) { faces[first[c]++] = t; });
+  for (uint32_t c = g.cells(); c > 0; --c) first[c] = first[c - 1];
+  first[0] = 0;
+  out->grid = g;
+  out->first = first;
+  out->faces = faces;
+  out->pairs = static_cast<uint32_t>(pairs);
+  return Status::kOk;
+}
+
+}  // namespace haloplot

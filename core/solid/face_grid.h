@@ -1,0 +1,28 @@
+// Faces in a uniform grid (about one face per cell, each face in every cell its bounding box
+// meets), so "which faces could cover this point" asks one cell instead of every face. The
+// fallback's midpoint tests and the QI method's ray casts both use it.
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "cut/grid.h"
+#include "solid/topology.h"
+#include "status/status.h"
+
+namespace haloplot {
+
+struct FaceGrid {
+  Grid grid;
+  const uint32_t* first = nullptr;  // [cells + 1]
+  const uint32_t* faces = nullptr;
+  uint32_t pairs = 0;
+
+  // The faces whose bounding box may hold the point (x, y) (floors of a rational point).
+  const uint32_t* begin(int32_t x, int32_t y) const { return faces + first[grid.cell_of(x, y)]; }
+  const uint32_t* end(int32_t x, int32_t y) const { return faces + first[grid.cell_of(x, y) + 1]; }
+};
+
+size_t face_grid_bytes(const Topology& topo);  // walks the faces' cells once to count
+Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGrid* out);
+
+}  // namespace haloplot
