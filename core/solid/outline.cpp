@@ -4,6 +4,7 @@
 #include "geometry/predicates.h"
 #include "memory/carve.h"
 #include "solid/cover.h"
+#include "solid/face_grid.h"
 #include "sort/in_place_sort.h"
 
 namespace haloplot {
@@ -56,6 +57,7 @@ void count_arrays(C& c, const Topology& topo, uint32_t n_h3, size_t k) {
   c.template take<uint8_t>(n_h3 + 2 * k);     // segment visible
   c.template take<uint32_t>(n_h3 + 2 * k);    // the walk
   c.template take<uint8_t>(topo.n_vertices);  // vector ends and starts per vertex (A/B)
+  c.template take<uint8_t>(face_grid_bytes(topo));
 }
 
 struct Ctx {
@@ -71,6 +73,7 @@ struct Ctx {
   uint8_t* ends;  // per vertex: low nibble vectors ending, high nibble vectors starting (saturated)
   OutlineStats* st;
   const Incidences* inc;
+  FaceGrid grid;
 
   // A contour edge touched by another vertex (on it, or on one of its ends, or sharing an end's
   // point): collinear overlaps and T-junctions that CUT does not report, so a trace through it
@@ -121,8 +124,10 @@ bool outside_is_empty(const Ctx& c, uint32_t h, uint32_t k) {
   p.y = int64_t{a.y} * kOne + int64_t{b.y - a.y} * m;
   p.dir_x = static_cast<int32_t>(-dy);
   p.dir_y = static_cast<int32_t>(dx);
-  for (uint32_t t = 0; t < c.topo.n_triangles; ++t) {
-    const uint32_t* v = c.topo.triangles[t].v;
+  // Only faces whose bounding box holds the point can hold it: its grid cell's.
+  const int32_t cx = static_cast<int32_t>(p.x >> 32), cy = static_cast<int32_t>(p.y >> 32);
+  for (const uint32_t* t = c.grid.begin(cx, cy); t != c.grid.end(cx, cy); ++t) {
+    const uint32_t* v = c.topo.triangles[*t].v;
     if (projection_cover_halves(c.topo.vertices[v[0]], c.topo.vertices[v[1]], c.topo.vertices[v[2]],
                                 p) != 0)
       return false;
@@ -228,10 +233,15 @@ Status find_outlines(const Topology& topo, const uint8_t* front, const CutSet& c
         carve.take<uint8_t>(n_h3 + 2 * k),
         nullptr,
         &st,
-        &inc};
+        &inc,
+        FaceGrid{}};
   uint32_t* walk = carve.take<uint32_t>(n_h3 + 2 * k);
   c.ends = carve.take<uint8_t>(topo.n_vertices);
+  const size_t grid_bytes = face_grid_bytes(topo);
+  uint8_t* grid_buffer = carve.take<uint8_t>(grid_bytes);
   if (carve.short_) return Status::kWorkspaceTooSmall;
+  const Status gs = build_face_grid(topo, grid_buffer, grid_bytes, &c.grid);
+  if (gs != Status::kOk) return gs;
   st.contour_edges = n_h3;
   st.contour_crossings = static_cast<uint32_t>(crossings);
 
