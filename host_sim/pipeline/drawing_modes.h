@@ -1,8 +1,6 @@
-// The HALO paper's Figure 1 drawing modes for solid models, from the hidden-line pieces:
-//   all             every edge whole (the pieces keep their QI for the .spans file)
-//   hidden-removed  the pieces with QI 0 (and the visible parts of contour diagonals)
-//   hidden-dashed   those, plus the hidden pieces cut into dashes (length and gap in mm)
-//   haloed          not here: HALO needs no faces (CUT and DRAW on the edges)
+// The HALO paper's Figure 1 drawing modes for solid models, from the hidden-line pieces, by
+// the core's strokes (solid/modes.h, the same the controller draws); haloed lines are not
+// here: HALO needs no faces (CUT and DRAW on the edges).
 // --outline adds Kira's outlines as a second pass (a second pen, or the same pen again).
 #pragma once
 #include <cstdint>
@@ -11,10 +9,9 @@
 
 #include "draw/draw.h"
 #include "pipeline/solid_pipeline.h"
+#include "solid/modes.h"
 
 namespace haloplot::host {
-
-enum class SolidMode { kAll, kHiddenRemoved, kHiddenDashed };
 
 struct ModeSpec {
   SolidMode mode = SolidMode::kHiddenRemoved;

@@ -1,28 +1,31 @@
 #include "pipeline/solid_pipeline.h"
 
+#include <algorithm>
 #include <chrono>
-
-#include "solid/incidence.h"
-#include "solid/topology.h"
 
 namespace haloplot::host {
 namespace {
 
-Status collect_qi(void* context, const QiPiece& p) {
-  SolidRun* r = static_cast<SolidRun*>(context);
-  (p.edge < r->n_drawn ? r->pieces : r->contour_diagonals)
-      .push_back(SolidPiece{p.edge, p.t0, p.t1, p.q, p.q != 0});
+struct Collect {
+  SolidRun* run;
+  void keep(const HiddenPiece& p) {
+    if (run->edges.size() <= p.edge) run->edges.resize(p.edge + 1);
+    run->edges[p.edge] = *p.geometry;
+  }
+};
+
+Status collect_piece(void* context, const HiddenPiece& p) {
+  Collect* c = static_cast<Collect*>(context);
+  c->keep(p);
+  (p.edge < c->run->n_drawn ? c->run->pieces : c->run->contour_diagonals)
+      .push_back(SolidPiece{p.edge, p.t0, p.t1, p.q, p.hidden});
   return Status::kOk;
 }
 
-Status collect_outline(void* context, const OutlineSegment& s) {
-  static_cast<std::vector<OutlineSegment>*>(context)->push_back(s);
-  return Status::kOk;
-}
-
-Status collect_fallback(void* context, const FallbackPiece& p) {
-  static_cast<std::vector<SolidPiece>*>(context)->push_back(
-      SolidPiece{p.edge, p.t0, p.t1, p.q, p.hidden});
+Status collect_outline(void* context, const HiddenPiece& p) {
+  Collect* c = static_cast<Collect*>(context);
+  c->keep(p);
+  c->run->outline.push_back(OutlineSegment{p.edge, p.t0, p.t1});
   return Status::kOk;
 }
 
@@ -39,6 +42,23 @@ std::string check_text(const MeshCheck& c) {
   return s;
 }
 
+std::string reason_text(const HiddenReport& r) {
+  switch (r.reason) {
+    case FallbackReason::kNone:
+      return "";
+    case FallbackReason::kAsked:
+      return "asked for";
+    case FallbackReason::kNotManifold:
+      return check_text(r.check);
+    case FallbackReason::kLooseEdges:
+      return std::to_string(r.check.loose_edges) + " loose edges (lines on no face)";
+    case FallbackReason::kConflicts:
+      return std::to_string(r.qi.conflicts) +
+             " vertices reached with two different QIs (does the mesh pierce itself?)";
+  }
+  return "";
+}
+
 }  // namespace
 
 Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackParams kira,
@@ -52,95 +72,58 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
   in.n_edges = uint32_t(scene.edge_pairs.size() / 2);
   in.triangles = scene.triangles.data();
   in.n_triangles = uint32_t(scene.triangles.size());
-
-  out->bytes_topology = topology_bytes(in);
-  std::vector<uint64_t> topo_buf(out->bytes_topology / 8 + 1);
-  Topology topo;
-  Status s = build_topology(in, topo_buf.data(), topo_buf.size() * 8, &topo);
-  if (!ok(s)) return s;
-  out->check = topo.check;
-  std::vector<uint8_t> front(topo.n_triangles);
-  out->classes = classify(&topo, front.data());
-
-  std::vector<Edge3> all(topo.n_edges);
-  for (uint32_t e = 0; e < topo.n_edges; ++e) all[e] = topo.edge3(e);
-  out->edges = all;
-  out->n_drawn = topo.n_drawn;
-  HostCut cut;
-  s = host_cut(all, CutParams{}, &cut);
-  if (!ok(s)) return s;
-  out->cut = cut.stats;
-  out->bytes_cut = cut.scratch_bytes + cutset_bytes(cut.set.n_edges, cut.set.n_crossings);
-
-  uint32_t capacity = topo.n_vertices + 64, needed = 0;
-  std::vector<uint64_t> inc_buf;
-  Incidences inc;
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    out->bytes_incidence = incidence_bytes(topo, capacity);
-    inc_buf.assign(out->bytes_incidence / 8 + 1, 0);
-    s = find_incidences(topo, capacity, inc_buf.data(), inc_buf.size() * 8, &inc, &needed);
-    if (s != Status::kIncidenceCapacity) break;
-    capacity = needed;
+  HiddenParams params;
+  params.method = method;
+  params.outline = outlines;
+  params.kira = kira.use_classes || kira.use_vc;
+  // First guesses; the core says what a retry needs (never a wrong or partial answer).
+  params.crossing_capacity = 4 * (in.n_edges + 3 * in.n_triangles) + 1024;
+  params.incidence_capacity = in.n_vertices + 64;
+  size_t bytes = topology_bytes(in) * 4 + (size_t{1} << 20);
+  HiddenReport r;
+  Status s = Status::kOk;
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    std::vector<uint64_t> buffer(bytes / 8 + 1);
+    Collect c{out};
+    out->pieces.clear();
+    out->contour_diagonals.clear();
+    out->outline.clear();
+    out->n_drawn = in.n_edges;
+    s = hidden_lines(in, params, buffer.data(), buffer.size() * 8,
+                     HiddenSink{nullptr, &collect_piece, &collect_outline, &c}, &r);
+    if (s == Status::kWorkspaceTooSmall)
+      bytes = std::max(bytes * 2, r.bytes_needed * 2);
+    else if (s == Status::kCrossingCapacity)
+      params.crossing_capacity = uint32_t(r.cut.crossings + r.cut.near_misses);
+    else if (s == Status::kIncidenceCapacity)
+      params.incidence_capacity = r.incidences_needed;
+    else
+      break;
   }
-  if (!ok(s)) return s;
-  out->incidences = inc.n;
-  out->coincident_vertices = inc.coincident_vertices;
-
-  const bool manifold = topo.check.manifold() && topo.check.loose_edges == 0;
-  bool use_qi = method == HiddenMethod::kQi || (method == HiddenMethod::kAuto && manifold);
-  if (method == HiddenMethod::kQi && !topo.check.manifold()) return Status::kNotManifold;
-  if (use_qi) {
-    out->bytes_qi = qi_bytes(topo);
-    std::vector<uint64_t> qi_buf(out->bytes_qi / 8 + 1);
-    QiState state;
-    s = propagate_qi(topo, front.data(), cut.set, inc, qi_buf.data(), qi_buf.size() * 8, &state,
-                     &out->qi);
-    if (!ok(s)) return s;
-    s = emit_qi_pieces(topo, front.data(), cut.set, inc, state, QiSink{&collect_qi, out});
-    if (!ok(s)) return s;
-    if (outlines) {
-      out->bytes_outline = outline_bytes(topo, cut.set, inc);
-      std::vector<uint64_t> ol_buf(out->bytes_outline / 8 + 1);
-      s = find_outlines(topo, front.data(), cut.set, inc, state, ol_buf.data(), ol_buf.size() * 8,
-                        OutlineSink{&collect_outline, &out->outline}, &out->outline_stats);
-      if (!ok(s)) return s;
-    }
-    out->used_qi = true;
-    if (method == HiddenMethod::kAuto && out->qi.conflicts > 0) {
-      // Exact propagation only disagrees with itself on a mesh that pierces itself (or
-      // another): the fallback asks the faces directly instead.
-      out->fallback_reason = std::to_string(out->qi.conflicts) +
-                             " vertices reached with two different QIs (does the mesh pierce "
-                             "itself?)";
-      out->used_qi = false;
-      out->pieces.clear();
-      out->contour_diagonals.clear();
-      out->outline.clear();
-      use_qi = false;
-    }
-  }
-  if (!use_qi) {
-    if (out->fallback_reason.empty())  // else the QI conflicts above say why
-      out->fallback_reason = method != HiddenMethod::kAuto
-                                 ? "asked for"
-                                 : (topo.check.manifold() ? std::to_string(topo.check.loose_edges) +
-                                                                " loose edges (lines on no face)"
-                                                          : check_text(topo.check));
-    FallbackParams p = kira;
-    if (!topo.check.manifold()) {
-      // Open or broken surfaces: both sides of a face show, and no class or V.C. holds.
-      p.any_facing = true;
-      p.use_classes = p.use_vc = false;
-    }
-    out->bytes_fallback = fallback_bytes(topo);
-    std::vector<uint64_t> fb_buf(out->bytes_fallback / 8 + 1);
-    s = run_fallback(topo, front.data(), cut.set, inc, p, fb_buf.data(), fb_buf.size() * 8,
-                     FallbackSink{&collect_fallback, &out->pieces}, &out->fallback);
-    if (!ok(s)) return s;
-  }
+  out->check = r.check;
+  out->classes = r.classes;
+  out->cut = r.cut;
+  out->qi = r.qi;
+  out->fallback = r.fallback;
+  out->outline_stats = r.outline;
+  out->incidences = r.incidences;
+  out->coincident_vertices = r.coincident_vertices;
+  out->used_qi = r.used_qi;
+  out->fallback_reason = reason_text(r);
+  out->bytes_topology = r.bytes_topology;
+  out->bytes_incidence = r.bytes_incidence;
+  out->bytes_cut = r.bytes_cut;
+  out->bytes_qi = r.bytes_qi;
+  out->bytes_fallback = r.bytes_fallback;
+  out->bytes_outline = r.bytes_outline;
+  // Every drawn edge's geometry, also for edges that gave no piece (seen end-on).
+  if (out->edges.size() < in.n_edges) out->edges.resize(in.n_edges);
+  for (uint32_t e = 0; e < in.n_edges; ++e)
+    out->edges[e] =
+        Edge3{scene.vertices[scene.edge_pairs[2 * e]], scene.vertices[scene.edge_pairs[2 * e + 1]]};
   out->ms_total =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  return Status::kOk;
+  return s;
 }
 
 }  // namespace haloplot::host

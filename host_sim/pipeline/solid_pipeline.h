@@ -10,6 +10,7 @@
 #include "pipeline/host_pipeline.h"
 #include "solid/classify.h"
 #include "solid/fallback.h"
+#include "solid/hidden_lines.h"
 #include "solid/outline.h"
 #include "solid/qi.h"
 
@@ -20,8 +21,6 @@ struct SolidScene {
   std::vector<uint32_t> edge_pairs;  // drawn edges, output order
   std::vector<Triangle> triangles;
 };
-
-enum class HiddenMethod { kAuto, kQi, kFallback };
 
 // A piece of a drawn edge: t in Q0.32 from its first vertex; q in halves (kQiUnknown when a
 // class or the V.C. table decided, then only `hidden` is known).

@@ -1,0 +1,170 @@
+#include "solid/hidden_lines.h"
+
+#include "memory/carve.h"
+#include "solid/incidence.h"
+
+namespace haloplot {
+namespace {
+
+// The buffer, carved front to back; release() gives back everything after a mark.
+struct Arena {
+  uint8_t* base = nullptr;
+  size_t size = 0, used = 0, high = 0, need = 0;
+
+  Arena(void* buffer, size_t bytes) {
+    const uintptr_t p = reinterpret_cast<uintptr_t>(buffer);
+    const uintptr_t aligned = (p + 7) & ~uintptr_t{7};
+    base = reinterpret_cast<uint8_t*>(aligned);
+    size = buffer == nullptr || bytes < aligned - p ? 0 : bytes - (aligned - p);
+  }
+  uint8_t* take(size_t n) {
+    n = carve_round(n);
+    if (n > size - used) {
+      need = used + n;
+      return nullptr;
+    }
+    uint8_t* p = base + used;
+    used += n;
+    if (used > high) high = used;
+    return p;
+  }
+};
+
+struct Adapter {
+  HiddenSink sink;
+  const Edge3* edges;
+};
+
+Status qi_piece(void* ctx, const QiPiece& p) {
+  const Adapter* a = static_cast<const Adapter*>(ctx);
+  return a->sink.piece(a->sink.context,
+                       HiddenPiece{p.edge, a->edges + p.edge, p.t0, p.t1, p.q, p.q != 0});
+}
+
+Status fallback_piece(void* ctx, const FallbackPiece& p) {
+  const Adapter* a = static_cast<const Adapter*>(ctx);
+  return a->sink.piece(a->sink.context,
+                       HiddenPiece{p.edge, a->edges + p.edge, p.t0, p.t1, p.q, p.hidden});
+}
+
+Status outline_piece(void* ctx, const OutlineSegment& s) {
+  const Adapter* a = static_cast<const Adapter*>(ctx);
+  if (a->sink.outline == nullptr) return Status::kOk;
+  return a->sink.outline(a->sink.context,
+                         HiddenPiece{s.edge, a->edges + s.edge, s.t0, s.t1, 0, false});
+}
+
+Status short_of(const Arena& a, HiddenReport* r) {
+  r->bytes_needed = a.need;
+  r->bytes_used = a.high;
+  return Status::kWorkspaceTooSmall;
+}
+
+}  // namespace
+
+Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buffer, size_t bytes,
+                    HiddenSink sink, HiddenReport* report) {
+  HiddenReport r;
+  Arena arena(buffer, bytes);
+  Status s;
+
+  // Topology, classes, and every edge as CUT sees it.
+  r.bytes_topology = topology_bytes(in);
+  uint8_t* topo_mem = arena.take(r.bytes_topology);
+  if (topo_mem == nullptr) return *report = r, short_of(arena, report);
+  Topology topo;
+  s = build_topology(in, topo_mem, r.bytes_topology, &topo);
+  if (s != Status::kOk) return *report = r, s;
+  r.check = topo.check;
+  r.n_drawn = topo.n_drawn;
+  r.n_edges = topo.n_edges;
+  uint8_t* front = arena.take(topo.n_triangles);
+  Edge3* edges = reinterpret_cast<Edge3*>(arena.take(size_t{topo.n_edges} * sizeof(Edge3)));
+  if (front == nullptr || edges == nullptr) return *report = r, short_of(arena, report);
+  r.classes = classify(&topo, front);
+  for (uint32_t e = 0; e < topo.n_edges; ++e) edges[e] = topo.edge3(e);
+
+  // CUT; its scratch is given back afterwards.
+  CutPlan plan;
+  s = plan_cut(edges, topo.n_edges, params.cut, &plan);
+  if (s != Status::kOk) return *report = r, s;
+  const size_t cutset_size = cutset_bytes(topo.n_edges, params.crossing_capacity);
+  r.bytes_cut = cutset_size + plan.scratch_bytes;
+  uint8_t* cutset_mem = arena.take(cutset_size);
+  const size_t mark = arena.used;
+  uint8_t* cut_scratch = arena.take(plan.scratch_bytes);
+  if (cutset_mem == nullptr || cut_scratch == nullptr) return *report = r, short_of(arena, report);
+  CutSet cutset;
+  s = run_cut(plan, edges, cut_scratch, plan.scratch_bytes, cutset_mem, cutset_size, &cutset,
+              &r.cut);
+  if (s != Status::kOk) return *report = r, s;
+  arena.used = mark;
+
+  // The singular touches CUT leaves out.
+  r.bytes_incidence = incidence_bytes(topo, params.incidence_capacity);
+  uint8_t* inc_mem = arena.take(r.bytes_incidence);
+  if (inc_mem == nullptr) return *report = r, short_of(arena, report);
+  Incidences inc;
+  s = find_incidences(topo, params.incidence_capacity, inc_mem, r.bytes_incidence, &inc,
+                      &r.incidences_needed);
+  if (s != Status::kOk) return *report = r, s;
+  r.incidences = inc.n;
+  r.coincident_vertices = inc.coincident_vertices;
+
+  // The method.
+  const bool manifold = topo.check.manifold();
+  if (params.method == HiddenMethod::kQi && !manifold) return *report = r, Status::kNotManifold;
+  bool use_qi = params.method == HiddenMethod::kQi ||
+                (params.method == HiddenMethod::kAuto && manifold && topo.check.loose_edges == 0);
+  if (!use_qi)
+    r.reason = params.method == HiddenMethod::kFallback
+                   ? FallbackReason::kAsked
+                   : (manifold ? FallbackReason::kLooseEdges : FallbackReason::kNotManifold);
+  Adapter adapter{sink, edges};
+  const size_t before_method = arena.used;
+  if (use_qi) {
+    r.bytes_qi = qi_bytes(topo);
+    uint8_t* qi_mem = arena.take(r.bytes_qi);
+    if (qi_mem == nullptr) return *report = r, short_of(arena, report);
+    QiState state;
+    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi);
+    if (s != Status::kOk) return *report = r, s;
+    if (params.method == HiddenMethod::kAuto && r.qi.conflicts > 0) {
+      use_qi = false;  // the mesh pierces itself: ask the faces directly
+      r.reason = FallbackReason::kConflicts;
+      arena.used = before_method;
+    } else {
+      uint8_t* outline_mem = nullptr;
+      if (params.outline) {
+        r.bytes_outline = outline_bytes(topo, cutset, inc);
+        outline_mem = arena.take(r.bytes_outline);
+        if (outline_mem == nullptr) return *report = r, short_of(arena, report);
+      }
+      if (sink.begin != nullptr)
+        sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);
+      r.used_qi = true;
+      s = emit_qi_pieces(topo, front, cutset, inc, state, QiSink{&qi_piece, &adapter});
+      if (s == Status::kOk && params.outline)
+        s = find_outlines(topo, front, cutset, inc, state, outline_mem, r.bytes_outline,
+                          OutlineSink{&outline_piece, &adapter}, &r.outline);
+      r.bytes_used = arena.high;
+      *report = r;
+      return s;
+    }
+  }
+  FallbackParams fp;
+  fp.any_facing = !manifold;
+  fp.use_classes = fp.use_vc = params.kira && manifold;
+  r.bytes_fallback = fallback_bytes(topo);
+  uint8_t* fb_mem = arena.take(r.bytes_fallback);
+  if (fb_mem == nullptr) return *report = r, short_of(arena, report);
+  if (sink.begin != nullptr)
+    sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);
+  s = run_fallback(topo, front, cutset, inc, fp, fb_mem, r.bytes_fallback,
+                   FallbackSink{&fallback_piece, &adapter}, &r.fallback);
+  r.bytes_used = arena.high;
+  *report = r;
+  return s;
+}
+
+}  // namespace haloplot

@@ -1,0 +1,84 @@
+// Hidden lines of a solid model in one call, for the host tool and the controller alike:
+// topology and checks, classes, CUT over every edge, incidences, then Appel/Heger QI (with
+// Kira's outlines when asked) on a closed oriented manifold, or the topology-free fallback
+// (with Kira's V.C. table and classes when the mesh allows) otherwise.
+//
+// Memory: one caller buffer, carved stage by stage; CUT's scratch is given back before the
+// incidences are found. Before the first piece is emitted every stage has carved what it
+// needs, and the sink is told where the unused tail of the buffer begins (the controller's
+// job puts its strokes there). A short buffer fails with kWorkspaceTooSmall and says how many
+// bytes the run had reached (bytes_needed, a lower bound: later stages were not sized);
+// kCrossingCapacity and kIncidenceCapacity say the counts a retry needs.
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "cut/cut.h"
+#include "solid/classify.h"
+#include "solid/fallback.h"
+#include "solid/outline.h"
+#include "solid/qi.h"
+#include "status/status.h"
+
+namespace haloplot {
+
+enum class HiddenMethod : uint8_t { kAuto = 0, kQi = 1, kFallback = 2 };
+
+// Why the fallback drew the picture (kNone when QI did).
+enum class FallbackReason : uint8_t {
+  kNone = 0,
+  kAsked,        // HiddenMethod::kFallback
+  kNotManifold,  // MeshCheck says how
+  kLooseEdges,   // lines on no face: QI has no faces to carry them
+  kConflicts,    // QI met vertices with two values: the mesh pierces itself
+};
+
+struct HiddenParams {
+  HiddenMethod method = HiddenMethod::kAuto;
+  bool outline = false;  // Kira's outlines (QI only)
+  bool kira = true;      // the fallback's V.C. table and class shortcuts, on manifold meshes
+  CutParams cut;
+  uint32_t crossing_capacity = 0;   // CUTSET records (CUT says the count if short)
+  uint32_t incidence_capacity = 0;  // vertex-on-edge incidences
+};
+
+struct HiddenReport {
+  MeshCheck check;
+  ClassCounts classes;
+  CutStats cut;
+  QiStats qi;
+  FallbackStats fallback;
+  OutlineStats outline;
+  uint32_t incidences = 0, incidences_needed = 0, coincident_vertices = 0;
+  uint32_t n_drawn = 0, n_edges = 0;
+  bool used_qi = false;
+  FallbackReason reason = FallbackReason::kNone;
+  size_t bytes_topology = 0, bytes_cut = 0, bytes_incidence = 0, bytes_qi = 0, bytes_fallback = 0,
+         bytes_outline = 0;
+  size_t bytes_used = 0;    // the buffer's high-water mark
+  size_t bytes_needed = 0;  // on kWorkspaceTooSmall: at least this many
+};
+
+// A piece of a drawn edge (edge < n_drawn) or of a contour diagonal (edge >= n_drawn), with
+// the edge's projection for rounding; q in halves or kQiUnknown (class or V.C. decided).
+struct HiddenPiece {
+  uint32_t edge;
+  const Edge3* geometry;
+  int64_t t0, t1;
+  int32_t q;
+  bool hidden;
+};
+
+struct HiddenSink {
+  // Called once, before the first piece: [tail, tail + tail_bytes) of the buffer is free
+  // until hidden_lines() returns. May be null.
+  void (*begin)(void* context, uint8_t* tail, size_t tail_bytes);
+  Status (*piece)(void* context, const HiddenPiece& piece);
+  Status (*outline)(void* context, const HiddenPiece& segment);  // may be null
+  void* context;
+};
+
+Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buffer, size_t bytes,
+                    HiddenSink sink, HiddenReport* report);
+
+}  // namespace haloplot

@@ -1,0 +1,55 @@
+// The drawing modes as strokes: which parts of a piece of an edge the pen draws. Shared by the
+// host tool and the controller so both draw the same strokes in the same order.
+//   all             every piece of every input edge
+//   hidden-removed  pieces with QI 0 (and the visible parts of contour diagonals)
+//   hidden-dashed   those, plus the hidden pieces cut into dashes: `dash` steps drawn, `gap`
+//                   steps skipped, measured along the piece from its start
+#pragma once
+#include <stdint.h>
+
+#include "draw/draw.h"
+#include "status/status.h"
+
+namespace haloplot {
+
+enum class SolidMode : uint8_t { kAll = 0, kHiddenRemoved = 1, kHiddenDashed = 2 };
+
+struct StrokeStyle {
+  SolidMode mode = SolidMode::kHiddenRemoved;
+  int32_t dash = 160, gap = 80;  // steps (2 mm and 1 mm at 80 steps per mm), both >= 1
+};
+
+// Calls emit(span) for each stroke of the piece [t0, t1) of edge e (index `edge`; a contour
+// diagonal when `diagonal`). Returns the first status emit returns that is not kOk.
+template <typename Emit>
+Status piece_strokes(const Edge3& e, uint32_t edge, bool diagonal, int64_t t0, int64_t t1,
+                     bool hidden, const StrokeStyle& style, Emit emit);
+
+// The length of the edge on paper in whole steps (at least 1): the dash scale.
+int64_t paper_length(const Edge3& e);
+
+inline Span make_stroke(const Edge3& e, uint32_t edge, int64_t t0, int64_t t1) {
+  Span s{edge, t0, t1, 0, 0, 0, 0};
+  span_point(e, t0, &s.x0, &s.y0);
+  span_point(e, t1, &s.x1, &s.y1);
+  return s;
+}
+
+template <typename Emit>
+Status piece_strokes(const Edge3& e, uint32_t edge, bool diagonal, int64_t t0, int64_t t1,
+                     bool hidden, const StrokeStyle& style, Emit emit) {
+  if (style.mode == SolidMode::kAll && diagonal) return Status::kOk;  // not an input edge
+  if (!hidden || style.mode == SolidMode::kAll) return emit(make_stroke(e, edge, t0, t1));
+  if (style.mode != SolidMode::kHiddenDashed || diagonal) return Status::kOk;
+  // Dashes in Q0.32 of this edge; the dash rounds up so it is never shorter than asked.
+  const int64_t len = paper_length(e);
+  const int64_t dash = (int64_t{style.dash} << 32) / len + 1;
+  const int64_t period = dash + (int64_t{style.gap} << 32) / len;
+  for (int64_t t = t0; t < t1; t += period) {
+    const Status s = emit(make_stroke(e, edge, t, t + dash < t1 ? t + dash : t1));
+    if (s != Status::kOk) return s;
+  }
+  return Status::kOk;
+}
+
+}  // namespace haloplot
