@@ -1,5 +1,7 @@
 #include "job/job.h"
 
+#include "solid/modes.h"
+
 namespace haloplot {
 namespace {
 
@@ -7,6 +9,10 @@ size_t align8(size_t v) { return (v + 7) & ~size_t{7}; }
 
 bool needs_faces(DrawingEffect d) {
   return d != DrawingEffect::kAllEdges && d != DrawingEffect::kHaloed;
+}
+
+bool hidden_line_drawing(DrawingEffect d) {
+  return d == DrawingEffect::kHiddenRemoved || d == DrawingEffect::kHiddenDashed;
 }
 
 struct SpanCollector {
@@ -155,6 +161,88 @@ Status job_redraw(const JobSpec& spec, uint32_t n, uint32_t crossing_capacity, v
   if (counters) *counters = c;
   if (!ok(s)) return s;
   *job = next;
+  return Status::kOk;
+}
+
+namespace {
+
+// Strokes gathered in the hidden-line run's free tail.
+struct StrokeCollector {
+  Segment2* out = nullptr;
+  uint32_t capacity = 0, count = 0;
+  StrokeStyle style;
+  uint32_t n_drawn = 0;
+
+  Status add(const Span& s) {
+    if (count == capacity) return Status::kSinkFull;
+    out[count++] = Segment2{s.x0, s.y0, s.x1, s.y1};
+    return Status::kOk;
+  }
+  static void begin(void* ctx, uint8_t* tail, size_t bytes) {
+    auto* self = static_cast<StrokeCollector*>(ctx);
+    self->out = reinterpret_cast<Segment2*>(tail);
+    const size_t n = bytes / sizeof(Segment2);
+    self->capacity = n > 0x7fffffffu ? 0x7fffffffu : uint32_t(n);
+  }
+  static Status piece(void* ctx, const HiddenPiece& p) {
+    auto* self = static_cast<StrokeCollector*>(ctx);
+    return piece_strokes(*p.geometry, p.edge, p.edge >= self->n_drawn, p.t0, p.t1, p.hidden,
+                         self->style, [self](const Span& s) { return self->add(s); });
+  }
+  static Status outline(void* ctx, const HiddenPiece& p) {
+    auto* self = static_cast<StrokeCollector*>(ctx);
+    return self->add(make_stroke(*p.geometry, p.edge, p.t0, p.t1));
+  }
+};
+
+}  // namespace
+
+Status job_prepare_solid(const JobSpec& spec, const SolidInput& in, uint32_t crossing_capacity,
+                         uint32_t incidence_capacity, void* buffer, size_t buffer_bytes,
+                         PreparedJob* out, JobCounters* counters, HiddenReport* report) {
+  if (!hidden_line_drawing(spec.drawing)) return Status::kBadParameter;
+  if (spec.hidden.dash < 1 || spec.hidden.gap < 1 || spec.hidden.dash > kCoordMax ||
+      spec.hidden.gap > kCoordMax)
+    return Status::kBadParameter;
+  Status s = validate(spec.machine);
+  if (!ok(s)) return s;
+  // The path stage wants 8-byte alignment from the front of the buffer.
+  uint8_t* base =
+      reinterpret_cast<uint8_t*>((reinterpret_cast<uintptr_t>(buffer) + 7) & ~uintptr_t{7});
+  const size_t lost = size_t(base - static_cast<uint8_t*>(buffer));
+  if (buffer_bytes < lost) return Status::kWorkspaceTooSmall;
+  buffer_bytes -= lost;
+  HiddenParams hp;
+  hp.method = spec.hidden.method;
+  hp.outline = spec.hidden.outline;
+  hp.cut = spec.cut;
+  hp.crossing_capacity = crossing_capacity;
+  hp.incidence_capacity = incidence_capacity;
+  StrokeCollector collect;
+  collect.style =
+      StrokeStyle{spec.drawing == DrawingEffect::kHiddenDashed ? SolidMode::kHiddenDashed
+                                                               : SolidMode::kHiddenRemoved,
+                  spec.hidden.dash, spec.hidden.gap};
+  collect.n_drawn = in.n_edges;
+  JobCounters c;
+  s = hidden_lines(in, hp, base, buffer_bytes,
+                   HiddenSink{&StrokeCollector::begin, &StrokeCollector::piece,
+                              &StrokeCollector::outline, &collect},
+                   report);
+  c.cut = report->cut;
+  ++c.cut_runs;
+  if (counters) *counters = c;
+  if (!ok(s)) return s;
+  // The strokes to the front (the run's memory is dead now); forward copy, since they move down.
+  Segment2* front = reinterpret_cast<Segment2*>(base);
+  for (uint32_t i = 0; i < collect.count; ++i) front[i] = collect.out[i];
+  SpanCollector spans{front, collect.count, collect.count};
+  PreparedJob job;
+  s = plan_stage(spec, base, 0, align8(size_t{collect.count} * sizeof(Segment2)), buffer_bytes,
+                 spans, &job, &c);
+  if (counters) *counters = c;
+  if (!ok(s)) return s;
+  *out = job;
   return Status::kOk;
 }
 

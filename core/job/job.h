@@ -10,6 +10,7 @@
 #include "draw/draw.h"
 #include "motion/machine.h"
 #include "motion/path_plan.h"
+#include "solid/hidden_lines.h"
 #include "status/status.h"
 
 namespace haloplot {
@@ -23,8 +24,16 @@ enum class DrawingEffect : uint8_t {
   kHatch,          // hatched visible faces: the hidden-surface issue
 };
 
+// The hidden-line drawings' settings (kHiddenRemoved, kHiddenDashed).
+struct HiddenJob {
+  HiddenMethod method = HiddenMethod::kAuto;
+  bool outline = false;          // redraw Kira's outlines last
+  int32_t dash = 160, gap = 80;  // hidden-dashed: steps drawn and skipped
+};
+
 struct JobSpec {
   DrawingEffect drawing = DrawingEffect::kHaloed;
+  HiddenJob hidden;
   DrawParams draw;  // halo width and mode
   CutParams cut;    // grid choices (and reach for the exact halo)
   Machine machine;
@@ -68,6 +77,15 @@ Status job_bytes(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t c
 
 Status job_prepare(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
                    void* buffer, size_t buffer_bytes, PreparedJob* out, JobCounters* counters);
+
+// A hidden-line drawing of a solid (spec.drawing kHiddenRemoved or kHiddenDashed): the
+// hidden-line run (solid/hidden_lines.h) in the buffer, its strokes (solid/modes.h) gathered
+// in the run's free tail, then moved to the front for the path. kCrossingCapacity and
+// kIncidenceCapacity: *report says the counts a retry needs; kSinkFull: the strokes did not
+// fit beside the run (a larger buffer, or a simpler scene).
+Status job_prepare_solid(const JobSpec& spec, const SolidInput& in, uint32_t crossing_capacity,
+                         uint32_t incidence_capacity, void* buffer, size_t buffer_bytes,
+                         PreparedJob* out, JobCounters* counters, HiddenReport* report);
 
 // Re-plot with another halo width (spec.draw): DRAW and the path run again from the CUTSET
 // that job_prepare() left at the start of the same buffer; CUT does not run (the paper's

@@ -28,8 +28,9 @@ enum class FrameType : uint8_t {
   kSetEffects = 0x13,
   kUploadVertices = 0x14,     // world vertices, projected with the view on the controller
   kUploadEdgeIndices = 0x15,  // vertex index pairs
-  kUploadFaces = 0x16,        // faces: refused until the solid-models issue lands
+  kUploadFaces = 0x16,        // triangles (vertex indices + polygon id) for hidden lines
   kSetMachine = 0x17,
+  kSetHidden = 0x18,  // hidden-line method, outline pass, dash and gap
   kPlot = 0x20,
   kReplot = 0x21,  // another halo width: DRAW only, CUT's result is kept
   kQueryStatus = 0x30,

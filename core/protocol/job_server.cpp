@@ -9,6 +9,11 @@ size_t align8(size_t v) { return (v + 7) & ~size_t{7}; }
 size_t world_bytes(const UploadBegin& s) { return align8(size_t{s.vertices} * sizeof(Point3)); }
 size_t pair_bytes(const UploadBegin& s) { return align8(size_t{s.edges} * 2 * sizeof(uint32_t)); }
 size_t edge_bytes(const UploadBegin& s) { return align8(size_t{s.edges} * sizeof(Edge3)); }
+size_t face_bytes(const UploadBegin& s) { return align8(size_t{s.faces} * sizeof(Triangle)); }
+
+bool hidden_line_drawing(DrawingEffect d) {
+  return d == DrawingEffect::kHiddenRemoved || d == DrawingEffect::kHiddenDashed;
+}
 
 }  // namespace
 
@@ -23,8 +28,9 @@ JobServer::JobServer(uint8_t* arena, size_t arena_bytes, uint8_t* rx_buffer, siz
 size_t JobServer::job_offset() const {
   // The indexed format keeps the world vertices and the pairs (a new view re-projects them)
   // in front of the projected edges.
-  const size_t front =
-      scene_.format == SceneFormat::kIndexed ? world_bytes(scene_) + pair_bytes(scene_) : 0;
+  const size_t front = scene_.format == SceneFormat::kIndexed
+                           ? world_bytes(scene_) + pair_bytes(scene_) + face_bytes(scene_)
+                           : 0;
   return front + edge_bytes(scene_);
 }
 
@@ -93,7 +99,9 @@ Status JobServer::act(const Frame& f) {
     case FrameType::kUploadEdgeIndices:
       return upload_records(type, f.payload, f.length);
     case FrameType::kUploadFaces:
-      return Status::kUnsupported;  // faces arrive with the solid-models issue
+      return upload_records(type, f.payload, f.length);
+    case FrameType::kSetHidden:
+      return decode_hidden(f.payload, f.length, &spec_.hidden);
     case FrameType::kSetView: {
       View v;
       Status s = decode_view(f.payload, f.length, &v);
@@ -136,15 +144,16 @@ Status JobServer::upload_begin(const uint8_t* p, uint16_t n) {
   UploadBegin b;
   const Status s = decode_upload_begin(p, n, &b);
   if (!ok(s)) return s;
-  if (b.faces > 0) return Status::kUnsupported;
+  if (b.faces > 0 && b.format != SceneFormat::kIndexed) return Status::kMalformedRequest;
   // 64-bit sums: a hostile count cannot wrap the check.
   const uint64_t need = (b.format == SceneFormat::kIndexed
-                             ? uint64_t{b.vertices} * sizeof(Point3) + uint64_t{b.edges} * 8 + 16
+                             ? uint64_t{b.vertices} * sizeof(Point3) + uint64_t{b.edges} * 8 +
+                                   uint64_t{b.faces} * sizeof(Triangle) + 24
                              : 0) +
                         uint64_t{b.edges} * sizeof(Edge3) + 8;
   if (need > arena_bytes_) return Status::kSceneTooLarge;
   scene_ = b;
-  received_vertices_ = received_edges_ = 0;
+  received_vertices_ = received_edges_ = received_faces_ = 0;
   n_edges_ = 0;
   forget_cut();
   state_ = b.edges == 0 ? ServerState::kIdle : ServerState::kUploading;
@@ -162,6 +171,15 @@ Status JobServer::upload_records(FrameType type, const uint8_t* p, uint16_t n) {
     for (uint32_t i = 0; i < k; ++i)
       world[received_vertices_ + i] = decode_vertex(p + i * kVertexRecordBytes);
     received_vertices_ += k;
+  } else if (type == FrameType::kUploadFaces) {
+    if (!indexed || n % kFaceRecordBytes) return Status::kUploadMismatch;
+    const uint32_t k = uint32_t(n / kFaceRecordBytes);
+    if (k > scene_.faces - received_faces_) return Status::kUploadMismatch;
+    Triangle* faces =
+        reinterpret_cast<Triangle*>(arena_ + world_bytes(scene_) + pair_bytes(scene_));
+    for (uint32_t i = 0; i < k; ++i)
+      faces[received_faces_ + i] = decode_face(p + i * kFaceRecordBytes);
+    received_faces_ += k;
   } else {
     const size_t size = type == FrameType::kUploadEdges ? kEdgeRecordBytes : kIndexRecordBytes;
     if (indexed != (type == FrameType::kUploadEdgeIndices) || n % size)
@@ -177,7 +195,8 @@ Status JobServer::upload_records(FrameType type, const uint8_t* p, uint16_t n) {
     }
     received_edges_ += k;
   }
-  if (received_edges_ == scene_.edges && received_vertices_ == scene_.vertices) {
+  if (received_edges_ == scene_.edges && received_vertices_ == scene_.vertices &&
+      received_faces_ == scene_.faces) {
     n_edges_ = scene_.edges;
     state_ = ServerState::kReady;
   }
@@ -202,6 +221,7 @@ Status JobServer::plot() {
     if (!ok(s)) return s;
   }
   forget_cut();
+  if (hidden_line_drawing(spec_.drawing)) return plot_hidden(job_mem, job_bytes);
   // The crossing count is unknown before CUT: start from a guess and retry once with the
   // exact count CUT reports (it never stores a partial CUTSET).
   crossing_capacity_ = n_edges_ + 64;
@@ -220,6 +240,41 @@ Status JobServer::plot() {
   if (clock_) prepare_ticks_ = clock_() - t0;
   if (!ok(s)) return s;
   has_cut_ = spec_.drawing == DrawingEffect::kHaloed;
+  return start_motion();
+}
+
+Status JobServer::plot_hidden(uint8_t* job_mem, size_t job_bytes) {
+  if (scene_.format != SceneFormat::kIndexed || scene_.faces == 0) return Status::kNoFaces;
+  // The projected vertices stay at the front of the job buffer (plot() put them there); the
+  // hidden-line run and its strokes take the rest.
+  const size_t screen_bytes = align8(size_t{scene_.vertices} * sizeof(Point3));
+  if (screen_bytes > job_bytes) return Status::kWorkspaceTooSmall;
+  SolidInput in;
+  in.vertices = reinterpret_cast<const Point3*>(job_mem);
+  in.n_vertices = scene_.vertices;
+  in.edge_pairs = reinterpret_cast<const uint32_t*>(arena_ + world_bytes(scene_));
+  in.n_edges = n_edges_;
+  in.triangles =
+      reinterpret_cast<const Triangle*>(arena_ + world_bytes(scene_) + pair_bytes(scene_));
+  in.n_triangles = scene_.faces;
+  // Capacities are unknown before the run: guess, then retry with the counts it reports.
+  uint32_t crossings = n_edges_ + 3 * scene_.faces + 64, incidences = scene_.vertices + 16;
+  Status s = Status::kOk;
+  const uint64_t t0 = clock_ ? clock_() : 0;
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    HiddenReport report;
+    s = job_prepare_solid(spec_, in, crossings, incidences, job_mem + screen_bytes,
+                          job_bytes - screen_bytes, &job_, &counters_, &report);
+    cut_runs_ += counters_.cut_runs;
+    if (s == Status::kCrossingCapacity)
+      crossings = uint32_t(report.cut.crossings);
+    else if (s == Status::kIncidenceCapacity)
+      incidences = report.incidences_needed;
+    else
+      break;
+  }
+  if (clock_) prepare_ticks_ = clock_() - t0;
+  if (!ok(s)) return s;
   return start_motion();
 }
 

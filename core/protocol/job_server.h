@@ -9,8 +9,10 @@
 // verified, in-sequence frames, so no damage on the line can corrupt it.
 //
 // Memory: one caller arena. The scene takes the front, sized by kUploadBegin (refused with
-// kSceneTooLarge when it cannot fit, before a byte of it is stored); the rest is the job
-// buffer for CUT, DRAW and the path (core/job).
+// kSceneTooLarge when it cannot fit, before a byte of it is stored): world vertices, index
+// pairs and triangles for the indexed format, then the projected edges; the rest is the job
+// buffer for CUT, DRAW and the path (core/job), or for a hidden-line drawing the projected
+// vertices, the hidden-line run and its strokes (job_prepare_solid).
 //
 // last_error is the most recent failure: of a request, or of the plot in motion. A plot that
 // starts clears it, so after a plot it says how that plot ended. The CUTSET stays at the front of
@@ -83,6 +85,7 @@ class JobServer {
   Status upload_begin(const uint8_t* p, uint16_t n);
   Status upload_records(FrameType type, const uint8_t* p, uint16_t n);
   Status plot();
+  Status plot_hidden(uint8_t* job_mem, size_t job_bytes);
   Status replot(const uint8_t* p, uint16_t n);
   Status start_motion();
   void reply(FrameType type, const uint8_t* payload, uint16_t n);
@@ -103,7 +106,7 @@ class JobServer {
   uint16_t last_reply_bytes_ = 0;
 
   UploadBegin scene_;
-  uint32_t received_vertices_ = 0, received_edges_ = 0;
+  uint32_t received_vertices_ = 0, received_edges_ = 0, received_faces_ = 0;
   uint32_t n_edges_ = 0;
   bool has_cut_ = false;
   uint32_t crossing_capacity_ = 0;

@@ -136,4 +136,34 @@ Status decode_status(const uint8_t* p, size_t n, StatusReport* out) {
   return Status::kOk;
 }
 
+void encode_face(const Triangle& t, uint8_t out[kFaceRecordBytes]) {
+  for (int i = 0; i < 3; ++i) put_u32(out + 4 * i, t.v[i]);
+  put_u32(out + 12, t.polygon);
+}
+
+Triangle decode_face(const uint8_t* p) {
+  return Triangle{{get_u32(p), get_u32(p + 4), get_u32(p + 8)}, get_u32(p + 12)};
+}
+
+void encode_hidden(const HiddenJob& h, uint8_t out[kHiddenBytes]) {
+  out[0] = uint8_t(h.method);
+  out[1] = h.outline ? 1 : 0;
+  put_i32(out + 2, h.dash);
+  put_i32(out + 6, h.gap);
+}
+
+Status decode_hidden(const uint8_t* p, size_t n, HiddenJob* out) {
+  if (n != kHiddenBytes || p[0] > uint8_t(HiddenMethod::kFallback) || (p[1] & ~1u))
+    return Status::kMalformedRequest;
+  HiddenJob h;
+  h.method = HiddenMethod(p[0]);
+  h.outline = p[1] & 1;
+  h.dash = get_i32(p + 2);
+  h.gap = get_i32(p + 6);
+  if (h.dash < 1 || h.gap < 1 || h.dash > kCoordMax || h.gap > kCoordMax)
+    return Status::kMalformedRequest;
+  *out = h;
+  return Status::kOk;
+}
+
 }  // namespace haloplot

@@ -12,6 +12,10 @@
 //   kSetHalo           u32 width (steps), u8 mode (0 paper, 1 exact)                   5
 //   kSetEffects        u8 drawing (DrawingEffect), u8 flags (1 acceleration, 2 pen servo,
 //                      4 backlash)                                                      2
+//   kUploadFaces       4 x u32: three vertex indices (counter-clockwise from outside) and
+//                      the polygon id (sides shared inside a polygon are not drawn) 16 per face
+//   kSetHidden         u8 method (0 auto, 1 QI, 2 fallback), u8 flags (1 outline), u32 dash,
+//                      u32 gap (steps)                                                 10
 //   kSetMachine        u8 kinematics, 13 x u32 (steps num, den, tick Hz, min interval,
 //                      max step rate, draw speed, travel speed, accel, junction deviation,
 //                      pen travel, pen settle, backlash 0, 1), 2 x i32 start x, y      61
@@ -32,7 +36,8 @@ namespace haloplot {
 
 inline constexpr size_t kUploadBeginBytes = 13, kEdgeRecordBytes = 24, kVertexRecordBytes = 12,
                         kIndexRecordBytes = 8, kViewBytes = 24, kHaloBytes = 5, kEffectsBytes = 2,
-                        kMachineBytes = 61, kStatusBytes = 32;
+                        kMachineBytes = 61, kStatusBytes = 32, kFaceRecordBytes = 16,
+                        kHiddenBytes = 10;
 
 enum class SceneFormat : uint8_t { kEdges = 0, kIndexed = 1 };
 
@@ -71,6 +76,8 @@ void encode_halo(const DrawParams& d, uint8_t out[kHaloBytes]);
 void encode_effects(DrawingEffect drawing, const PlotterEffects& e, uint8_t out[kEffectsBytes]);
 void encode_machine(const JobSpec& spec, uint8_t out[kMachineBytes]);
 void encode_status(const StatusReport& r, uint8_t out[kStatusBytes]);
+void encode_face(const Triangle& t, uint8_t out[kFaceRecordBytes]);
+void encode_hidden(const HiddenJob& h, uint8_t out[kHiddenBytes]);
 
 // Decoders check the length and every enumerated field: kMalformedRequest otherwise. Ranges
 // (speeds, plot area) are checked later by validate() of the machine and the view.
@@ -82,5 +89,7 @@ Status decode_halo(const uint8_t* p, size_t n, DrawParams* out);
 Status decode_effects(const uint8_t* p, size_t n, DrawingEffect* drawing, PlotterEffects* out);
 Status decode_machine(const uint8_t* p, size_t n, JobSpec* spec);
 Status decode_status(const uint8_t* p, size_t n, StatusReport* out);
+Triangle decode_face(const uint8_t* p);
+Status decode_hidden(const uint8_t* p, size_t n, HiddenJob* out);
 
 }  // namespace haloplot

@@ -48,7 +48,9 @@ size_t face_grid_bytes(const Topology& topo) {
   const Grid g = choose_grid(topo);
   ByteCounter c;
   c.take<uint32_t>(size_t{g.cells()} + 1);
-  c.take<uint32_t>(count_pairs(topo, g));
+  // More pairs than 32 bits count is refused by the build; size it as if none.
+  const uint64_t pairs = count_pairs(topo, g);
+  c.take<uint32_t>(pairs > 0xffffffffu ? 0 : static_cast<size_t>(pairs));
   return c.total + 8;
 }
 
@@ -58,7 +60,7 @@ Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGri
   if (pairs > 0xffffffffu) return Status::kCellPairOverflow;
   Carver carve(buffer, bytes);
   uint32_t* first = carve.take<uint32_t>(size_t{g.cells()} + 1);
-  uint32_t* faces = carve.take<uint32_t>(pairs);
+  uint32_t* faces = carve.take<uint32_t>(static_cast<size_t>(pairs));
   if (carve.short_) return Status::kWorkspaceTooSmall;
   for (uint32_t c = 0; c <= g.cells(); ++c) first[c] = 0;
   for (uint32_t t = 0; t < topo.n_triangles; ++t)

@@ -60,6 +60,8 @@ const char* status_name(Status s) {
       return "more vertex-on-edge incidences than the buffer holds";
     case Status::kNotManifold:
       return "mesh is not a closed, consistently oriented manifold";
+    case Status::kNoFaces:
+      return "hidden lines need faces: upload them with the vertices";
   }
   return "unknown status";
 }

@@ -34,6 +34,7 @@ enum class Status : uint8_t {
   kVisibilityInconsistent,  // the visibility walk lost its way (a bug: never on valid input)
   kIncidenceCapacity,       // more vertex-on-edge incidences than the caller's buffer holds
   kNotManifold,             // the QI method needs a closed, consistently oriented mesh
+  kNoFaces,                 // hidden lines need faces: the scene was uploaded without them
 };
 
 // A short, stable, human-readable name, e.g. "crossing capacity exceeded".

@@ -6,11 +6,15 @@
 #include <thread>
 
 #include "cli/options.h"
+#include "cli/solid_options.h"
 #include "io/edges_file.h"
 #include "io/job_file.h"
 #include "io/line_reader.h"
+#include "io/obj_file.h"
 #include "link/job_client.h"
 #include "link/serial_port.h"
+#include "pipeline/scene_input.h"
+#include "pipeline/triangulate.h"
 
 namespace haloplot::host {
 namespace {
@@ -60,9 +64,28 @@ int cmd_send(int argc, char** argv) {
   JobFile jf;
   InputError ie = read_job_file(o.positional[0], &jf);
   if (ie.failed()) return send_fail(ie.message());
+  // An .edges scene goes as projected edges; an .obj model as world vertices and index pairs
+  // (and triangles for the hidden-line drawings), projected on the controller with the view.
   std::vector<Edge3> edges;
-  ie = read_edges_file(jf.scene_path, &edges);
-  if (ie.failed()) return send_fail(ie.message());
+  ObjModel model;
+  std::vector<Triangle> triangles;
+  View view;
+  const bool obj =
+      jf.scene_path.size() > 4 && jf.scene_path.compare(jf.scene_path.size() - 4, 4, ".obj") == 0;
+  if (obj) {
+    SolidOptions so;
+    std::string why;
+    if (!job_solid_settings(jf, &so, &view, &why)) return send_fail(o.positional[0] + ": " + why);
+    ie = read_obj_file(jf.scene_path, &model);
+    if (ie.failed()) return send_fail(ie.message());
+    jf.spec.hidden = HiddenJob{so.method, so.spec.outline, so.spec.dash_steps, so.spec.gap_steps};
+    if (jf.spec.drawing == DrawingEffect::kHiddenRemoved ||
+        jf.spec.drawing == DrawingEffect::kHiddenDashed)
+      triangles = triangulate(model.vertices, model.faces, nullptr);
+  } else {
+    ie = read_edges_file(jf.scene_path, &edges);
+    if (ie.failed()) return send_fail(ie.message());
+  }
   FaultPlan faults;
   uint32_t replot = 0, seed = 1;
   std::string error;
@@ -96,7 +119,10 @@ int cmd_send(int argc, char** argv) {
   };
   StatusReport r;
   if (int e = link_or_status(client.sync(), "sync")) return e;
-  if (int e = link_or_status(client.upload(jf.spec, edges, &s), "upload")) return e;
+  const bool sent =
+      obj ? client.upload_indexed(jf.spec, view, model.vertices, model.edge_pairs, &s, &triangles)
+          : client.upload(jf.spec, edges, &s);
+  if (int e = link_or_status(sent, "upload")) return e;
   if (int e = link_or_status(client.request(FrameType::kPlot, {}, &s), "plot")) return e;
   if (!o.get("--stop-after").empty()) {
     // Stop the plot once it has made this many step events: with an abort request, or (test

@@ -100,13 +100,14 @@ bool JobClient::sync() {
 }
 
 bool JobClient::settings(const JobSpec& spec, Status* status) {
-  std::vector<uint8_t> m(kMachineBytes), e(kEffectsBytes), h(kHaloBytes);
+  std::vector<uint8_t> m(kMachineBytes), e(kEffectsBytes), h(kHaloBytes), hl(kHiddenBytes);
   encode_machine(spec, m.data());
   encode_effects(spec.drawing, spec.effects, e.data());
   encode_halo(spec.draw, h.data());
+  encode_hidden(spec.hidden, hl.data());
   for (auto [type, payload] :
        {std::pair{FrameType::kSetMachine, &m}, std::pair{FrameType::kSetEffects, &e},
-        std::pair{FrameType::kSetHalo, &h}}) {
+        std::pair{FrameType::kSetHalo, &h}, std::pair{FrameType::kSetHidden, &hl}}) {
     if (!request(type, *payload, status)) return false;
     if (!ok(*status)) return true;
   }
@@ -141,7 +142,7 @@ bool JobClient::upload(const JobSpec& spec, const std::vector<Edge3>& edges, Sta
 
 bool JobClient::upload_indexed(const JobSpec& spec, const View& view,
                                const std::vector<Point3>& world, const std::vector<uint32_t>& pairs,
-                               Status* status) {
+                               Status* status, const std::vector<Triangle>* faces) {
   if (!settings(spec, status)) return false;
   if (!ok(*status)) return true;
   std::vector<uint8_t> v(kViewBytes);
@@ -149,9 +150,9 @@ bool JobClient::upload_indexed(const JobSpec& spec, const View& view,
   if (!request(FrameType::kSetView, v, status)) return false;
   if (!ok(*status)) return true;
   std::vector<uint8_t> begin(kUploadBeginBytes);
-  encode_upload_begin(
-      UploadBegin{SceneFormat::kIndexed, uint32_t(world.size()), uint32_t(pairs.size() / 2), 0},
-      begin.data());
+  encode_upload_begin(UploadBegin{SceneFormat::kIndexed, uint32_t(world.size()),
+                                  uint32_t(pairs.size() / 2), faces ? uint32_t(faces->size()) : 0},
+                      begin.data());
   if (!request(FrameType::kUploadBegin, begin, status)) return false;
   if (!ok(*status)) return true;
   std::vector<uint8_t> records(world.size() * kVertexRecordBytes);
@@ -161,7 +162,12 @@ bool JobClient::upload_indexed(const JobSpec& spec, const View& view,
   if (!ok(*status)) return true;
   records.assign(pairs.size() * 4, 0);
   for (size_t i = 0; i < pairs.size(); ++i) put_u32(&records[4 * i], pairs[i]);
-  return chunks(FrameType::kUploadEdgeIndices, records, kIndexRecordBytes, status);
+  if (!chunks(FrameType::kUploadEdgeIndices, records, kIndexRecordBytes, status)) return false;
+  if (!ok(*status) || faces == nullptr || faces->empty()) return true;
+  records.assign(faces->size() * kFaceRecordBytes, 0);
+  for (size_t i = 0; i < faces->size(); ++i)
+    encode_face((*faces)[i], &records[i * kFaceRecordBytes]);
+  return chunks(FrameType::kUploadFaces, records, kFaceRecordBytes, status);
 }
 
 bool JobClient::query(StatusReport* report) {

@@ -10,6 +10,7 @@
 #include "job/job.h"
 #include "protocol/frame.h"
 #include "protocol/messages.h"
+#include "solid/mesh.h"
 #include "view/projection.h"
 
 namespace haloplot::host {
@@ -48,8 +49,10 @@ class JobClient {
   // The whole job: machine, effects, halo, then the scene as projected edges.
   bool upload(const JobSpec& spec, const std::vector<Edge3>& edges, Status* status);
   // The scene as world vertices and index pairs, projected on the controller with `view`.
+  // With `faces` (triangles, for the hidden-line drawings) they are uploaded too.
   bool upload_indexed(const JobSpec& spec, const View& view, const std::vector<Point3>& world,
-                      const std::vector<uint32_t>& pairs, Status* status);
+                      const std::vector<uint32_t>& pairs, Status* status,
+                      const std::vector<Triangle>* faces = nullptr);
   bool query(StatusReport* report);
   // Polls status until the plot ends; false on a link failure.
   bool wait_idle(StatusReport* report, int poll_ms = 20);

@@ -136,10 +136,25 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
   return dump_edges(o, path, edges, error);
 }
 
-bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* error) {
+namespace {
+
+Options job_options(const JobFile& jf) {
   Options o;
   o.values = jf.solid_options;
+  o.values["--steps-per-mm"] = std::to_string(jf.style.steps_per_mm);
   if (jf.outline) o.flags.insert("--outline");
+  return o;
+}
+
+}  // namespace
+
+bool job_solid_settings(const JobFile& jf, SolidOptions* so, View* view, std::string* error) {
+  const Options o = job_options(jf);
+  return parse_solid_options(o, so, error) && parse_view(o, view, error);
+}
+
+bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* error) {
+  const Options o = job_options(jf);
   if (jf.spec.drawing != DrawingEffect::kHiddenRemoved &&
       jf.spec.drawing != DrawingEffect::kHiddenDashed)
     return load_scene(o, jf.scene_path, edges, error);

@@ -26,6 +26,10 @@ bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* e
                 std::string* error);
 
 struct JobFile;
+struct SolidOptions;
+// A job's hidden-line settings (its view, dash in mm at its steps-per-mm, method, outline).
+bool job_solid_settings(const JobFile& jf, SolidOptions* so, View* view, std::string* error);
+
 // The scene a .job file names, as the edges its job draws: an .edges file as it is; an .obj
 // model projected with the job's view; for the hidden-line drawings, the strokes of that mode
 // (visible pieces, dashes, and the outline pass redrawn last), decided on the host.

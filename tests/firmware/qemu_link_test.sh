@@ -10,6 +10,9 @@
 #   - an abort request, and a limit switch (its interrupt set pending: QEMU models neither
 #     the pin nor EXTI's software trigger), each stop a plot within a few step events and
 #     are reported as how the plot ended;
+#   - a solid model (world vertices, edge pairs and triangles) plotted hidden-dashed with its
+#     outline pass is drawn by the controller's own hidden-line run exactly as `haloplot sim`
+#     draws it on the host;
 #   - the image exits 0 through semihosting with no step underrun.
 # Usage: qemu_link_test.sh FIRMWARE_DIR HALOPLOT_TOOL
 source "$(dirname "$0")/qemu_common.sh" firmware_link "$1" "$2" fw_plotter_qemu.elf
@@ -23,6 +26,9 @@ job() {  # job NAME SCENE HALO
 job plot.job scene.edges 50
 job replot.job scene.edges 120
 job huge.job huge.edges 50
+cp "$(dirname "$0")/../../scenes/pair_of_cubes.obj" cubes.obj
+printf 'scene cubes.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nkinematics corexy\n' > solid.job
+"$tool" sim solid.job -o host_solid.trace
 "$tool" sim plot.job -o host_plot.trace
 "$tool" sim replot.job -o host_replot.trace
 
@@ -53,7 +59,11 @@ for how in abort limit; do
     bad "stop by $how: $(cat "stop_$how.out")"
   fi
 done
-# 3. Plot and re-plot with damaged frames on the way (a new connection: `send` reconnects if
+# 3. A solid model, hidden lines worked out on the controller.
+"$tool" send solid.job --port "$work/link.sock" > solid.out 2>&1
+rc=$?
+if [ "$rc" -eq 0 ]; then ok; else bad "solid send failed ($rc): $(cat solid.out)"; fi
+# 4. Plot and re-plot with damaged frames on the way (a new connection: `send` reconnects if
 #    QEMU still holds the last one).
 "$tool" send plot.job --port "$work/link.sock" --replot 120 --corrupt-every 5 \
   --truncate-every 11 --seed 7 --test-exit > send.out 2>&1
@@ -67,8 +77,8 @@ grep '^fw ' fw.out
 echo "controller session: $((SECONDS - start)) s"
 
 awk '/^haloplot-trace 1$/ { k++; on = 1 } on { print > ("fw_" k ".trace") } /^end / { on = 0 }' fw.out
-# Traces 1 and 2 are the stopped plots; 3 and 4 the plot and the re-plot.
-for pair in "3 host_plot" "4 host_replot"; do
+# Traces 1 and 2 are the stopped plots; 3 the solid; 4 and 5 the plot and the re-plot.
+for pair in "3 host_solid" "4 host_plot" "5 host_replot"; do
   set -- $pair
   if [ -s "fw_$1.trace" ] && cmp -s "fw_$1.trace" "$2.trace"; then
     ok

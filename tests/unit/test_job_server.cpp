@@ -11,8 +11,10 @@
 #include <sstream>
 
 #include "../check.h"
+#include "../support/solid_scenes.h"
 #include "../support/virtual_motion.h"
 #include "link/job_client.h"
+#include "pipeline/drawing_modes.h"
 #include "scene/cube_array.h"
 #include "sim/simulator.h"
 
@@ -197,9 +199,13 @@ void errors_leave_job_intact() {
   std::vector<uint8_t> m(kMachineBytes);
   encode_machine(fast, m.data());
   CHECK(client.request(FrameType::kSetMachine, m, &s) && !ok(s));
-  encode_upload_begin(UploadBegin{SceneFormat::kIndexed, 8, 12, 6}, begin.data());
-  CHECK(client.request(FrameType::kUploadBegin, begin, &s) && s == Status::kUnsupported);
-  CHECK(client.request(FrameType::kUploadFaces, {0, 0, 0, 0}, &s) && s == Status::kUnsupported);
+  // Faces come only with the indexed format, and only inside an upload.
+  encode_upload_begin(UploadBegin{SceneFormat::kEdges, 0, 12, 6}, begin.data());
+  CHECK(client.request(FrameType::kUploadBegin, begin, &s) && s == Status::kMalformedRequest);
+  CHECK(client.request(FrameType::kUploadFaces, std::vector<uint8_t>(16), &s) &&
+        s == Status::kUploadMismatch);
+  CHECK(client.request(FrameType::kSetHidden, {3, 0, 1, 0, 0, 0, 1, 0, 0, 0}, &s) &&
+        s == Status::kMalformedRequest);
   CHECK(client.request(FrameType::kUploadEdges, std::vector<uint8_t>(24), &s) &&
         s == Status::kUploadMismatch);
   StatusReport r;
@@ -312,6 +318,69 @@ void indexed_scene() {
   CHECK(client.request(FrameType::kPlot, {}, &s) && s == Status::kBadParameter);
 }
 
+// A solid over the link: world vertices, edge pairs and triangles, hidden lines worked out on
+// the controller. It must draw exactly the strokes the host tool draws for the same model and
+// view (the same core, reached through the protocol), dashes and outline pass included.
+void solid_scene() {
+  solid_scenes::Mesh m;
+  solid_scenes::box(&m, 0, 0, 0, 2000, 2000, 2000);
+  solid_scenes::box(&m, 1000, -3000, 1000, 3000, -1000, 3000);
+  const std::vector<uint32_t> pairs = solid_scenes::polygon_edges(m);
+  const std::vector<Triangle> tris = host::triangulate(m.v, m.faces, nullptr);
+  View view;
+  view.azimuth_mdeg = 30000;
+  view.elevation_mdeg = 25000;
+  for (DrawingEffect drawing : {DrawingEffect::kHiddenRemoved, DrawingEffect::kHiddenDashed}) {
+    Controller c(1 << 20);
+    Loopback link(c);
+    JobClient client(link);
+    JobSpec spec = demo_spec(0);
+    spec.drawing = drawing;
+    spec.hidden.outline = true;
+    spec.hidden.dash = 120;
+    spec.hidden.gap = 60;
+    Status s;
+    // Without faces the controller says what is missing.
+    CHECK(client.sync() && client.upload_indexed(spec, view, m.v, pairs, &s) && ok(s));
+    CHECK(client.request(FrameType::kPlot, {}, &s) && s == Status::kNoFaces);
+    CHECK(client.upload_indexed(spec, view, m.v, pairs, &s, &tris) && ok(s));
+    CHECK(client.request(FrameType::kPlot, {}, &s) && ok(s));
+    StatusReport r;
+    CHECK(client.wait_idle(&r, 0) && r.last_error == Status::kOk);
+    CHECK_EQ(c.motion.spans.size(), size_t{1});
+    if (c.motion.spans.size() != 1) return;
+    // The host tool's strokes for the same model and view.
+    host::SolidScene scene;
+    scene.vertices.resize(m.v.size());
+    CHECK(project_points(view, m.v.data(), uint32_t(m.v.size()), scene.vertices.data()) ==
+          Status::kOk);
+    scene.edge_pairs = pairs;
+    scene.triangles = tris;
+    host::SolidRun run;
+    FallbackParams kira;
+    kira.use_classes = kira.use_vc = true;
+    CHECK(host::run_hidden_lines(scene, HiddenMethod::kAuto, kira, &run, true) == Status::kOk);
+    host::ModeSpec ms;
+    ms.mode = drawing == DrawingEffect::kHiddenDashed ? SolidMode::kHiddenDashed
+                                                      : SolidMode::kHiddenRemoved;
+    ms.dash_steps = 120;
+    ms.gap_steps = 60;
+    ms.outline = true;
+    const host::ModeDrawing d = host::make_mode_drawing(run, ms);
+    std::vector<Segment2> want;
+    for (const auto* list : {&d.spans, &d.outline})
+      for (const Span& x : *list) want.push_back(Segment2{x.x0, x.y0, x.x1, x.y1});
+    const std::vector<Segment2>& got = c.motion.spans[0];
+    CHECK_EQ(got.size(), want.size());
+    bool same = got.size() == want.size();
+    for (size_t i = 0; same && i < got.size(); ++i)
+      same = got[i].x0 == want[i].x0 && got[i].y0 == want[i].y0 && got[i].x1 == want[i].x1 &&
+             got[i].y1 == want[i].y1;
+    CHECK_MSG(same, "the controller's strokes equal the host tool's");
+    CHECK(want.size() > 18);  // not vacuous: edges, dashes and the outline pass
+  }
+}
+
 }  // namespace
 
 int main() {
@@ -321,5 +390,6 @@ int main() {
   errors_leave_job_intact();
   busy_and_abort();
   indexed_scene();
+  solid_scene();
   return check::finish("job_server");
 }
