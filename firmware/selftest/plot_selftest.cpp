@@ -14,6 +14,7 @@
 #include "platform/instruction_counter.h"
 #include "platform/semihosting.h"
 #include "scene/cube_array.h"
+#include "solid/hidden_lines.h"
 #include "tick_workload.h"
 #include "trace/trace_encoder.h"
 #include "view/projection.h"
@@ -68,6 +69,77 @@ struct GpioHal {
 };
 
 SegmentQueue<64> queue;
+
+// Hidden lines of 3 x 3 solid cubes (the demo's geometry, view 30,40) on the chip: the whole
+// core/solid run in the job buffer. The host test compares the visible pieces with
+// `haloplot plot` of the same model.
+struct PieceCount {
+  uint32_t visible = 0, hidden = 0;
+  static Status piece(void* ctx, const HiddenPiece& p) {
+    auto* self = static_cast<PieceCount*>(ctx);
+    ++(p.hidden ? self->hidden : self->visible);
+    return Status::kOk;
+  }
+};
+
+void hidden_lines_on_chip() {
+  constexpr int32_t n = 3;
+  static Point3 world[8 * n * n], screen[8 * n * n];
+  static uint32_t pairs[2 * 12 * n * n];
+  static Triangle tris[12 * n * n];
+  static const int kQuads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                   {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  uint32_t nv = 0, ne = 0, nt = 0;
+  for (int32_t i = 0; i < n; ++i)
+    for (int32_t j = 0; j < n; ++j) {
+      const uint32_t base = nv;
+      for (int k = 0; k < 8; ++k)
+        world[nv++] =
+            Point3{i * 125 + (k & 1) * 100, j * 125 + ((k >> 1) & 1) * 100, ((k >> 2) & 1) * 100};
+      for (int q = 0; q < 6; ++q) {
+        const uint32_t v0 = base + uint32_t(kQuads[q][0]), v1 = base + uint32_t(kQuads[q][1]),
+                       v2 = base + uint32_t(kQuads[q][2]), v3 = base + uint32_t(kQuads[q][3]);
+        const uint32_t poly = nt / 2;
+        tris[nt++] = Triangle{{v0, v1, v2}, poly};
+        tris[nt++] = Triangle{{v0, v2, v3}, poly};
+      }
+      // The 12 edges: corner pairs that differ in one bit.
+      for (uint32_t a = 0; a < 8; ++a)
+        for (uint32_t bit = 1; bit < 8; bit <<= 1)
+          if (!(a & bit)) {
+            pairs[ne++] = base + a;
+            pairs[ne++] = base + (a | bit);
+          }
+    }
+  const Status ps = project_points(View{}, world, nv, screen);
+  if (!ok(ps)) fail("solid projection", ps);
+  SolidInput in;
+  in.vertices = screen;
+  in.n_vertices = nv;
+  in.edge_pairs = pairs;
+  in.n_edges = ne / 2;
+  in.triangles = tris;
+  in.n_triangles = nt;
+  HiddenParams hp;
+  hp.crossing_capacity = 600;
+  hp.incidence_capacity = 64;
+  hp.outline = true;
+  PieceCount count;
+  HiddenReport report;
+  const uint64_t a = counter_ticks();
+  const Status hs = hidden_lines(in, hp, job_buffer, sizeof job_buffer,
+                                 HiddenSink{nullptr, &PieceCount::piece, nullptr, &count}, &report);
+  const uint64_t b = counter_ticks();
+  if (!ok(hs)) fail("hidden lines", hs);
+  stat("solid_edges", in.n_edges);
+  stat("solid_triangles", nt);
+  stat("solid_crossings", report.cut.crossings);
+  stat("solid_visible_pieces", count.visible);
+  stat("solid_hidden_pieces", count.hidden);
+  stat("solid_used_qi", report.used_qi ? 1 : 0);
+  stat("solid_bytes_used", report.bytes_used);
+  stat("hidden_lines_instructions", ticks_to_instructions(b - a));
+}
 
 }  // namespace
 
@@ -154,6 +226,7 @@ int main() {
       stat("project_q16_instructions_per_vertex", ticks_to_instructions(b - a) / nv);
       stat("project_q30_instructions_per_vertex", ticks_to_instructions(c - b) / nv);
     }
+    hidden_lines_on_chip();
   }
 
   // The plot: the same job as scenes/ of the host test (see tests/firmware/).

@@ -31,4 +31,14 @@ fi
 host_crossings=$("$tool" plot scene.edges --halo 50 -o x.svg --stats 2>&1 | sed -n 's/^crossings=//p')
 fw_crossings=$(sed -n 's/^fw crossings=//p' fw.out)
 if [ -n "$fw_crossings" ] && [ "$fw_crossings" = "$host_crossings" ]; then ok; else bad "crossings: firmware $fw_crossings, host $host_crossings"; fi
+# Hidden lines on the chip: 3 x 3 solid cubes at view 30,40, as `haloplot plot` draws them.
+"$tool" demo-scene --cubes 3 -o cubes3.obj
+"$tool" plot cubes3.obj --view 30,40 --mode hidden-removed -o cubes3.svg --spans cubes3.spans
+host_visible=$(grep -c '^s .* 0$' cubes3.spans)
+fw_visible=$(sed -n 's/^fw solid_visible_pieces=//p' fw.out)
+if [ -n "$fw_visible" ] && [ "$fw_visible" = "$host_visible" ] && grep -q '^fw solid_used_qi=1$' fw.out; then
+  ok
+else
+  bad "visible pieces of 3 x 3 solid cubes: firmware $fw_visible, host $host_visible"
+fi
 finish
