@@ -137,6 +137,19 @@ int main() {
                 w + ": dashed hidden length " + std::to_string(hidden));
       for (const Span& x : dd.spans) CHECK(std::abs(x.x1 - x.x0) + std::abs(x.y1 - x.y0) <= 1000);
       // The outline: the union's boundary, 8 sides: 1000 + 500 + 1000 + 500 + ... = 6000 steps.
+      // haloed (HALO on the edges alone, W = 100): A's top edges pass behind B's left side at
+      // (1500, 2000) and A's right edges behind B's bottom at (2000, 1500), square on, so each
+      // loses 2 x 100 steps; nothing else crosses. 16 edges of 1000 less 4 gaps of 200.
+      std::vector<Edge3> edges;
+      for (size_t e = 0; e < s.edge_pairs.size() / 2; ++e)
+        edges.push_back(
+            Edge3{s.vertices[s.edge_pairs[2 * e]], s.vertices[s.edge_pairs[2 * e + 1]]});
+      HostCut cut;
+      HostDraw drawn;
+      CHECK(host_cut(edges, CutParams{}, &cut) == Status::kOk);
+      CHECK(host_draw(cut.set, DrawParams{100, HaloMode::kPaper}, &drawn) == Status::kOk);
+      CHECK_MSG(length(drawn.spans) == 16 * 1000 - 4 * 200,
+                w + ": haloed length " + std::to_string(length(drawn.spans)));
       // (Outlines come with the QI method only.)
       if (r.used_qi)
         CHECK_MSG(length(dd.outline) == 6000,
