@@ -79,7 +79,9 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
   // First guesses; the core says what a retry needs (never a wrong or partial answer).
   params.crossing_capacity = 4 * (in.n_edges + 3 * in.n_triangles) + 1024;
   params.incidence_capacity = in.n_vertices + 64;
-  size_t bytes = topology_bytes(in) * 4 + (size_t{1} << 20);
+  // A first guess that fits most scenes (a short buffer costs one more run, never a wrong one).
+  size_t bytes = topology_bytes(in) * 3 + 96 * (size_t{in.n_edges} + 3 * size_t{in.n_triangles}) +
+                 (size_t{1} << 16);
   HiddenReport r;
   Status s = Status::kOk;
   for (int attempt = 0; attempt < 8; ++attempt) {

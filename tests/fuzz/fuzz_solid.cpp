@@ -3,11 +3,13 @@
 // seen straight on or from a view the input picks. Coarse corners make vertices land on edges
 // and on each other, edges overlap, faces go edge-on: every singular rule fires. The property:
 // QI propagation meets no conflict and agrees with the topology-free fallback at the middle of
-// every piece; Kira's shortcuts change no visibility. Any disagreement aborts.
+// every piece; Kira's shortcuts and Franklin 1980 (blocking faces, c from 1 to 4) see the same
+// visibility. Any disagreement aborts.
 #include <cstdint>
 #include <cstdlib>
 #include <vector>
 
+#include "pipeline/surface_pipeline.h"
 #include "support/solid_scenes.h"
 
 using namespace haloplot;
@@ -65,11 +67,19 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   k.use_classes = k.use_vc = true;
   if (run_hidden_lines(s, HiddenMethod::kFallback, k, &kira) != Status::kOk) std::abort();
   if (qi.qi.conflicts != 0) std::abort();
+  FranklinParams fp;
+  fp.c_q8 = 256u + data[1] % 4u * 256u;  // c from 1 to 4: more cells, more blocking faces
+  FranklinRun fr;
+  if (run_franklin(s, fp, &fr) != Status::kOk) std::abort();
   for (const SolidPiece& p : fb.pieces) {
     if (p.t1 - p.t0 < 2) continue;
     const int64_t mid = p.t0 + (p.t1 - p.t0) / 2;
     if (qi_at(qi.pieces, p.edge, mid) != p.q) std::abort();
     if (hidden_at(kira.pieces, p.edge, mid) != (p.q != 0)) std::abort();
+    bool fh = false, found = false;
+    for (const FranklinPiece& x : fr.pieces)
+      if (x.edge == p.edge && x.t0 <= mid && mid < x.t1) fh = x.hidden, found = true;
+    if (!found || fh != (p.q != 0)) std::abort();
   }
   return 0;
 }

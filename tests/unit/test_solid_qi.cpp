@@ -13,6 +13,7 @@
 #include <string>
 
 #include "check.h"
+#include "pipeline/surface_pipeline.h"
 #include "solid/cover.h"
 #include "support/solid_scenes.h"
 
@@ -42,6 +43,7 @@ struct Totals {
   QiStats qi;
   uint64_t vc_saved = 0, tests_with = 0, tests_without = 0, class_saved = 0;
   uint64_t outline_tests = 0, outline_segments = 0, circuits = 0, one_by_one = 0;
+  uint64_t franklin_deleted_faces = 0, franklin_culled = 0;
 } totals;
 
 // Visible length of edge e in steps (pieces with hidden == false), from positions.
@@ -147,6 +149,22 @@ void agree(const SolidScene& scene, const std::string& label) {
     if (kh != (p.q != 0) && ++mismatches <= 5)
       CHECK_MSG(false, label + ": Kira shortcuts changed edge " + std::to_string(p.edge));
   }
+  // Franklin 1980 (steps 2-9, blocking faces, any face hides) must see the same visibility.
+  FranklinRun fr;
+  const Status s4 = run_franklin(scene, FranklinParams{}, &fr);
+  CHECK_MSG(s4 == Status::kOk, label + ": Franklin " + status_name(s4));
+  for (const auto& p : fb.pieces) {
+    if (p.t1 - p.t0 < 2) continue;
+    const int64_t m = p.t0 + (p.t1 - p.t0) / 2;
+    bool hidden = false, found = false;
+    for (const auto& x : fr.pieces)
+      if (x.edge == p.edge && x.t0 <= m && m < x.t1) hidden = x.hidden, found = true;
+    if ((!found || hidden != (p.q != 0)) && ++mismatches <= 5)
+      CHECK_MSG(false, label + ": Franklin differs on edge " + std::to_string(p.edge) +
+                           " at t=" + std::to_string(m) + (found ? "" : " (no piece)"));
+  }
+  totals.franklin_deleted_faces += fr.stats.faces_deleted;
+  totals.franklin_culled += fr.stats.face_cells_culled;
   CHECK_MSG(mismatches == 0, label + ": " + std::to_string(mismatches) + " disagreements");
   double worst = 0;
   for (uint32_t e = 0; e < n; ++e) {
@@ -263,5 +281,8 @@ int main(int argc, char** argv) {
       "%llu segments asked one by one\n",
       (unsigned long long)totals.outline_segments, (unsigned long long)totals.circuits,
       (unsigned long long)totals.outline_tests, (unsigned long long)totals.one_by_one);
+  std::printf("Franklin: %llu faces deleted by blocking faces, %llu (face, cell) pairs culled\n",
+              (unsigned long long)totals.franklin_deleted_faces,
+              (unsigned long long)totals.franklin_culled);
   return check::finish("solid_qi");
 }

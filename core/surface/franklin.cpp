@@ -1,0 +1,428 @@
+#include "surface/franklin.h"
+
+#include "geometry/fraction.h"
+#include "geometry/predicates.h"
+#include "geometry/wide.h"
+#include "memory/carve.h"
+#include "solid/cover.h"
+#include "solid/incidence.h"
+#include "sort/in_place_sort.h"
+
+namespace haloplot {
+namespace {
+
+constexpr uint32_t kNone = 0xffffffffu;
+constexpr int64_t kOne = int64_t{1} << 32;
+
+Edge3 edge_of(const SolidInput& in, uint32_t e) {
+  return Edge3{in.vertices[in.edge_pairs[2 * e]], in.vertices[in.edge_pairs[2 * e + 1]]};
+}
+
+// Step 2: B = floor(c * min(sqrt(N), 1 / L)) cells a side, L the average projected length over
+// the scene's extent; at most 4N + 64 cells so the grid stays O(N) bytes.
+Grid make_grid(const SolidInput& in, const FranklinParams& p) {
+  int32_t x0 = kCoordMax, y0 = kCoordMax, x1 = 0, y1 = 0;
+  for (uint32_t v = 0; v < in.n_vertices; ++v) {
+    x0 = min_i32(x0, in.vertices[v].x);
+    y0 = min_i32(y0, in.vertices[v].y);
+    x1 = max_i32(x1, in.vertices[v].x);
+    y1 = max_i32(y1, in.vertices[v].y);
+  }
+  if (in.n_vertices == 0) x0 = y0 = x1 = y1 = 0;
+  const uint64_t extent = uint64_t(max_i32(x1 - x0, y1 - y0)) + 1;
+  // Average length over a fixed-stride sample of at most 4096 edges (an estimate suffices).
+  const uint32_t stride = in.n_edges > 4096 ? in.n_edges / 4096 : 1;
+  uint64_t sum = 0, count = 0;
+  for (uint32_t e = 0; e < in.n_edges; e += stride, ++count) {
+    const Edge3 g = edge_of(in, e);
+    const int64_t dx = g.b.x - g.a.x, dy = g.b.y - g.a.y;
+    sum += isqrt_u64(uint64_t(dx * dx + dy * dy));
+  }
+  const uint64_t avg = count > 0 && sum >= count ? sum / count : 1;
+  const uint64_t inv_l = extent / avg;
+  const uint64_t root = isqrt_u64(in.n_edges);
+  uint64_t b = (uint64_t{p.c_q8} * (root < inv_l ? root : inv_l)) >> 8;
+  const uint64_t cap = isqrt_u64(4ull * in.n_edges + 64);
+  if (b > cap) b = cap;
+  if (b < 1) b = 1;
+  Grid g;
+  g.ox = x0;
+  g.oy = y0;
+  g.set_cell(static_cast<int32_t>((extent + b - 1) / b));
+  g.nx = g.divide(static_cast<uint32_t>(x1 - x0)) + 1;
+  g.ny = g.divide(static_cast<uint32_t>(y1 - y0)) + 1;
+  return g;
+}
+
+Edge3 face_box(const SolidInput& in, uint32_t t) {
+  const uint32_t* v = in.triangles[t].v;
+  const Point3 a = in.vertices[v[0]], b = in.vertices[v[1]], c = in.vertices[v[2]];
+  return Edge3{{min_i32(a.x, min_i32(b.x, c.x)), min_i32(a.y, min_i32(b.y, c.y)), 0},
+               {max_i32(a.x, max_i32(b.x, c.x)), max_i32(a.y, max_i32(b.y, c.y)), 0}};
+}
+
+// A face's plane at an integer point, times its doubled area: the depth is value / area.
+struct Plane {
+  Point3 a, b, c;
+  int64_t area;
+  Wide value(int64_t x, int64_t y) const {
+    const int64_t cb =
+        int64_t{c.x - a.x} * (y - a.y) - int64_t{c.y - a.y} * (x - a.x);  // -cross(P-a, c-a)
+    const int64_t cc = int64_t{b.x - a.x} * (y - a.y) - int64_t{b.y - a.y} * (x - a.x);
+    return mul_i64(int64_t{a.z}, area) - mul_i64(int64_t{b.z - a.z}, cb) +
+           mul_i64(int64_t{c.z - a.z}, cc);
+  }
+  // Sign of (this depth - other depth) at (x, y), exactly.
+  int compare(const Plane& o, int64_t x, int64_t y) const {
+    const int s = compare(mul_wide_i64(value(x, y), o.area), mul_wide_i64(o.value(x, y), area));
+    return ((area > 0) == (o.area > 0)) ? s : -s;
+  }
+  // Inside or on the projection of the face.
+  bool holds(int64_t x, int64_t y) const {
+    auto side = [&](const Point3& u, const Point3& v) {
+      return int64_t{v.x - u.x} * (y - u.y) - int64_t{v.y - u.y} * (x - u.x);
+    };
+    const int64_t s0 = side(a, b), s1 = side(b, c), s2 = side(c, a);
+    return area > 0 ? (s0 >= 0 && s1 >= 0 && s2 >= 0) : (s0 <= 0 && s1 <= 0 && s2 <= 0);
+  }
+  static int compare(Wide l, Wide r) { return haloplot::compare(l, r); }
+};
+
+Plane plane_of(const SolidInput& in, uint32_t t) {
+  const uint32_t* v = in.triangles[t].v;
+  Plane p{in.vertices[v[0]], in.vertices[v[1]], in.vertices[v[2]], 0};
+  p.area = projected_area2(p.a, p.b, p.c);
+  return p;
+}
+
+struct Cell {
+  int64_t x0, y0, x1, y1;  // closed extent for the corner tests
+};
+
+Cell cell_box(const Grid& g, uint32_t c) {
+  const int64_t x0 = g.ox + int64_t(c % g.nx) * g.cell, y0 = g.oy + int64_t(c / g.nx) * g.cell;
+  return Cell{x0, y0, x0 + g.cell, y0 + g.cell};
+}
+
+// Step 5b(i): F behind Fb at the cell's four corners, hence throughout the cell.
+bool face_behind(const Plane& f, const Plane& fb, const Cell& c) {
+  return f.compare(fb, c.x0, c.y0) < 0 && f.compare(fb, c.x1, c.y0) < 0 &&
+         f.compare(fb, c.x0, c.y1) < 0 && f.compare(fb, c.x1, c.y1) < 0;
+}
+
+// Step 5b(ii): the face's projection holds all four corners.
+bool blocks(const Plane& f, const Cell& c) {
+  return f.area != 0 && f.holds(c.x0, c.y0) && f.holds(c.x1, c.y0) && f.holds(c.x0, c.y1) &&
+         f.holds(c.x1, c.y1);
+}
+
+// Step 7a(i): the edge's part inside the cell (clipped exactly, positions n / d) is behind
+// the blocking face at both of its ends, hence all along it.
+bool edge_behind(const Edge3& e, const Plane& fb, const Cell& c) {
+  int64_t lo_n = 0, lo_d = 1, hi_n = 1, hi_d = 1;
+  auto clip = [&](int64_t a, int64_t d, int64_t c0, int64_t c1) {
+    if (d == 0) return a >= c0 && a <= c1;
+    int64_t n0 = c0 - a, n1 = c1 - a, den = d;
+    if (den < 0) {
+      den = -den;
+      const int64_t t = -n0;
+      n0 = -n1;
+      n1 = t;
+    }
+    if (n0 * lo_d > lo_n * den) lo_n = n0, lo_d = den;  // later entry
+    if (n1 * hi_d < hi_n * den) hi_n = n1, hi_d = den;  // earlier exit
+    return true;
+  };
+  if (!clip(e.a.x, e.b.x - e.a.x, c.x0, c.x1) || !clip(e.a.y, e.b.y - e.a.y, c.y0, c.y1))
+    return false;
+  if (lo_n * hi_d > hi_n * lo_d) return false;  // no part in the cell
+  // g(t) = (edge depth - plane depth) * area, linear in t: g(n/d) * d = ga (d - n) + gb n.
+  const Wide ga = mul_i64(int64_t{e.a.z}, fb.area) - fb.value(e.a.x, e.a.y);
+  const Wide gb = mul_i64(int64_t{e.b.z}, fb.area) - fb.value(e.b.x, e.b.y);
+  auto sign_at = [&](int64_t n, int64_t d) {
+    const Wide v = mul_wide_i64(ga, d - n) + mul_wide_i64(gb, n);
+    const int s = v.negative() ? -1 : (v.is_zero() ? 0 : 1);
+    return fb.area > 0 ? s : -s;
+  };
+  return sign_at(lo_n, lo_d) < 0 && sign_at(hi_n, hi_d) < 0;
+}
+
+struct Cut {
+  uint32_t edge, t;
+};
+
+template <typename C>
+void count_arrays(C& carve, const SolidInput& in, const Grid& g, uint64_t face_pairs,
+                  uint64_t edge_pairs, uint32_t crossing_capacity) {
+  carve.template take<SolidEdge>(in.n_edges);
+  carve.template take<uint32_t>(g.cells());  // blocking face
+  carve.template take<uint32_t>(size_t{g.cells()} + 1);
+  carve.template take<uint32_t>(size_t(face_pairs));
+  carve.template take<uint32_t>(size_t{g.cells()} + 1);
+  carve.template take<uint32_t>(size_t(edge_pairs));
+  carve.template take<uint8_t>(in.n_edges);  // edge kept somewhere
+  carve.template take<Cut>(size_t{crossing_capacity} * 2);
+}
+
+void bounds(const SolidInput& in, const Grid& g, uint64_t* face_pairs, uint64_t* edge_pairs) {
+  uint64_t f = 0, e = 0;
+  for (uint32_t t = 0; t < in.n_triangles; ++t)
+    for_each_cell(g, face_box(in, t), CellCover::kBoundingBox, 0, [&](uint32_t) { ++f; });
+  for (uint32_t i = 0; i < in.n_edges; ++i)
+    for_each_cell(g, edge_of(in, i), CellCover::kExact, 0, [&](uint32_t) { ++e; });
+  *face_pairs = f;
+  *edge_pairs = e;
+}
+
+Topology lite_topology(const SolidInput& in, SolidEdge* edges) {
+  Topology t;
+  t.vertices = in.vertices;
+  t.n_vertices = in.n_vertices;
+  t.edges = edges;
+  t.n_edges = in.n_edges;
+  t.n_drawn = in.n_edges;
+  for (uint32_t e = 0; e < in.n_edges; ++e)
+    edges[e] = SolidEdge{in.edge_pairs[2 * e],
+                         in.edge_pairs[2 * e + 1],
+                         {kNoFace, kNoFace},
+                         EdgeClass::kLoose,
+                         true,
+                         false};
+  return t;
+}
+
+}  // namespace
+
+size_t franklin_bytes(const SolidInput& in, const FranklinParams& p, uint32_t crossing_capacity,
+                      uint32_t incidence_capacity) {
+  const Grid g = make_grid(in, p);
+  uint64_t fp = 0, ep = 0;
+  bounds(in, g, &fp, &ep);
+  ByteCounter c;
+  count_arrays(c, in, g, fp, ep, crossing_capacity);
+  Topology t;
+  t.n_vertices = in.n_vertices;
+  t.n_edges = in.n_edges;
+  return c.total + incidence_bytes(t, incidence_capacity) + 16;
+}
+
+Status franklin_hidden_lines(const SolidInput& in, const FranklinParams& p,
+                             uint32_t crossing_capacity, uint32_t incidence_capacity, void* buffer,
+                             size_t bytes, FranklinSink sink, FranklinStats* stats) {
+  for (uint32_t v = 0; v < in.n_vertices; ++v)
+    if (!in_range(in.vertices[v])) return Status::kCoordinateOutOfRange;
+  for (uint32_t e = 0; e < 2 * in.n_edges; ++e)
+    if (in.edge_pairs[e] >= in.n_vertices) return Status::kBadParameter;
+  for (uint32_t t = 0; t < in.n_triangles; ++t)
+    for (int k = 0; k < 3; ++k)
+      if (in.triangles[t].v[k] >= in.n_vertices) return Status::kBadParameter;
+  FranklinStats st;
+  const Grid g = make_grid(in, p);
+  uint64_t face_pairs = 0, edge_pairs = 0;
+  bounds(in, g, &face_pairs, &edge_pairs);
+  if (face_pairs > 0xffffffffu || edge_pairs > 0xffffffffu) return Status::kCellPairOverflow;
+  const uint32_t cells = g.cells();
+  st.b = g.nx > g.ny ? g.nx : g.ny;
+  st.cells = cells;
+  Carver carve(buffer, bytes);
+  SolidEdge* lite = carve.take<SolidEdge>(in.n_edges);
+  uint32_t* blocking = carve.take<uint32_t>(cells);
+  uint32_t* face_first = carve.take<uint32_t>(size_t{cells} + 1);
+  uint32_t* face_list = carve.take<uint32_t>(size_t(face_pairs));
+  uint32_t* edge_first = carve.take<uint32_t>(size_t{cells} + 1);
+  uint32_t* edge_list = carve.take<uint32_t>(size_t(edge_pairs));
+  uint8_t* edge_kept = carve.take<uint8_t>(in.n_edges);
+  Cut* cuts = carve.take<Cut>(size_t{crossing_capacity} * 2);
+  if (carve.short_) return Status::kWorkspaceTooSmall;
+  Topology topo = lite_topology(in, lite);
+  const size_t inc_bytes = incidence_bytes(topo, incidence_capacity);
+  uint8_t* inc_mem = carve.take<uint8_t>(inc_bytes);
+  if (carve.short_) return Status::kWorkspaceTooSmall;
+
+  // Steps 5-6: blocking faces first (a face becomes Fb unless the current one is in front of
+  // it), then each cell's faces not behind its final Fb.
+  for (uint32_t c = 0; c < cells; ++c) blocking[c] = kNone;
+  for (uint32_t t = 0; t < in.n_triangles; ++t) {
+    const Plane f = plane_of(in, t);
+    if (f.area == 0) continue;  // edge-on: covers no cell, hides nothing
+    for_each_cell(g, face_box(in, t), CellCover::kBoundingBox, 0, [&](uint32_t c) {
+      const Cell box = cell_box(g, c);
+      if (!blocks(f, box)) return;
+      if (blocking[c] != kNone && face_behind(f, plane_of(in, blocking[c]), box)) return;
+      blocking[c] = t;
+    });
+  }
+  for (uint32_t c = 0; c <= cells; ++c) face_first[c] = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (uint32_t t = 0; t < in.n_triangles; ++t) {
+      const Plane f = plane_of(in, t);
+      if (f.area == 0) continue;
+      bool kept = false;
+      for_each_cell(g, face_box(in, t), CellCover::kBoundingBox, 0, [&](uint32_t c) {
+        if (blocking[c] == t) {
+          kept = true;  // the blocking face itself is kept apart from the list
+          return;
+        }
+        if (blocking[c] != kNone && face_behind(f, plane_of(in, blocking[c]), cell_box(g, c))) {
+          if (pass == 0) ++st.face_cells_culled;
+          return;
+        }
+        kept = true;
+        if (pass == 0)
+          ++face_first[c + 1];
+        else
+          face_list[face_first[c]++] = t;
+      });
+      if (pass == 0 && !kept) ++st.faces_deleted;
+    }
+    if (pass == 0)
+      for (uint32_t c = 0; c < cells; ++c) face_first[c + 1] += face_first[c];
+  }
+  for (uint32_t c = cells; c > 0; --c) face_first[c] = face_first[c - 1];
+  face_first[0] = 0;
+  st.face_cells = face_first[cells];
+  for (uint32_t c = 0; c < cells; ++c) st.blocking_cells += blocking[c] != kNone;
+
+  // Step 7: edges into cells, unless behind the blocking face there.
+  for (uint32_t c = 0; c <= cells; ++c) edge_first[c] = 0;
+  for (uint32_t e = 0; e < in.n_edges; ++e) edge_kept[e] = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (uint32_t e = 0; e < in.n_edges; ++e) {
+      const Edge3 ed = edge_of(in, e);
+      for_each_cell(g, ed, CellCover::kExact, 0, [&](uint32_t c) {
+        if (blocking[c] != kNone && edge_behind(ed, plane_of(in, blocking[c]), cell_box(g, c))) {
+          if (pass == 0) ++st.edge_cells_culled;
+          return;
+        }
+        edge_kept[e] = 1;
+        if (pass == 0)
+          ++edge_first[c + 1];
+        else
+          edge_list[edge_first[c]++] = e;
+      });
+    }
+    if (pass == 0)
+      for (uint32_t c = 0; c < cells; ++c) edge_first[c + 1] += edge_first[c];
+  }
+  for (uint32_t c = cells; c > 0; --c) edge_first[c] = edge_first[c - 1];
+  edge_first[0] = 0;
+  st.edge_cells = edge_first[cells];
+  for (uint32_t e = 0; e < in.n_edges; ++e) st.edges_deleted += edge_kept[e] == 0;
+
+  // Step 8: pairs in each cell; a crossing counts in the cell that holds it; both edges cut.
+  uint64_t n_cuts = 0;
+  for (uint32_t c = 0; c < cells; ++c) {
+    const Cell box = cell_box(g, c);
+    for (uint32_t i = edge_first[c]; i < edge_first[c + 1]; ++i)
+      for (uint32_t j = i + 1; j < edge_first[c + 1]; ++j) {
+        const Edge3 p1 = edge_of(in, edge_list[i]), p2 = edge_of(in, edge_list[j]);
+        ++st.pairs_tested;
+        const CrossingTest x = test_crossing(p1, p2);
+        if (!x.crosses) continue;
+        const int64_t px = int64_t{p1.b.x - p1.a.x} * x.tn, py = int64_t{p1.b.y - p1.a.y} * x.tn;
+        if (!((box.x0 - p1.a.x) * x.den <= px && px < (box.x1 - p1.a.x) * x.den &&
+              (box.y0 - p1.a.y) * x.den <= py && py < (box.y1 - p1.a.y) * x.den))
+          continue;
+        ++st.crossings;
+        if (n_cuts + 2 <= uint64_t{crossing_capacity} * 2) {
+          cuts[n_cuts] = Cut{edge_list[i], frac_q32_small(x.tn, x.den)};
+          cuts[n_cuts + 1] = Cut{edge_list[j], frac_q32_small(x.un, x.den)};
+        }
+        n_cuts += 2;
+      }
+  }
+  if (st.crossings > crossing_capacity) {
+    if (stats) *stats = st;
+    return Status::kCrossingCapacity;
+  }
+  heap_sort(cuts, size_t(n_cuts), [](const Cut& a, const Cut& b) {
+    return a.edge < b.edge || (a.edge == b.edge && a.t < b.t);
+  });
+
+  // The vertices lying on edges: visibility can change there too (solid/incidence.h).
+  Incidences inc;
+  uint32_t needed = 0;
+  Status s = find_incidences(topo, incidence_capacity, inc_mem, inc_bytes, &inc, &needed);
+  st.incidences = needed;
+  if (s != Status::kOk) {
+    if (stats) *stats = st;
+    return s;
+  }
+
+  // Step 9: pieces and their midpoints.
+  uint64_t k = 0;
+  for (uint32_t e = 0; e < in.n_edges; ++e) {
+    const Edge3 ed = edge_of(in, e);
+    const int64_t dx = ed.b.x - ed.a.x, dy = ed.b.y - ed.a.y, dz = ed.b.z - ed.a.z;
+    while (k < n_cuts && cuts[k].edge < e) ++k;
+    uint64_t kc = k;
+    uint32_t ki = inc.edge_first[e];
+    if (dx == 0 && dy == 0) continue;
+    FranklinPiece pending{e, 0, 0, false};
+    bool have = false;
+    bool last_hidden = false;
+    auto piece = [&](int64_t t0, int64_t t1) -> Status {
+      if (t1 <= t0) return Status::kOk;
+      ++st.pieces;
+      bool hidden = true;
+      if (!edge_kept[e]) {
+        hidden = true;
+      } else if (t1 - t0 < 2) {
+        hidden = last_hidden;
+      } else {
+        const int64_t m = t0 + (t1 - t0) / 2;
+        CoverPoint pt;
+        pt.d = kOne;
+        pt.x = int64_t{ed.a.x} * kOne + dx * m;
+        pt.y = int64_t{ed.a.y} * kOne + dy * m;
+        pt.zn = Wide::from_i64(int64_t{ed.a.z} * kOne + dz * m);
+        pt.zd = kOne;
+        pt.dir_x = static_cast<int32_t>(dx);
+        pt.dir_y = static_cast<int32_t>(dy);
+        pt.dir_z = static_cast<int32_t>(dz);
+        const uint32_t c =
+            g.cell_of(static_cast<int32_t>(pt.x >> 32), static_cast<int32_t>(pt.y >> 32));
+        ++st.midpoint_tests;
+        auto covers = [&](uint32_t t) {
+          const uint32_t* v = in.triangles[t].v;
+          const Point3 &a = in.vertices[v[0]], &b = in.vertices[v[1]], &cc = in.vertices[v[2]];
+          ++st.face_tests;
+          return (projected_area2(a, b, cc) >= 0 ? cover_halves(a, b, cc, pt)
+                                                 : cover_halves(a, cc, b, pt)) != 0;
+        };
+        hidden = blocking[c] != kNone && covers(blocking[c]);
+        for (uint32_t i = face_first[c]; !hidden && i < face_first[c + 1]; ++i)
+          hidden = covers(face_list[i]);
+      }
+      last_hidden = hidden;
+      if (have && pending.hidden == hidden && pending.t1 == t0) {
+        pending.t1 = t1;
+        return Status::kOk;
+      }
+      Status r = Status::kOk;
+      if (have) r = sink.emit(sink.context, pending);
+      pending = FranklinPiece{e, t0, t1, hidden};
+      have = true;
+      return r;
+    };
+    int64_t at = 0;
+    while (s == Status::kOk &&
+           ((kc < n_cuts && cuts[kc].edge == e) || ki < inc.edge_first[e + 1])) {
+      int64_t t;
+      if (ki >= inc.edge_first[e + 1] ||
+          (kc < n_cuts && cuts[kc].edge == e && cuts[kc].t <= inc.by_edge[ki].t))
+        t = cuts[kc++].t;
+      else
+        t = inc.by_edge[ki++].t;
+      s = piece(at, t);
+      at = t;
+    }
+    if (s == Status::kOk) s = piece(at, kOne);
+    if (s == Status::kOk && have) s = sink.emit(sink.context, pending);
+    if (s != Status::kOk) break;
+  }
+  if (stats) *stats = st;
+  return s;
+}
+
+}  // namespace haloplot

@@ -1,0 +1,44 @@
+#include "pipeline/surface_pipeline.h"
+
+#include <chrono>
+
+namespace haloplot::host {
+namespace {
+
+Status collect(void* context, const FranklinPiece& p) {
+  static_cast<std::vector<FranklinPiece>*>(context)->push_back(p);
+  return Status::kOk;
+}
+
+}  // namespace
+
+Status run_franklin(const SolidScene& scene, const FranklinParams& params, FranklinRun* out) {
+  SolidInput in;
+  in.vertices = scene.vertices.data();
+  in.n_vertices = uint32_t(scene.vertices.size());
+  in.edge_pairs = scene.edge_pairs.data();
+  in.n_edges = uint32_t(scene.edge_pairs.size() / 2);
+  in.triangles = scene.triangles.data();
+  in.n_triangles = uint32_t(scene.triangles.size());
+  uint32_t crossings = 4 * in.n_edges + 1024, incidences = in.n_vertices + 64;
+  Status s = Status::kOk;
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    out->bytes = franklin_bytes(in, params, crossings, incidences);
+    std::vector<uint64_t> buffer(out->bytes / 8 + 1);
+    out->pieces.clear();
+    const auto t0 = std::chrono::steady_clock::now();
+    s = franklin_hidden_lines(in, params, crossings, incidences, buffer.data(), buffer.size() * 8,
+                              FranklinSink{&collect, &out->pieces}, &out->stats);
+    out->ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (s == Status::kCrossingCapacity)
+      crossings = uint32_t(out->stats.crossings);
+    else if (s == Status::kIncidenceCapacity)
+      incidences = out->stats.incidences;
+    else
+      break;
+  }
+  return s;
+}
+
+}  // namespace haloplot::host
