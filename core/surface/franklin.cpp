@@ -191,40 +191,100 @@ Topology lite_topology(const SolidInput& in, SolidEdge* edges) {
   return t;
 }
 
+// The triangle sides that are not drawn edges (the diagonals of split polygons): coverage
+// changes across them too (the two triangles of a bent quad differ in depth, or fold), so they
+// cut edges like any other side. Appended after the drawn edges, sorted and unique.
+uint32_t append_diagonals(const SolidInput& in, uint32_t* pairs, uint64_t* keys) {
+  auto key = [](uint32_t a, uint32_t b) {
+    return a < b ? (uint64_t{a} << 32) | b : (uint64_t{b} << 32) | a;
+  };
+  for (uint32_t e = 0; e < 2 * in.n_edges; ++e) pairs[e] = in.edge_pairs[e];
+  for (uint32_t e = 0; e < in.n_edges; ++e)
+    keys[e] = key(in.edge_pairs[2 * e], in.edge_pairs[2 * e + 1]);
+  heap_sort(keys, in.n_edges, [](uint64_t a, uint64_t b) { return a < b; });
+  uint64_t* sides = keys + in.n_edges;
+  uint32_t n = 0;
+  for (uint32_t t = 0; t < in.n_triangles; ++t)
+    for (int k = 0; k < 3; ++k) {
+      const uint64_t s = key(in.triangles[t].v[k], in.triangles[t].v[(k + 1) % 3]);
+      uint32_t lo = 0, hi = in.n_edges;
+      while (lo < hi) {
+        const uint32_t mid = lo + (hi - lo) / 2;
+        if (keys[mid] < s)
+          lo = mid + 1;
+        else
+          hi = mid;
+      }
+      if ((lo < in.n_edges && keys[lo] == s) || (s >> 32) == (s & 0xffffffffu)) continue;
+      sides[n++] = s;
+    }
+  heap_sort(sides, n, [](uint64_t a, uint64_t b) { return a < b; });
+  uint32_t out = in.n_edges;
+  for (uint32_t i = 0; i < n; ++i) {
+    if (i > 0 && sides[i] == sides[i - 1]) continue;
+    pairs[2 * out] = uint32_t(sides[i] >> 32);
+    pairs[2 * out + 1] = uint32_t(sides[i] & 0xffffffffu);
+    ++out;
+  }
+  return out;
+}
+
 }  // namespace
 
-size_t franklin_bytes(const SolidInput& in, const FranklinParams& p, uint32_t crossing_capacity,
+size_t franklin_bytes(const SolidInput& drawn, const FranklinParams& p, uint32_t crossing_capacity,
                       uint32_t incidence_capacity) {
-  const Grid g = make_grid(in, p);
-  uint64_t fp = 0, ep = 0;
-  bounds(in, g, &fp, &ep);
+  // Sized as if every triangle side were a diagonal (the bound; a run uses what it finds).
+  const size_t most = size_t{drawn.n_edges} + 3 * size_t{drawn.n_triangles};
   ByteCounter c;
+  c.take<uint32_t>(2 * most);
+  c.take<uint64_t>(most);
+  const Grid g = make_grid(drawn, p);
+  uint64_t fp = 0, ep = 0;
+  bounds(drawn, g, &fp, &ep);
+  for (uint32_t t = 0; t < drawn.n_triangles; ++t)
+    for (int k = 0; k < 3; ++k) {
+      const Edge3 side{drawn.vertices[drawn.triangles[t].v[k]],
+                       drawn.vertices[drawn.triangles[t].v[(k + 1) % 3]]};
+      for_each_cell(g, side, CellCover::kExact, 0, [&](uint32_t) { ++ep; });
+    }
+  SolidInput in = drawn;
+  in.n_edges = static_cast<uint32_t>(most);
   count_arrays(c, in, g, fp, ep, crossing_capacity);
   Topology t;
   t.n_vertices = in.n_vertices;
   t.n_edges = in.n_edges;
-  return c.total + incidence_bytes(t, incidence_capacity) + 16;
+  return c.total + incidence_bytes(t, incidence_capacity) + 24;
 }
 
-Status franklin_hidden_lines(const SolidInput& in, const FranklinParams& p,
+Status franklin_hidden_lines(const SolidInput& drawn, const FranklinParams& p,
                              uint32_t crossing_capacity, uint32_t incidence_capacity, void* buffer,
                              size_t bytes, FranklinSink sink, FranklinStats* stats) {
-  for (uint32_t v = 0; v < in.n_vertices; ++v)
-    if (!in_range(in.vertices[v])) return Status::kCoordinateOutOfRange;
-  for (uint32_t e = 0; e < 2 * in.n_edges; ++e)
-    if (in.edge_pairs[e] >= in.n_vertices) return Status::kBadParameter;
-  for (uint32_t t = 0; t < in.n_triangles; ++t)
+  for (uint32_t v = 0; v < drawn.n_vertices; ++v)
+    if (!in_range(drawn.vertices[v])) return Status::kCoordinateOutOfRange;
+  for (uint32_t e = 0; e < 2 * drawn.n_edges; ++e)
+    if (drawn.edge_pairs[e] >= drawn.n_vertices) return Status::kBadParameter;
+  for (uint32_t t = 0; t < drawn.n_triangles; ++t)
     for (int k = 0; k < 3; ++k)
-      if (in.triangles[t].v[k] >= in.n_vertices) return Status::kBadParameter;
+      if (drawn.triangles[t].v[k] >= drawn.n_vertices) return Status::kBadParameter;
+  if (uint64_t{drawn.n_edges} + 3ull * drawn.n_triangles > 0x3fffffffu)
+    return Status::kTooManyEdges;
   FranklinStats st;
-  const Grid g = make_grid(in, p);
+  Carver carve(buffer, bytes);
+  const size_t most = size_t{drawn.n_edges} + 3 * size_t{drawn.n_triangles};
+  uint32_t* all_pairs = carve.take<uint32_t>(2 * most);
+  uint64_t* keys = carve.take<uint64_t>(most);
+  if (carve.short_) return Status::kWorkspaceTooSmall;
+  // The edges that cut: the drawn ones, then the diagonals (which make no pieces).
+  SolidInput in = drawn;
+  in.edge_pairs = all_pairs;
+  in.n_edges = append_diagonals(drawn, all_pairs, keys);
+  const Grid g = make_grid(drawn, p);
   uint64_t face_pairs = 0, edge_pairs = 0;
   bounds(in, g, &face_pairs, &edge_pairs);
   if (face_pairs > 0xffffffffu || edge_pairs > 0xffffffffu) return Status::kCellPairOverflow;
   const uint32_t cells = g.cells();
   st.b = g.nx > g.ny ? g.nx : g.ny;
   st.cells = cells;
-  Carver carve(buffer, bytes);
   SolidEdge* lite = carve.take<SolidEdge>(in.n_edges);
   uint32_t* blocking = carve.take<uint32_t>(cells);
   uint32_t* face_first = carve.take<uint32_t>(size_t{cells} + 1);
@@ -307,7 +367,7 @@ Status franklin_hidden_lines(const SolidInput& in, const FranklinParams& p,
   for (uint32_t c = cells; c > 0; --c) edge_first[c] = edge_first[c - 1];
   edge_first[0] = 0;
   st.edge_cells = edge_first[cells];
-  for (uint32_t e = 0; e < in.n_edges; ++e) st.edges_deleted += edge_kept[e] == 0;
+  for (uint32_t e = 0; e < drawn.n_edges; ++e) st.edges_deleted += edge_kept[e] == 0;
 
   // Step 8: pairs in each cell; a crossing counts in the cell that holds it; both edges cut.
   uint64_t n_cuts = 0;
@@ -351,7 +411,7 @@ Status franklin_hidden_lines(const SolidInput& in, const FranklinParams& p,
 
   // Step 9: pieces and their midpoints.
   uint64_t k = 0;
-  for (uint32_t e = 0; e < in.n_edges; ++e) {
+  for (uint32_t e = 0; e < drawn.n_edges; ++e) {  // only the drawn edges make pieces
     const Edge3 ed = edge_of(in, e);
     const int64_t dx = ed.b.x - ed.a.x, dy = ed.b.y - ed.a.y, dz = ed.b.z - ed.a.z;
     while (k < n_cuts && cuts[k].edge < e) ++k;
