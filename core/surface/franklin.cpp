@@ -147,6 +147,44 @@ bool edge_behind(const Edge3& e, const Plane& fb, const Cell& c) {
   return sign_at(lo_n, lo_d) < 0 && sign_at(hi_n, hi_d) < 0;
 }
 
+// A polygon is the run of consecutive triangles with its id (the host splits each polygon into
+// one such run). A flat polygon blocks a cell as a whole: Franklin's faces are polygons, and a
+// square split along its diagonal would rarely cover a cell with either half alone.
+uint32_t group_end(const SolidInput& in, uint32_t start) {
+  uint32_t e = start + 1;
+  while (e < in.n_triangles && in.triangles[e].polygon == in.triangles[start].polygon) ++e;
+  return e;
+}
+
+// Every corner of the group's triangles on the first one's plane (exact: a 3-D orientation).
+bool flat_group(const SolidInput& in, uint32_t start, uint32_t end) {
+  const Plane f = plane_of(in, start);
+  const int64_t ux = f.b.x - f.a.x, uy = f.b.y - f.a.y, uz = f.b.z - f.a.z;
+  const int64_t vx = f.c.x - f.a.x, vy = f.c.y - f.a.y, vz = f.c.z - f.a.z;
+  const int64_t nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+  for (uint32_t t = start + 1; t < end; ++t)
+    for (int k = 0; k < 3; ++k) {
+      const Point3 q = in.vertices[in.triangles[t].v[k]];
+      const Wide d = mul_i64(nx, q.x - f.a.x) + mul_i64(ny, q.y - f.a.y) + mul_i64(nz, q.z - f.a.z);
+      if (!d.is_zero()) return false;
+    }
+  return true;
+}
+
+// The group's projection holds all four corners (each in one of its triangles).
+bool group_blocks(const SolidInput& in, uint32_t start, uint32_t end, const Cell& c) {
+  const int64_t xs[4] = {c.x0, c.x1, c.x0, c.x1}, ys[4] = {c.y0, c.y0, c.y1, c.y1};
+  for (int k = 0; k < 4; ++k) {
+    bool in_one = false;
+    for (uint32_t t = start; t < end && !in_one; ++t) {
+      const Plane f = plane_of(in, t);
+      in_one = f.area != 0 && f.holds(xs[k], ys[k]);
+    }
+    if (!in_one) return false;
+  }
+  return true;
+}
+
 struct Cut {
   uint32_t edge, t;
 };
@@ -301,16 +339,25 @@ Status franklin_hidden_lines(const SolidInput& drawn, const FranklinParams& p,
 
   // Steps 5-6: blocking faces first (a face becomes Fb unless the current one is in front of
   // it), then each cell's faces not behind its final Fb.
+  // blocking[c] is the first triangle of the blocking polygon (group_end() finds the rest).
   for (uint32_t c = 0; c < cells; ++c) blocking[c] = kNone;
-  for (uint32_t t = 0; t < in.n_triangles; ++t) {
-    const Plane f = plane_of(in, t);
-    if (f.area == 0) continue;  // edge-on: covers no cell, hides nothing
-    for_each_cell(g, face_box(in, t), CellCover::kBoundingBox, 0, [&](uint32_t c) {
-      const Cell box = cell_box(g, c);
-      if (!blocks(f, box)) return;
-      if (blocking[c] != kNone && face_behind(f, plane_of(in, blocking[c]), box)) return;
-      blocking[c] = t;
-    });
+  for (uint32_t t = 0; t < in.n_triangles;) {
+    const uint32_t end = group_end(in, t);
+    const bool flat = flat_group(in, t, end);
+    for (uint32_t f = t; f < end; ++f) {
+      // A flat polygon is tried whole, once, over the union of its triangles' boxes (each
+      // triangle's box is visited; a cell already blocked by this polygon is skipped).
+      const Plane pf = plane_of(in, f);
+      if (pf.area == 0) continue;  // edge-on: covers no cell, hides nothing
+      for_each_cell(g, face_box(in, f), CellCover::kBoundingBox, 0, [&](uint32_t c) {
+        if (blocking[c] == t) return;
+        const Cell box = cell_box(g, c);
+        if (!(flat ? group_blocks(in, t, end, box) : blocks(pf, box))) return;
+        if (blocking[c] != kNone && face_behind(pf, plane_of(in, blocking[c]), box)) return;
+        blocking[c] = flat ? t : f;
+      });
+    }
+    t = end;
   }
   for (uint32_t c = 0; c <= cells; ++c) face_first[c] = 0;
   for (int pass = 0; pass < 2; ++pass) {
@@ -319,8 +366,9 @@ Status franklin_hidden_lines(const SolidInput& drawn, const FranklinParams& p,
       if (f.area == 0) continue;
       bool kept = false;
       for_each_cell(g, face_box(in, t), CellCover::kBoundingBox, 0, [&](uint32_t c) {
-        if (blocking[c] == t) {
-          kept = true;  // the blocking face itself is kept apart from the list
+        if (blocking[c] != kNone && blocking[c] <= t && t < group_end(in, blocking[c]) &&
+            (blocking[c] == t || flat_group(in, blocking[c], group_end(in, blocking[c])))) {
+          kept = true;  // the blocking polygon itself is kept apart from the list
           return;
         }
         if (blocking[c] != kNone && face_behind(f, plane_of(in, blocking[c]), cell_box(g, c))) {
@@ -450,7 +498,12 @@ Status franklin_hidden_lines(const SolidInput& drawn, const FranklinParams& p,
           return (projected_area2(a, b, cc) >= 0 ? cover_halves(a, b, cc, pt)
                                                  : cover_halves(a, cc, b, pt)) != 0;
         };
-        hidden = blocking[c] != kNone && covers(blocking[c]);
+        hidden = false;
+        if (blocking[c] != kNone) {
+          const uint32_t b0 = blocking[c];
+          const uint32_t b1 = flat_group(in, b0, group_end(in, b0)) ? group_end(in, b0) : b0 + 1;
+          for (uint32_t t = b0; !hidden && t < b1; ++t) hidden = covers(t);
+        }
         for (uint32_t i = face_first[c]; !hidden && i < face_first[c + 1]; ++i)
           hidden = covers(face_list[i]);
       }
