@@ -42,6 +42,15 @@ for model in pair_of_cubes linked_tori; do
   fi
 done
 
+# Hatched visible faces (Franklin 1980's Figure 4 for a pen): angle turning with depth, or not.
+"$tool" plot scenes/pair_of_cubes.obj --view 30,25 --mode hidden-removed --outline --hatch 4,0,180 -o "$work/h1.svg"
+"$tool" plot scenes/pair_of_cubes.obj --view 30,25 --mode hidden-removed --outline --hatch 3,45,0 -o "$work/h2.svg"
+"$tool" plot scenes/linked_tori.obj --view 30,25 --mode hidden-removed --outline --hatch 2.5,0,180 -o "$work/h3.svg"
+"$tool" plot scenes/linked_tori.obj --view 30,25 --mode hidden-dashed --hatch 2.5,45,0 -o "$work/h4.svg"
+compose docs/hatch.svg "angle turns with depth" "$work/h1.svg" "one angle" "$work/h2.svg" \
+  "angle turns with depth" "$work/h3.svg" "one angle, hidden dashed" "$work/h4.svg"
+if command -v rsvg-convert >/dev/null 2>&1; then rsvg-convert -b white docs/hatch.svg -o docs/hatch.png; fi
+
 # The demo scene as solids: rule counts, V.C. savings, outlines.
 "$tool" demo-scene --cubes 28 -o "$work/demo.obj"
 "$tool" plot "$work/demo.obj" --view 30,40 --mode hidden-removed --outline -o "$work/demo.svg" \

@@ -11,6 +11,7 @@
 #include "io/spans_file.h"
 #include "pipeline/drawing_modes.h"
 #include "pipeline/scene_input.h"
+#include "pipeline/surface_pipeline.h"
 #include "render/svg.h"
 
 namespace haloplot::host {
@@ -81,22 +82,37 @@ int cmd_plot_solid(const Options& o) {
   if (!run.fallback_reason.empty() && so.method == HiddenMethod::kAuto)
     std::cerr << "haloplot: " << o.positional[0] << ": " << run.fallback_reason
               << ": hidden lines by the topology-free fallback\n";
-  const ModeDrawing d = make_mode_drawing(run, so.spec);
+  ModeDrawing d = make_mode_drawing(run, so.spec);
+  HatchRun hatch;
+  if (so.hatch) {
+    const Status hs = run_hatch(scene, so.hatch_params, &hatch);
+    if (!ok(hs)) return fail(o.positional[0] + ": hatching failed: " + status_name(hs));
+    for (const HatchStroke& h : hatch.strokes)
+      d.hatch.push_back(Span{h.polygon, 0, 0, h.line.a.x, h.line.a.y, h.line.b.x, h.line.b.y});
+  }
   SvgStyle style;
   style.second_pen = &d.outline;
   error = write_atomically(o.get("-o"), [&](std::ostream& out) {
-    write_svg(out, d.spans, style);
+    std::vector<Span> first = d.spans;
+    first.insert(first.end(), d.hatch.begin(), d.hatch.end());
+    write_svg(out, first, style);
     return true;
   });
   if (!error.empty()) return fail(error);
   if (!o.get("--spans").empty()) {
     error = write_atomically(o.get("--spans"), [&](std::ostream& out) {
-      write_spans_qi(out, d.spans, d.qi, d.outline);
+      write_spans_qi(out, d.spans, d.qi, d.outline, d.hatch);
       return true;
     });
     if (!error.empty()) return fail(error);
   }
-  if (o.has("--stats")) print_solid_stats(run, tri);
+  if (o.has("--stats")) {
+    print_solid_stats(run, tri);
+    if (so.hatch)
+      std::fprintf(stderr, "hatch_lines=%u\nhatch_crossings=%llu\nhatch_strokes=%llu\n",
+                   hatch.stats.lines, (unsigned long long)hatch.stats.crossings,
+                   (unsigned long long)hatch.stats.visible_pieces);
+  }
   return 0;
 }
 

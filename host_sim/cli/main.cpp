@@ -48,7 +48,8 @@ const char* kUsage =
     "               [--view AZ,EL] [--perspective D] [--dump-edges OUT.edges]   (for .obj)\n"
     "  haloplot plot MODEL.obj --mode all|hidden-removed|hidden-dashed -o OUT.svg [--outline]\n"
     "               [--dash LEN,GAP (mm)] [--steps-per-mm N] [--method auto|qi|fallback]\n"
-    "               [--spans OUT.spans] [--view AZ,EL] [--perspective D] [--stats]\n"
+    "               [--hatch SPACING[,ANGLE[,TURN]]] [--spans OUT.spans] [--view AZ,EL]\n"
+    "               [--perspective D] [--stats]\n"
     "  haloplot sim JOB.job -o OUT.trace [--gcode OUT.gcode] [--hpgl OUT.hpgl] [--stats]\n"
     "  haloplot replay IN.trace -o OUT.svg [--stats]\n"
     "  haloplot send JOB.job --port PATH [--replot W] [--corrupt-every K] [--truncate-every K]\n"
@@ -335,7 +336,8 @@ int cmd_draw(int argc, char** argv) {
 
 int cmd_plot(int argc, char** argv) {
   std::set<std::string> valued = kCutValued;
-  valued.insert({"--halo", "--spans", "--cut", "--mode", "--dash", "--steps-per-mm", "--method"});
+  valued.insert(
+      {"--halo", "--spans", "--cut", "--mode", "--dash", "--steps-per-mm", "--method", "--hatch"});
   valued.insert(std::begin(kSceneOptions), std::end(kSceneOptions));
   const Options o = parse_options(argc, argv, 2, valued, {"--exact-halo", "--stats", "--outline"});
   if (!o.error.empty()) return fail(o.error);

@@ -1,5 +1,7 @@
 #include "cli/solid_options.h"
 
+#include <vector>
+
 #include "io/line_reader.h"
 
 namespace haloplot::host {
@@ -53,6 +55,28 @@ bool parse_solid_options(const Options& o, SolidOptions* out, std::string* error
     return false;
   }
   so.spec.outline = o.has("--outline");
+  if (!o.get("--hatch").empty()) {
+    // SPACING in mm, then the angle and the turn across the depth range in whole degrees.
+    std::vector<std::string> f;
+    std::string h = o.get("--hatch");
+    for (size_t at = 0;;) {
+      const size_t next = h.find(',', at);
+      f.push_back(h.substr(at, next == std::string::npos ? std::string::npos : next - at));
+      if (next == std::string::npos) break;
+      at = next + 1;
+    }
+    int64_t angle = 45, turn = 90;
+    if (f.size() > 3 || !mm_to_steps(f[0], so.steps_per_mm, &so.hatch_params.spacing) ||
+        (f.size() > 1 && !parse_int(f[1], -360, 360, &angle)) ||
+        (f.size() > 2 && !parse_int(f[2], -360, 360, &turn))) {
+      *error =
+          "--hatch '" + h + "' must be SPACING[,ANGLE[,DEGREES_ACROSS_DEPTH]] (mm; whole degrees)";
+      return false;
+    }
+    so.hatch = true;
+    so.hatch_params.angle_mdeg = int32_t(angle * 1000);
+    so.hatch_params.mdeg_per_depth = int32_t(turn * 1000);
+  }
   *out = so;
   return true;
 }

@@ -5,6 +5,7 @@
 
 #include "cli/options.h"
 #include "pipeline/drawing_modes.h"
+#include "surface/hatch.h"
 
 namespace haloplot::host {
 
@@ -12,9 +13,12 @@ struct SolidOptions {
   ModeSpec spec;
   HiddenMethod method = HiddenMethod::kAuto;
   uint32_t steps_per_mm = 80;
+  bool hatch = false;  // --hatch SPACING[,ANGLE[,DEGREES_ACROSS_DEPTH]] (mm, degrees)
+  HatchParams hatch_params;
 };
 
-// Options: --mode, --dash LEN,GAP (mm), --steps-per-mm N, --method auto|qi|fallback, --outline.
+// Options: --mode, --dash LEN,GAP (mm), --steps-per-mm N, --method auto|qi|fallback, --outline,
+// --hatch SPACING[,ANGLE[,DEGREES_ACROSS_DEPTH]].
 bool parse_solid_options(const Options& o, SolidOptions* out, std::string* error);
 
 // "2", "0.5", "1.25" mm to plot steps, rounded to the nearest; false if not such a number.

@@ -40,10 +40,21 @@ InputError read_job_file(const std::string& path, JobFile* out) {
             f[1] == "hidden-removed" ? DrawingEffect::kHiddenRemoved : DrawingEffect::kHiddenDashed;
         out->solid_options["--mode"] = f[1];
       } else if (f[1] == "hatch")
-        return bad("drawing 'hatch' arrives with the hidden-surface issue");
+        return bad(
+            "hatching is the setting 'hatch SPACING ANGLE TURN' with drawing hidden-removed or "
+            "hidden-dashed");
       else
         return bad("drawing must be all, haloed, hidden-removed or hidden-dashed, not '" + f[1] +
                    "'");
+    } else if (key == "hatch" && f.size() >= 2 && f.size() <= 4) {
+      std::string v = f[1];
+      for (size_t k = 2; k < f.size(); ++k) v += "," + f[k];
+      out->solid_options["--hatch"] = v;
+      Options o;
+      o.values = out->solid_options;
+      SolidOptions so;
+      std::string error;
+      if (!parse_solid_options(o, &so, &error)) return bad(error);
     } else if ((key == "view" || key == "perspective" || key == "method" || key == "dash") &&
                f.size() == (key == "dash" ? 3u : 2u)) {
       out->solid_options["--" + key] = key == "dash" ? f[1] + "," + f[2] : f[1];

@@ -8,6 +8,8 @@
 //   dash 2 1                  hidden-dashed: dash and gap in mm
 //   outline on                hidden-line modes: redraw Kira's outlines in a second pass
 //   method auto               hidden-line method: auto | qi | fallback
+//   hatch 1.5 45 90           hidden-line modes: hatch the visible faces, spacing in mm, angle
+//                             and the turn across the depth range in degrees
 //   halo 50                   halo width, plot steps
 //   halo-mode paper           paper | exact
 //   effects acceleration pen-servo    plotter effects to simulate: any of acceleration,

@@ -13,7 +13,8 @@ void write_spans(std::ostream& out, const std::vector<Span>& spans) {
 }
 
 void write_spans_qi(std::ostream& out, const std::vector<Span>& spans,
-                    const std::vector<int32_t>& qi, const std::vector<Span>& outline) {
+                    const std::vector<int32_t>& qi, const std::vector<Span>& outline,
+                    const std::vector<Span>& hatch) {
   out << "# haloplot spans v2: s EDGE X0 Y0 X1 Y1 QI (steps; o: outline pass)\n";
   for (size_t i = 0; i < spans.size(); ++i) {
     const Span& s = spans[i];
@@ -22,6 +23,8 @@ void write_spans_qi(std::ostream& out, const std::vector<Span>& spans,
   }
   for (const Span& s : outline)
     out << "o " << s.edge << ' ' << s.x0 << ' ' << s.y0 << ' ' << s.x1 << ' ' << s.y1 << " 0\n";
+  for (const Span& s : hatch)
+    out << "h " << s.edge << ' ' << s.x0 << ' ' << s.y0 << ' ' << s.x1 << ' ' << s.y1 << " 0\n";
 }
 
 }  // namespace haloplot::host

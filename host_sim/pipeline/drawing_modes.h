@@ -23,6 +23,7 @@ struct ModeDrawing {
   std::vector<Span> spans;    // first pen, in edge order then along each edge
   std::vector<int32_t> qi;    // QI of each span, in halves (kQiUnknown when not counted)
   std::vector<Span> outline;  // second pass
+  std::vector<Span> hatch;    // hatching of the visible faces (Span::edge = polygon)
 };
 
 // "all", "hidden-removed", "hidden-dashed"; false for anything else.

@@ -6,6 +6,7 @@
 #include "io/job_file.h"
 #include "io/line_reader.h"
 #include "io/obj_file.h"
+#include "pipeline/surface_pipeline.h"
 #include "view/projection.h"
 
 namespace haloplot::host {
@@ -170,8 +171,17 @@ bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* e
   }
   const ModeDrawing d = make_mode_drawing(run, so.spec);
   edges->clear();
-  for (const auto* list : {&d.spans, &d.outline})
-    for (const Span& x : *list) edges->push_back(Edge3{{x.x0, x.y0, 0}, {x.x1, x.y1, 0}});
+  for (const Span& x : d.spans) edges->push_back(Edge3{{x.x0, x.y0, 0}, {x.x1, x.y1, 0}});
+  if (so.hatch) {
+    HatchRun hatch;
+    const Status hs = run_hatch(scene, so.hatch_params, &hatch);
+    if (!ok(hs)) {
+      *error = jf.scene_path + ": hatching failed: " + status_name(hs);
+      return false;
+    }
+    for (const HatchStroke& h : hatch.strokes) edges->push_back(Edge3{h.line.a, h.line.b});
+  }
+  for (const Span& x : d.outline) edges->push_back(Edge3{{x.x0, x.y0, 0}, {x.x1, x.y1, 0}});
   return true;
 }
 

@@ -41,4 +41,41 @@ Status run_franklin(const SolidScene& scene, const FranklinParams& params, Frank
   return s;
 }
 
+namespace {
+
+Status collect_stroke(void* context, const HatchStroke& s) {
+  static_cast<std::vector<HatchStroke>*>(context)->push_back(s);
+  return Status::kOk;
+}
+
+}  // namespace
+
+Status run_hatch(const SolidScene& scene, const HatchParams& params, HatchRun* out) {
+  SolidInput in;
+  in.vertices = scene.vertices.data();
+  in.n_vertices = uint32_t(scene.vertices.size());
+  in.edge_pairs = scene.edge_pairs.data();
+  in.n_edges = uint32_t(scene.edge_pairs.size() / 2);
+  in.triangles = scene.triangles.data();
+  in.n_triangles = uint32_t(scene.triangles.size());
+  uint32_t crossings = 8 * in.n_triangles + 1024;
+  size_t bytes = hatch_bytes(in, params, crossings);
+  Status s = Status::kOk;
+  for (int attempt = 0; attempt < 6; ++attempt) {
+    std::vector<uint64_t> buffer(bytes / 8 + 1);
+    out->strokes.clear();
+    s = hatch_faces(in, params, crossings, buffer.data(), buffer.size() * 8,
+                    HatchSink{&collect_stroke, &out->strokes}, &out->stats);
+    if (s == Status::kCrossingCapacity) {
+      crossings = uint32_t(out->stats.crossings);
+      bytes = hatch_bytes(in, params, crossings);
+    } else if (s == Status::kWorkspaceTooSmall) {
+      bytes = out->stats.bytes_needed + bytes / 2;
+    } else {
+      break;
+    }
+  }
+  return s;
+}
+
 }  // namespace haloplot::host

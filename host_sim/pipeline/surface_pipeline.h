@@ -5,6 +5,7 @@
 
 #include "pipeline/solid_pipeline.h"
 #include "surface/franklin.h"
+#include "surface/hatch.h"
 
 namespace haloplot::host {
 
@@ -16,5 +17,13 @@ struct FranklinRun {
 };
 
 Status run_franklin(const SolidScene& scene, const FranklinParams& params, FranklinRun* out);
+
+struct HatchRun {
+  std::vector<HatchStroke> strokes;
+  HatchStats stats;
+};
+
+// The hatching of every visible face (core/surface/hatch.h), retried until the buffer fits.
+Status run_hatch(const SolidScene& scene, const HatchParams& params, HatchRun* out);
 
 }  // namespace haloplot::host

@@ -127,5 +127,18 @@ printf 'scene obj.edges\ndrawing hidden-removed\n' > edgesjob.job
 "$tool" sim edgesjob.job -o x.trace 2> err.txt
 expect '[ $? -ne 0 ] && grep -q "needs an .obj scene" err.txt' "hidden lines of an .edges scene are refused in a job"
 
+
+# Hatching (Franklin 1980's shading, for a pen): on the plot, in the spans, through a job.
+"$tool" plot good.obj --view 30,25 --mode hidden-removed --hatch 1,30,90 -o hatch.svg --spans hatch.spans --stats 2> hatch.txt
+rc=$?
+expect '[ $rc -eq 0 ] && [ "$(grep -c "^h " hatch.spans)" -gt 10 ] && grep -q "^hatch_strokes=" hatch.txt' "--hatch hatches the visible faces: $(cat hatch.txt)"
+"$tool" plot good.obj --mode hidden-removed --hatch 1,sideways -o x.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q -- "--hatch" err.txt' "a bad --hatch is named"
+printf 'scene good.obj\ndrawing hidden-removed\nview 30,25\nhatch 1 30 90\n' > hatch.job
+"$tool" sim hatch.job -o hatch.trace --stats 2> hatchsim.txt
+rc=$?
+expect '[ $rc -eq 0 ] && [ "$(grep "^edges=" hatchsim.txt | cut -d= -f2)" -gt 20 ]' "a job hatches through the simulator: $(cat hatchsim.txt | head -3)"
+
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -1,0 +1,171 @@
+// Hatching against its two promises, checked by brute force in long double (independent of the
+// core's exact predicates): every hatch stroke lies on the face that is nearest the viewer at
+// its points (so each hatched region is inside exactly one visible face), and no stroke crosses
+// a visible edge. Scenes: the pair of cubes, linked tori, spheres, concave frames, random views,
+// depth-dependent angles. Points within a step of any projected edge are skipped (the strokes'
+// ends are rounded to steps, within 1/2 step of the face's side).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <set>
+#include <string>
+
+#include "check.h"
+#include "pipeline/surface_pipeline.h"
+#include "support/solid_scenes.h"
+
+using namespace haloplot;
+using namespace haloplot::host;
+using namespace solid_scenes;
+
+namespace {
+
+using LD = long double;
+
+// Distance from p to segment ab, on paper.
+LD seg_dist(LD px, LD py, const Point3& a, const Point3& b) {
+  const LD dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+  LD t = l2 > 0 ? ((px - a.x) * dx + (py - a.y) * dy) / l2 : 0;
+  t = std::max<LD>(0, std::min<LD>(1, t));
+  return std::hypot(px - (a.x + t * dx), py - (a.y + t * dy));
+}
+
+// The nearest face at (px, py) by brute force, or -1; `near_edge` when the point is within a
+// step of a side of any face that holds it (ambiguous at the step scale: skipped).
+int nearest(const SolidScene& s, LD px, LD py, bool* near_edge) {
+  int best = -1;
+  LD best_z = -1e300L;
+  *near_edge = false;
+  for (size_t t = 0; t < s.triangles.size(); ++t) {
+    const Point3 a = s.vertices[s.triangles[t].v[0]], b = s.vertices[s.triangles[t].v[1]],
+                 c = s.vertices[s.triangles[t].v[2]];
+    const LD area = LD(b.x - a.x) * (c.y - a.y) - LD(b.y - a.y) * (c.x - a.x);
+    if (area == 0) continue;
+    const LD l1 = (LD(b.x - px) * (c.y - py) - LD(b.y - py) * (c.x - px)) / area;
+    const LD l2 = (LD(c.x - px) * (a.y - py) - LD(c.y - py) * (a.x - px)) / area;
+    const LD l3 = 1 - l1 - l2;
+    const bool inside = l1 >= 0 && l2 >= 0 && l3 >= 0;
+    const LD d = std::min({seg_dist(px, py, a, b), seg_dist(px, py, b, c), seg_dist(px, py, c, a)});
+    if ((inside || d < 1.0L) && d < 1.0L) *near_edge = true;
+    if (!inside) continue;
+    const LD z = l1 * a.z + l2 * b.z + l3 * c.z;
+    if (z > best_z) best_z = z, best = int(t);
+  }
+  return best;
+}
+
+bool proper_cross(LD ax, LD ay, LD bx, LD by, LD cx, LD cy, LD dx, LD dy, LD margin_ab,
+                  LD margin_cd) {
+  const LD rx = bx - ax, ry = by - ay, sx = dx - cx, sy = dy - cy;
+  const LD den = rx * sy - ry * sx;
+  if (den == 0) return false;
+  const LD t = ((cx - ax) * sy - (cy - ay) * sx) / den, u = ((cx - ax) * ry - (cy - ay) * rx) / den;
+  return t > margin_ab && t < 1 - margin_ab && u > margin_cd && u < 1 - margin_cd;
+}
+
+void check_scene(const SolidScene& s, const HatchParams& hp, const std::string& label) {
+  HatchRun hr;
+  const Status st = run_hatch(s, hp, &hr);
+  CHECK_MSG(st == Status::kOk, label + ": " + status_name(st));
+  CHECK_MSG(!hr.strokes.empty(), label + ": some strokes");
+  SolidRun qi;
+  CHECK(run_hidden_lines(s, HiddenMethod::kQi, FallbackParams{}, &qi) == Status::kOk);
+  std::map<uint32_t, std::set<uint32_t>> poly_vertices;
+  for (const Triangle& t : s.triangles)
+    for (uint32_t v : t.v) poly_vertices[t.polygon].insert(v);
+  int wrong_face = 0, crossing = 0, checked = 0;
+  for (const HatchStroke& h : hr.strokes) {
+    const LD len = std::hypot(LD(h.line.b.x - h.line.a.x), LD(h.line.b.y - h.line.a.y));
+    if (len < 4) continue;
+    for (LD f : {0.3L, 0.5L, 0.7L}) {
+      const LD px = h.line.a.x + f * (h.line.b.x - h.line.a.x),
+               py = h.line.a.y + f * (h.line.b.y - h.line.a.y);
+      bool near_edge = false;
+      const int t = nearest(s, px, py, &near_edge);
+      if (near_edge) continue;
+      ++checked;
+      if (t < 0 || s.triangles[size_t(t)].polygon != h.polygon) ++wrong_face;
+    }
+    // No visible edge of another face crosses it (a step of slack at both ends of both). Its
+    // own polygon's sides are where its ends were rounded to: near them it may overshoot by
+    // half a step, which along a line almost parallel to the side is more than a step.
+    for (const SolidPiece& p : qi.pieces) {
+      if (p.hidden) continue;
+      const uint32_t ea = s.edge_pairs[2 * p.edge], eb = s.edge_pairs[2 * p.edge + 1];
+      if (poly_vertices[h.polygon].count(ea) && poly_vertices[h.polygon].count(eb)) continue;
+      const Edge3& e = qi.edges[p.edge];
+      const LD t0 = std::ldexp(LD(p.t0), -32), t1 = std::ldexp(LD(p.t1), -32);
+      const LD ax = e.a.x + t0 * (e.b.x - e.a.x), ay = e.a.y + t0 * (e.b.y - e.a.y);
+      const LD bx = e.a.x + t1 * (e.b.x - e.a.x), by = e.a.y + t1 * (e.b.y - e.a.y);
+      const LD plen = std::hypot(bx - ax, by - ay);
+      if (plen < 3) continue;
+      // A stroke's ends are rounded to steps: one that reaches an edge may poke through it by
+      // half a step. A crossing counts only when both ends are over a step from the edge's line.
+      const LD da = ((h.line.a.x - ax) * (by - ay) - (h.line.a.y - ay) * (bx - ax)) / plen;
+      const LD db = ((h.line.b.x - ax) * (by - ay) - (h.line.b.y - ay) * (bx - ax)) / plen;
+      if (std::min(std::fabs(da), std::fabs(db)) > 1.0L &&
+          proper_cross(h.line.a.x, h.line.a.y, h.line.b.x, h.line.b.y, ax, ay, bx, by, 0,
+                       1.5L / plen)) {
+        if (++crossing <= 2)
+          std::fprintf(stderr,
+                       "  stroke poly %u (%d,%d)-(%d,%d) crosses edge %u (%d,%d,%d)-(%d,%d,%d) "
+                       "piece %.4Lf..%.4Lf\n",
+                       h.polygon, h.line.a.x, h.line.a.y, h.line.b.x, h.line.b.y, p.edge, e.a.x,
+                       e.a.y, e.a.z, e.b.x, e.b.y, e.b.z, t0, t1);
+      }
+    }
+  }
+  CHECK_MSG(checked > 0, label + ": points checked");
+  CHECK_MSG(wrong_face == 0, label + ": " + std::to_string(wrong_face) + " of " +
+                                 std::to_string(checked) + " points not on the nearest face");
+  CHECK_MSG(crossing == 0,
+            label + ": " + std::to_string(crossing) + " strokes cross a visible edge");
+}
+
+}  // namespace
+
+int main() {
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int32_t> az(-180000, 180000), el(-80000, 80000);
+  std::vector<std::pair<std::string, Mesh>> meshes;
+  {
+    Mesh m;
+    box(&m, 0, 0, 0, 2000, 2000, 2000);
+    box(&m, 1000, -3000, 1000, 3000, -1000, 3000);
+    meshes.push_back({"pair of cubes", m});
+  }
+  {
+    Mesh m;
+    torus(&m, 0, 0, 0, 20000, 7000, 24, 12);
+    torus(&m, 20000, 0, 0, 20000, 7000, 24, 12, true);
+    meshes.push_back({"linked tori", m});
+  }
+  {
+    Mesh m;
+    sphere(&m, 0, 0, 0, 20000, 8, 16);
+    sphere(&m, 30000, 10000, 12000, 9000, 8, 16);
+    meshes.push_back({"spheres", m});
+  }
+  {
+    Mesh m;
+    frame(&m, 0, 0, 10000, 4000, 0, 3000);
+    frame(&m, 3000, 3000, 9000, 5000, 6000, 8000);
+    meshes.push_back({"frames", m});
+  }
+  for (const auto& [name, m] : meshes)
+    for (int i = 0; i < 4; ++i) {
+      const View v = i == 0 ? view(30000, 25000) : view(az(rng), el(rng));
+      SolidScene s;
+      if (!project(m, v, &s)) continue;
+      HatchParams hp;
+      hp.spacing = 150;
+      hp.angle_mdeg = 20000 * i;
+      hp.mdeg_per_depth = 180000;
+      check_scene(s, hp,
+                  name + " view " + std::to_string(v.azimuth_mdeg) + "," +
+                      std::to_string(v.elevation_mdeg));
+    }
+  return check::finish("hatch");
+}
