@@ -43,6 +43,28 @@ struct Grid {
 inline int32_t min_i32(int32_t a, int32_t b) { return a < b ? a : b; }
 inline int32_t max_i32(int32_t a, int32_t b) { return a > b ? a : b; }
 
+// A grid over the points' bounding box with about `per_axis` square cells along its longer
+// side (at least one step each): the vertex, face and Franklin grids of the hidden-line stages.
+inline Grid grid_over(const Point3* p, uint32_t n, uint32_t per_axis) {
+  int32_t x0 = kCoordMax, y0 = kCoordMax, x1 = 0, y1 = 0;
+  for (uint32_t v = 0; v < n; ++v) {
+    x0 = min_i32(x0, p[v].x);
+    y0 = min_i32(y0, p[v].y);
+    x1 = max_i32(x1, p[v].x);
+    y1 = max_i32(y1, p[v].y);
+  }
+  if (n == 0) x0 = y0 = x1 = y1 = 0;
+  if (per_axis < 1) per_axis = 1;
+  const uint32_t extent = static_cast<uint32_t>(max_i32(x1 - x0, y1 - y0)) + 1;
+  Grid g;
+  g.ox = x0;
+  g.oy = y0;
+  g.set_cell(max_i32(1, static_cast<int32_t>((extent + per_axis - 1) / per_axis)));
+  g.nx = g.divide(static_cast<uint32_t>(x1 - x0)) + 1;
+  g.ny = g.divide(static_cast<uint32_t>(y1 - y0)) + 1;
+  return g;
+}
+
 // Visit every cell the projection of `e` may touch, calling visit(cell_index). `reach` > 0
 // dilates the bounding box by that many steps (used when CUT also records near misses) and
 // implies the bounding-box cover. Every point of the segment lies in a visited cell; a few

@@ -57,6 +57,21 @@ CoverPoint vertex_toward(const Point3& p, const Point3& to) {
   return c;
 }
 
+CoverPoint edge_point(const Edge3& e, int64_t m) {
+  constexpr int64_t kOne = int64_t{1} << 32;
+  const int64_t dx = e.b.x - e.a.x, dy = e.b.y - e.a.y, dz = e.b.z - e.a.z;
+  CoverPoint c;
+  c.d = kOne;
+  c.x = int64_t{e.a.x} * kOne + dx * m;
+  c.y = int64_t{e.a.y} * kOne + dy * m;
+  c.zn = Wide::from_i64(int64_t{e.a.z} * kOne + dz * m);
+  c.zd = kOne;
+  c.dir_x = static_cast<int32_t>(dx);
+  c.dir_y = static_cast<int32_t>(dy);
+  c.dir_z = static_cast<int32_t>(dz);
+  return c;
+}
+
 int plane_depth_sign(const Point3& a, const Point3& b, const Point3& c, const CoverPoint& p) {
   int64_t area = projected_area2(a, b, c);
   if (area == 0) return 0;

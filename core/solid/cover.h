@@ -36,6 +36,12 @@ struct CoverPoint {
 // A vertex of the mesh nudged toward `to` along the edge that joins them.
 CoverPoint vertex_toward(const Point3& p, const Point3& to);
 
+// The point at Q0.32 position m along e (0 <= m <= 2^32), nudged along e: the middle of a
+// piece, as the midpoint tests ask it. cell_x / cell_y are its floors (its grid cell).
+CoverPoint edge_point(const Edge3& e, int64_t m);
+inline int32_t cell_x(const CoverPoint& p) { return static_cast<int32_t>(p.x >> 32); }
+inline int32_t cell_y(const CoverPoint& p) { return static_cast<int32_t>(p.y >> 32); }
+
 // Doubled signed area of the projection: > 0 is a front face (counter-clockwise on paper).
 inline int64_t projected_area2(const Point3& a, const Point3& b, const Point3& c) {
   return int64_t{b.x - a.x} * (c.y - a.y) - int64_t{b.y - a.y} * (c.x - a.x);

@@ -7,23 +7,7 @@ namespace haloplot {
 namespace {
 
 Grid choose_grid(const Topology& topo) {
-  Grid g;
-  int32_t x0 = kCoordMax, y0 = kCoordMax, x1 = 0, y1 = 0;
-  for (uint32_t v = 0; v < topo.n_vertices; ++v) {
-    x0 = min_i32(x0, topo.vertices[v].x);
-    y0 = min_i32(y0, topo.vertices[v].y);
-    x1 = max_i32(x1, topo.vertices[v].x);
-    y1 = max_i32(y1, topo.vertices[v].y);
-  }
-  if (topo.n_vertices == 0) x0 = y0 = x1 = y1 = 0;
-  const uint32_t per_axis = isqrt_u64(topo.n_triangles) + 1;
-  const int32_t extent = max_i32(x1 - x0, y1 - y0) + 1;
-  g.ox = x0;
-  g.oy = y0;
-  g.set_cell(max_i32(1, static_cast<int32_t>((uint32_t(extent) + per_axis - 1) / per_axis)));
-  g.nx = g.divide(static_cast<uint32_t>(x1 - x0)) + 1;
-  g.ny = g.divide(static_cast<uint32_t>(y1 - y0)) + 1;
-  return g;
+  return grid_over(topo.vertices, topo.n_vertices, isqrt_u64(topo.n_triangles) + 1);
 }
 
 Edge3 face_box(const Topology& topo, uint32_t t) {

@@ -81,7 +81,7 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
   for (uint32_t e = 0; e < topo.n_drawn; ++e) {
     const SolidEdge& se = topo.edges[e];
     const Point3 a = topo.vertices[se.v0], b = topo.vertices[se.v1];
-    const int64_t dx = b.x - a.x, dy = b.y - a.y, dz = b.z - a.z;
+    const int64_t dx = b.x - a.x, dy = b.y - a.y;
     if (dx == 0 && dy == 0) continue;  // a point on paper: nothing to draw
     const bool by_class =
         params.use_classes && (se.cls == EdgeClass::kH1 || se.cls == EdgeClass::kH2);
@@ -110,17 +110,8 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
           hidden = vc[end_v] == kVcHidden;
         } else {
           const int64_t m = t0 + (t1 - t0) / 2;
-          CoverPoint p;
-          p.d = kOne;
-          p.x = int64_t{a.x} * kOne + dx * m;
-          p.y = int64_t{a.y} * kOne + dy * m;
-          p.zn = Wide::from_i64(int64_t{a.z} * kOne + dz * m);
-          p.zd = kOne;
-          p.dir_x = static_cast<int32_t>(dx);
-          p.dir_y = static_cast<int32_t>(dy);
-          p.dir_z = static_cast<int32_t>(dz);
-          const int32_t cx = static_cast<int32_t>(p.x >> 32);
-          const int32_t cy = static_cast<int32_t>(p.y >> 32);
+          const CoverPoint p = edge_point(Edge3{a, b}, m);
+          const int32_t cx = cell_x(p), cy = cell_y(p);
           q = 0;
           for (const uint32_t* k = fg.begin(cx, cy); k != fg.end(cx, cy); ++k) {
             const uint32_t t = *k;

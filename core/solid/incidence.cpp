@@ -64,22 +64,7 @@ Status find_incidences(const Topology& topo, uint32_t capacity, void* buffer, si
   }
 
   // The vertex grid.
-  Grid g;
-  int32_t x0 = kCoordMax, y0 = kCoordMax, x1 = 0, y1 = 0;
-  for (uint32_t v = 0; v < nv; ++v) {
-    x0 = min_i32(x0, p[v].x);
-    y0 = min_i32(y0, p[v].y);
-    x1 = max_i32(x1, p[v].x);
-    y1 = max_i32(y1, p[v].y);
-  }
-  if (nv == 0) x0 = y0 = x1 = y1 = 0;
-  const uint32_t per_axis = side - 2 > 0 ? side - 2 : 1;
-  const int32_t extent = max_i32(x1 - x0, y1 - y0) + 1;
-  g.ox = x0;
-  g.oy = y0;
-  g.set_cell(max_i32(1, static_cast<int32_t>((uint32_t(extent) + per_axis - 1) / per_axis)));
-  g.nx = g.divide(static_cast<uint32_t>(x1 - x0)) + 1;
-  g.ny = g.divide(static_cast<uint32_t>(y1 - y0)) + 1;
+  const Grid g = grid_over(p, nv, side - 2);
   const uint32_t cells = g.cells();
   for (uint32_t c = 0; c <= cells; ++c) cell_first[c] = 0;
   for (uint32_t v = 0; v < nv; ++v) ++cell_first[g.cell_of(p[v].x, p[v].y) + 1];

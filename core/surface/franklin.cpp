@@ -21,15 +21,8 @@ Edge3 edge_of(const SolidInput& in, uint32_t e) {
 // Step 2: B = floor(c * min(sqrt(N), 1 / L)) cells a side, L the average projected length over
 // the scene's extent; at most 4N + 64 cells so the grid stays O(N) bytes.
 Grid make_grid(const SolidInput& in, const FranklinParams& p) {
-  int32_t x0 = kCoordMax, y0 = kCoordMax, x1 = 0, y1 = 0;
-  for (uint32_t v = 0; v < in.n_vertices; ++v) {
-    x0 = min_i32(x0, in.vertices[v].x);
-    y0 = min_i32(y0, in.vertices[v].y);
-    x1 = max_i32(x1, in.vertices[v].x);
-    y1 = max_i32(y1, in.vertices[v].y);
-  }
-  if (in.n_vertices == 0) x0 = y0 = x1 = y1 = 0;
-  const uint64_t extent = uint64_t(max_i32(x1 - x0, y1 - y0)) + 1;
+  const Grid whole = grid_over(in.vertices, in.n_vertices, 1);
+  const uint64_t extent = uint64_t(whole.cell);  // one cell: the longer side, plus one
   // Average length over a fixed-stride sample of at most 4096 edges (an estimate suffices).
   const uint32_t stride = in.n_edges > 4096 ? in.n_edges / 4096 : 1;
   uint64_t sum = 0, count = 0;
@@ -44,14 +37,7 @@ Grid make_grid(const SolidInput& in, const FranklinParams& p) {
   uint64_t b = (uint64_t{p.c_q8} * (root < inv_l ? root : inv_l)) >> 8;
   const uint64_t cap = isqrt_u64(4ull * in.n_edges + 64);
   if (b > cap) b = cap;
-  if (b < 1) b = 1;
-  Grid g;
-  g.ox = x0;
-  g.oy = y0;
-  g.set_cell(static_cast<int32_t>((extent + b - 1) / b));
-  g.nx = g.divide(static_cast<uint32_t>(x1 - x0)) + 1;
-  g.ny = g.divide(static_cast<uint32_t>(y1 - y0)) + 1;
-  return g;
+  return grid_over(in.vertices, in.n_vertices, static_cast<uint32_t>(b < 1 ? 1 : b));
 }
 
 Edge3 face_box(const SolidInput& in, uint32_t t) {
@@ -461,7 +447,7 @@ Status franklin_hidden_lines(const SolidInput& drawn, const FranklinParams& p,
   uint64_t k = 0;
   for (uint32_t e = 0; e < drawn.n_edges; ++e) {  // only the drawn edges make pieces
     const Edge3 ed = edge_of(in, e);
-    const int64_t dx = ed.b.x - ed.a.x, dy = ed.b.y - ed.a.y, dz = ed.b.z - ed.a.z;
+    const int64_t dx = ed.b.x - ed.a.x, dy = ed.b.y - ed.a.y;
     while (k < n_cuts && cuts[k].edge < e) ++k;
     uint64_t kc = k;
     uint32_t ki = inc.edge_first[e];
@@ -479,17 +465,8 @@ Status franklin_hidden_lines(const SolidInput& drawn, const FranklinParams& p,
         hidden = last_hidden;
       } else {
         const int64_t m = t0 + (t1 - t0) / 2;
-        CoverPoint pt;
-        pt.d = kOne;
-        pt.x = int64_t{ed.a.x} * kOne + dx * m;
-        pt.y = int64_t{ed.a.y} * kOne + dy * m;
-        pt.zn = Wide::from_i64(int64_t{ed.a.z} * kOne + dz * m);
-        pt.zd = kOne;
-        pt.dir_x = static_cast<int32_t>(dx);
-        pt.dir_y = static_cast<int32_t>(dy);
-        pt.dir_z = static_cast<int32_t>(dz);
-        const uint32_t c =
-            g.cell_of(static_cast<int32_t>(pt.x >> 32), static_cast<int32_t>(pt.y >> 32));
+        const CoverPoint pt = edge_point(ed, m);
+        const uint32_t c = g.cell_of(cell_x(pt), cell_y(pt));
         ++st.midpoint_tests;
         auto covers = [&](uint32_t t) {
           const uint32_t* v = in.triangles[t].v;

@@ -196,21 +196,12 @@ Status hatch_faces(const SolidInput& in, const HatchParams& params, uint32_t cro
     const uint32_t e = sides + i;
     const Edge3& ed = edges[e];
     const uint32_t poly = in.triangles[owner[i]].polygon;
-    const int64_t dx = ed.b.x - ed.a.x, dy = ed.b.y - ed.a.y, dz = ed.b.z - ed.a.z;
     auto visible = [&](int64_t t0, int64_t t1) {
       if (t1 - t0 < 2) return false;
       const int64_t m = t0 + (t1 - t0) / 2;
-      CoverPoint pt;
-      pt.d = kOne;
-      pt.x = int64_t{ed.a.x} * kOne + dx * m;
-      pt.y = int64_t{ed.a.y} * kOne + dy * m;
-      pt.zn = Wide::from_i64(int64_t{ed.a.z} * kOne + dz * m);
-      pt.zd = kOne;
-      pt.dir_x = static_cast<int32_t>(dx);
-      pt.dir_y = static_cast<int32_t>(dy);
-      pt.dir_z = static_cast<int32_t>(dz);
+      const CoverPoint pt = edge_point(ed, m);
       ++st.midpoint_tests;
-      const int32_t cx = static_cast<int32_t>(pt.x >> 32), cy = static_cast<int32_t>(pt.y >> 32);
+      const int32_t cx = cell_x(pt), cy = cell_y(pt);
       for (const uint32_t* f = fg.begin(cx, cy); f != fg.end(cx, cy); ++f) {
         // Its own face, and the rest of its polygon when flat: it lies on them. A bent
         // polygon's other half can fold over it, and is asked like any face.

@@ -61,10 +61,7 @@ std::string reason_text(const HiddenReport& r) {
 
 }  // namespace
 
-Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackParams kira,
-                        SolidRun* out, bool outlines) {
-  const auto t0 = std::chrono::steady_clock::now();
-  *out = SolidRun{};
+SolidInput solid_input(const SolidScene& scene) {
   SolidInput in;
   in.vertices = scene.vertices.data();
   in.n_vertices = uint32_t(scene.vertices.size());
@@ -72,6 +69,14 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
   in.n_edges = uint32_t(scene.edge_pairs.size() / 2);
   in.triangles = scene.triangles.data();
   in.n_triangles = uint32_t(scene.triangles.size());
+  return in;
+}
+
+Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackParams kira,
+                        SolidRun* out, bool outlines) {
+  const auto t0 = std::chrono::steady_clock::now();
+  *out = SolidRun{};
+  const SolidInput in = solid_input(scene);
   HiddenParams params;
   params.method = method;
   params.outline = outlines;

@@ -22,6 +22,9 @@ struct SolidScene {
   std::vector<Triangle> triangles;
 };
 
+// The core's view of a scene (pointers into it: the scene must outlive the input).
+SolidInput solid_input(const SolidScene& scene);
+
 // A piece of a drawn edge: t in Q0.32 from its first vertex; q in halves (kQiUnknown when a
 // class or the V.C. table decided, then only `hidden` is known).
 struct SolidPiece {

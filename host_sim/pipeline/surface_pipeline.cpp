@@ -13,13 +13,7 @@ Status collect(void* context, const FranklinPiece& p) {
 }  // namespace
 
 Status run_franklin(const SolidScene& scene, const FranklinParams& params, FranklinRun* out) {
-  SolidInput in;
-  in.vertices = scene.vertices.data();
-  in.n_vertices = uint32_t(scene.vertices.size());
-  in.edge_pairs = scene.edge_pairs.data();
-  in.n_edges = uint32_t(scene.edge_pairs.size() / 2);
-  in.triangles = scene.triangles.data();
-  in.n_triangles = uint32_t(scene.triangles.size());
+  const SolidInput in = solid_input(scene);
   uint32_t crossings = 4 * in.n_edges + 1024, incidences = in.n_vertices + 64;
   Status s = Status::kOk;
   for (int attempt = 0; attempt < 4; ++attempt) {
@@ -51,13 +45,7 @@ Status collect_stroke(void* context, const HatchStroke& s) {
 }  // namespace
 
 Status run_hatch(const SolidScene& scene, const HatchParams& params, HatchRun* out) {
-  SolidInput in;
-  in.vertices = scene.vertices.data();
-  in.n_vertices = uint32_t(scene.vertices.size());
-  in.edge_pairs = scene.edge_pairs.data();
-  in.n_edges = uint32_t(scene.edge_pairs.size() / 2);
-  in.triangles = scene.triangles.data();
-  in.n_triangles = uint32_t(scene.triangles.size());
+  const SolidInput in = solid_input(scene);
   uint32_t crossings = 8 * in.n_triangles + 1024;
   size_t bytes = hatch_bytes(in, params, crossings);
   Status s = Status::kOk;
