@@ -29,6 +29,15 @@ bool convex_edge(const Topology& topo, uint32_t edge) {
   return s.negative();
 }
 
+int front_face_side(const Topology& topo, const uint8_t* front, uint32_t edge) {
+  const SolidEdge& e = topo.edges[edge];
+  const uint32_t f = front[e.face[0]] ? e.face[0] : e.face[1];
+  const Point3 a = topo.vertices[e.v0], b = topo.vertices[e.v1];
+  const Point3 p = topo.vertices[far_corner(topo.triangles[f], e.v0, e.v1)];
+  const int64_t s = int64_t{b.x - a.x} * (p.y - a.y) - int64_t{b.y - a.y} * (p.x - a.x);
+  return s > 0 ? 1 : -1;
+}
+
 ClassCounts classify(Topology* topo, uint8_t* front) {
   ClassCounts k;
   for (uint32_t t = 0; t < topo->n_triangles; ++t) {

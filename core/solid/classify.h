@@ -20,4 +20,9 @@ ClassCounts classify(Topology* topo, uint8_t* front);
 // lies behind f0's plane, seen from outside. Exact (a 3-D orientation in 128 bits).
 bool convex_edge(const Topology& topo, uint32_t edge);
 
+// The side of a fold edge (one front, one back face; v0 -> v1 on paper) its front face lies
+// on: +1 left, -1 right. Exact. The QI's crossing sign, Kira's contour vectors and the V.C.
+// table's peculiar vertices all ask it.
+int front_face_side(const Topology& topo, const uint8_t* front, uint32_t edge);
+
 }  // namespace haloplot

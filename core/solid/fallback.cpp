@@ -2,6 +2,7 @@
 
 #include "geometry/wide.h"
 #include "memory/carve.h"
+#include "solid/classify.h"
 #include "solid/cover.h"
 #include "solid/face_grid.h"
 #include "solid/qi.h"
@@ -12,17 +13,6 @@ namespace {
 constexpr int64_t kOne = int64_t{1} << 32;
 
 enum Vc : uint8_t { kVcUnknown = 0, kVcVisible = 1, kVcHidden = 2, kVcUnusable = 3 };
-
-int fold_front_side(const Topology& topo, const uint8_t* front, const SolidEdge& e) {
-  const uint32_t f = front[e.face[0]] ? e.face[0] : e.face[1];
-  const uint32_t* t = topo.triangles[f].v;
-  uint32_t q = t[0];
-  for (int k = 0; k < 3; ++k)
-    if (t[k] != e.v0 && t[k] != e.v1) q = t[k];
-  const Point3 a = topo.vertices[e.v0], b = topo.vertices[e.v1], p = topo.vertices[q];
-  const int64_t s = int64_t{b.x - a.x} * (p.y - a.y) - int64_t{b.y - a.y} * (p.x - a.x);
-  return s > 0 ? 1 : -1;
-}
 
 }  // namespace
 
@@ -67,7 +57,7 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
         if (e.cls == EdgeClass::kH2) h2 = true;
         if (e.cls != EdgeClass::kH3) continue;
         // Front face on the left of v0 -> v1 means the vector runs v1 -> v0.
-        const bool from_v1 = fold_front_side(topo, front, e) > 0;
+        const bool from_v1 = front_face_side(topo, front, topo.vertex_edges[k]) > 0;
         const uint32_t start = from_v1 ? e.v1 : e.v0;
         ++(start == v ? starts : ends);
       }

@@ -3,6 +3,7 @@
 #include "geometry/fraction.h"
 #include "geometry/predicates.h"
 #include "memory/carve.h"
+#include "solid/classify.h"
 #include "solid/cover.h"
 #include "solid/face_grid.h"
 #include "sort/in_place_sort.h"
@@ -254,13 +255,7 @@ Status find_outlines(const Topology& topo, const uint8_t* front, const CutSet& c
     if (se.cls != EdgeClass::kH3) continue;
     c.index[e] = h;
     c.edge[h] = e;
-    const uint32_t f = front[se.face[0]] ? se.face[0] : se.face[1];
-    uint32_t q = topo.triangles[f].v[0];
-    for (int i = 0; i < 3; ++i)
-      if (topo.triangles[f].v[i] != se.v0 && topo.triangles[f].v[i] != se.v1)
-        q = topo.triangles[f].v[i];
-    const Point3 a = topo.vertices[se.v0], b = topo.vertices[se.v1], p = topo.vertices[q];
-    c.forward[h] = cross(b.x - a.x, b.y - a.y, p.x - a.x, p.y - a.y) < 0;  // face on the right
+    c.forward[h] = front_face_side(topo, front, e) < 0;  // front face on the right
     const uint32_t s = c.start_vertex(h), t = c.end_vertex(h);
     if ((c.ends[t] & 0x0f) < 15) ++c.ends[t];
     if ((c.ends[s] >> 4) < 15) c.ends[s] = static_cast<uint8_t>(c.ends[s] + 0x10);

@@ -1,6 +1,7 @@
 #include "solid/qi.h"
 
 #include "memory/carve.h"
+#include "solid/classify.h"
 #include "solid/cover.h"
 #include "solid/face_grid.h"
 
@@ -53,26 +54,13 @@ void count_local(const Local& l, QiStats* st) {
   if (l.through != 0) ++st->delta;
 }
 
-// The side of fold edge g (v0 -> v1) on which its front face lies: +1 left, -1 right.
-int fold_side(const Ctx& c, uint32_t g) {
-  const SolidEdge& e = c.topo.edges[g];
-  const uint32_t f = c.front[e.face[0]] ? e.face[0] : e.face[1];
-  const uint32_t* t = c.topo.triangles[f].v;
-  uint32_t q = t[0];
-  for (int k = 0; k < 3; ++k)
-    if (t[k] != e.v0 && t[k] != e.v1) q = t[k];
-  const Point3 a = c.topo.vertices[e.v0], b = c.topo.vertices[e.v1], p = c.topo.vertices[q];
-  const int64_t s = int64_t{b.x - a.x} * (p.y - a.y) - int64_t{b.y - a.y} * (p.x - a.x);
-  return s > 0 ? 1 : -1;
-}
-
 // The change of QI where the walk along e (direction dx, dy, dz) crosses behind edge g.
 int crossing_change(const Ctx& c, uint32_t g, int64_t dx, int64_t dy) {
   const SolidEdge& ge = c.topo.edges[g];
   if (!is_fold(ge.cls)) return 0;
   const Point3 a = c.topo.vertices[ge.v0], b = c.topo.vertices[ge.v1];
   const int64_t s = int64_t{b.x - a.x} * dy - int64_t{b.y - a.y} * dx;
-  return ((s > 0 ? 1 : -1) == fold_side(c, g)) ? 2 : -2;
+  return ((s > 0 ? 1 : -1) == front_face_side(c.topo, c.front, g)) ? 2 : -2;
 }
 
 // The change of QI where the walk passes through the point of vertex w (incidence r), with
@@ -156,17 +144,6 @@ int32_t cast_base(const Ctx& c, const FaceGrid& fg, uint32_t v, uint32_t to) {
 }
 
 }  // namespace
-
-int32_t ray_cast_qi(const Topology& topo, const uint8_t* front, uint32_t from, uint32_t to) {
-  const CoverPoint p = vertex_toward(topo.vertices[from], topo.vertices[to]);
-  int32_t q = 0;
-  for (uint32_t t = 0; t < topo.n_triangles; ++t) {
-    if (!front[t]) continue;
-    const uint32_t* v = topo.triangles[t].v;
-    q += cover_halves(topo.vertices[v[0]], topo.vertices[v[1]], topo.vertices[v[2]], p);
-  }
-  return q;
-}
 
 size_t qi_bytes(const Topology& topo) {
   ByteCounter c;

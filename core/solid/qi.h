@@ -80,8 +80,4 @@ Status emit_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& 
 Status emit_edge_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& cutset,
                            const Incidences& inc, const QiState& state, uint32_t edge, QiSink sink);
 
-// The QI at the start of `edge` leaving vertex `from`, by brute force over every face (the ray
-// cast; exported for the tests and the fallback's cross-check).
-int32_t ray_cast_qi(const Topology& topo, const uint8_t* front, uint32_t from, uint32_t to);
-
 }  // namespace haloplot
