@@ -173,7 +173,14 @@ bool group_blocks(const SolidInput& in, uint32_t start, uint32_t end, const Cell
 
 struct Cut {
   uint32_t edge, t;
+  uint32_t u, w;  // the other edge's vertices: the exact cut (see PieceEnd)
 };
+
+// Exact order of two cuts on one edge (the Q0.32 floors tie for points closer than 2^-32).
+bool before(const SolidInput& in, uint32_t e, const PieceEnd& p, const PieceEnd& q) {
+  const PiecePosition a = piece_end_position(in, e, p), b = piece_end_position(in, e, q);
+  return compare(mul_i64(a.num, b.den), mul_i64(b.num, a.den)) < 0;
+}
 
 template <typename C>
 void count_arrays(C& carve, const SolidInput& in, const Grid& g, uint64_t face_pairs,
@@ -254,6 +261,21 @@ uint32_t append_diagonals(const SolidInput& in, uint32_t* pairs, uint64_t* keys)
 }
 
 }  // namespace
+
+PiecePosition piece_end_position(const SolidInput& in, uint32_t e, const PieceEnd& at) {
+  const Edge3 ed = edge_of(in, e);
+  if (at.w == PieceEnd::kNoVertex) {
+    // A vertex on the edge: its projection is a + (b - a) * num / den along the longer axis.
+    const Point3 v = in.vertices[at.u];
+    const int64_t dx = ed.b.x - ed.a.x, dy = ed.b.y - ed.a.y;
+    const bool by_x = (dx < 0 ? -dx : dx) >= (dy < 0 ? -dy : dy);
+    int64_t n = by_x ? v.x - ed.a.x : v.y - ed.a.y, d = by_x ? dx : dy;
+    if (d < 0) n = -n, d = -d;
+    return PiecePosition{n, d};
+  }
+  const CrossingTest x = test_crossing(ed, Edge3{in.vertices[at.u], in.vertices[at.w]});
+  return PiecePosition{x.tn, x.den};
+}
 
 size_t franklin_bytes(const SolidInput& drawn, const FranklinParams& p, uint32_t crossing_capacity,
                       uint32_t incidence_capacity) {
@@ -419,8 +441,10 @@ Status franklin_hidden_lines(const SolidInput& drawn, const FranklinParams& p,
           continue;
         ++st.crossings;
         if (n_cuts + 2 <= uint64_t{crossing_capacity} * 2) {
-          cuts[n_cuts] = Cut{edge_list[i], frac_q32_small(x.tn, x.den)};
-          cuts[n_cuts + 1] = Cut{edge_list[j], frac_q32_small(x.un, x.den)};
+          const uint32_t* pi = in.edge_pairs + 2 * edge_list[i];
+          const uint32_t* pj = in.edge_pairs + 2 * edge_list[j];
+          cuts[n_cuts] = Cut{edge_list[i], frac_q32_small(x.tn, x.den), pj[0], pj[1]};
+          cuts[n_cuts + 1] = Cut{edge_list[j], frac_q32_small(x.un, x.den), pi[0], pi[1]};
         }
         n_cuts += 2;
       }
@@ -429,8 +453,10 @@ Status franklin_hidden_lines(const SolidInput& drawn, const FranklinParams& p,
     if (stats) *stats = st;
     return Status::kCrossingCapacity;
   }
-  heap_sort(cuts, size_t(n_cuts), [](const Cut& a, const Cut& b) {
-    return a.edge < b.edge || (a.edge == b.edge && a.t < b.t);
+  heap_sort(cuts, size_t(n_cuts), [&](const Cut& a, const Cut& b) {
+    if (a.edge != b.edge) return a.edge < b.edge;
+    if (a.t != b.t) return a.t < b.t;
+    return before(in, a.edge, PieceEnd{a.u, a.w}, PieceEnd{b.u, b.w});
   });
 
   // The vertices lying on edges: visibility can change there too (solid/incidence.h).
@@ -452,11 +478,11 @@ Status franklin_hidden_lines(const SolidInput& drawn, const FranklinParams& p,
     uint64_t kc = k;
     uint32_t ki = inc.edge_first[e];
     if (dx == 0 && dy == 0) continue;
-    FranklinPiece pending{e, 0, 0, false};
+    FranklinPiece pending{e, 0, 0, false, {}, {}};
     bool have = false;
     bool last_hidden = false;
-    auto piece = [&](int64_t t0, int64_t t1) -> Status {
-      if (t1 <= t0) return Status::kOk;
+    auto piece = [&](int64_t t0, int64_t t1, PieceEnd from, PieceEnd to) -> Status {
+      if (t1 < t0 || (t1 == t0 && !p.every_piece)) return Status::kOk;
       ++st.pieces;
       bool hidden = true;
       if (!edge_kept[e]) {
@@ -485,29 +511,43 @@ Status franklin_hidden_lines(const SolidInput& drawn, const FranklinParams& p,
           hidden = covers(face_list[i]);
       }
       last_hidden = hidden;
-      if (have && pending.hidden == hidden && pending.t1 == t0) {
+      if (have && !p.every_piece && pending.hidden == hidden && pending.t1 == t0) {
         pending.t1 = t1;
+        pending.to = to;
         return Status::kOk;
       }
       Status r = Status::kOk;
       if (have) r = sink.emit(sink.context, pending);
-      pending = FranklinPiece{e, t0, t1, hidden};
+      pending = FranklinPiece{e, t0, t1, hidden, from, to};
       have = true;
       return r;
     };
     int64_t at = 0;
+    PieceEnd at_end{in.edge_pairs[2 * e], PieceEnd::kNoVertex};
     while (s == Status::kOk &&
            ((kc < n_cuts && cuts[kc].edge == e) || ki < inc.edge_first[e + 1])) {
       int64_t t;
-      if (ki >= inc.edge_first[e + 1] ||
-          (kc < n_cuts && cuts[kc].edge == e && cuts[kc].t <= inc.by_edge[ki].t))
+      PieceEnd end;
+      bool take_cut = ki >= inc.edge_first[e + 1];
+      if (!take_cut && kc < n_cuts && cuts[kc].edge == e) {
+        const Incidence& v = inc.by_edge[ki];
+        take_cut = cuts[kc].t < v.t ||
+                   (cuts[kc].t == v.t && !before(in, e, PieceEnd{v.vertex, PieceEnd::kNoVertex},
+                                                 PieceEnd{cuts[kc].u, cuts[kc].w}));
+      }
+      if (take_cut) {
+        end = PieceEnd{cuts[kc].u, cuts[kc].w};
         t = cuts[kc++].t;
-      else
+      } else {
+        end = PieceEnd{inc.by_edge[ki].vertex, PieceEnd::kNoVertex};
         t = inc.by_edge[ki++].t;
-      s = piece(at, t);
+      }
+      s = piece(at, t, at_end, end);
       at = t;
+      at_end = end;
     }
-    if (s == Status::kOk) s = piece(at, kOne);
+    if (s == Status::kOk)
+      s = piece(at, kOne, at_end, PieceEnd{in.edge_pairs[2 * e + 1], PieceEnd::kNoVertex});
     if (s == Status::kOk && have) s = sink.emit(sink.context, pending);
     if (s != Status::kOk) break;
   }

@@ -33,6 +33,10 @@ struct FranklinParams {
   // cells are as large as the faces and almost none block (p = ((c - 1) / (c + 1))^2 in the
   // paper's analysis); its own runs used about 2 (N = 1000, L = 0.16, B = 12).
   uint32_t c_q8 = 512;
+  // Emit every piece between consecutive cuts instead of runs of equal visibility: the
+  // regions step (surface/regions.h) needs a node wherever any edge is cut, and pieces shorter
+  // than 2^-32 of their edge (still exactly ordered) so that no boundary is left open.
+  bool every_piece = false;
 };
 
 struct FranklinStats {
@@ -47,10 +51,25 @@ struct FranklinStats {
   uint32_t incidences = 0;
 };
 
+// Where a piece ends, exactly: at mesh vertex u (w == kNoVertex), or where its edge crosses
+// the segment from vertex u to vertex w (another edge, or a triangle side that is not drawn).
+struct PieceEnd {
+  static constexpr uint32_t kNoVertex = 0xffffffffu;
+  uint32_t u = 0, w = kNoVertex;
+};
+
+// An end's exact position along drawn edge e (edge_pairs[2e] -> edge_pairs[2e + 1]) as
+// num / den, 0 <= num <= den, 0 < den < 2^41.
+struct PiecePosition {
+  int64_t num, den;
+};
+PiecePosition piece_end_position(const SolidInput& in, uint32_t e, const PieceEnd& end);
+
 struct FranklinPiece {
   uint32_t edge;
-  int64_t t0, t1;  // Q0.32 along the edge from its first vertex
+  int64_t t0, t1;  // Q0.32 along the edge from its first vertex (floors of the exact ends)
   bool hidden;
+  PieceEnd from, to;
 };
 
 struct FranklinSink {
