@@ -62,6 +62,8 @@ const char* status_name(Status s) {
       return "mesh is not a closed, consistently oriented manifold";
     case Status::kNoFaces:
       return "hidden lines need faces: upload them with the vertices";
+    case Status::kSegmentCapacity:
+      return "visible segment capacity exceeded";
   }
   return "unknown status";
 }

@@ -35,6 +35,7 @@ enum class Status : uint8_t {
   kIncidenceCapacity,       // more vertex-on-edge incidences than the caller's buffer holds
   kNotManifold,             // the QI method needs a closed, consistently oriented mesh
   kNoFaces,                 // hidden lines need faces: the scene was uploaded without them
+  kSegmentCapacity,         // more visible segments than the regions buffer holds (see count)
 };
 
 // A short, stable, human-readable name, e.g. "crossing capacity exceeded".

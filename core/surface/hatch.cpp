@@ -14,20 +14,6 @@ namespace {
 
 constexpr int64_t kOne = int64_t{1} << 32;
 
-// The lines' direction for a polygon: its angle grows with its mean depth (Franklin's Figure 4).
-// The polygon is the run of consecutive triangles with its id, so both halves of a quad agree.
-SinCos polygon_direction(const SolidInput& in, uint32_t t, const HatchParams& p) {
-  uint32_t s = t, e = t + 1;
-  while (s > 0 && in.triangles[s - 1].polygon == in.triangles[t].polygon) --s;
-  while (e < in.n_triangles && in.triangles[e].polygon == in.triangles[t].polygon) ++e;
-  int64_t sum = 0, n = 0;
-  for (uint32_t i = s; i < e; ++i)
-    for (int k = 0; k < 3; ++k, ++n) sum += in.vertices[in.triangles[i].v[k]].z;
-  const int64_t mean = n > 0 ? sum / n : 0;
-  const int64_t angle = p.angle_mdeg + (int64_t{p.mdeg_per_depth} * mean >> kCoordBits);
-  return sin_cos_mdeg(static_cast<int32_t>(angle % 360000));
-}
-
 bool hatched(const SolidInput& in, uint32_t t, const HatchParams& p) {
   const uint32_t* v = in.triangles[t].v;
   const int64_t area = projected_area2(in.vertices[v[0]], in.vertices[v[1]], in.vertices[v[2]]);
@@ -47,7 +33,7 @@ int64_t scale_round(int64_t a, int64_t num, int64_t den) {
 // to the triangle, ends rounded to steps (depth too).
 template <typename Line>
 void triangle_lines(const SolidInput& in, uint32_t t, const HatchParams& p, Line line) {
-  const SinCos d = polygon_direction(in, t, p);
+  const SinCos d = hatch_direction(in, t, p);
   const int64_t nx = -d.sin, ny = d.cos;  // the lines' normal, Q2.30
   const int64_t spacing = int64_t{p.spacing} << kTrigFractionBits;
   Point3 q[3];
@@ -124,6 +110,20 @@ Topology lite(const SolidInput& in) {
 }
 
 }  // namespace
+
+// The lines' direction for a polygon: its angle grows with its mean depth (Franklin's Figure 4).
+// The polygon is the run of consecutive triangles with its id, so both halves of a quad agree.
+SinCos hatch_direction(const SolidInput& in, uint32_t t, const HatchParams& p) {
+  uint32_t s = t, e = t + 1;
+  while (s > 0 && in.triangles[s - 1].polygon == in.triangles[t].polygon) --s;
+  while (e < in.n_triangles && in.triangles[e].polygon == in.triangles[t].polygon) ++e;
+  int64_t sum = 0, n = 0;
+  for (uint32_t i = s; i < e; ++i)
+    for (int k = 0; k < 3; ++k, ++n) sum += in.vertices[in.triangles[i].v[k]].z;
+  const int64_t mean = n > 0 ? sum / n : 0;
+  const int64_t angle = p.angle_mdeg + (int64_t{p.mdeg_per_depth} * mean >> kCoordBits);
+  return sin_cos_mdeg(static_cast<int32_t>(angle % 360000));
+}
 
 size_t hatch_bytes(const SolidInput& in, const HatchParams& params, uint32_t crossing_capacity) {
   const Counts c = count_lines(in, params);

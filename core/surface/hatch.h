@@ -20,6 +20,7 @@
 
 #include "solid/mesh.h"
 #include "status/status.h"
+#include "view/trig.h"
 
 namespace haloplot {
 
@@ -29,6 +30,11 @@ struct HatchParams {
   int32_t mdeg_per_depth = 90000;  // added across the whole depth range (2^20): nearer, steeper
   bool front_only = true;          // hatch only faces facing the viewer (closed solids)
 };
+
+// The lines' direction for triangle t's polygon: its angle grows with the polygon's mean
+// depth (Franklin's Figure 4). The polygon is the run of consecutive triangles with its id,
+// so both halves of a quad agree.
+SinCos hatch_direction(const SolidInput& in, uint32_t t, const HatchParams& params);
 
 struct HatchStroke {
   uint32_t face;  // triangle

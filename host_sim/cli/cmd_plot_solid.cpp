@@ -108,10 +108,18 @@ int cmd_plot_solid(const Options& o) {
   }
   if (o.has("--stats")) {
     print_solid_stats(run, tri);
-    if (so.hatch)
-      std::fprintf(stderr, "hatch_lines=%u\nhatch_crossings=%llu\nhatch_strokes=%llu\n",
-                   hatch.stats.lines, (unsigned long long)hatch.stats.crossings,
-                   (unsigned long long)hatch.stats.visible_pieces);
+    if (so.hatch) {
+      const HiddenSurfaceStats& h = hatch.surface;
+      std::fprintf(stderr,
+                   "regions_segments=%u\nregions_nodes=%u\nregions_cycles=%u\n"
+                   "regions_bounded=%u\nregions_holes=%u\nregions_background=%u\n"
+                   "regions_face_tests=%llu\nhatch_faces=%u\nhatch_crossings=%llu\n"
+                   "hatch_strokes=%llu\nhatch_ms=%.2f\n",
+                   h.regions.segments, h.regions.nodes, h.regions.cycles, h.regions.bounded,
+                   h.regions.holes, h.regions.background, (unsigned long long)h.regions.face_tests,
+                   h.hatch.faces, (unsigned long long)h.hatch.crossings,
+                   (unsigned long long)h.hatch.strokes, hatch.ms);
+    }
   }
   return 0;
 }

@@ -1,5 +1,6 @@
 #include "pipeline/surface_pipeline.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace haloplot::host {
@@ -42,10 +43,89 @@ Status collect_stroke(void* context, const HatchStroke& s) {
   return Status::kOk;
 }
 
+Status collect_visible(void* context, const FranklinPiece& p) {
+  if (!p.hidden)
+    static_cast<std::vector<RegionSegment>*>(context)->push_back(
+        RegionSegment{p.edge, p.t0, p.t1, p.from, p.to});
+  return Status::kOk;
+}
+
 }  // namespace
 
-Status run_hatch(const SolidScene& scene, const HatchParams& params, HatchRun* out) {
+Status run_regions(const SolidScene& scene, const FranklinParams& params, RegionsRun* out) {
   const SolidInput in = solid_input(scene);
+  FranklinParams every = params;
+  every.every_piece = true;
+  uint32_t crossings = 4 * in.n_edges + 1024, incidences = in.n_vertices + 64;
+  Status s = Status::kOk;
+  FranklinStats fs;
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    std::vector<uint64_t> buffer(franklin_bytes(in, every, crossings, incidences) / 8 + 1);
+    out->segments.clear();
+    s = franklin_hidden_lines(in, every, crossings, incidences, buffer.data(), buffer.size() * 8,
+                              FranklinSink{&collect_visible, &out->segments}, &fs);
+    if (s == Status::kCrossingCapacity)
+      crossings = uint32_t(fs.crossings);
+    else if (s == Status::kIncidenceCapacity)
+      incidences = fs.incidences;
+    else
+      break;
+  }
+  if (s != Status::kOk) return s;
+  const uint32_t n = uint32_t(out->segments.size());
+  std::vector<uint64_t> buffer(regions_bytes(in, n) / 8 + 1);
+  Regions r;
+  s = build_regions(in, out->segments.data(), n, buffer.data(), buffer.size() * 8, &r, &out->stats);
+  if (s != Status::kOk) return s;
+  out->n_nodes = r.n_nodes;
+  out->node.assign(r.node, r.node + 2 * n);
+  out->kept.assign(r.kept, r.kept + n);
+  out->cycle.assign(r.cycle, r.cycle + 2 * n);
+  out->cycle_face.assign(r.cycle_face, r.cycle_face + r.n_cycles);
+  out->cycle_bounded.assign(r.cycle_bounded, r.cycle_bounded + r.n_cycles);
+  return Status::kOk;
+}
+
+namespace {
+
+Status run_regions_hatch(const SolidInput& in, const HatchParams& params, const FranklinParams& fp,
+                         HatchRun* out) {
+  uint32_t crossings = 4 * in.n_edges + 1024, incidences = in.n_vertices + 64;
+  uint32_t segments = 4 * in.n_edges + 1024;
+  size_t bytes = hidden_surface_bytes(in, fp, crossings, incidences, segments);
+  Status s = Status::kOk;
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    std::vector<uint64_t> buffer(bytes / 8 + 1);
+    out->strokes.clear();
+    const auto t0 = std::chrono::steady_clock::now();
+    s = hidden_surface(in, fp, params, crossings, incidences, segments, buffer.data(),
+                       buffer.size() * 8, FranklinSink{nullptr, nullptr},
+                       HatchSink{&collect_stroke, &out->strokes}, &out->surface);
+    out->ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const HiddenSurfaceStats& st = out->surface;
+    if (s == Status::kCrossingCapacity)
+      crossings = uint32_t(st.franklin.crossings);
+    else if (s == Status::kIncidenceCapacity)
+      incidences = st.franklin.incidences;
+    else if (s == Status::kSegmentCapacity)
+      segments = st.segments;
+    else if (s == Status::kWorkspaceTooSmall)
+      bytes = std::max(st.bytes_needed, bytes * 2);
+    else
+      break;
+    if (s != Status::kWorkspaceTooSmall)
+      bytes = std::max(bytes, hidden_surface_bytes(in, fp, crossings, incidences, segments));
+  }
+  return s;
+}
+
+}  // namespace
+
+Status run_hatch(const SolidScene& scene, const HatchParams& params, HatchRun* out,
+                 HatchMethod method, FranklinParams franklin) {
+  const SolidInput in = solid_input(scene);
+  if (method == HatchMethod::kRegions) return run_regions_hatch(in, params, franklin, out);
   uint32_t crossings = 8 * in.n_triangles + 1024;
   size_t bytes = hatch_bytes(in, params, crossings);
   Status s = Status::kOk;

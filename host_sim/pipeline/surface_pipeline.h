@@ -6,6 +6,7 @@
 #include "pipeline/solid_pipeline.h"
 #include "surface/franklin.h"
 #include "surface/hatch.h"
+#include "surface/hidden_surface.h"
 
 namespace haloplot::host {
 
@@ -18,12 +19,31 @@ struct FranklinRun {
 
 Status run_franklin(const SolidScene& scene, const FranklinParams& params, FranklinRun* out);
 
-struct HatchRun {
-  std::vector<HatchStroke> strokes;
-  HatchStats stats;
+// Steps 10-11 on their own, copied out of the core's buffer (for tests and --stats).
+struct RegionsRun {
+  std::vector<RegionSegment> segments;
+  std::vector<uint32_t> node, cycle, cycle_face;
+  std::vector<uint8_t> kept, cycle_bounded;
+  uint32_t n_nodes = 0;
+  RegionStats stats;
 };
 
-// The hatching of every visible face (core/surface/hatch.h), retried until the buffer fits.
-Status run_hatch(const SolidScene& scene, const HatchParams& params, HatchRun* out);
+Status run_regions(const SolidScene& scene, const FranklinParams& params, RegionsRun* out);
+
+// kRegions: Franklin's steps 10-11 (the regions of the visible segments, each hatched as the
+// face it shows: core/surface/hidden_surface.h). kPerFace: every face's own lines found visible
+// like edges (core/surface/hatch.h), the independent second method the tests compare with.
+enum class HatchMethod { kRegions, kPerFace };
+
+struct HatchRun {
+  std::vector<HatchStroke> strokes;
+  HatchStats stats;            // kPerFace
+  HiddenSurfaceStats surface;  // kRegions
+  double ms = 0;               // the core run alone (the last attempt)
+};
+
+// The hatching of every visible face, retried until the buffers fit.
+Status run_hatch(const SolidScene& scene, const HatchParams& params, HatchRun* out,
+                 HatchMethod method = HatchMethod::kRegions, FranklinParams franklin = {});
 
 }  // namespace haloplot::host

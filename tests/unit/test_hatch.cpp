@@ -29,7 +29,8 @@ LD seg_dist(LD px, LD py, const Point3& a, const Point3& b) {
   const LD dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
   LD t = l2 > 0 ? ((px - a.x) * dx + (py - a.y) * dy) / l2 : 0;
   t = std::max<LD>(0, std::min<LD>(1, t));
-  return std::hypot(px - (a.x + t * dx), py - (a.y + t * dy));
+  const LD ex = px - (a.x + t * dx), ey = py - (a.y + t * dy);
+  return std::sqrt(ex * ex + ey * ey);
 }
 
 // The nearest face at (px, py) by brute force, or -1; `near_edge` when the point is within a
@@ -43,6 +44,9 @@ int nearest(const SolidScene& s, LD px, LD py, bool* near_edge) {
                  c = s.vertices[s.triangles[t].v[2]];
     const LD area = LD(b.x - a.x) * (c.y - a.y) - LD(b.y - a.y) * (c.x - a.x);
     if (area == 0) continue;
+    if (px < std::min({a.x, b.x, c.x}) - 1 || px > std::max({a.x, b.x, c.x}) + 1 ||
+        py < std::min({a.y, b.y, c.y}) - 1 || py > std::max({a.y, b.y, c.y}) + 1)
+      continue;  // neither inside nor within a step of a side
     const LD l1 = (LD(b.x - px) * (c.y - py) - LD(b.y - py) * (c.x - px)) / area;
     const LD l2 = (LD(c.x - px) * (a.y - py) - LD(c.y - py) * (a.x - px)) / area;
     const LD l3 = 1 - l1 - l2;
@@ -65,10 +69,126 @@ bool proper_cross(LD ax, LD ay, LD bx, LD by, LD cx, LD cy, LD dx, LD dy, LD mar
   return t > margin_ab && t < 1 - margin_ab && u > margin_cd && u < 1 - margin_cd;
 }
 
+void check_strokes(const SolidScene& s, const HatchRun& hr, const std::string& label);
+
+// Franklin's steps 10-11 against brute force: the cycles against Euler's relation (nodes -
+// segments + bounded cycles = connected pieces = hole cycles, pieces counted by union-find), and
+// the face each cycle names against the nearest face a quarter step to the left of the middle of
+// every segment of the cycle at least 8 steps long (skipped within 0.2 step of any face side).
+void check_regions(const SolidScene& s, const std::string& label) {
+  RegionsRun rr;
+  const Status st = run_regions(s, FranklinParams{}, &rr);
+  CHECK_MSG(st == Status::kOk, label + ": regions " + status_name(st));
+  if (st != Status::kOk) return;
+  CHECK_MSG(rr.stats.overlaps == 0, label + ": no overlapping half-edges");
+  std::vector<uint32_t> parent(rr.n_nodes);
+  for (uint32_t v = 0; v < rr.n_nodes; ++v) parent[v] = v;
+  auto find = [&](uint32_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  std::set<uint32_t> used;
+  int64_t edges = 0;
+  for (size_t g = 0; g < rr.segments.size(); ++g) {
+    if (!rr.kept[g]) continue;
+    ++edges;
+    used.insert(rr.node[2 * g]);
+    used.insert(rr.node[2 * g + 1]);
+    parent[find(rr.node[2 * g])] = find(rr.node[2 * g + 1]);
+  }
+  std::set<uint32_t> roots;
+  for (uint32_t v : used) roots.insert(find(v));
+  const int64_t pieces = int64_t(roots.size());
+  const int64_t bounded = rr.stats.bounded, holes = rr.stats.holes;
+  CHECK_MSG(holes == pieces, label + ": " + std::to_string(holes) + " hole cycles for " +
+                                 std::to_string(pieces) + " connected pieces");
+  CHECK_MSG(int64_t(used.size()) - edges + bounded == pieces,
+            label + ": Euler V - E + bounded = pieces (" + std::to_string(used.size()) + " - " +
+                std::to_string(edges) + " + " + std::to_string(bounded) +
+                " != " + std::to_string(pieces) + ")");
+  int checked = 0, wrong = 0;
+  for (size_t g = 0; g < rr.segments.size(); ++g) {
+    if (!rr.kept[g]) continue;
+    const RegionSegment& seg = rr.segments[g];
+    const Point3 a = s.vertices[s.edge_pairs[2 * seg.edge]],
+                 b = s.vertices[s.edge_pairs[2 * seg.edge + 1]];
+    const LD t0 = std::ldexp(LD(seg.t0), -32), t1 = std::ldexp(LD(seg.t1), -32);
+    const LD dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
+    if ((t1 - t0) * len < 8) continue;
+    const LD mx = a.x + (t0 + t1) / 2 * dx, my = a.y + (t0 + t1) / 2 * dy;
+    for (int side = 0; side < 2; ++side) {
+      const uint32_t face = rr.cycle_face[rr.cycle[2 * g + size_t(side)]];
+      if (face == kRegionUnnamed) continue;
+      const LD sgn = side == 0 ? 1 : -1;  // half-edge 2g runs along the edge: left is (-dy, dx)
+      const LD px = mx - sgn * dy / len * 0.25L, py = my + sgn * dx / len * 0.25L;
+      LD closest = 1e30L;
+      for (const Triangle& t : s.triangles) {
+        LD x0 = 1e30L, x1 = -1e30L, y0 = 1e30L, y1 = -1e30L;
+        for (uint32_t v : t.v) {
+          x0 = std::min<LD>(x0, s.vertices[v].x), x1 = std::max<LD>(x1, s.vertices[v].x);
+          y0 = std::min<LD>(y0, s.vertices[v].y), y1 = std::max<LD>(y1, s.vertices[v].y);
+        }
+        if (px < x0 - 1 || px > x1 + 1 || py < y0 - 1 || py > y1 + 1) continue;  // > 0.2 away
+        for (int k = 0; k < 3; ++k) {
+          const Point3 u = s.vertices[t.v[k]], w = s.vertices[t.v[(k + 1) % 3]];
+          closest = std::min(closest, seg_dist(px, py, u, w));
+        }
+      }
+      if (closest < 0.2L) continue;
+      bool near_edge = false;
+      const int want = nearest(s, px, py, &near_edge);
+      ++checked;
+      const bool same =
+          face == kRegionBackground
+              ? want < 0
+              : want >= 0 && s.triangles[size_t(want)].polygon == s.triangles[face].polygon;
+      if (!same && ++wrong <= 2)
+        std::fprintf(stderr, "  segment %zu side %d: face %u, brute force %d\n", g, side, face,
+                     want);
+    }
+  }
+  CHECK_MSG(checked > 0, label + ": region faces checked");
+  CHECK_MSG(wrong == 0, label + ": " + std::to_string(wrong) + " of " + std::to_string(checked) +
+                            " region faces differ from the nearest face");
+}
+
+// Total stroke length per polygon: the two hatching methods fill the same visible areas, so
+// they agree to within the rounding of their ends. An end is within 1/2 step of the boundary
+// across it, which along a line meeting the boundary at a shallow angle is several steps: the
+// slack is 4 steps a stroke, both methods' strokes counted.
+void compare_methods(const HatchRun& regions, const HatchRun& faces, const std::string& label) {
+  std::map<uint32_t, LD> len;
+  std::map<uint32_t, LD> slack;
+  for (const auto* run : {&regions, &faces})
+    for (const HatchStroke& h : run->strokes) {
+      const LD l = std::hypot(LD(h.line.b.x - h.line.a.x), LD(h.line.b.y - h.line.a.y));
+      len[h.polygon] += run == &regions ? l : -l;
+      slack[h.polygon] += 4;
+    }
+  int off = 0;
+  for (const auto& [poly, d] : len)
+    if (std::fabs(d) > slack[poly] + 2) {
+      if (++off <= 2)
+        std::fprintf(stderr, "  polygon %u: regions - faces = %.1Lf steps (slack %.0Lf)\n", poly, d,
+                     slack[poly]);
+    }
+  CHECK_MSG(off == 0, label + ": " + std::to_string(off) +
+                          " polygons hatched differently by the two methods");
+}
+
 void check_scene(const SolidScene& s, const HatchParams& hp, const std::string& label) {
+  check_regions(s, label);
+  HatchRun faces;
+  CHECK(run_hatch(s, hp, &faces, HatchMethod::kPerFace) == Status::kOk);
+  check_strokes(s, faces, label + " (per face)");
   HatchRun hr;
   const Status st = run_hatch(s, hp, &hr);
   CHECK_MSG(st == Status::kOk, label + ": " + status_name(st));
+  check_strokes(s, hr, label + " (regions)");
+  compare_methods(hr, faces, label);
+}
+
+void check_strokes(const SolidScene& s, const HatchRun& hr, const std::string& label) {
   CHECK_MSG(!hr.strokes.empty(), label + ": some strokes");
   SolidRun qi;
   CHECK(run_hidden_lines(s, HiddenMethod::kQi, FallbackParams{}, &qi) == Status::kOk);

@@ -1,0 +1,38 @@
+// Franklin 1980 whole: hidden lines (steps 2-9), the regions of the visible segments and the
+// face each shows (steps 10-11), and each face's regions hatched (a plotter's shading), in one
+// caller buffer.
+//
+// Buffer: the visible segments first (segment_capacity of them), then Franklin's workspace,
+// which the regions and the hatching reuse once the segments are in.
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "surface/franklin.h"
+#include "surface/region_hatch.h"
+#include "surface/regions.h"
+
+namespace haloplot {
+
+struct HiddenSurfaceStats {
+  FranklinStats franklin;
+  RegionStats regions;
+  RegionHatchStats hatch;
+  uint32_t segments = 0;    // visible segments (the count a retry needs on kSegmentCapacity)
+  size_t bytes_needed = 0;  // on kWorkspaceTooSmall once the regions are known
+};
+
+// Bytes for everything but the hatching's list of line crossings (known once the regions are:
+// a short buffer then answers kWorkspaceTooSmall with stats->bytes_needed).
+size_t hidden_surface_bytes(const SolidInput& in, const FranklinParams& fp,
+                            uint32_t crossing_capacity, uint32_t incidence_capacity,
+                            uint32_t segment_capacity);
+
+// `lines` receives the hidden-line pieces (runs of equal visibility, as franklin_hidden_lines
+// gives them); `hatch` the strokes filling the visible regions.
+Status hidden_surface(const SolidInput& in, const FranklinParams& fp, const HatchParams& hp,
+                      uint32_t crossing_capacity, uint32_t incidence_capacity,
+                      uint32_t segment_capacity, void* buffer, size_t bytes, FranklinSink lines,
+                      HatchSink hatch, HiddenSurfaceStats* stats);
+
+}  // namespace haloplot
