@@ -252,21 +252,30 @@ Status build_regions(const SolidInput& in, const RegionSegment* seg, uint32_t n,
   for (uint32_t i = 0; i < nh; ++i) {
     const uint32_t start = order[i];
     if (cycle[start] != kRegionBackground) continue;
-    uint32_t h = start, low = start, prev_low = start, prev = start;
-    uint32_t guard = 0;
+    uint32_t h = start, low = origin(start), guard = 0;
     do {
       cycle[h] = cycles;
-      const uint32_t nx = next(h);
-      if (origin(nx) < origin(low)) low = nx, prev_low = h;
-      prev = h;
-      h = nx;
+      low = origin(h) < low ? origin(h) : low;
+      h = next(h);
       if (++guard > nh) return Status::kVisibilityInconsistent;
     } while (h != start);
-    if (low == start) prev_low = prev;  // the half-edge arriving at start closes the cycle
-    const Dir out_d = half_edge_dir(in, seg[low / 2], low);
-    const Dir in_d = half_edge_dir(in, seg[prev_low / 2], prev_low);
-    // Bounded when the turn from the outgoing direction to the way back is to the left.
-    cycle_bounded[cycles] = out_d.x * -in_d.y - out_d.y * -in_d.x > 0;
+    // At its lowest node every half-edge points right (or straight up), so only one corner
+    // there opens to the left: the cycle whose corner it is bounds the outside of its piece
+    // (a hole boundary). A corner runs counter-clockwise from the way out to the way back; it
+    // opens to the left when that is the long way round, or all the way round (a spike).
+    bool opens_left = false;
+    do {
+      const uint32_t nx = next(h);
+      if (origin(nx) == low) {
+        const Dir out_d = half_edge_dir(in, seg[nx / 2], nx);
+        const Dir in_d = half_edge_dir(in, seg[h / 2], h);
+        const Dir back{-in_d.x, -in_d.y};
+        const int64_t turn = out_d.x * back.y - out_d.y * back.x;
+        opens_left = opens_left || turn < 0 || (turn == 0 && same_direction(out_d, back));
+      }
+      h = nx;
+    } while (h != start);
+    cycle_bounded[cycles] = !opens_left;
     st.bounded += cycle_bounded[cycles];
     ++cycles;
   }

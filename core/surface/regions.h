@@ -6,9 +6,10 @@
 //       so node ids run in (x, y) order). Around each node the half-edges are sorted by angle;
 //       a half-edge's direction is its edge's, an integer vector, so the order is exact. The
 //       walk "next = the half-edge just clockwise of my twin" traces every boundary cycle with
-//       its region on the left. A cycle whose lowest node (the smallest id) turns left there
-//       bounds its region from outside; one turning right (or doubling back) is a hole's
-//       boundary, or the outside of a whole connected piece.
+//       its region on the left. At a cycle's lowest node (the smallest id) every half-edge
+//       points right, so one corner there opens to the left: the cycle owning it is the
+//       outside of a connected piece (a hole in the region around it); the others bound
+//       their regions from outside.
 //   11  Each cycle finds its face at one point: the middle of its longest segment, nudged an
 //       infinitesimal step to the cycle's left (solid/cover.h's nudge, so the point is never
 //       on an edge). The faces of the face-grid cell holding it that cover it are compared

@@ -4,7 +4,7 @@
 // and on each other, edges overlap, faces go edge-on: every singular rule fires. The property:
 // QI propagation meets no conflict and agrees with the topology-free fallback at the middle of
 // every piece; Kira's shortcuts and Franklin 1980 (blocking faces, c from 1 to 4) see the same
-// visibility. Any disagreement aborts.
+// visibility; Franklin's regions (steps 10-11) meet Euler's relation. Any disagreement aborts.
 #include <cstdint>
 #include <cstdlib>
 #include <vector>
@@ -81,5 +81,28 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       if (x.edge == p.edge && x.t0 <= mid && mid < x.t1) fh = x.hidden, found = true;
     if (!found || fh != (p.q != 0)) std::abort();
   }
+  // Franklin's regions: consistent half-edges and Euler's relation, V - E + bounded cycles =
+  // connected pieces = hole cycles (pieces counted here by union-find).
+  RegionsRun rr;
+  if (run_regions(s, fp, &rr) != Status::kOk || rr.stats.overlaps != 0) std::abort();
+  std::vector<uint32_t> parent(rr.n_nodes), used(rr.n_nodes, 0);
+  for (uint32_t v = 0; v < rr.n_nodes; ++v) parent[v] = v;
+  auto find = [&](uint32_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  int64_t edges = 0, nodes = 0, pieces = 0;
+  for (size_t g = 0; g < rr.segments.size(); ++g) {
+    if (!rr.kept[g]) continue;
+    ++edges;
+    used[rr.node[2 * g]] = used[rr.node[2 * g + 1]] = 1;
+    parent[find(rr.node[2 * g])] = find(rr.node[2 * g + 1]);
+  }
+  for (uint32_t v = 0; v < rr.n_nodes; ++v) {
+    nodes += used[v];
+    pieces += used[v] && find(v) == v;
+  }
+  if (int64_t{rr.stats.holes} != pieces || nodes - edges + int64_t{rr.stats.bounded} != pieces)
+    std::abort();
   return 0;
 }
