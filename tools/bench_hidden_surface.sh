@@ -23,8 +23,11 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
   echo "tests), exactly: integer predicates, faces as triangles (convex, as the paper assumes; the"
   echo "host splits polygons, concave ones by exact ear clipping) and a flat polygon blocking a cell"
   echo "as a whole. Its hidden lines agree with the QI propagation and the fallback at every piece of"
-  echo "the 222 solid_qi scenes and in the fuzz target. Steps 10-11 (regions of the visible"
-  echo "segments, and hatching them) are not implemented yet."
+  echo "the 222 solid_qi scenes and in the fuzz target. Steps 10-11 are \`core/surface/regions.h\`:"
+  echo "the planar graph of the visible segments with exact rational nodes, its boundary cycles, and"
+  echo "the nearest face at a point nudged off each cycle (the face grid's cell, exact depths);"
+  echo "\`core/surface/region_hatch.h\` hatches each face's regions, clipped exactly by the"
+  echo "orientation of their boundaries (section 4)."
   echo
   echo "![time per face against N, ours and the paper's tables](hidden-surface.png)"
   echo
@@ -44,6 +47,11 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
   echo "  D = 1 the time falls further, since little overlaps at all."
   echo "- **Perspective** (far squares smaller, the same total area) is markedly faster, as the"
   echo "  paper reports: the few large near squares block the many small far ones."
+  echo "- **Regions** (section 4): each cycle's face costs about 16 face tests (one grid cell,"
+  echo "  whatever N), the paper's argument for step 11. The whole hidden-surface run costs 1.6x the"
+  echo "  hidden lines alone at 1,000 squares and 2.1x at 100,000: the nodes and half-edges are put"
+  echo "  in order by heap sort (n log n; the paper assumes expected-linear hashing), which no fixed"
+  echo "  buffer without a heap makes cheaper for free."
 } > docs/hidden-surface.md
 rm -f docs/hidden-surface.body.md
 echo "wrote docs/hidden-surface.md docs/hidden-surface.svg docs/hidden-surface.png"
