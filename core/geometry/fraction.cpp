@@ -1,6 +1,17 @@
 #include "geometry/fraction.h"
 
+#include "geometry/wide.h"
+
 namespace haloplot {
+
+int64_t scale_round(int64_t a, int64_t num, int64_t den) {
+  if (den < 0) num = -num, den = -den;
+  const bool neg = (a < 0) != (num < 0);
+  const Wide prod = mul_u64(uint64_t(a < 0 ? -a : a), uint64_t(num < 0 ? -num : num));
+  bool overflow = false;
+  const int64_t q = int64_t(divide_round(prod, uint64_t(den), &overflow));
+  return neg ? -q : q;
+}
 
 uint32_t frac_q32_small(int64_t num, int64_t den) {
   const int64_t high = (num << 22) / den;        // top 22 bits of the fraction

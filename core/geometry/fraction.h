@@ -35,6 +35,10 @@ uint32_t frac_q32(int64_t num, int64_t den);
 int64_t q32_floor_clamped(int64_t num, int64_t den);
 int64_t q32_ceil_clamped(int64_t num, int64_t den);
 
+// round(a * num / den) for den != 0, |a|, |num| < 2^63, the product in 128 bits (halves away
+// from zero); the quotient must fit in 63 bits (the callers' budgets say so).
+int64_t scale_round(int64_t a, int64_t num, int64_t den);
+
 // Round a position p0 + d * t32 / 2^32 to the nearest step (halves round up). |d| < 2^21.
 inline int32_t lerp_round(int32_t p0, int32_t d, int64_t t32) {
   const int64_t scaled = int64_t{d} * t32 + (int64_t{1} << (kFracBits - 1));

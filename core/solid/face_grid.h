@@ -22,6 +22,16 @@ struct FaceGrid {
   const uint32_t* end(int32_t x, int32_t y) const { return faces + first[grid.cell_of(x, y) + 1]; }
 };
 
+// A solid input's faces as a topology without edges: all the face grid reads.
+inline Topology faces_only(const SolidInput& in) {
+  Topology t;
+  t.vertices = in.vertices;
+  t.n_vertices = in.n_vertices;
+  t.triangles = in.triangles;
+  t.n_triangles = in.n_triangles;
+  return t;
+}
+
 size_t face_grid_bytes(const Topology& topo);  // walks the faces' cells once to count
 Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGrid* out);
 

@@ -20,15 +20,6 @@ bool hatched(const SolidInput& in, uint32_t t, const HatchParams& p) {
   return p.front_only ? area > 0 : area != 0;
 }
 
-// round(a * num / den) for den > 0 (num of either sign), the products in 128 bits.
-int64_t scale_round(int64_t a, int64_t num, int64_t den) {
-  const bool neg = (a < 0) != (num < 0);
-  const Wide prod = mul_u64(uint64_t(a < 0 ? -a : a), uint64_t(num < 0 ? -num : num));
-  bool overflow = false;
-  const int64_t q = int64_t(divide_round(prod, uint64_t(den), &overflow));
-  return neg ? -q : q;
-}
-
 // Calls line(Edge3) for each hatch segment of triangle t: the lattice line n . p = k S clipped
 // to the triangle, ends rounded to steps (depth too).
 template <typename Line>
@@ -100,15 +91,6 @@ bool coplanar(const SolidInput& in, uint32_t t, uint32_t u) {
   return true;
 }
 
-Topology lite(const SolidInput& in) {
-  Topology t;
-  t.vertices = in.vertices;
-  t.n_vertices = in.n_vertices;
-  t.triangles = in.triangles;
-  t.n_triangles = in.n_triangles;
-  return t;
-}
-
 }  // namespace
 
 // The lines' direction for a polygon: its angle grows with its mean depth (Franklin's Figure 4).
@@ -131,7 +113,7 @@ size_t hatch_bytes(const SolidInput& in, const HatchParams& params, uint32_t cro
   ByteCounter b;
   b.take<Edge3>(n);
   b.take<uint32_t>(c.lines);
-  b.take<uint8_t>(face_grid_bytes(lite(in)));
+  b.take<uint8_t>(face_grid_bytes(faces_only(in)));
   b.take<uint8_t>(cutset_bytes(n, crossing_capacity));
   // CUT's scratch is sized from its plan over these edges: bounded here by a plan on the fly.
   return b.total + 64 + size_t{n} * 64 + size_t{crossing_capacity} * 16;
@@ -149,7 +131,7 @@ Status hatch_faces(const SolidInput& in, const HatchParams& params, uint32_t cro
   Carver carve(buffer, bytes);
   Edge3* edges = carve.take<Edge3>(n);
   uint32_t* owner = carve.take<uint32_t>(c.lines);
-  const Topology topo = lite(in);
+  const Topology topo = faces_only(in);
   const size_t grid_bytes = face_grid_bytes(topo);
   uint8_t* grid_mem = carve.take<uint8_t>(grid_bytes);
   const size_t cs_bytes = cutset_bytes(n, crossing_capacity);

@@ -74,16 +74,6 @@ void span_levels(const Span& s, const RegionSegment& g, const Hatching& hg, Visi
   }
 }
 
-// round(a * num / den) for den != 0.
-int64_t scale_round(int64_t a, int64_t num, int64_t den) {
-  if (den < 0) num = -num, den = -den;
-  const bool neg = (a < 0) != (num < 0);
-  const Wide prod = mul_u64(uint64_t(a < 0 ? -a : a), uint64_t(num < 0 ? -num : num));
-  bool overflow = false;
-  const int64_t q = int64_t(divide_round(prod, uint64_t(den), &overflow));
-  return neg ? -q : q;
-}
-
 struct Hit {
   int64_t k, u;    // level, and position along the line (Q22 * Q8)
   int32_t x8, y8;  // the point, in 1/256 steps

@@ -132,15 +132,6 @@ bool nearer(const Tri& f, const Tri& g, const Edge3& e, int64_t m, const Dir& di
   return compare(mul_i64(rise(f), g.area), mul_i64(rise(g), f.area)) > 0;
 }
 
-Topology lite(const SolidInput& in) {
-  Topology t;
-  t.vertices = in.vertices;
-  t.n_vertices = in.n_vertices;
-  t.triangles = in.triangles;
-  t.n_triangles = in.n_triangles;
-  return t;
-}
-
 template <typename C>
 void carve_all(C& c, uint32_t n) {
   c.template take<Exact>(2 * size_t{n});         // ends
@@ -160,7 +151,7 @@ void carve_all(C& c, uint32_t n) {
 size_t regions_bytes(const SolidInput& in, uint32_t n_segments) {
   ByteCounter c;
   carve_all(c, n_segments);
-  return c.total + face_grid_bytes(lite(in)) + 16;
+  return c.total + face_grid_bytes(faces_only(in)) + 16;
 }
 
 Status build_regions(const SolidInput& in, const RegionSegment* seg, uint32_t n, void* buffer,
@@ -181,7 +172,7 @@ Status build_regions(const SolidInput& in, const RegionSegment* seg, uint32_t n,
   uint32_t* cycle = carve.take<uint32_t>(2 * size_t{n});
   uint32_t* cycle_face = carve.take<uint32_t>(2 * size_t{n});
   uint8_t* cycle_bounded = carve.take<uint8_t>(2 * size_t{n});
-  const Topology topo = lite(in);
+  const Topology topo = faces_only(in);
   const size_t fg_bytes = face_grid_bytes(topo);
   uint8_t* fg_mem = carve.take<uint8_t>(fg_bytes);
   if (carve.short_) return Status::kWorkspaceTooSmall;
