@@ -1,6 +1,7 @@
 #include "job/job.h"
 
 #include "solid/modes.h"
+#include "surface/hidden_surface.h"
 
 namespace haloplot {
 namespace {
@@ -191,9 +192,70 @@ struct StrokeCollector {
   }
   static Status outline(void* ctx, const HiddenPiece& p) {
     auto* self = static_cast<StrokeCollector*>(ctx);
+    if (self->outline_from == kNoOutline) self->outline_from = self->count;
     return self->add(make_stroke(*p.geometry, p.edge, p.t0, p.t1));
   }
+  static constexpr uint32_t kNoOutline = 0xffffffffu;
+  uint32_t outline_from = kNoOutline;  // the first outline stroke (they come last)
 };
+
+// Hatch strokes written at `out` (counted only while `out` is null).
+struct HatchWriter {
+  Segment2* out;
+  uint32_t count;
+  static Status emit(void* ctx, const HatchStroke& h) {
+    auto* self = static_cast<HatchWriter*>(ctx);
+    if (self->out != nullptr)
+      self->out[self->count] = Segment2{h.line.a.x, h.line.a.y, h.line.b.x, h.line.b.y};
+    ++self->count;
+    return Status::kOk;
+  }
+};
+
+// Franklin's hidden surfaces, hatched, into the strokes: [edges | outlines] becomes
+// [edges | hatching | outlines]. Two runs: the first counts the strokes (its workspace after
+// the strokes so far), the second writes them once the outlines have moved up to make room.
+// Capacities grow on the counts a short run reports, as the host's retries do.
+Status add_hatching(const HiddenJob& h, const SolidInput& in, uint32_t crossings,
+                    uint32_t incidences, uint8_t* base, size_t bytes, uint32_t edges,
+                    uint32_t* count) {
+  HatchParams hp;
+  hp.spacing = h.hatch_spacing;
+  hp.angle_mdeg = h.hatch_angle_mdeg;
+  hp.mdeg_per_depth = h.hatch_mdeg_per_depth;
+  Segment2* strokes = reinterpret_cast<Segment2*>(base);
+  uint32_t segments = 4 * in.n_edges + 64;
+  HatchWriter writer{nullptr, 0};
+  HiddenSurfaceStats st;
+  Status s = Status::kOk;
+  for (int pass = 0; pass < 2; ++pass) {
+    const uint32_t before = *count + (pass == 1 ? writer.count : 0);
+    const size_t used = align8(size_t{before} * sizeof(Segment2));
+    if (used > bytes) return Status::kWorkspaceTooSmall;
+    if (pass == 1) {
+      const uint32_t hatch = writer.count;
+      for (uint32_t i = *count; i > edges; --i) strokes[i - 1 + hatch] = strokes[i - 1];
+      writer = HatchWriter{strokes + edges, 0};
+    }
+    for (int attempt = 0; attempt < 3; ++attempt) {
+      writer.count = 0;
+      s = hidden_surface(in, FranklinParams{}, hp, crossings, incidences, segments, base + used,
+                         bytes - used, FranklinSink{nullptr, nullptr},
+                         HatchSink{&HatchWriter::emit, &writer}, &st);
+      if (s == Status::kCrossingCapacity)
+        crossings = uint32_t(st.franklin.crossings);
+      else if (s == Status::kIncidenceCapacity)
+        incidences = st.franklin.incidences;
+      else if (s == Status::kSegmentCapacity)
+        segments = st.segments;
+      else
+        break;
+    }
+    if (s != Status::kOk) return s;
+  }
+  *count += writer.count;
+  return Status::kOk;
+}
 
 }  // namespace
 
@@ -236,6 +298,13 @@ Status job_prepare_solid(const JobSpec& spec, const SolidInput& in, uint32_t cro
   // The strokes to the front (the run's memory is dead now); forward copy, since they move down.
   Segment2* front = reinterpret_cast<Segment2*>(base);
   for (uint32_t i = 0; i < collect.count; ++i) front[i] = collect.out[i];
+  if (spec.hidden.hatch) {
+    const uint32_t edges =
+        collect.outline_from == StrokeCollector::kNoOutline ? collect.count : collect.outline_from;
+    s = add_hatching(spec.hidden, in, crossing_capacity, incidence_capacity, base, buffer_bytes,
+                     edges, &collect.count);
+    if (!ok(s)) return s;
+  }
   SpanCollector spans{front, collect.count, collect.count};
   PreparedJob job;
   s = plan_stage(spec, base, 0, align8(size_t{collect.count} * sizeof(Segment2)), buffer_bytes,

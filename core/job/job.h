@@ -29,6 +29,10 @@ struct HiddenJob {
   HiddenMethod method = HiddenMethod::kAuto;
   bool outline = false;          // redraw Kira's outlines last
   int32_t dash = 160, gap = 80;  // hidden-dashed: steps drawn and skipped
+  // Hatch the visible faces (Franklin 1980's regions, surface/hidden_surface.h) after the
+  // edges and before the outlines.
+  bool hatch = false;
+  int32_t hatch_spacing = 120, hatch_angle_mdeg = 45000, hatch_mdeg_per_depth = 90000;
 };
 
 struct JobSpec {

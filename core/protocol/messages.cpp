@@ -147,20 +147,32 @@ Triangle decode_face(const uint8_t* p) {
 
 void encode_hidden(const HiddenJob& h, uint8_t out[kHiddenBytes]) {
   out[0] = uint8_t(h.method);
-  out[1] = h.outline ? 1 : 0;
+  out[1] = uint8_t((h.outline ? 1 : 0) | (h.hatch ? 2 : 0));
   put_i32(out + 2, h.dash);
   put_i32(out + 6, h.gap);
+  put_i32(out + 10, h.hatch_spacing);
+  put_i32(out + 14, h.hatch_angle_mdeg);
+  put_i32(out + 18, h.hatch_mdeg_per_depth);
 }
 
 Status decode_hidden(const uint8_t* p, size_t n, HiddenJob* out) {
-  if (n != kHiddenBytes || p[0] > uint8_t(HiddenMethod::kFallback) || (p[1] & ~1u))
+  if (n != kHiddenBytes || p[0] > uint8_t(HiddenMethod::kFallback) || (p[1] & ~3u))
     return Status::kMalformedRequest;
   HiddenJob h;
   h.method = HiddenMethod(p[0]);
   h.outline = p[1] & 1;
+  h.hatch = (p[1] & 2) != 0;
   h.dash = get_i32(p + 2);
   h.gap = get_i32(p + 6);
+  h.hatch_spacing = get_i32(p + 10);
+  h.hatch_angle_mdeg = get_i32(p + 14);
+  h.hatch_mdeg_per_depth = get_i32(p + 18);
   if (h.dash < 1 || h.gap < 1 || h.dash > kCoordMax || h.gap > kCoordMax)
+    return Status::kMalformedRequest;
+  // Angles within a few turns keep the hatching's angle sum far from int32 overflow.
+  if (h.hatch_spacing < 1 || h.hatch_spacing > kCoordMax || h.hatch_angle_mdeg < -3600000 ||
+      h.hatch_angle_mdeg > 3600000 || h.hatch_mdeg_per_depth < -3600000 ||
+      h.hatch_mdeg_per_depth > 3600000)
     return Status::kMalformedRequest;
   *out = h;
   return Status::kOk;

@@ -14,8 +14,9 @@
 //                      4 backlash)                                                      2
 //   kUploadFaces       4 x u32: three vertex indices (counter-clockwise from outside) and
 //                      the polygon id (sides shared inside a polygon are not drawn) 16 per face
-//   kSetHidden         u8 method (0 auto, 1 QI, 2 fallback), u8 flags (1 outline), u32 dash,
-//                      u32 gap (steps)                                                 10
+//   kSetHidden         u8 method (0 auto, 1 QI, 2 fallback), u8 flags (1 outline, 2 hatch),
+//                      u32 dash, u32 gap, u32 hatch spacing (steps), i32 hatch angle,
+//                      i32 hatch turn across the depth range (millidegrees)            22
 //   kSetMachine        u8 kinematics, 13 x u32 (steps num, den, tick Hz, min interval,
 //                      max step rate, draw speed, travel speed, accel, junction deviation,
 //                      pen travel, pen settle, backlash 0, 1), 2 x i32 start x, y      61
@@ -37,7 +38,7 @@ namespace haloplot {
 inline constexpr size_t kUploadBeginBytes = 13, kEdgeRecordBytes = 24, kVertexRecordBytes = 12,
                         kIndexRecordBytes = 8, kViewBytes = 24, kHaloBytes = 5, kEffectsBytes = 2,
                         kMachineBytes = 61, kStatusBytes = 32, kFaceRecordBytes = 16,
-                        kHiddenBytes = 10;
+                        kHiddenBytes = 22;
 
 enum class SceneFormat : uint8_t { kEdges = 0, kIndexed = 1 };
 

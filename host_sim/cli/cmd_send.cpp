@@ -78,7 +78,14 @@ int cmd_send(int argc, char** argv) {
     if (!job_solid_settings(jf, &so, &view, &why)) return send_fail(o.positional[0] + ": " + why);
     ie = read_obj_file(jf.scene_path, &model);
     if (ie.failed()) return send_fail(ie.message());
-    jf.spec.hidden = HiddenJob{so.method, so.spec.outline, so.spec.dash_steps, so.spec.gap_steps};
+    jf.spec.hidden = HiddenJob{so.method,
+                               so.spec.outline,
+                               so.spec.dash_steps,
+                               so.spec.gap_steps,
+                               so.hatch,
+                               so.hatch_params.spacing,
+                               so.hatch_params.angle_mdeg,
+                               so.hatch_params.mdeg_per_depth};
     if (jf.spec.drawing == DrawingEffect::kHiddenRemoved ||
         jf.spec.drawing == DrawingEffect::kHiddenDashed)
       triangles = triangulate(model.vertices, model.faces, nullptr);

@@ -10,8 +10,8 @@
 #   - an abort request, and a limit switch (its interrupt set pending: QEMU models neither
 #     the pin nor EXTI's software trigger), each stop a plot within a few step events and
 #     are reported as how the plot ended;
-#   - a solid model (world vertices, edge pairs and triangles) plotted hidden-dashed with its
-#     outline pass is drawn by the controller's own hidden-line run exactly as `haloplot sim`
+#   - a solid model (world vertices, edge pairs and triangles) plotted hidden-dashed, hatched
+#     (Franklin's regions) and with its outline pass is drawn by the controller's own hidden-line run exactly as `haloplot sim`
 #     draws it on the host;
 #   - the image exits 0 through semihosting with no step underrun.
 # Usage: qemu_link_test.sh FIRMWARE_DIR HALOPLOT_TOOL
@@ -27,7 +27,7 @@ job plot.job scene.edges 50
 job replot.job scene.edges 120
 job huge.job huge.edges 50
 cp "$(dirname "$0")/../../scenes/pair_of_cubes.obj" cubes.obj
-printf 'scene cubes.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nkinematics corexy\n' > solid.job
+printf 'scene cubes.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\nkinematics corexy\n' > solid.job
 "$tool" sim solid.job -o host_solid.trace
 "$tool" sim plot.job -o host_plot.trace
 "$tool" sim replot.job -o host_replot.trace

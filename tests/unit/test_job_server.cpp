@@ -15,6 +15,7 @@
 #include "../support/virtual_motion.h"
 #include "link/job_client.h"
 #include "pipeline/drawing_modes.h"
+#include "pipeline/surface_pipeline.h"
 #include "scene/cube_array.h"
 #include "sim/simulator.h"
 
@@ -204,8 +205,18 @@ void errors_leave_job_intact() {
   CHECK(client.request(FrameType::kUploadBegin, begin, &s) && s == Status::kMalformedRequest);
   CHECK(client.request(FrameType::kUploadFaces, std::vector<uint8_t>(16), &s) &&
         s == Status::kUploadMismatch);
-  CHECK(client.request(FrameType::kSetHidden, {3, 0, 1, 0, 0, 0, 1, 0, 0, 0}, &s) &&
-        s == Status::kMalformedRequest);
+  {
+    // A method beyond fallback, and a hatch spacing of 0, are refused.
+    std::vector<uint8_t> hidden(kHiddenBytes);
+    encode_hidden(HiddenJob{}, hidden.data());
+    hidden[0] = 3;
+    CHECK(client.request(FrameType::kSetHidden, hidden, &s) && s == Status::kMalformedRequest);
+    HiddenJob zero;
+    zero.hatch = true;
+    zero.hatch_spacing = 0;
+    encode_hidden(zero, hidden.data());
+    CHECK(client.request(FrameType::kSetHidden, hidden, &s) && s == Status::kMalformedRequest);
+  }
   CHECK(client.request(FrameType::kUploadEdges, std::vector<uint8_t>(24), &s) &&
         s == Status::kUploadMismatch);
   StatusReport r;
@@ -339,6 +350,12 @@ void solid_scene() {
     spec.hidden.outline = true;
     spec.hidden.dash = 120;
     spec.hidden.gap = 60;
+    // The dashed drawing also hatched (Franklin's regions on the controller).
+    const bool hatch = drawing == DrawingEffect::kHiddenDashed;
+    spec.hidden.hatch = hatch;
+    spec.hidden.hatch_spacing = 150;
+    spec.hidden.hatch_angle_mdeg = 30000;
+    spec.hidden.hatch_mdeg_per_depth = 90000;
     Status s;
     // Without faces the controller says what is missing.
     CHECK(client.sync() && client.upload_indexed(spec, view, m.v, pairs, &s) && ok(s));
@@ -368,8 +385,21 @@ void solid_scene() {
     ms.outline = true;
     const host::ModeDrawing d = host::make_mode_drawing(run, ms);
     std::vector<Segment2> want;
-    for (const auto* list : {&d.spans, &d.outline})
-      for (const Span& x : *list) want.push_back(Segment2{x.x0, x.y0, x.x1, x.y1});
+    for (const Span& x : d.spans) want.push_back(Segment2{x.x0, x.y0, x.x1, x.y1});
+    size_t hatched = 0;
+    if (hatch) {
+      HatchParams hp;
+      hp.spacing = 150;
+      hp.angle_mdeg = 30000;
+      hp.mdeg_per_depth = 90000;
+      host::HatchRun hr;
+      CHECK(host::run_hatch(scene, hp, &hr) == Status::kOk);
+      for (const HatchStroke& h : hr.strokes)
+        want.push_back(Segment2{h.line.a.x, h.line.a.y, h.line.b.x, h.line.b.y});
+      hatched = hr.strokes.size();
+      CHECK(hatched > 20);  // not vacuous: the cubes' visible faces are hatched
+    }
+    for (const Span& x : d.outline) want.push_back(Segment2{x.x0, x.y0, x.x1, x.y1});
     const std::vector<Segment2>& got = c.motion.spans[0];
     CHECK_EQ(got.size(), want.size());
     bool same = got.size() == want.size();
