@@ -224,7 +224,7 @@ Status add_hatching(const HiddenJob& h, const SolidInput& in, uint32_t crossings
   hp.angle_mdeg = h.hatch_angle_mdeg;
   hp.mdeg_per_depth = h.hatch_mdeg_per_depth;
   Segment2* strokes = reinterpret_cast<Segment2*>(base);
-  uint32_t segments = 4 * in.n_edges + 64;
+  HiddenSurfaceCapacity cap{crossings, incidences, 4 * in.n_edges + 64};
   HatchWriter writer{nullptr, 0};
   HiddenSurfaceStats st;
   Status s = Status::kOk;
@@ -239,17 +239,10 @@ Status add_hatching(const HiddenJob& h, const SolidInput& in, uint32_t crossings
     }
     for (int attempt = 0; attempt < 3; ++attempt) {
       writer.count = 0;
-      s = hidden_surface(in, FranklinParams{}, hp, crossings, incidences, segments, base + used,
-                         bytes - used, FranklinSink{nullptr, nullptr},
+      s = hidden_surface(in, FranklinParams{}, hp, cap.crossings, cap.incidences, cap.segments,
+                         base + used, bytes - used, FranklinSink{nullptr, nullptr},
                          HatchSink{&HatchWriter::emit, &writer}, &st);
-      if (s == Status::kCrossingCapacity)
-        crossings = uint32_t(st.franklin.crossings);
-      else if (s == Status::kIncidenceCapacity)
-        incidences = st.franklin.incidences;
-      else if (s == Status::kSegmentCapacity)
-        segments = st.segments;
-      else
-        break;
+      if (!cap.grow(s, st)) break;
     }
     if (s != Status::kOk) return s;
   }

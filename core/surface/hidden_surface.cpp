@@ -40,6 +40,18 @@ struct Collector {
 
 }  // namespace
 
+bool HiddenSurfaceCapacity::grow(Status s, const HiddenSurfaceStats& st) {
+  if (s == Status::kCrossingCapacity)
+    crossings = uint32_t(st.franklin.crossings);
+  else if (s == Status::kIncidenceCapacity)
+    incidences = st.franklin.incidences;
+  else if (s == Status::kSegmentCapacity)
+    segments = st.segments;
+  else
+    return false;
+  return true;
+}
+
 size_t hidden_surface_bytes(const SolidInput& in, const FranklinParams& fp,
                             uint32_t crossing_capacity, uint32_t incidence_capacity,
                             uint32_t segment_capacity) {

@@ -22,6 +22,13 @@ struct HiddenSurfaceStats {
   size_t bytes_needed = 0;  // on kWorkspaceTooSmall once the regions are known
 };
 
+// The capacities a run asks for. After a run that ended short of one, grow() takes the count
+// the stats report and says true (retry); for any other status it says false.
+struct HiddenSurfaceCapacity {
+  uint32_t crossings, incidences, segments;
+  bool grow(Status s, const HiddenSurfaceStats& st);
+};
+
 // Bytes for everything but the hatching's list of line crossings (known once the regions are:
 // a short buffer then answers kWorkspaceTooSmall with stats->bytes_needed).
 size_t hidden_surface_bytes(const SolidInput& in, const FranklinParams& fp,

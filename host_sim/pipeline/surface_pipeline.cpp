@@ -90,32 +90,26 @@ namespace {
 
 Status run_regions_hatch(const SolidInput& in, const HatchParams& params, const FranklinParams& fp,
                          HatchRun* out) {
-  uint32_t crossings = 4 * in.n_edges + 1024, incidences = in.n_vertices + 64;
-  uint32_t segments = 4 * in.n_edges + 1024;
-  size_t bytes = hidden_surface_bytes(in, fp, crossings, incidences, segments);
+  HiddenSurfaceCapacity cap{4 * in.n_edges + 1024, in.n_vertices + 64, 4 * in.n_edges + 1024};
+  size_t bytes = hidden_surface_bytes(in, fp, cap.crossings, cap.incidences, cap.segments);
   Status s = Status::kOk;
   for (int attempt = 0; attempt < 8; ++attempt) {
     std::vector<uint64_t> buffer(bytes / 8 + 1);
     out->strokes.clear();
     const auto t0 = std::chrono::steady_clock::now();
-    s = hidden_surface(in, fp, params, crossings, incidences, segments, buffer.data(),
+    s = hidden_surface(in, fp, params, cap.crossings, cap.incidences, cap.segments, buffer.data(),
                        buffer.size() * 8, FranklinSink{nullptr, nullptr},
                        HatchSink{&collect_stroke, &out->strokes}, &out->surface);
     out->ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     const HiddenSurfaceStats& st = out->surface;
-    if (s == Status::kCrossingCapacity)
-      crossings = uint32_t(st.franklin.crossings);
-    else if (s == Status::kIncidenceCapacity)
-      incidences = st.franklin.incidences;
-    else if (s == Status::kSegmentCapacity)
-      segments = st.segments;
-    else if (s == Status::kWorkspaceTooSmall)
+    if (s == Status::kWorkspaceTooSmall)
       bytes = std::max(st.bytes_needed, bytes * 2);
+    else if (cap.grow(s, st))
+      bytes = std::max(bytes,
+                       hidden_surface_bytes(in, fp, cap.crossings, cap.incidences, cap.segments));
     else
       break;
-    if (s != Status::kWorkspaceTooSmall)
-      bytes = std::max(bytes, hidden_surface_bytes(in, fp, crossings, incidences, segments));
   }
   return s;
 }
