@@ -41,4 +41,14 @@ if [ -n "$fw_visible" ] && [ "$fw_visible" = "$host_visible" ] && grep -q '^fw s
 else
   bad "visible pieces of 3 x 3 solid cubes: firmware $fw_visible, host $host_visible"
 fi
+# Franklin's hidden surfaces hatched on the chip: the same strokes as the host's.
+"$tool" plot cubes3.obj --view 30,40 --mode hidden-removed --hatch 3,45,90 -o cubes3h.svg \
+  --spans cubes3h.spans
+host_hatch=$(grep -c '^h ' cubes3h.spans)
+fw_hatch=$(sed -n 's/^fw solid_hatch_strokes=//p' fw.out)
+if [ -n "$fw_hatch" ] && [ "$fw_hatch" = "$host_hatch" ] && [ "$host_hatch" -gt 20 ]; then
+  ok
+else
+  bad "hatch strokes of 3 x 3 solid cubes: firmware $fw_hatch, host $host_hatch"
+fi
 finish
