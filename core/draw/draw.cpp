@@ -31,10 +31,28 @@ Status emit(const SpanSink& sink, const Edge3& edge, uint32_t e, int64_t t0, int
 }  // namespace
 
 template <typename Precision>
-Status draw_with(const CutSet& cs, const DrawParams& params, void* scratch, size_t scratch_bytes,
-                 SpanSink sink, DrawStats* stats) {
+Gap record_gap(const CutSet& cs, const Crossing& c, const DrawParams& params) {
   using Sqrt = typename Precision::Sqrt;
   using Position = typename Precision::Position;
+  const Edge3& edge = cs.edges[c.behind];
+  const Edge3& front = cs.edges[c.front_edge()];
+  Gap g;
+  if (params.mode == HaloMode::kExact)
+    g = exact_gap<Sqrt>(edge, front, params.halo);
+  else if (c.near_miss())
+    return Gap{1, 0};  // the paper's DRAW knows only crossings
+  else
+    g = paper_gap<Sqrt>(edge, front, c.t, params.halo);
+  g.lo = Position::floor(g.lo);
+  g.hi = Position::ceil(g.hi);
+  if (g.lo < 0) g.lo = 0;  // clip to the edge (a halo running off its end)
+  if (g.hi > kFracOne) g.hi = kFracOne;
+  return g;
+}
+
+template <typename Precision>
+Status draw_with(const CutSet& cs, const DrawParams& params, void* scratch, size_t scratch_bytes,
+                 SpanSink sink, DrawStats* stats) {
   DrawStats st;
   if (params.halo < 0 || params.halo > kCoordMax) return Status::kBadParameter;
   if (scratch_bytes < draw_scratch_bytes(cs)) return Status::kWorkspaceTooSmall;
@@ -48,18 +66,7 @@ Status draw_with(const CutSet& cs, const DrawParams& params, void* scratch, size
     if (params.halo > 0) {
       const Crossing* c = cs.begin(e);
       for (uint32_t i = 0; i < cs.count(e); ++i) {
-        const Edge3& front = cs.edges[c[i].front_edge()];
-        Gap g;
-        if (params.mode == HaloMode::kExact)
-          g = exact_gap<Sqrt>(edge, front, params.halo);
-        else if (c[i].near_miss())
-          continue;  // the paper's DRAW knows only crossings
-        else
-          g = paper_gap<Sqrt>(edge, front, c[i].t, params.halo);
-        g.lo = Position::floor(g.lo);
-        g.hi = Position::ceil(g.hi);
-        if (g.lo < 0) g.lo = 0;  // clip to the edge (a halo running off its end)
-        if (g.hi > kFracOne) g.hi = kFracOne;
+        const Gap g = record_gap<Precision>(cs, c[i], params);
         if (!g.empty()) gaps[k++] = g;
       }
     }
@@ -93,9 +100,11 @@ Status draw(const CutSet& cs, const DrawParams& params, void* scratch, size_t sc
   return draw_with<DefaultDrawPrecision>(cs, params, scratch, scratch_bytes, sink, stats);
 }
 
-#define HALOPLOT_DRAW_WITH(S, B)                                \
-  template Status draw_with<DrawPrecision<S, PositionBits<B>>>( \
-      const CutSet&, const DrawParams&, void*, size_t, SpanSink, DrawStats*);
+#define HALOPLOT_DRAW_WITH(S, B)                                                             \
+  template Status draw_with<DrawPrecision<S, PositionBits<B>>>(                              \
+      const CutSet&, const DrawParams&, void*, size_t, SpanSink, DrawStats*);                \
+  template Gap record_gap<DrawPrecision<S, PositionBits<B>>>(const CutSet&, const Crossing&, \
+                                                             const DrawParams&);
 HALOPLOT_DRAW_WITH(SqrtExact, 32)
 HALOPLOT_DRAW_WITH(SqrtNewton, 32)
 HALOPLOT_DRAW_WITH(SqrtTable, 32)

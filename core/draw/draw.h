@@ -48,6 +48,12 @@ template <typename Precision>
 Status draw_with(const CutSet& cutset, const DrawParams& params, void* scratch,
                  size_t scratch_bytes, SpanSink sink, DrawStats* stats);
 
+// The gap one CUTSET record cuts into its behind edge, as DRAW applies it: sized by the mode,
+// rounded outward to the position grid and clipped to the edge (empty: lo > hi, e.g. a near
+// miss under the paper's mode). The band conductor (band/) sizes its margins with it.
+template <typename Precision = DefaultDrawPrecision>
+Gap record_gap(const CutSet& cutset, const Crossing& record, const DrawParams& params);
+
 // DRAW in the default precision: exact roots, Q0.32 positions.
 Status draw(const CutSet& cutset, const DrawParams& params, void* scratch, size_t scratch_bytes,
             SpanSink sink, DrawStats* stats);
