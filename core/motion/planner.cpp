@@ -85,11 +85,27 @@ void MotionPlanner::replan() {
   }
 }
 
+bool MotionPlanner::point_ready() {
+  if (next_point_ < n_) return true;
+  if (feed_.more == nullptr || !ok(feed_status_)) return false;
+  const PathPoint* points = nullptr;
+  uint32_t n = 0;
+  feed_status_ = feed_.more(feed_.ctx, &points, &n);
+  if (!ok(feed_status_) || n == 0) {
+    feed_.more = nullptr;  // done (or failed): never ask again
+    return false;
+  }
+  points_ = points;
+  n_ = n;
+  next_point_ = 0;
+  return true;
+}
+
 bool MotionPlanner::next(MotionItem* out) {
   for (;;) {
     // Fill the buffer with moves of the current pen state.
     const uint32_t room = fx_.acceleration ? capacity_ : 1;
-    while (count_ < room && next_point_ < n_ && (points_[next_point_].pen_down != 0) == pen_down_) {
+    while (count_ < room && point_ready() && (points_[next_point_].pen_down != 0) == pen_down_) {
       Block b;
       if (!make_move(points_[next_point_++], &b)) continue;
       ++counters_.moves;
@@ -121,7 +137,7 @@ bool MotionPlanner::next(MotionItem* out) {
         return true;
       }
     }
-    const bool barrier = next_point_ >= n_ || (points_[next_point_].pen_down != 0) != pen_down_;
+    const bool barrier = !point_ready() || (points_[next_point_].pen_down != 0) != pen_down_;
     if (count_ > 0 && (count_ == capacity_ || barrier)) {
       Block& b = at(0);
       out->kind = MotionItem::kMove;
@@ -140,9 +156,9 @@ bool MotionPlanner::next(MotionItem* out) {
     }
     if (count_ > 0) continue;
     // The buffer is empty at a pen change, or at the end (the pen ends up).
-    const bool want_down = next_point_ < n_ && points_[next_point_].pen_down != 0;
+    const bool want_down = point_ready() && points_[next_point_].pen_down != 0;
     if (want_down == pen_down_) {
-      if (next_point_ >= n_) return false;
+      if (!point_ready()) return false;
       continue;
     }
     pen_down_ = want_down;

@@ -40,6 +40,15 @@ struct PlannerCounters {
   uint64_t dwell_ticks = 0;  // pen servo time added (pen servo effect)
 };
 
+// Where more path points come from once the planner has used up the ones it holds (the band
+// conductor, band by band): more() hands over the next batch, n == 0 when the path is done.
+// The planner copies each point into its look-ahead blocks before it asks again, so a feed may
+// reuse the memory of the previous batch.
+struct PointFeed {
+  Status (*more)(void* ctx, const PathPoint** points, uint32_t* n) = nullptr;
+  void* ctx = nullptr;
+};
+
 class MotionPlanner {
  public:
   static constexpr uint32_t kDefaultLookahead = 16;
@@ -48,8 +57,12 @@ class MotionPlanner {
 
   Status init(const Machine& m, const PlotterEffects& fx, const PathPoint* points, uint32_t n,
               void* workspace, size_t workspace_bytes, uint32_t lookahead = kDefaultLookahead);
-  // The next committed item; false when the path is done (the pen ends up).
+  // Set after init(): points past the initial ones come from the feed.
+  void set_feed(PointFeed feed) { feed_ = feed; }
+  // The next committed item; false when the path is done (the pen ends up), or when the feed
+  // failed: status() then says why.
   bool next(MotionItem* out);
+  Status status() const { return feed_status_; }
   const PlannerCounters& counters() const { return counters_; }
 
  private:
@@ -60,6 +73,7 @@ class MotionPlanner {
     uint64_t nominal_v2, max_entry_v2, entry_v2;
   };
   bool make_move(const PathPoint& p, Block* b);
+  bool point_ready();  // a point is waiting (asks the feed when the current batch is used up)
   uint64_t junction_v2(const Block& prev, const Block& next) const;
   void replan();
   Block& at(uint32_t i) { return ring_[(head_ + i) % capacity_]; }
@@ -78,6 +92,8 @@ class MotionPlanner {
   bool last_backward_[2] = {false, false};  // backlash: each motor's last direction
   Block prev_{};
   PlannerCounters counters_{};
+  PointFeed feed_{};
+  Status feed_status_ = Status::kOk;
 };
 
 }  // namespace haloplot

@@ -89,7 +89,7 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
       MotionItem it;
       if (!planner.next(&it)) {
         done_ = true;
-        return Status::kOk;
+        return planner.status();  // kOk, or why the point feed stopped
       }
       if (it.kind == MotionItem::kPen) {
         out->kind = StepSegment::kPen;

@@ -64,6 +64,10 @@ const char* status_name(Status s) {
       return "hidden lines need faces: upload them with the vertices";
     case Status::kSegmentCapacity:
       return "visible segment capacity exceeded";
+    case Status::kArenaTooSmall:
+      return "arena too small for a band one step high";
+    case Status::kBandCarryLost:
+      return "a piece carried across a band border was lost";
   }
   return "unknown status";
 }

@@ -36,6 +36,8 @@ enum class Status : uint8_t {
   kNotManifold,             // the QI method needs a closed, consistently oriented mesh
   kNoFaces,                 // hidden lines need faces: the scene was uploaded without them
   kSegmentCapacity,         // more visible segments than the regions buffer holds (see count)
+  kArenaTooSmall,           // a band one step high does not fit the arena (see the bytes needed)
+  kBandCarryLost,           // a piece carried across a band border found no continuation (a bug)
 };
 
 // A short, stable, human-readable name, e.g. "crossing capacity exceeded".

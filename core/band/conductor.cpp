@@ -1,0 +1,391 @@
+#include "band/conductor.h"
+
+#include "band/band_rule.h"
+#include "memory/carve.h"
+
+namespace haloplot {
+namespace {
+
+uint8_t* align_up(uint8_t* p) {
+  return reinterpret_cast<uint8_t*>((reinterpret_cast<uintptr_t>(p) + 7) & ~uintptr_t{7});
+}
+uint8_t* align_down(uint8_t* p) {
+  return reinterpret_cast<uint8_t*>(reinterpret_cast<uintptr_t>(p) & ~uintptr_t{7});
+}
+
+// Statuses that mean "this band is too large for the arena": the conductor halves it.
+bool does_not_fit(Status s) {
+  return s == Status::kWorkspaceTooSmall || s == Status::kCrossingCapacity ||
+         s == Status::kCutsetStorageTooSmall || s == Status::kSinkFull;
+}
+
+// A piece as a band keeps it until the band is committed: 28 bytes (t0 < 2^32, t1 >= 1).
+struct StoredPiece {
+  uint32_t edge, t0, t1_minus_1;
+  Segment2 segment;
+};
+
+}  // namespace
+
+// One try at one band: its rows, its edges, and where DRAW's output goes.
+struct BandConductor::Attempt {
+  int64_t y0 = 0, y1 = 0;
+  Gathered g{};
+  CutSet cs;
+  uint8_t* after = nullptr;  // where the CUTSET ends (or the edges, without CUT)
+  const Carry* carry_in = nullptr;
+  uint32_t n_carry_in = 0, carry_cursor = 0, carry_used = 0;
+  Carry* carry_out = nullptr;
+  uint32_t n_carry_out = 0, carry_capacity = 0;
+  StoredPiece* pieces = nullptr;
+  uint32_t n_pieces = 0, piece_capacity = 0;
+  size_t need = 0;  // bytes asked for by the stage that did not fit
+
+  // DRAW's sink: keep what this band owns, carry what runs past its top (band_rule.h).
+  static Status on_span(void* ctx, const Span& s) {
+    Attempt& a = *static_cast<Attempt*>(ctx);
+    const Edge3& e = a.g.edges[s.edge];
+    const uint32_t id = a.g.ids_end[-1 - int64_t{s.edge}];
+    const int64_t up = upper_end(e, s.t0, s.t1), low = lower_end(e, s.t0, s.t1);
+    if (row_compare(e, up, a.y0) < 0) return Status::kOk;  // below: an earlier band drew it
+    int64_t lower = low;
+    if (row_compare(e, low, a.y0) < 0) {  // began below this band: continue the carried piece
+      while (a.carry_cursor < a.n_carry_in && a.carry_in[a.carry_cursor].edge < id)
+        ++a.carry_cursor;
+      if (a.carry_cursor == a.n_carry_in || a.carry_in[a.carry_cursor].edge != id)
+        return Status::kBandCarryLost;
+      lower = int64_t{a.carry_in[a.carry_cursor++].lower} + (rising(e) ? 0 : 1);
+      ++a.carry_used;
+    }
+    if (row_compare(e, up, a.y1) >= 0) {                       // runs past the top
+      if (row_compare(e, low, a.y1) >= 0) return Status::kOk;  // wholly above: a later band's
+      if (a.n_carry_out == a.carry_capacity) return Status::kBandCarryLost;  // one per edge
+      a.carry_out[a.n_carry_out++] = Carry{id, uint32_t(lower - (rising(e) ? 0 : 1))};
+      return Status::kOk;
+    }
+    if (a.n_pieces == a.piece_capacity) return Status::kSinkFull;
+    const int64_t t0 = rising(e) ? lower : up, t1 = rising(e) ? up : lower;
+    StoredPiece& p = a.pieces[a.n_pieces++];
+    p.edge = id;
+    p.t0 = uint32_t(t0);
+    p.t1_minus_1 = uint32_t(t1 - 1);
+    span_point(e, t0, &p.segment.x0, &p.segment.y0);
+    span_point(e, t1, &p.segment.x1, &p.segment.y1);
+    return Status::kOk;
+  }
+};
+
+Status BandConductor::begin(const BandSpec& spec, EdgeSource source, void* arena,
+                            size_t arena_bytes) {
+  const PieceObserver observer = observer_;
+  uint64_t (*clock)() = clock_;
+  *this = BandConductor{};
+  observer_ = observer;
+  clock_ = clock;
+  if (source.n > 0 && source.read == nullptr) return Status::kBadParameter;
+  if (spec.haloed && (spec.draw.halo < 0 || spec.draw.halo > kCoordMax || spec.cut.reach < 0 ||
+                      spec.cut.reach > kCoordMax))
+    return Status::kBadParameter;
+  if (source.n > kMaxEdges) return Status::kTooManyEdges;
+  spec_ = spec;
+  source_ = source;
+  arena_ = align_up(static_cast<uint8_t*>(arena));
+  const size_t lost = size_t(arena_ - static_cast<uint8_t*>(arena));
+  arena_bytes_ = arena == nullptr || arena_bytes < lost ? 0 : (arena_bytes - lost) & ~size_t{7};
+  // One read of the scene: its rows, and every coordinate in range.
+  int32_t lo = kCoordLimit, hi = -1;
+  Edge3 chunk[kEdgeSourceChunk];
+  for (uint32_t first = 0; first < source.n; first += kEdgeSourceChunk) {
+    const uint32_t count =
+        source.n - first < kEdgeSourceChunk ? source.n - first : kEdgeSourceChunk;
+    const Status s = source.read(source.ctx, first, count, chunk);
+    if (!ok(s)) return s;
+    for (uint32_t i = 0; i < count; ++i) {
+      if (!in_range(chunk[i])) return Status::kCoordinateOutOfRange;
+      if (edge_row_min(chunk[i]) < lo) lo = edge_row_min(chunk[i]);
+      if (edge_row_max(chunk[i]) > hi) hi = edge_row_max(chunk[i]);
+    }
+  }
+  stats_.edge_reads += source.n;
+  pen_x_ = spec.start_x;
+  pen_y_ = spec.start_y;
+  if (source.n == 0) return Status::kOk;  // done: nothing to draw
+  row_lo_ = lo;
+  row_hi_ = hi;
+  next_row_ = lo;
+  height_ = int64_t{hi} - lo + 1;  // first try: the whole scene in one band
+  done_ = false;
+  return Status::kOk;
+}
+
+// The edges meeting rows [lo, hi]: Edge3s from the front of the free arena, source indices
+// from its top down, so one read of the source fills both.
+Status BandConductor::gather(int64_t lo, int64_t hi, Gathered* g) {
+  uint8_t* base = arena_ + carve_round(size_t{n_carry_} * sizeof(Carry));
+  uint8_t* top = arena_ + arena_bytes_;
+  g->edges = reinterpret_cast<Edge3*>(base);
+  g->ids_end = reinterpret_cast<uint32_t*>(top);
+  const size_t room = top > base ? size_t(top - base) : 0;
+  uint32_t m = 0;
+  Edge3 chunk[kEdgeSourceChunk];
+  for (uint32_t first = 0; first < source_.n; first += kEdgeSourceChunk) {
+    const uint32_t count =
+        source_.n - first < kEdgeSourceChunk ? source_.n - first : kEdgeSourceChunk;
+    const Status s = source_.read(source_.ctx, first, count, chunk);
+    if (!ok(s)) return s;
+    for (uint32_t i = 0; i < count; ++i) {
+      if (!edge_meets_rows(chunk[i], lo, hi)) continue;
+      if (size_t{m + 1} * (sizeof(Edge3) + sizeof(uint32_t)) <= room) {
+        g->edges[m] = chunk[i];
+        g->ids_end[-1 - int64_t{m}] = first + i;
+      }
+      ++m;
+    }
+  }
+  stats_.edge_reads += source_.n;
+  g->n = m;
+  if (size_t{m} * (sizeof(Edge3) + sizeof(uint32_t)) + 16 > room) return Status::kWorkspaceTooSmall;
+  g->free_lo = align_up(base + size_t{m} * sizeof(Edge3));
+  g->free_hi = align_down(top - size_t{m} * sizeof(uint32_t));
+  return Status::kOk;
+}
+
+// CUT on the gathered edges: the CUTSET from the free middle's start with as many records as
+// fit beside CUT's scratch. *after is where the CUTSET really ends (DRAW's space starts there).
+Status BandConductor::cut_band(const Gathered& g, CutSet* cs, uint8_t** after, size_t* need) {
+  const size_t fixed = size_t(g.free_lo - arena_) + size_t(arena_ + arena_bytes_ - g.free_hi);
+  CutPlan plan;
+  Status s = plan_cut(g.edges, g.n, spec_.cut, &plan);
+  if (!ok(s)) return s;
+  const size_t scratch = carve_round(plan.scratch_bytes);
+  const size_t space = size_t(g.free_hi - g.free_lo);
+  const size_t index = carve_round(cutset_bytes(g.n, 0));
+  if (space < scratch + index) {
+    *need = fixed + scratch + index;
+    return Status::kWorkspaceTooSmall;
+  }
+  const size_t storage = (space - scratch) & ~size_t{7};
+  CutStats st;
+  ++stats_.cut_runs;
+  s = run_cut(plan, g.edges, g.free_lo + storage, scratch, g.free_lo, storage, cs, &st);
+  if (s == Status::kCrossingCapacity) {
+    const uint64_t records = st.crossings + st.near_misses;
+    *need = fixed + scratch + carve_round(cutset_bytes(g.n, uint32_t(records)));
+    return s;
+  }
+  if (!ok(s)) return s;
+  const size_t used = carve_round(cutset_bytes(g.n, cs->n_crossings));
+  note_used(fixed + used + scratch);
+  *after = g.free_lo + used;
+  return Status::kOk;
+}
+
+// The margin pass: CUT over the scene in bands (each widened by CUT's reach, so every record
+// is found in the band that holds its point), and the farthest row any record's gap reaches
+// from that point. Only a plot whose scene did not fit one band runs it.
+Status BandConductor::margin_pass() {
+  const uint64_t t_start = now();
+  const int64_t widen = int64_t{spec_.cut.reach} + 1;
+  int64_t y = row_lo_, h = (int64_t{row_hi_} - row_lo_ + 2) / 2;
+  int64_t reach = 0;
+  while (y <= row_hi_) {
+    const int64_t y1 = y + h < int64_t{row_hi_} + 1 ? y + h : int64_t{row_hi_} + 1;
+    Gathered g;
+    CutSet cs;
+    uint8_t* after = nullptr;
+    size_t need = 0;
+    band_used_ = 0;
+    Status s = gather(y - widen, y1 - 1 + widen, &g);
+    if (s == Status::kWorkspaceTooSmall) need = size_t{g.n} * (sizeof(Edge3) + 4) + 16;
+    if (ok(s)) s = cut_band(g, &cs, &after, &need);
+    if (does_not_fit(s)) {
+      if (y1 - y == 1) {
+        stats_.need_bytes = need + carve_round(size_t{n_carry_} * sizeof(Carry));
+        return Status::kArenaTooSmall;
+      }
+      h = (y1 - y) / 2;
+      ++stats_.splits;
+      continue;
+    }
+    if (!ok(s)) return s;
+    for (uint32_t i = 0; i < cs.n_crossings; ++i) {
+      const Crossing& r = cs.crossings[i];
+      const Gap gap = record_gap(cs, r, spec_.draw);
+      if (gap.empty()) continue;
+      const int64_t a = gap.lo - int64_t{r.t}, b = gap.hi - int64_t{r.t};
+      const int64_t d = (a < 0 ? -a : a) > (b < 0 ? -b : b) ? (a < 0 ? -a : a) : (b < 0 ? -b : b);
+      const Edge3& e = cs.edges[r.behind];
+      const int64_t dy = e.b.y > e.a.y ? int64_t{e.b.y} - e.a.y : int64_t{e.a.y} - e.b.y;
+      const int64_t rows = ((dy * d + kFracOne - 1) >> kFracBits) + 1;  // |dy| d < 2^53
+      if (rows > reach) reach = rows;
+    }
+    ++stats_.margin_bands;
+    if (band_used_ < arena_bytes_ / 2) h *= 2;
+    y = y1;
+  }
+  stats_.gap_reach = int32_t(reach);
+  stats_.margin = int32_t(reach + widen);
+  margin_known_ = true;
+  stats_.margin_ticks += now() - t_start;
+  return Status::kOk;
+}
+
+// DRAW (or every edge whole) into the attempt's sink; scratch, carry out and pieces carved
+// from `after` (where the CUTSET ends).
+Status BandConductor::draw_band(Attempt& a) {
+  const bool cut = cuts();
+  uint8_t* p = a.after;
+  const size_t scratch = cut ? carve_round(draw_scratch_bytes(a.cs)) : 0;
+  // At most one piece of an edge runs past the top row: room for the edges that cross it.
+  for (uint32_t k = 0; k < a.g.n; ++k)
+    if (edge_row_min(a.g.edges[k]) < a.y1 && edge_row_max(a.g.edges[k]) >= a.y1) ++a.carry_capacity;
+  uint8_t* carry = p + scratch;
+  uint8_t* pieces = carry + carve_round(size_t{a.carry_capacity} * sizeof(Carry));
+  const size_t fixed = size_t(a.g.free_lo - arena_) + size_t(arena_ + arena_bytes_ - a.g.free_hi);
+  if (pieces > a.g.free_hi) {
+    a.need = fixed + size_t(pieces - a.g.free_lo);
+    return Status::kWorkspaceTooSmall;
+  }
+  a.carry_in = reinterpret_cast<const Carry*>(arena_);
+  a.n_carry_in = n_carry_;
+  a.carry_out = reinterpret_cast<Carry*>(carry);
+  a.pieces = reinterpret_cast<StoredPiece*>(pieces);
+  a.piece_capacity = uint32_t(size_t(a.g.free_hi - pieces) / sizeof(StoredPiece));
+  Status s = Status::kOk;
+  const uint64_t t0 = now();
+  if (cut) {
+    ++stats_.draw_runs;
+    s = draw(a.cs, spec_.draw, p, scratch, SpanSink{&Attempt::on_span, &a}, nullptr);
+  } else {
+    for (uint32_t k = 0; k < a.g.n && ok(s); ++k)
+      s = Attempt::on_span(&a, Span{k, 0, kFracOne, 0, 0, 0, 0});
+  }
+  stats_.draw_ticks += now() - t0;
+  if (s == Status::kSinkFull)
+    a.need = fixed + size_t(pieces - a.g.free_lo) + 2 * size_t(a.g.free_hi - pieces);
+  if (!ok(s)) return s;
+  if (a.carry_used != n_carry_) return Status::kBandCarryLost;
+  note_used(size_t(reinterpret_cast<uint8_t*>(a.pieces + a.n_pieces) - arena_) +
+            size_t(arena_ + arena_bytes_ - a.g.free_hi));
+  return Status::kOk;
+}
+
+// The band fitted up to its pieces: if the path fits too, hand the pieces to the observer,
+// move the carry to the front, lay the pieces out as segments and plan their pen path.
+Status BandConductor::commit_band(Attempt& a, const PathPoint** points, uint32_t* n) {
+  const uint32_t np = a.n_pieces, nco = a.n_carry_out;
+  const size_t carry_size = carve_round(size_t{nco} * sizeof(Carry));
+  const size_t seg_size = carve_round(size_t{np} * sizeof(Segment2));
+  const size_t pts_size = carve_round(size_t{path_points_max(np)} * sizeof(PathPoint));
+  const size_t ws_size = carve_round(path_plan_bytes(np));
+  const size_t total = carry_size + seg_size + pts_size + ws_size;
+  if (total > arena_bytes_) {
+    a.need = total;
+    return Status::kWorkspaceTooSmall;
+  }
+  note_used(total);
+  for (uint32_t i = 0; i < np && observer_.piece != nullptr; ++i) {
+    const StoredPiece& sp = a.pieces[i];
+    observer_.piece(observer_.ctx,
+                    BandPiece{sp.edge, sp.t0, int64_t{sp.t1_minus_1} + 1, sp.segment});
+  }
+  // Forward copies: each destination starts below its source (the carry and the pieces sit
+  // past the band's edges, which are at least as large).
+  Carry* carry = reinterpret_cast<Carry*>(arena_);
+  for (uint32_t i = 0; i < nco; ++i) carry[i] = a.carry_out[i];
+  Segment2* segs = reinterpret_cast<Segment2*>(arena_ + carry_size);
+  for (uint32_t i = 0; i < np; ++i) {
+    const Segment2 s = a.pieces[i].segment;
+    segs[i] = s;
+  }
+  n_carry_ = nco;
+  PathPoint* pts = reinterpret_cast<PathPoint*>(arena_ + carry_size + seg_size);
+  uint32_t count = 0;
+  PathStats ps;
+  const Status s = plan_path(segs, np, pen_x_, pen_y_, arena_ + carry_size + seg_size + pts_size,
+                             ws_size, pts, path_points_max(np), &count, &ps);
+  if (!ok(s)) return s;
+  if (count > 0) {
+    pen_x_ = pts[count - 1].x;
+    pen_y_ = pts[count - 1].y;
+  }
+  stats_.path.polylines += ps.polylines;
+  stats_.path.pen_up_length += ps.pen_up_length;
+  stats_.path.naive_pen_up_length += ps.naive_pen_up_length;
+  stats_.path.pen_down_length += ps.pen_down_length;
+  stats_.path.pen_lifts += ps.pen_lifts;
+  ++stats_.bands;
+  stats_.pieces += np;
+  if (np > stats_.most_pieces) stats_.most_pieces = np;
+  if (nco > stats_.most_carry) stats_.most_carry = nco;
+  if (a.g.n > stats_.most_edges) stats_.most_edges = a.g.n;
+  if (cuts()) stats_.records += a.cs.n_crossings;
+  *points = pts;
+  *n = count;
+  return Status::kOk;
+}
+
+// One attempt at the band [next_row_, y1): *fitted false when the arena was too small for it.
+Status BandConductor::try_band(int32_t y1, bool* fitted, const PathPoint** points, uint32_t* n) {
+  const uint64_t t_start = now();
+  band_used_ = 0;
+  const uint64_t cut_before = stats_.cut_ticks, draw_before = stats_.draw_ticks;
+  Attempt a;
+  a.y0 = next_row_;
+  a.y1 = y1;
+  const int64_t margin = stats_.margin;
+  Status s = gather(a.y0 - margin, a.y1 - 1 + margin, &a.g);
+  if (s == Status::kWorkspaceTooSmall)
+    a.need = carve_round(size_t{n_carry_} * sizeof(Carry)) +
+             size_t{a.g.n} * (sizeof(Edge3) + sizeof(uint32_t)) + 16;
+  a.after = a.g.free_lo;
+  if (ok(s) && cuts()) {
+    const uint64_t t0 = now();
+    s = cut_band(a.g, &a.cs, &a.after, &a.need);
+    stats_.cut_ticks += now() - t0;
+  }
+  if (ok(s)) s = draw_band(a);
+  if (ok(s)) s = commit_band(a, points, n);
+  *fitted = !does_not_fit(s);
+  if (!*fitted) stats_.need_bytes = a.need;
+  stats_.other_ticks +=
+      (now() - t_start) - (stats_.cut_ticks - cut_before) - (stats_.draw_ticks - draw_before);
+  return *fitted ? s : Status::kOk;
+}
+
+Status BandConductor::next(const PathPoint** points, uint32_t* n) {
+  *n = 0;
+  *points = nullptr;
+  while (!done_) {
+    if (next_row_ > row_hi_) {
+      done_ = true;
+      if (n_carry_ != 0) return Status::kBandCarryLost;
+      break;
+    }
+    const int64_t y1 =
+        next_row_ + height_ < int64_t{row_hi_} + 1 ? next_row_ + height_ : int64_t{row_hi_} + 1;
+    bool fitted = false;
+    const Status s = try_band(int32_t(y1), &fitted, points, n);
+    if (!ok(s)) return s;
+    if (!fitted) {
+      if (y1 - next_row_ == 1) return Status::kArenaTooSmall;
+      if (!margin_known_ && cuts() && spec_.fixed_margin >= 0) {
+        stats_.margin = spec_.fixed_margin;
+        margin_known_ = true;
+      }
+      if (!margin_known_ && cuts()) {
+        const Status ms = margin_pass();
+        if (!ok(ms)) return ms;
+      }
+      height_ = (y1 - next_row_) / 2;
+      ++stats_.splits;
+      continue;
+    }
+    if (band_used_ < arena_bytes_ / 2) height_ *= 2;  // a light band: try a taller one
+    next_row_ = y1;
+    if (*n > 0) return Status::kOk;
+  }
+  return Status::kOk;
+}
+
+}  // namespace haloplot

@@ -1,0 +1,150 @@
+// The band conductor: a haloed (or all-edges) plot of any size in one fixed arena.
+//
+// The plot is cut into horizontal bands [y0, y1) (band/band_rule.h). Each band is worked alone
+// in the arena: the edges that meet it (read from an EdgeSource, the scene never stored),
+// CUT and DRAW on them, the visible pieces the band owns, their pen path. The motion planner
+// pulls band after band through next(), so the arena holds one band at a time whatever the
+// scene's size.
+//
+// Why the result equals the unbanded plot exactly. A band must see every gap that reaches its
+// rows. A gap is cut around a CUTSET record at point p of edge E by a front edge F; it reaches
+// at most `gap reach` rows from p, and F passes within CUT's reach of p. So the band takes
+// every edge that meets its rows widened by margin = gap reach + CUT reach: every record whose
+// gap touches the band is then found, from the same two edges, with the same Q0.32 position,
+// and gives the same gap. The gap reach is measured first, by a margin pass over the scene in
+// bands (CUT only, each record's gap as DRAW sizes it: draw.h record_gap); a plot whose scene
+// fits in one band skips it. Inside its rows a band's visibility is then exact; a piece that
+// runs past the top is carried up by (edge, lower end), so the band owning its upper end draws
+// it whole with the true lower end. No piece is split, lost or drawn twice.
+//
+// Band heights come from the arena: the first attempt is the whole scene; a band that does not
+// fit (edges, CUTSET, scratch, pieces or path) is halved and tried again, never truncated; a
+// band that fitted in half the arena lets the next one double. A band one row high that still
+// does not fit returns kArenaTooSmall with the bytes it needed in stats().need_bytes.
+//
+// Arena, during one band (low addresses left):
+//   [carry in | band edges -> ... CUTSET | CUT or DRAW scratch | carry out | pieces -> ... <- ids]
+// and once the band fits:
+//   [carry out (the next band's carry in) | pieces as segments | path points | path workspace]
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "band/edge_source.h"
+#include "cut/cut.h"
+#include "draw/draw.h"
+#include "motion/path_plan.h"
+#include "status/status.h"
+
+namespace haloplot {
+
+struct BandSpec {
+  bool haloed = true;                // false: every edge whole (no CUT, no DRAW), still in bands
+  DrawParams draw;                   // halo width and mode
+  CutParams cut;                     // grid choices and reach (compact_cells off saves arena)
+  int32_t start_x = 0, start_y = 0;  // the pen before the first band
+  // >= 0: this margin instead of the margin pass's. Unsafe below the measured one (gaps from
+  // outside the margin are lost); the band test uses it to show that its check sees that.
+  int32_t fixed_margin = -1;
+};
+
+// A visible piece as a band emits it: the edge's index in the source, its Q0.32 ends along
+// the edge (t0 < t1, DRAW's values) and the rounded segment the path draws.
+struct BandPiece {
+  uint32_t edge;
+  int64_t t0, t1;
+  Segment2 segment;
+};
+
+// Sees every piece once, in the band that owns it, when the band is committed (tests compare
+// them with the unbanded DRAW).
+struct PieceObserver {
+  void (*piece)(void* ctx, const BandPiece& p) = nullptr;
+  void* ctx = nullptr;
+};
+
+struct BandStats {
+  uint32_t bands = 0;         // bands committed by the drawing pass
+  uint32_t margin_bands = 0;  // bands of the margin pass (0 when the scene fit one band)
+  uint32_t splits = 0;        // band attempts that did not fit and were halved
+  int32_t gap_reach = 0;      // rows a gap reaches from its record (margin pass)
+  int32_t margin = 0;         // rows added above and below every band: gap reach + CUT reach
+  uint32_t most_edges = 0;    // edges in the largest band (its own and its margin's)
+  uint32_t most_pieces = 0;   // pieces in the busiest band
+  uint32_t most_carry = 0;    // pieces carried across one border at once
+  uint64_t edge_reads = 0;    // edges read from the source, both passes, every attempt
+  uint64_t pieces = 0;
+  uint64_t records = 0;  // CUTSET records over all committed bands (margins repeat some)
+  uint64_t cut_runs = 0, draw_runs = 0;
+  size_t peak_bytes = 0;  // the most of the arena any band used
+  size_t need_bytes = 0;  // kArenaTooSmall: what the one-row band asked for
+  PathStats path;         // summed over the bands
+  // Clock ticks (set_clock) spent in CUT, in DRAW and in the rest of the drawing pass's bands
+  // (reading the source, the path), and in the whole margin pass.
+  uint64_t cut_ticks = 0, draw_ticks = 0, other_ticks = 0, margin_ticks = 0;
+};
+
+class BandConductor {
+ public:
+  // Checks the scene (one read) and the settings; nothing is cut yet.
+  Status begin(const BandSpec& spec, EdgeSource source, void* arena, size_t arena_bytes);
+  // The next band's path points, from where the previous band left the pen; n == 0 when the
+  // plot is done. The points live in the arena until the next call.
+  Status next(const PathPoint** points, uint32_t* n);
+
+  void set_observer(PieceObserver o) { observer_ = o; }
+  void set_clock(uint64_t (*clock)()) { clock_ = clock; }
+  const BandStats& stats() const { return stats_; }
+  bool done() const { return done_; }
+
+  // Adapter for MotionPlanner::set_feed: the planner pulls the bands itself.
+  static Status feed(void* self, const PathPoint** points, uint32_t* n) {
+    return static_cast<BandConductor*>(self)->next(points, n);
+  }
+
+ private:
+  // A piece running past a band's top: its edge and its lower end along it, stored as t0 for
+  // a rising edge and t1 - 1 for a falling one, so 32 bits hold it (t0 < 2^32 <= ... t1 > 0).
+  struct Carry {
+    uint32_t edge, lower;
+  };
+  struct Gathered {  // one attempt's edges: Edge3 at the front, source indices at the top
+    Edge3* edges;
+    uint32_t* ids_end;  // local edge k has source index ids_end[-1 - k]
+    uint32_t n;
+    uint8_t* free_lo;  // the free middle of the arena
+    uint8_t* free_hi;
+  };
+  struct Attempt;
+
+  Status gather(int64_t lo, int64_t hi, Gathered* g);
+  Status cut_band(const Gathered& g, CutSet* cs, uint8_t** after, size_t* need);
+  Status margin_pass();
+  Status try_band(int32_t y1, bool* fitted, const PathPoint** points, uint32_t* n);
+  Status draw_band(Attempt& a);
+  Status commit_band(Attempt& a, const PathPoint** points, uint32_t* n);
+  uint64_t now() const { return clock_ ? clock_() : 0; }
+  bool cuts() const { return spec_.haloed && spec_.draw.halo > 0; }  // halo 0: edges whole
+  void note_used(size_t bytes) {
+    if (bytes > stats_.peak_bytes) stats_.peak_bytes = bytes;
+    if (bytes > band_used_) band_used_ = bytes;
+  }
+
+  BandSpec spec_{};
+  EdgeSource source_{};
+  uint8_t* arena_ = nullptr;
+  size_t arena_bytes_ = 0;
+  int32_t row_lo_ = 0, row_hi_ = 0;  // the scene's rows, inclusive
+  int64_t next_row_ = 0;             // the next band's y0
+  int64_t height_ = 0;               // the next attempt's height
+  bool margin_known_ = false;
+  bool done_ = true;
+  uint32_t n_carry_ = 0;  // carry entries at the front of the arena
+  size_t band_used_ = 0;  // the current attempt's bytes
+  int32_t pen_x_ = 0, pen_y_ = 0;
+  PieceObserver observer_{};
+  uint64_t (*clock_)() = nullptr;
+  BandStats stats_{};
+};
+
+}  // namespace haloplot
