@@ -2,6 +2,7 @@
 
 #include "band/band_rule.h"
 #include "memory/carve.h"
+#include "sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {
@@ -88,6 +89,11 @@ Status BandConductor::begin(const BandSpec& spec, EdgeSource source, void* arena
     return Status::kBadParameter;
   if (source.n > kMaxEdges) return Status::kTooManyEdges;
   spec_ = spec;
+  // Bands always list cells by edge index (4 bytes a pair, not 20), and report no progress:
+  // the bands, and so the plot, must not depend on the caller's host-side preferences.
+  spec_.cut.compact_cells = false;
+  spec_.cut.progress = nullptr;
+  spec_.cut.phase = nullptr;
   source_ = source;
   arena_ = align_up(static_cast<uint8_t*>(arena));
   const size_t lost = size_t(arena_ - static_cast<uint8_t*>(arena));
@@ -301,19 +307,9 @@ Status BandConductor::commit_band(Attempt& a, const PathPoint** points, uint32_t
   n_carry_ = nco;
   PathPoint* pts = reinterpret_cast<PathPoint*>(arena_ + carry_size + seg_size);
   uint32_t count = 0;
-  PathStats ps;
-  const Status s = plan_path(segs, np, pen_x_, pen_y_, arena_ + carry_size + seg_size + pts_size,
-                             ws_size, pts, path_points_max(np), &count, &ps);
+  const Status s =
+      plan_columns(a, segs, np, arena_ + carry_size + seg_size + pts_size, ws_size, pts, &count);
   if (!ok(s)) return s;
-  if (count > 0) {
-    pen_x_ = pts[count - 1].x;
-    pen_y_ = pts[count - 1].y;
-  }
-  stats_.path.polylines += ps.polylines;
-  stats_.path.pen_up_length += ps.pen_up_length;
-  stats_.path.naive_pen_up_length += ps.naive_pen_up_length;
-  stats_.path.pen_down_length += ps.pen_down_length;
-  stats_.path.pen_lifts += ps.pen_lifts;
   ++stats_.bands;
   stats_.pieces += np;
   if (np > stats_.most_pieces) stats_.most_pieces = np;
@@ -322,6 +318,51 @@ Status BandConductor::commit_band(Attempt& a, const PathPoint** points, uint32_t
   if (cuts()) stats_.records += a.cs.n_crossings;
   *points = pts;
   *n = count;
+  return Status::kOk;
+}
+
+// The band's pen path. A band is a strip as wide as the plot and often far less tall, where
+// one greedy nearest-neighbour pass leaves stragglers behind and crosses the whole width again
+// to fetch them. So the strip is cut into columns about as wide as it is tall, taken left to
+// right in even bands and right to left in odd ones (a serpentine over the plot), and the
+// greedy planner (motion/path_plan.h) orders the pieces of each column from where the pen is.
+Status BandConductor::plan_columns(const Attempt& a, Segment2* segs, uint32_t np, void* ws,
+                                   size_t ws_size, PathPoint* pts, uint32_t* count) {
+  const int64_t side = (a.y1 - a.y0 > kMinColumn ? a.y1 - a.y0 : kMinColumn) * 8;
+  const bool leftward = (stats_.bands & 1) != 0;
+  auto column = [&](const Segment2& g) {
+    const int64_t c = (int64_t{g.x0} + g.x1) / 2 / side;  // x >= 0: truncation is floor
+    return leftward ? -c : c;
+  };
+  sort_in_place(segs, np, [&](const Segment2& p, const Segment2& q) {
+    const int64_t cp = column(p), cq = column(q);
+    if (cp != cq) return cp < cq;
+    if (p.x0 != q.x0) return p.x0 < q.x0;
+    if (p.y0 != q.y0) return p.y0 < q.y0;
+    if (p.x1 != q.x1) return p.x1 < q.x1;
+    return p.y1 < q.y1;
+  });
+  *count = 0;
+  for (uint32_t first = 0; first < np;) {
+    uint32_t last = first + 1;
+    while (last < np && column(segs[last]) == column(segs[first])) ++last;
+    uint32_t added = 0;
+    PathStats ps;
+    const Status s = plan_path(segs + first, last - first, pen_x_, pen_y_, ws, ws_size,
+                               pts + *count, path_points_max(last - first), &added, &ps);
+    if (!ok(s)) return s;
+    *count += added;
+    if (added > 0) {
+      pen_x_ = pts[*count - 1].x;
+      pen_y_ = pts[*count - 1].y;
+    }
+    stats_.path.polylines += ps.polylines;
+    stats_.path.pen_up_length += ps.pen_up_length;
+    stats_.path.naive_pen_up_length += ps.naive_pen_up_length;
+    stats_.path.pen_down_length += ps.pen_down_length;
+    stats_.path.pen_lifts += ps.pen_lifts + (first > 0 && ps.polylines > 0 ? 1 : 0);
+    first = last;
+  }
   return Status::kOk;
 }
 

@@ -123,6 +123,9 @@ class BandConductor {
   Status try_band(int32_t y1, bool* fitted, const PathPoint** points, uint32_t* n);
   Status draw_band(Attempt& a);
   Status commit_band(Attempt& a, const PathPoint** points, uint32_t* n);
+  Status plan_columns(const Attempt& a, Segment2* segs, uint32_t np, void* ws, size_t ws_size,
+                      PathPoint* pts, uint32_t* count);
+  static constexpr int64_t kMinColumn = 256;  // rows: the narrowest path column
   uint64_t now() const { return clock_ ? clock_() : 0; }
   bool cuts() const { return spec_.haloed && spec_.draw.halo > 0; }  // halo 0: edges whole
   void note_used(size_t bytes) {

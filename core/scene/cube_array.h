@@ -28,4 +28,20 @@ inline uint32_t cube_array_edges(const CubeArrayParams& p) {
 // Writes cube_array_edges(p) edges; kBadParameter if capacity is short or p is out of range.
 Status cube_array(const CubeArrayParams& p, Edge3* out, uint32_t capacity);
 
+// The same edges one at a time, for a plot that never holds the scene (band/edge_source.h):
+// fit() measures the array once (O(cubes^2)); edge(i) is edge i of cube_array()'s order.
+class CubeArrayEdges {
+ public:
+  Status fit(const CubeArrayParams& p);
+  uint32_t size() const { return n_; }
+  Edge3 edge(uint32_t i) const;
+
+ private:
+  Point3 to_point(int32_t i, int32_t j, int corner) const;
+  int32_t cubes_ = 0;
+  uint32_t n_ = 0;
+  int64_t xlo_ = 0, xhi_ = 1, ylo_ = 0, yhi_ = 1, dlo_ = 0, dhi_ = 1;
+  int64_t out_w_ = 0, out_h_ = 0, margin_ = 0;
+};
+
 }  // namespace haloplot

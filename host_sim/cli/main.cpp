@@ -50,7 +50,8 @@ const char* kUsage =
     "               [--dash LEN,GAP (mm)] [--steps-per-mm N] [--method auto|qi|fallback]\n"
     "               [--hatch SPACING[,ANGLE[,TURN]]] [--spans OUT.spans] [--view AZ,EL]\n"
     "               [--perspective D] [--stats]\n"
-    "  haloplot sim JOB.job -o OUT.trace [--gcode OUT.gcode] [--hpgl OUT.hpgl] [--stats]\n"
+    "  haloplot sim JOB.job -o OUT.trace [--gcode OUT.gcode] [--hpgl OUT.hpgl] [--arena BYTES]\n"
+    "               [--stats]\n"
     "  haloplot replay IN.trace -o OUT.svg [--stats]\n"
     "  haloplot send JOB.job --port PATH [--replot W] [--corrupt-every K] [--truncate-every K]\n"
     "               [--test-exit]   (upload to a controller over its serial port or socket)\n"
@@ -376,6 +377,15 @@ int cmd_plot(int argc, char** argv) {
   return 0;
 }
 
+void print_band_stats(const BandStats& b, size_t arena) {
+  std::fprintf(stderr,
+               "arena=%zu\nbands=%u\nband_splits=%u\nmargin_bands=%u\nband_margin=%d\n"
+               "band_peak_bytes=%zu\nband_most_edges=%u\nband_most_pieces=%u\n"
+               "band_most_carry=%u\nband_edge_reads=%llu\n",
+               arena, b.bands, b.splits, b.margin_bands, b.margin, b.peak_bytes, b.most_edges,
+               b.most_pieces, b.most_carry, (unsigned long long)b.edge_reads);
+}
+
 // "12.345" from a count of thousandths.
 std::string thousandths(uint64_t v) {
   std::string f = std::to_string(v % 1000);
@@ -383,12 +393,19 @@ std::string thousandths(uint64_t v) {
 }
 
 int cmd_sim(int argc, char** argv) {
-  const Options o = parse_options(argc, argv, 2, {"-o", "--gcode", "--hpgl"}, {"--stats"});
+  const Options o =
+      parse_options(argc, argv, 2, {"-o", "--gcode", "--hpgl", "--arena"}, {"--stats"});
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return fail(std::string("bad arguments\n") + kUsage);
   JobFile jf;
   InputError ie = read_job_file(o.positional[0], &jf);
   if (ie.failed()) return fail(ie.message());
+  if (!o.get("--arena").empty()) {
+    int64_t v = 0;
+    if (!parse_int(o.get("--arena"), 1024, int64_t{1} << 30, &v))
+      return fail("--arena needs a byte count in [1024, 2^30]");
+    jf.arena = uint32_t(v);
+  }
   std::vector<Edge3> edges;
   std::string error;
   if (!load_job_scene(jf, &edges, &error)) return fail(error);
@@ -403,9 +420,12 @@ int cmd_sim(int argc, char** argv) {
   SimReport r;
   Status s = Status::kOk;
   error = write_atomically(o.get("-o"), [&](std::ostream& out) {
-    s = simulate(spec, edges, &out, &r);
+    s = simulate(spec, edges, &out, &r, jf.arena);
     return ok(s);
   });
+  if (s == Status::kArenaTooSmall)
+    return fail("sim: arena of " + std::to_string(jf.arena) + " bytes too small: a band one row " +
+                "high needs " + std::to_string(r.bands.need_bytes));
   if (!ok(s)) return fail_status("sim", s);
   if (!error.empty()) return fail(error);
   if (!o.get("--gcode").empty()) {
@@ -444,6 +464,7 @@ int cmd_sim(int argc, char** argv) {
                  (unsigned long long)r.prep.backlash_takeups, (unsigned long long)r.prep.segments,
                  r.bytes.cut_scratch + r.bytes.cutset, r.bytes.draw_scratch,
                  r.bytes.path + r.bytes.points, r.planner_bytes);
+    if (jf.arena > 0) print_band_stats(r.bands, jf.arena);
   }
   return 0;
 }

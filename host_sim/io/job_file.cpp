@@ -124,6 +124,9 @@ InputError read_job_file(const std::string& path, JobFile* out) {
     } else if (key == "pen-settle-ticks") {
       if (!number(0, 100000000, &j.machine.pen_settle_ticks))
         return bad("pen-settle-ticks in [0, 10^8]");
+    } else if (key == "arena") {
+      if (!number(1024, 1 << 30, &out->arena))
+        return bad("arena needs the controller's job arena in bytes, in [1024, 2^30]");
     } else if (key == "steps-per-mm") {
       if (!number(1, 100000, &out->style.steps_per_mm)) return bad("steps-per-mm in [1, 100000]");
     } else {

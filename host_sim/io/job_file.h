@@ -20,6 +20,8 @@
 //   draw-speed 6000   travel-speed 12000   accel 60000   junction-deviation 4
 //   pen-travel-ticks 150000   pen-settle-ticks 50000   backlash 0 0
 //   steps-per-mm 80           for the G-code and HPGL exporters
+//   arena 65536               plot in bands in a job arena of this many bytes, as a controller
+//                             with that arena does (haloed and all; default: one band)
 #pragma once
 #include <map>
 #include <string>
@@ -38,6 +40,7 @@ struct JobFile {
   // simulator hands them to the same parser.
   std::map<std::string, std::string> solid_options;
   bool outline = false;
+  uint32_t arena = 0;  // bytes; 0: the whole scene in one job buffer
 };
 
 InputError read_job_file(const std::string& path, JobFile* out);

@@ -34,22 +34,20 @@ struct RecordingHal {
   }
 };
 
-}  // namespace
-
-Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostream* trace,
-                SimReport* r) {
-  *r = SimReport{};
+// The path for the planner: the whole scene's from one job buffer (job_prepare), the points
+// kept in `buffer`.
+Status prepare_whole(const JobSpec& spec, const std::vector<Edge3>& edges,
+                     std::vector<uint64_t>* buffer, SimReport* r) {
   const uint32_t n = uint32_t(edges.size());
   // Size the job buffer from the core's own query; one retry if CUT needs more records.
   uint32_t capacity = 4 * n + 1024;
-  std::vector<uint64_t> buffer;
   PreparedJob job;
   Status s;
   for (;;) {
     s = job_bytes(spec, edges.data(), n, capacity, &r->bytes);
     if (!ok(s)) return s;
-    buffer.assign(r->bytes.total() / 8 + 1, 0);
-    s = job_prepare(spec, edges.data(), n, capacity, buffer.data(), buffer.size() * 8, &job,
+    buffer->assign(r->bytes.total() / 8 + 1, 0);
+    s = job_prepare(spec, edges.data(), n, capacity, buffer->data(), buffer->size() * 8, &job,
                     &r->job);
     if (s == Status::kCrossingCapacity && r->retries == 0) {
       capacity = uint32_t(r->job.cut.crossings + r->job.cut.near_misses);
@@ -61,13 +59,61 @@ Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostre
   }
   r->points.assign(job.points, job.points + job.n_points);
   r->spans.assign(job.spans, job.spans + job.n_spans);
+  return Status::kOk;
+}
+
+// The banded run's feed: the conductor's bands, each band's points also kept for the report.
+struct BandFeed {
+  BandConductor* conductor;
+  SimReport* report;
+  static Status more(void* ctx, const PathPoint** points, uint32_t* n) {
+    auto* self = static_cast<BandFeed*>(ctx);
+    const Status s = self->conductor->next(points, n);
+    if (ok(s)) self->report->points.insert(self->report->points.end(), *points, *points + *n);
+    return s;
+  }
+  static void piece(void* ctx, const BandPiece& p) {
+    static_cast<BandFeed*>(ctx)->report->spans.push_back(p.segment);
+  }
+};
+
+}  // namespace
+
+Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostream* trace,
+                SimReport* r, size_t arena_bytes) {
+  *r = SimReport{};
+  r->arena_bytes = arena_bytes;
+  Status s = validate(spec.machine);
+  if (!ok(s)) return s;
+  std::vector<uint64_t> buffer;
+  BandConductor conductor;
+  BandFeed feed{&conductor, r};
+  if (arena_bytes == 0) {
+    s = prepare_whole(spec, edges, &buffer, r);
+    if (!ok(s)) return s;
+  } else {
+    if (spec.drawing != DrawingEffect::kHaloed && spec.drawing != DrawingEffect::kAllEdges)
+      return Status::kBadParameter;
+    BandSpec bs;
+    bs.haloed = spec.drawing == DrawingEffect::kHaloed;
+    bs.draw = spec.draw;
+    bs.cut = spec.cut;
+    bs.start_x = spec.start_x;
+    bs.start_y = spec.start_y;
+    buffer.assign(arena_bytes / 8, 0);
+    conductor.set_observer(PieceObserver{&BandFeed::piece, &feed});
+    s = conductor.begin(bs, array_edge_source(edges.data(), uint32_t(edges.size())), buffer.data(),
+                        buffer.size() * 8);
+    if (!ok(s)) return s;
+  }
 
   r->planner_bytes = MotionPlanner::workspace_bytes(spec.effects);
   std::vector<uint64_t> planner_ws(r->planner_bytes / 8 + 1);
   MotionPlanner planner;
-  s = planner.init(spec.machine, spec.effects, job.points, job.n_points, planner_ws.data(),
-                   r->planner_bytes);
+  s = planner.init(spec.machine, spec.effects, r->points.data(), uint32_t(r->points.size()),
+                   planner_ws.data(), r->planner_bytes);
   if (!ok(s)) return s;
+  if (arena_bytes > 0) planner.set_feed(PointFeed{&BandFeed::more, &feed});
   StepPrep prep;
   s = prep.init(spec.machine, spec.effects);
   if (!ok(s)) return s;
@@ -86,6 +132,12 @@ Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostre
   r->prep = prep.counters();
   r->final_motors[0] = engine.position(0);
   r->final_motors[1] = engine.position(1);
+  if (arena_bytes > 0) {
+    r->bands = conductor.stats();
+    r->job.path = r->bands.path;
+    r->job.cut_runs = uint32_t(r->bands.cut_runs);
+    r->job.draw_runs = uint32_t(r->bands.draw_runs);
+  }
   if (writer) writer->finish(hal.now);
   return Status::kOk;
 }

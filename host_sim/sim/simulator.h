@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "band/conductor.h"
 #include "job/job.h"
 #include "motion/planner.h"
 #include "motion/step_prep.h"
@@ -26,11 +27,15 @@ struct SimReport {
   std::vector<PathPoint> points;  // the planned path (for the exporters)
   std::vector<Segment2> spans;    // what DRAW emitted (for checks)
   int32_t final_motors[2] = {0, 0};
+  size_t arena_bytes = 0;  // > 0: the plot ran in bands in this arena, as on the controller
+  BandStats bands;
 };
 
 // Runs the whole job and writes the trace to `trace` (may be null). Returns the first status
-// that stopped it.
+// that stopped it. With arena_bytes > 0 the drawing runs in bands in an arena of that size
+// (band/conductor.h), exactly as a controller with that arena runs it; 0: one job buffer sized
+// for the whole scene.
 Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostream* trace,
-                SimReport* report);
+                SimReport* report, size_t arena_bytes = 0);
 
 }  // namespace haloplot::host
