@@ -1,0 +1,133 @@
+// On-target self-test of the band conductor, booted under QEMU by the CTest `firmware_bands`:
+// the README's demo, the HALO paper's Figure 4 (28 x 28 cubes, 9408 edges, halo 50), plotted
+// haloed on the demo's CoreXY machine in a 64 KB job arena. The scene is never stored: the
+// cube array is generated edge by edge (scene/cube_array.h) each time a band reads it. The
+// step trace (about 46 MB of text) is not sent: its CRC-32 and length are, and the host test
+// compares them with `haloplot sim` of the demo job with `arena 65536`. Instruction counts
+// come from the TIM5 counter under -icount (one count per instruction).
+#include "band/conductor.h"
+#include "motion/planner.h"
+#include "motion/step_engine.h"
+#include "motion/step_prep.h"
+#include "motion/virtual_run.h"
+#include "platform/console.h"
+#include "platform/instruction_counter.h"
+#include "platform/semihosting.h"
+#include "protocol/crc32.h"
+#include "scene/cube_array.h"
+#include "trace/trace_encoder.h"
+
+using namespace haloplot;
+using namespace haloplot::fw;
+
+extern "C" uint32_t stack_unused_bytes();
+
+namespace {
+
+constexpr size_t kArenaBytes = 64 * 1024;
+alignas(8) uint8_t arena[kArenaBytes];
+Console console;
+CubeArrayEdges cubes;
+
+[[noreturn]] void fail(const char* what, Status s) {
+  char line[128];
+  char* p = append(line, "fw FAILED: ");
+  p = append(p, what);
+  p = append(p, ": ");
+  p = append(p, status_name(s));
+  append(p, "\n");
+  console.flush();
+  semihost_print(line);
+  semihost_exit(1);
+}
+
+// The trace's bytes, summed up instead of sent.
+struct TraceDigest {
+  uint32_t crc = 0;
+  uint64_t bytes = 0;
+  static void write(void* ctx, const char* text, uint32_t n) {
+    auto* self = static_cast<TraceDigest*>(ctx);
+    self->crc = crc32_update(self->crc, reinterpret_cast<const uint8_t*>(text), n);
+    self->bytes += n;
+  }
+};
+
+struct TraceHal {
+  uint64_t now = 0;
+  bool backward[2] = {false, false};
+  TraceEncoder* trace = nullptr;
+  void set_direction(uint8_t m, bool b) { backward[m] = b; }
+  void step(uint8_t m) { trace->step(now, m, backward[m]); }
+  void pen(bool down) { trace->pen(now, down); }
+};
+
+SegmentQueue<64> queue;
+
+Status read_cubes(void*, uint32_t first, uint32_t count, Edge3* out) {
+  for (uint32_t i = 0; i < count; ++i) out[i] = cubes.edge(first + i);
+  return Status::kOk;
+}
+
+}  // namespace
+
+int main() {
+  counter_start();
+  Status s = cubes.fit(CubeArrayParams{});
+  if (!ok(s)) fail("cube array", s);
+  EdgeSource source;
+  source.n = cubes.size();
+  source.read = &read_cubes;
+
+  // The demo job (scenes/demo.job): halo 50, the paper's gap, CoreXY, acceleration and pen servo.
+  BandSpec spec;
+  spec.draw = DrawParams{50, HaloMode::kPaper};
+  Machine machine;
+  machine.kinematics = Kinematics::kCoreXY;
+  const PlotterEffects effects;
+
+  BandConductor conductor;
+  conductor.set_clock(&counter_ticks);
+  s = conductor.begin(spec, source, arena, sizeof arena);
+  if (!ok(s)) fail("bands", s);
+  alignas(8) static uint8_t planner_ws[MotionPlanner::kDefaultLookahead * 64];
+  MotionPlanner planner;
+  s = planner.init(machine, effects, nullptr, 0, planner_ws, sizeof planner_ws);
+  if (!ok(s)) fail("planner", s);
+  planner.set_feed(PointFeed{&BandConductor::feed, &conductor});
+  StepPrep prep;
+  s = prep.init(machine, effects);
+  if (!ok(s)) fail("prep", s);
+  TraceDigest digest;
+  TraceEncoder trace(CharSink{&TraceDigest::write, &digest}, machine);
+  TraceHal hal;
+  hal.trace = &trace;
+  StepEngine<TraceHal, SegmentQueue<64>> engine(hal, queue);
+  const uint64_t t0 = counter_ticks();
+  s = run_virtual(planner, prep, queue, hal, engine);
+  const uint64_t t1 = counter_ticks();
+  if (!ok(s)) fail("plot", s);
+  trace.finish(hal.now);
+
+  const BandStats& b = conductor.stats();
+  console.stat("edges", source.n);
+  console.stat("arena_bytes", kArenaBytes);
+  console.stat("bands", b.bands);
+  console.stat("margin_bands", b.margin_bands);
+  console.stat("splits", b.splits);
+  console.stat("margin", uint64_t(b.margin));
+  console.stat("peak_bytes", b.peak_bytes);
+  console.stat("most_edges", b.most_edges);
+  console.stat("pieces", b.pieces);
+  console.stat("records", b.records);
+  console.stat("cut_instructions", ticks_to_instructions(b.cut_ticks));
+  console.stat("draw_instructions", ticks_to_instructions(b.draw_ticks));
+  console.stat("band_other_instructions", ticks_to_instructions(b.other_ticks));
+  console.stat("margin_pass_instructions", ticks_to_instructions(b.margin_ticks));
+  console.stat("plot_instructions", ticks_to_instructions(t1 - t0));
+  console.stat("step_events", engine.events());
+  console.stat("trace_bytes", digest.bytes);
+  console.stat("trace_crc32", digest.crc);
+  console.stat("stack_used_bytes", 16 * 1024 - stack_unused_bytes());
+  console.flush();
+  semihost_exit(0);
+}
