@@ -186,6 +186,26 @@ Status BandConductor::cut_band(const Gathered& g, CutSet* cs, uint8_t** after, s
   return Status::kOk;
 }
 
+// How far a band must look for this record's front edge: the rows from the farthest point of
+// the gap to the front edge's nearest row (0 when the gap lies within the edge's rows). A band
+// whose rows the gap touches then holds the front edge once widened by that many rows, and
+// the behind edge too (it runs through the gap). For the exact halo every gap point is within
+// the halo width of the front edge, so this stays near W; the paper's W / sin(theta) can
+// reach far along a near-parallel edge.
+int64_t BandConductor::gap_reach(const CutSet& cs, const Crossing& r) const {
+  const Gap gap = record_gap(cs, r, spec_.draw);
+  if (gap.empty()) return 0;
+  const Edge3& e = cs.edges[r.behind];
+  const int64_t base = int64_t{e.a.y} * kFracOne, dy = int64_t{e.b.y} - e.a.y;
+  const int64_t v0 = base + dy * gap.lo, v1 = base + dy * gap.hi;          // rows * 2^32, < 2^54
+  const int64_t low = (v0 < v1 ? v0 : v1) >> kFracBits;                    // floor
+  const int64_t high = ((v0 < v1 ? v1 : v0) + kFracOne - 1) >> kFracBits;  // ceiling
+  const Edge3& f = cs.edges[r.front_edge()];
+  const int64_t below = edge_row_min(f) - low, above = high - edge_row_max(f);
+  const int64_t d = below > above ? below : above;
+  return d > 0 ? d : 0;
+}
+
 // The margin pass: CUT over the scene in bands (each widened by CUT's reach, so every record
 // is found in the band that holds its point), and the farthest row any record's gap reaches
 // from that point. Only a plot whose scene did not fit one band runs it.
@@ -209,28 +229,21 @@ Status BandConductor::margin_pass() {
         stats_.need_bytes = need + carve_round(size_t{n_carry_} * sizeof(Carry));
         return Status::kArenaTooSmall;
       }
-      h = (y1 - y) / 2;
+      h = shorter(y1 - y, need);
       ++stats_.splits;
       continue;
     }
     if (!ok(s)) return s;
     for (uint32_t i = 0; i < cs.n_crossings; ++i) {
-      const Crossing& r = cs.crossings[i];
-      const Gap gap = record_gap(cs, r, spec_.draw);
-      if (gap.empty()) continue;
-      const int64_t a = gap.lo - int64_t{r.t}, b = gap.hi - int64_t{r.t};
-      const int64_t d = (a < 0 ? -a : a) > (b < 0 ? -b : b) ? (a < 0 ? -a : a) : (b < 0 ? -b : b);
-      const Edge3& e = cs.edges[r.behind];
-      const int64_t dy = e.b.y > e.a.y ? int64_t{e.b.y} - e.a.y : int64_t{e.a.y} - e.b.y;
-      const int64_t rows = ((dy * d + kFracOne - 1) >> kFracBits) + 1;  // |dy| d < 2^53
+      const int64_t rows = gap_reach(cs, cs.crossings[i]);
       if (rows > reach) reach = rows;
     }
     ++stats_.margin_bands;
-    if (band_used_ < arena_bytes_ / 2) h *= 2;
+    h = next_height(y1 - y);
     y = y1;
   }
   stats_.gap_reach = int32_t(reach);
-  stats_.margin = int32_t(reach + widen);
+  stats_.margin = int32_t(reach + 1);
   margin_known_ = true;
   stats_.margin_ticks += now() - t_start;
   return Status::kOk;
@@ -315,6 +328,7 @@ Status BandConductor::commit_band(Attempt& a, const PathPoint** points, uint32_t
   if (np > stats_.most_pieces) stats_.most_pieces = np;
   if (nco > stats_.most_carry) stats_.most_carry = nco;
   if (a.g.n > stats_.most_edges) stats_.most_edges = a.g.n;
+  stats_.band_edges += a.g.n;
   if (cuts()) stats_.records += a.cs.n_crossings;
   *points = pts;
   *n = count;
@@ -366,6 +380,31 @@ Status BandConductor::plan_columns(const Attempt& a, Segment2* segs, uint32_t np
   return Status::kOk;
 }
 
+// Band heights from the bytes bands take. A band holds the edges of its rows and of the margin
+// above and below them, so its bytes grow about in proportion to rows + 2 margin: the next band
+// aims at 7/8 of the arena at the last band's bytes per such row, at most doubling (a dense
+// stretch may follow a sparse one), and a band that did not fit is cut the same way by the
+// bytes it asked for (at most halved when that is unknown). Every retry costs a band's CUT, so
+// a good guess is worth more than a tall band.
+int64_t BandConductor::rows_for(int64_t rows, size_t bytes) const {
+  const int64_t span = rows + 2 * int64_t{stats_.margin};
+  const uint64_t target = arena_bytes_ / 8 * 7;
+  const int64_t aim =
+      int64_t(uint64_t(span) * target / (bytes > 0 ? bytes : 1)) - 2 * int64_t{stats_.margin};
+  return aim < 1 ? 1 : aim;
+}
+
+int64_t BandConductor::next_height(int64_t rows) const {
+  const int64_t aim = rows_for(rows, band_used_);
+  return aim < 2 * rows ? aim : 2 * rows;
+}
+
+int64_t BandConductor::shorter(int64_t rows, size_t need) const {
+  const int64_t aim = need > arena_bytes_ ? rows_for(rows, need) : rows / 2;
+  const int64_t h = aim < rows / 2 ? aim : rows / 2;
+  return h < 1 ? 1 : h;
+}
+
 // One attempt at the band [next_row_, y1): *fitted false when the arena was too small for it.
 Status BandConductor::try_band(int32_t y1, bool* fitted, const PathPoint** points, uint32_t* n) {
   const uint64_t t_start = now();
@@ -388,9 +427,16 @@ Status BandConductor::try_band(int32_t y1, bool* fitted, const PathPoint** point
   if (ok(s)) s = draw_band(a);
   if (ok(s)) s = commit_band(a, points, n);
   *fitted = !does_not_fit(s);
-  if (!*fitted) stats_.need_bytes = a.need;
-  stats_.other_ticks +=
-      (now() - t_start) - (stats_.cut_ticks - cut_before) - (stats_.draw_ticks - draw_before);
+  const uint64_t spent = now() - t_start;
+  if (!*fitted) {  // the attempt's work is waste: count it there, not in CUT and DRAW
+    stats_.need_bytes = a.need;
+    stats_.wasted_ticks += spent;
+    stats_.cut_ticks = cut_before;
+    stats_.draw_ticks = draw_before;
+  } else {
+    stats_.other_ticks +=
+        spent - (stats_.cut_ticks - cut_before) - (stats_.draw_ticks - draw_before);
+  }
   return *fitted ? s : Status::kOk;
 }
 
@@ -418,11 +464,11 @@ Status BandConductor::next(const PathPoint** points, uint32_t* n) {
         const Status ms = margin_pass();
         if (!ok(ms)) return ms;
       }
-      height_ = (y1 - next_row_) / 2;
+      height_ = shorter(y1 - next_row_, stats_.need_bytes);
       ++stats_.splits;
       continue;
     }
-    if (band_used_ < arena_bytes_ / 2) height_ *= 2;  // a light band: try a taller one
+    height_ = next_height(y1 - next_row_);
     next_row_ = y1;
     if (*n > 0) return Status::kOk;
   }

@@ -7,15 +7,17 @@
 // scene's size.
 //
 // Why the result equals the unbanded plot exactly. A band must see every gap that reaches its
-// rows. A gap is cut around a CUTSET record at point p of edge E by a front edge F; it reaches
-// at most `gap reach` rows from p, and F passes within CUT's reach of p. So the band takes
-// every edge that meets its rows widened by margin = gap reach + CUT reach: every record whose
-// gap touches the band is then found, from the same two edges, with the same Q0.32 position,
-// and gives the same gap. The gap reach is measured first, by a margin pass over the scene in
-// bands (CUT only, each record's gap as DRAW sizes it: draw.h record_gap); a plot whose scene
-// fits in one band skips it. Inside its rows a band's visibility is then exact; a piece that
-// runs past the top is carried up by (edge, lower end), so the band owning its upper end draws
-// it whole with the true lower end. No piece is split, lost or drawn twice.
+// rows. A gap is cut into edge E by a front edge F (a CUTSET record); E runs through the gap,
+// and F comes within `gap reach` rows of every point of it. So the band takes every edge that
+// meets its rows widened by margin = gap reach + 1: both edges of every record whose gap
+// touches the band are then there, CUT finds the record (it finds every crossing of its input,
+// wherever it lies) with the same Q0.32 position, and DRAW cuts the same gap. The gap reach is
+// measured first, by a margin pass over the scene in bands (CUT only, each band widened by
+// CUT's reach so every record is found where its point lies, each record's gap as DRAW sizes
+// it: draw.h record_gap); a plot whose scene fits in one band skips it. Inside its rows a band's
+// visibility is then exact; a piece that runs past the top is carried up by (edge, lower end), so
+// the band owning its upper end draws it whole with the true lower end. No piece is split, lost or
+// drawn twice.
 //
 // Band heights come from the arena: the first attempt is the whole scene; a band that does not
 // fit (edges, CUTSET, scratch, pieces or path) is halved and tried again, never truncated; a
@@ -67,21 +69,23 @@ struct BandStats {
   uint32_t bands = 0;         // bands committed by the drawing pass
   uint32_t margin_bands = 0;  // bands of the margin pass (0 when the scene fit one band)
   uint32_t splits = 0;        // band attempts that did not fit and were halved
-  int32_t gap_reach = 0;      // rows a gap reaches from its record (margin pass)
-  int32_t margin = 0;         // rows added above and below every band: gap reach + CUT reach
+  int32_t gap_reach = 0;      // rows from a gap to its front edge, at most (margin pass)
+  int32_t margin = 0;         // rows added above and below every band: gap reach + 1
   uint32_t most_edges = 0;    // edges in the largest band (its own and its margin's)
   uint32_t most_pieces = 0;   // pieces in the busiest band
   uint32_t most_carry = 0;    // pieces carried across one border at once
   uint64_t edge_reads = 0;    // edges read from the source, both passes, every attempt
+  uint64_t band_edges = 0;    // edges over the committed bands (an edge in k bands counts k)
   uint64_t pieces = 0;
   uint64_t records = 0;  // CUTSET records over all committed bands (margins repeat some)
   uint64_t cut_runs = 0, draw_runs = 0;
   size_t peak_bytes = 0;  // the most of the arena any band used
   size_t need_bytes = 0;  // kArenaTooSmall: what the one-row band asked for
   PathStats path;         // summed over the bands
-  // Clock ticks (set_clock) spent in CUT, in DRAW and in the rest of the drawing pass's bands
-  // (reading the source, the path), and in the whole margin pass.
-  uint64_t cut_ticks = 0, draw_ticks = 0, other_ticks = 0, margin_ticks = 0;
+  // Clock ticks (set_clock) of the drawing pass's committed bands, spent in CUT, in DRAW and
+  // in the rest (reading the source, the path); of its attempts that did not fit (all their
+  // work); and of the whole margin pass.
+  uint64_t cut_ticks = 0, draw_ticks = 0, other_ticks = 0, wasted_ticks = 0, margin_ticks = 0;
 };
 
 class BandConductor {
@@ -120,6 +124,7 @@ class BandConductor {
   Status gather(int64_t lo, int64_t hi, Gathered* g);
   Status cut_band(const Gathered& g, CutSet* cs, uint8_t** after, size_t* need);
   Status margin_pass();
+  int64_t gap_reach(const CutSet& cs, const Crossing& r) const;
   Status try_band(int32_t y1, bool* fitted, const PathPoint** points, uint32_t* n);
   Status draw_band(Attempt& a);
   Status commit_band(Attempt& a, const PathPoint** points, uint32_t* n);
@@ -127,6 +132,9 @@ class BandConductor {
                       PathPoint* pts, uint32_t* count);
   static constexpr int64_t kMinColumn = 256;  // rows: the narrowest path column
   uint64_t now() const { return clock_ ? clock_() : 0; }
+  int64_t rows_for(int64_t rows, size_t bytes) const;  // rows that 7/8 of the arena holds
+  int64_t next_height(int64_t rows) const;             // after a band that fitted
+  int64_t shorter(int64_t rows, size_t need) const;    // after one that did not
   bool cuts() const { return spec_.haloed && spec_.draw.halo > 0; }  // halo 0: edges whole
   void note_used(size_t bytes) {
     if (bytes > stats_.peak_bytes) stats_.peak_bytes = bytes;

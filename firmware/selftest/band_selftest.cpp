@@ -123,6 +123,8 @@ int main() {
   console.stat("draw_instructions", ticks_to_instructions(b.draw_ticks));
   console.stat("band_other_instructions", ticks_to_instructions(b.other_ticks));
   console.stat("margin_pass_instructions", ticks_to_instructions(b.margin_ticks));
+  console.stat("wasted_attempt_instructions", ticks_to_instructions(b.wasted_ticks));
+  console.stat("cut_runs", b.cut_runs);
   console.stat("plot_instructions", ticks_to_instructions(t1 - t0));
   console.stat("step_events", engine.events());
   console.stat("trace_bytes", digest.bytes);
