@@ -44,7 +44,7 @@ const char* kUsage =
     "               [--reach R] [--stats]\n"
     "  haloplot draw SCENE.cut --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans] [--stats]\n"
     "  haloplot plot SCENE.edges|MODEL.obj --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans]\n"
-    "               [--cut OUT.cut] [cut options] [--stats]\n"
+    "               [--cut OUT.cut] [cut options] [--arena BYTES] [--stats]\n"
     "               [--view AZ,EL] [--perspective D] [--dump-edges OUT.edges]   (for .obj)\n"
     "  haloplot plot MODEL.obj --mode all|hidden-removed|hidden-dashed -o OUT.svg [--outline]\n"
     "               [--dash LEN,GAP (mm)] [--steps-per-mm N] [--method auto|qi|fallback]\n"
@@ -335,10 +335,36 @@ int cmd_draw(int argc, char** argv) {
   return 0;
 }
 
+void print_band_stats(const BandStats& b, size_t arena);
+
+// plot --arena BYTES: the banded run a controller with that arena makes; the same pieces.
+int plot_in_bands(const Options& o, const std::vector<Edge3>& edges, const CutParams& cp,
+                  const DrawParams& dp) {
+  if (!o.get("--cut").empty())
+    return fail("--cut writes the whole CUTSET, which a banded run never holds: drop --arena");
+  int64_t arena = 0;
+  if (!parse_int(o.get("--arena"), 1024, int64_t{1} << 30, &arena))
+    return fail("--arena needs a byte count in [1024, 2^30]");
+  HostDraw d;
+  BandStats bands;
+  const Status s = host_banded_draw(edges, cp, dp, size_t(arena), &d, &bands);
+  if (s == Status::kArenaTooSmall)
+    return fail("plot: arena of " + std::to_string(arena) + " bytes too small: a band one row " +
+                "high needs " + std::to_string(bands.need_bytes));
+  if (!ok(s)) return fail_status("bands", s);
+  if (const int rc = write_drawing(o, d)) return rc;
+  if (o.has("--stats")) {
+    std::fprintf(stderr, "edges=%zu\nspans=%zu\nband_ms=%.3f\n", edges.size(), d.spans.size(),
+                 d.draw_ms);
+    print_band_stats(bands, size_t(arena));
+  }
+  return 0;
+}
+
 int cmd_plot(int argc, char** argv) {
   std::set<std::string> valued = kCutValued;
-  valued.insert(
-      {"--halo", "--spans", "--cut", "--mode", "--dash", "--steps-per-mm", "--method", "--hatch"});
+  valued.insert({"--halo", "--spans", "--cut", "--mode", "--dash", "--steps-per-mm", "--method",
+                 "--hatch", "--arena"});
   valued.insert(std::begin(kSceneOptions), std::end(kSceneOptions));
   const Options o = parse_options(argc, argv, 2, valued, {"--exact-halo", "--stats", "--outline"});
   if (!o.error.empty()) return fail(o.error);
@@ -355,6 +381,7 @@ int cmd_plot(int argc, char** argv) {
   if (dp.mode == HaloMode::kExact && o.get("--reach").empty()) cp.reach = dp.halo;
   std::vector<Edge3> edges;
   if (!load_scene(o, o.positional[0], &edges, &error)) return fail(error);
+  if (!o.get("--arena").empty()) return plot_in_bands(o, edges, cp, dp);
   HostCut c;
   Status s = host_cut(std::move(edges), cp, &c);
   if (!ok(s)) return fail_status("CUT", s);

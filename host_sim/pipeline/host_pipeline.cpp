@@ -1,5 +1,6 @@
 #include "pipeline/host_pipeline.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace haloplot::host {
@@ -57,6 +58,39 @@ Status host_draw(const CutSet& set, const DrawParams& params, HostDraw* out) {
   const Status s = draw(set, params, scratch.data(), scratch.size() * sizeof(Gap),
                         SpanSink{&collect, &out->spans}, &out->stats);
   out->draw_ms = ms_since(t0);
+  return s;
+}
+
+Status host_banded_draw(const std::vector<Edge3>& edges, const CutParams& cut,
+                        const DrawParams& draw, size_t arena_bytes, HostDraw* out,
+                        BandStats* bands) {
+  out->spans.clear();
+  BandSpec spec;
+  spec.draw = draw;
+  spec.cut = cut;
+  std::vector<uint64_t> arena(arena_bytes / 8);
+  BandConductor conductor;
+  conductor.set_observer(PieceObserver{[](void* ctx, const BandPiece& p) {
+                                         static_cast<std::vector<Span>*>(ctx)->push_back(
+                                             Span{p.edge, p.t0, p.t1, p.segment.x0, p.segment.y0,
+                                                  p.segment.x1, p.segment.y1});
+                                       },
+                                       &out->spans});
+  const auto t0 = std::chrono::steady_clock::now();
+  Status s = conductor.begin(spec, array_edge_source(edges.data(), uint32_t(edges.size())),
+                             arena.data(), arena.size() * 8);
+  while (ok(s) && !conductor.done()) {
+    const PathPoint* points = nullptr;
+    uint32_t n = 0;
+    s = conductor.next(&points, &n);
+  }
+  out->draw_ms = ms_since(t0);
+  *bands = conductor.stats();
+  out->scratch_bytes = bands->peak_bytes;
+  out->stats.spans = out->spans.size();
+  std::sort(out->spans.begin(), out->spans.end(), [](const Span& a, const Span& b) {
+    return a.edge != b.edge ? a.edge < b.edge : a.t0 < b.t0;
+  });
   return s;
 }
 

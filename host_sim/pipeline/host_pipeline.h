@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "band/conductor.h"
 #include "haloplot.h"
 
 namespace haloplot::host {
@@ -39,5 +40,12 @@ struct HostDraw {
 };
 
 Status host_draw(const CutSet& set, const DrawParams& params, HostDraw* out);
+
+// CUT and DRAW in bands in an arena of `arena_bytes`, as a controller with that arena runs
+// them (band/conductor.h): the same visible pieces as host_cut + host_draw, in the same order
+// (by edge, then along it). draw_ms covers the whole banded run.
+Status host_banded_draw(const std::vector<Edge3>& edges, const CutParams& cut,
+                        const DrawParams& draw, size_t arena_bytes, HostDraw* out,
+                        BandStats* bands);
 
 }  // namespace haloplot::host

@@ -140,5 +140,26 @@ printf 'scene good.obj\ndrawing hidden-removed\nview 30,25\nhatch 1 30 90\n' > h
 rc=$?
 expect '[ $rc -eq 0 ] && [ "$(grep "^edges=" hatchsim.txt | cut -d= -f2)" -gt 20 ]' "a job hatches through the simulator: $(cat hatchsim.txt | head -3)"
 
+# Bands (--arena, the job's arena): the controller's fixed arena on the host, the same picture.
+"$tool" plot scene.edges --halo 60 -o band.svg --spans band.spans --arena 8192 --stats 2> band.txt
+rc=$?
+expect '[ $rc -eq 0 ] && cmp -s a.spans band.spans && cmp -s a.svg band.svg' "plot --arena draws what plot draws: $(head -3 band.txt)"
+expect '[ "$(sed -n "s/^bands=//p" band.txt)" -gt 1 ]' "8 KB takes more than one band: $(grep '^bands=' band.txt)"
+"$tool" plot scene.edges --halo 60 -o tiny.svg --arena 1024 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "arena of 1024 bytes too small: a band one row high needs [0-9]*" err.txt && [ ! -e tiny.svg ]' "a too small arena names the bytes a band needs: $(cat err.txt)"
+"$tool" plot scene.edges --halo 60 -o x.svg --arena 65536 --cut x.cut 2> err.txt
+expect '[ $? -ne 0 ] && grep -q -- "--cut" err.txt' "--cut with --arena is refused by name"
+printf 'scene scene.edges\ndrawing haloed\nhalo 60\narena 16384\n' > arena.job
+"$tool" sim arena.job -o arena.trace --stats 2> arenasim.txt
+rc=$?
+expect '[ $rc -eq 0 ] && [ "$(sed -n "s/^bands=//p" arenasim.txt)" -gt 1 ] && [ "$(sed -n "s/^spans=//p" arenasim.txt)" = "$(grep -c "^s " a.spans)" ]' "a job with an arena plots in bands, every piece: $(grep -E "^(bands|spans)=" arenasim.txt | tr '\n' ' ')"
+"$tool" replay arena.trace -o arena_replay.svg --stats 2> replay.txt
+expect '[ $? -eq 0 ]' "the banded trace replays"
+printf 'scene scene.edges\narena 12\n' > badarena.job
+"$tool" sim badarena.job -o x.trace 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "badarena.job:2: arena" err.txt' "a bad arena names its line: $(cat err.txt)"
+
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
