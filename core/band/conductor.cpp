@@ -20,11 +20,14 @@ bool does_not_fit(Status s) {
          s == Status::kCutsetStorageTooSmall || s == Status::kSinkFull;
 }
 
-// A piece as a band keeps it until the band is committed: 28 bytes (t0 < 2^32, t1 >= 1).
+// A piece as a band keeps it until the band is committed: its band-local edge, its ends
+// (t0 < 2^32, t1 >= 1) and x0 + x1 of its rounded ends (the path column). 16 bytes, the size of
+// the Segment2 it becomes in place once the band fits.
 struct StoredPiece {
-  uint32_t edge, t0, t1_minus_1;
-  Segment2 segment;
+  uint32_t local, t0, t1_minus_1;
+  int32_t x_sum;
 };
+static_assert(sizeof(StoredPiece) == sizeof(Segment2), "pieces turn into segments in place");
 
 }  // namespace
 
@@ -46,7 +49,7 @@ struct BandConductor::Attempt {
   static Status on_span(void* ctx, const Span& s) {
     Attempt& a = *static_cast<Attempt*>(ctx);
     const Edge3& e = a.g.edges[s.edge];
-    const uint32_t id = a.g.ids_end[-1 - int64_t{s.edge}];
+    const uint32_t id = a.g.id(s.edge);
     const int64_t up = upper_end(e, s.t0, s.t1), low = lower_end(e, s.t0, s.t1);
     if (row_compare(e, up, a.y0) < 0) return Status::kOk;  // below: an earlier band drew it
     int64_t lower = low;
@@ -66,12 +69,10 @@ struct BandConductor::Attempt {
     }
     if (a.n_pieces == a.piece_capacity) return Status::kSinkFull;
     const int64_t t0 = rising(e) ? lower : up, t1 = rising(e) ? up : lower;
-    StoredPiece& p = a.pieces[a.n_pieces++];
-    p.edge = id;
-    p.t0 = uint32_t(t0);
-    p.t1_minus_1 = uint32_t(t1 - 1);
-    span_point(e, t0, &p.segment.x0, &p.segment.y0);
-    span_point(e, t1, &p.segment.x1, &p.segment.y1);
+    Segment2 g;
+    span_point(e, t0, &g.x0, &g.y0);
+    span_point(e, t1, &g.x1, &g.y1);
+    a.pieces[a.n_pieces++] = StoredPiece{s.edge, uint32_t(t0), uint32_t(t1 - 1), g.x0 + g.x1};
     return Status::kOk;
   }
 };
@@ -289,40 +290,70 @@ Status BandConductor::draw_band(Attempt& a) {
   return Status::kOk;
 }
 
-// The band fitted up to its pieces: if the path fits too, hand the pieces to the observer,
-// move the carry to the front, lay the pieces out as segments and plan their pen path.
-Status BandConductor::commit_band(Attempt& a, const PathPoint** points, uint32_t* n) {
+// The band's pen path, column by column. A band is a strip as wide as the plot and often far
+// less tall, where one greedy nearest-neighbour pass leaves stragglers behind and crosses the
+// whole width again to fetch them. So the strip is cut into columns about as wide as it is
+// tall, taken left to right in even bands and right to left in odd ones (a serpentine over
+// the plot), and the greedy planner (motion/path_plan.h) orders each column's pieces from
+// where the pen is. Planning a column at a time also bounds the path's memory by the largest
+// column, not the band.
+int64_t BandConductor::column_of(int64_t x_sum) const {
+  const int64_t c = x_sum / 2 / column_side_;  // x >= 0: truncation is floor
+  return leftward_ ? -c : c;
+}
+
+// The band fitted up to its pieces: order them by column; if the segments and the largest
+// column's path fit, hand the pieces to the observer, move the carry to the front and lay the
+// pieces out as segments for next() to plan column by column.
+Status BandConductor::commit_band(Attempt& a) {
   const uint32_t np = a.n_pieces, nco = a.n_carry_out;
+  column_side_ = a.y1 - a.y0 > kMinColumn ? a.y1 - a.y0 : kMinColumn;
+  leftward_ = (stats_.bands & 1) != 0;
+  sort_in_place(a.pieces, np, [this](const StoredPiece& p, const StoredPiece& q) {
+    const int64_t cp = column_of(p.x_sum), cq = column_of(q.x_sum);
+    if (cp != cq) return cp < cq;
+    return p.local != q.local ? p.local < q.local : p.t0 < q.t0;
+  });
+  uint32_t widest = 0;
+  for (uint32_t first = 0, last = 0; first < np; first = last) {
+    while (last < np && column_of(a.pieces[last].x_sum) == column_of(a.pieces[first].x_sum)) ++last;
+    if (last - first > widest) widest = last - first;
+  }
   const size_t carry_size = carve_round(size_t{nco} * sizeof(Carry));
   const size_t seg_size = carve_round(size_t{np} * sizeof(Segment2));
-  const size_t pts_size = carve_round(size_t{path_points_max(np)} * sizeof(PathPoint));
-  const size_t ws_size = carve_round(path_plan_bytes(np));
-  const size_t total = carry_size + seg_size + pts_size + ws_size;
+  const size_t total = carry_size + seg_size +
+                       carve_round(size_t{path_points_max(widest)} * sizeof(PathPoint)) +
+                       carve_round(path_plan_bytes(widest));
   if (total > arena_bytes_) {
     a.need = total;
     return Status::kWorkspaceTooSmall;
   }
   note_used(total);
-  for (uint32_t i = 0; i < np && observer_.piece != nullptr; ++i) {
-    const StoredPiece& sp = a.pieces[i];
-    observer_.piece(observer_.ctx,
-                    BandPiece{sp.edge, sp.t0, int64_t{sp.t1_minus_1} + 1, sp.segment});
+  // Each piece becomes its segment in place, seen by the observer first.
+  Segment2* in_place = reinterpret_cast<Segment2*>(a.pieces);
+  for (uint32_t i = 0; i < np; ++i) {
+    const StoredPiece sp = a.pieces[i];
+    const Edge3& e = a.g.edges[sp.local];
+    Segment2 g;
+    span_point(e, sp.t0, &g.x0, &g.y0);
+    span_point(e, int64_t{sp.t1_minus_1} + 1, &g.x1, &g.y1);
+    if (observer_.piece != nullptr)
+      observer_.piece(observer_.ctx,
+                      BandPiece{a.g.id(sp.local), sp.t0, int64_t{sp.t1_minus_1} + 1, g});
+    in_place[i] = g;
   }
   // Forward copies: each destination starts below its source (the carry and the pieces sit
   // past the band's edges, which are at least as large).
   Carry* carry = reinterpret_cast<Carry*>(arena_);
   for (uint32_t i = 0; i < nco; ++i) carry[i] = a.carry_out[i];
-  Segment2* segs = reinterpret_cast<Segment2*>(arena_ + carry_size);
+  segs_ = reinterpret_cast<Segment2*>(arena_ + carry_size);
   for (uint32_t i = 0; i < np; ++i) {
-    const Segment2 s = a.pieces[i].segment;
-    segs[i] = s;
+    const Segment2 g = in_place[i];
+    segs_[i] = g;
   }
   n_carry_ = nco;
-  PathPoint* pts = reinterpret_cast<PathPoint*>(arena_ + carry_size + seg_size);
-  uint32_t count = 0;
-  const Status s =
-      plan_columns(a, segs, np, arena_ + carry_size + seg_size + pts_size, ws_size, pts, &count);
-  if (!ok(s)) return s;
+  n_segs_ = np;
+  next_seg_ = 0;
   ++stats_.bands;
   stats_.pieces += np;
   if (np > stats_.most_pieces) stats_.most_pieces = np;
@@ -330,53 +361,37 @@ Status BandConductor::commit_band(Attempt& a, const PathPoint** points, uint32_t
   if (a.g.n > stats_.most_edges) stats_.most_edges = a.g.n;
   stats_.band_edges += a.g.n;
   if (cuts()) stats_.records += a.cs.n_crossings;
-  *points = pts;
-  *n = count;
   return Status::kOk;
 }
 
-// The band's pen path. A band is a strip as wide as the plot and often far less tall, where
-// one greedy nearest-neighbour pass leaves stragglers behind and crosses the whole width again
-// to fetch them. So the strip is cut into columns about as wide as it is tall, taken left to
-// right in even bands and right to left in odd ones (a serpentine over the plot), and the
-// greedy planner (motion/path_plan.h) orders the pieces of each column from where the pen is.
-Status BandConductor::plan_columns(const Attempt& a, Segment2* segs, uint32_t np, void* ws,
-                                   size_t ws_size, PathPoint* pts, uint32_t* count) {
-  const int64_t side = (a.y1 - a.y0 > kMinColumn ? a.y1 - a.y0 : kMinColumn) * 8;
-  const bool leftward = (stats_.bands & 1) != 0;
-  auto column = [&](const Segment2& g) {
-    const int64_t c = (int64_t{g.x0} + g.x1) / 2 / side;  // x >= 0: truncation is floor
-    return leftward ? -c : c;
-  };
-  sort_in_place(segs, np, [&](const Segment2& p, const Segment2& q) {
-    const int64_t cp = column(p), cq = column(q);
-    if (cp != cq) return cp < cq;
-    if (p.x0 != q.x0) return p.x0 < q.x0;
-    if (p.y0 != q.y0) return p.y0 < q.y0;
-    if (p.x1 != q.x1) return p.x1 < q.x1;
-    return p.y1 < q.y1;
-  });
-  *count = 0;
-  for (uint32_t first = 0; first < np;) {
-    uint32_t last = first + 1;
-    while (last < np && column(segs[last]) == column(segs[first])) ++last;
-    uint32_t added = 0;
-    PathStats ps;
-    const Status s = plan_path(segs + first, last - first, pen_x_, pen_y_, ws, ws_size,
-                               pts + *count, path_points_max(last - first), &added, &ps);
-    if (!ok(s)) return s;
-    *count += added;
-    if (added > 0) {
-      pen_x_ = pts[*count - 1].x;
-      pen_y_ = pts[*count - 1].y;
-    }
-    stats_.path.polylines += ps.polylines;
-    stats_.path.pen_up_length += ps.pen_up_length;
-    stats_.path.naive_pen_up_length += ps.naive_pen_up_length;
-    stats_.path.pen_down_length += ps.pen_down_length;
-    stats_.path.pen_lifts += ps.pen_lifts + (first > 0 && ps.polylines > 0 ? 1 : 0);
-    first = last;
+// The path of the band's next column, in the arena after the band's segments.
+Status BandConductor::plan_column(const PathPoint** points, uint32_t* n) {
+  uint32_t last = next_seg_ + 1;
+  auto x_sum = [&](uint32_t i) { return int64_t{segs_[i].x0} + segs_[i].x1; };
+  while (last < n_segs_ && column_of(x_sum(last)) == column_of(x_sum(next_seg_))) ++last;
+  const uint32_t k = last - next_seg_;
+  uint8_t* after =
+      reinterpret_cast<uint8_t*>(segs_) + carve_round(size_t{n_segs_} * sizeof(Segment2));
+  PathPoint* pts = reinterpret_cast<PathPoint*>(after);
+  uint8_t* ws = after + carve_round(size_t{path_points_max(k)} * sizeof(PathPoint));
+  const size_t ws_size = size_t(arena_ + arena_bytes_ - ws);
+  PathStats ps;
+  const uint64_t t0 = now();
+  const Status s =
+      plan_path(segs_ + next_seg_, k, pen_x_, pen_y_, ws, ws_size, pts, path_points_max(k), n, &ps);
+  stats_.other_ticks += now() - t0;
+  if (!ok(s)) return s;
+  if (*n > 0) {
+    pen_x_ = pts[*n - 1].x;
+    pen_y_ = pts[*n - 1].y;
   }
+  stats_.path.polylines += ps.polylines;
+  stats_.path.pen_up_length += ps.pen_up_length;
+  stats_.path.naive_pen_up_length += ps.naive_pen_up_length;
+  stats_.path.pen_down_length += ps.pen_down_length;
+  stats_.path.pen_lifts += ps.pen_lifts + (next_seg_ > 0 && ps.polylines > 0 ? 1 : 0);
+  next_seg_ = last;
+  *points = pts;
   return Status::kOk;
 }
 
@@ -406,7 +421,7 @@ int64_t BandConductor::shorter(int64_t rows, size_t need) const {
 }
 
 // One attempt at the band [next_row_, y1): *fitted false when the arena was too small for it.
-Status BandConductor::try_band(int32_t y1, bool* fitted, const PathPoint** points, uint32_t* n) {
+Status BandConductor::try_band(int32_t y1, bool* fitted) {
   const uint64_t t_start = now();
   band_used_ = 0;
   const uint64_t cut_before = stats_.cut_ticks, draw_before = stats_.draw_ticks;
@@ -425,7 +440,7 @@ Status BandConductor::try_band(int32_t y1, bool* fitted, const PathPoint** point
     stats_.cut_ticks += now() - t0;
   }
   if (ok(s)) s = draw_band(a);
-  if (ok(s)) s = commit_band(a, points, n);
+  if (ok(s)) s = commit_band(a);
   *fitted = !does_not_fit(s);
   const uint64_t spent = now() - t_start;
   if (!*fitted) {  // the attempt's work is waste: count it there, not in CUT and DRAW
@@ -443,7 +458,12 @@ Status BandConductor::try_band(int32_t y1, bool* fitted, const PathPoint** point
 Status BandConductor::next(const PathPoint** points, uint32_t* n) {
   *n = 0;
   *points = nullptr;
-  while (!done_) {
+  while (!done_ || next_seg_ < n_segs_) {
+    if (next_seg_ < n_segs_) {  // the current band's next column
+      const Status s = plan_column(points, n);
+      if (!ok(s) || *n > 0) return s;
+      continue;
+    }
     if (next_row_ > row_hi_) {
       done_ = true;
       if (n_carry_ != 0) return Status::kBandCarryLost;
@@ -452,7 +472,7 @@ Status BandConductor::next(const PathPoint** points, uint32_t* n) {
     const int64_t y1 =
         next_row_ + height_ < int64_t{row_hi_} + 1 ? next_row_ + height_ : int64_t{row_hi_} + 1;
     bool fitted = false;
-    const Status s = try_band(int32_t(y1), &fitted, points, n);
+    const Status s = try_band(int32_t(y1), &fitted);
     if (!ok(s)) return s;
     if (!fitted) {
       if (y1 - next_row_ == 1) return Status::kArenaTooSmall;
@@ -470,7 +490,6 @@ Status BandConductor::next(const PathPoint** points, uint32_t* n) {
     }
     height_ = next_height(y1 - next_row_);
     next_row_ = y1;
-    if (*n > 0) return Status::kOk;
   }
   return Status::kOk;
 }

@@ -27,7 +27,8 @@
 // Arena, during one band (low addresses left):
 //   [carry in | band edges -> ... CUTSET | CUT or DRAW scratch | carry out | pieces -> ... <- ids]
 // and once the band fits:
-//   [carry out (the next band's carry in) | pieces as segments | path points | path workspace]
+//   [carry out (the next band's carry in) | pieces as segments | one column's path points and
+//    path workspace]
 #pragma once
 #include <stddef.h>
 #include <stdint.h>
@@ -118,6 +119,7 @@ class BandConductor {
     uint32_t n;
     uint8_t* free_lo;  // the free middle of the arena
     uint8_t* free_hi;
+    uint32_t id(uint32_t local) const { return ids_end[-1 - int64_t{local}]; }
   };
   struct Attempt;
 
@@ -125,12 +127,12 @@ class BandConductor {
   Status cut_band(const Gathered& g, CutSet* cs, uint8_t** after, size_t* need);
   Status margin_pass();
   int64_t gap_reach(const CutSet& cs, const Crossing& r) const;
-  Status try_band(int32_t y1, bool* fitted, const PathPoint** points, uint32_t* n);
+  Status try_band(int32_t y1, bool* fitted);
   Status draw_band(Attempt& a);
-  Status commit_band(Attempt& a, const PathPoint** points, uint32_t* n);
-  Status plan_columns(const Attempt& a, Segment2* segs, uint32_t np, void* ws, size_t ws_size,
-                      PathPoint* pts, uint32_t* count);
-  static constexpr int64_t kMinColumn = 256;  // rows: the narrowest path column
+  Status commit_band(Attempt& a);
+  Status plan_column(const PathPoint** points, uint32_t* n);
+  int64_t column_of(int64_t x_sum) const;     // x_sum: x0 + x1 of a segment
+  static constexpr int64_t kMinColumn = 256;  // steps: the narrowest path column
   uint64_t now() const { return clock_ ? clock_() : 0; }
   int64_t rows_for(int64_t rows, size_t bytes) const;  // rows that 7/8 of the arena holds
   int64_t next_height(int64_t rows) const;             // after a band that fitted
@@ -152,6 +154,11 @@ class BandConductor {
   bool done_ = true;
   uint32_t n_carry_ = 0;  // carry entries at the front of the arena
   size_t band_used_ = 0;  // the current attempt's bytes
+  // The committed band's segments, in column order, waiting for next() to plan them.
+  Segment2* segs_ = nullptr;
+  uint32_t n_segs_ = 0, next_seg_ = 0;
+  int64_t column_side_ = kMinColumn;
+  bool leftward_ = false;
   int32_t pen_x_ = 0, pen_y_ = 0;
   PieceObserver observer_{};
   uint64_t (*clock_)() = nullptr;

@@ -170,7 +170,7 @@ int main() {
   // Gaps that reach far, near-parallel edges, the exact halo with near misses.
   const auto shallow = shallow_crossings();
   expect_same("shallow_paper", shallow, haloed(100), 16 * 1024, 3);
-  expect_same("shallow_exact_near", shallow, haloed(100, HaloMode::kExact, 100), 16 * 1024, 3);
+  expect_same("shallow_exact_near", shallow, haloed(100, HaloMode::kExact, 100), 16 * 1024, 2);
   const auto levels = lattice_and_levels();
   expect_same("levels_and_rows", levels, haloed(64), 24 * 1024, 4);
   // Every edge whole (no CUT), still in bands.
