@@ -29,6 +29,32 @@ struct StoredPiece {
 };
 static_assert(sizeof(StoredPiece) == sizeof(Segment2), "pieces turn into segments in place");
 
+struct RowPoint {
+  int32_t x, y;
+};
+bool point_less(const RowPoint& p, const RowPoint& q) { return p.x != q.x ? p.x < q.x : p.y < q.y; }
+
+bool segment_less(const Segment2& p, const Segment2& q) {
+  if (p.x0 != q.x0) return p.x0 < q.x0;
+  if (p.y0 != q.y0) return p.y0 < q.y0;
+  if (p.x1 != q.x1) return p.x1 < q.x1;
+  return p.y1 < q.y1;
+}
+
+// Is p among the sorted points?
+bool holds(const RowPoint* pts, uint32_t n, int32_t x, int32_t y) {
+  uint32_t lo = 0, hi = n;
+  const RowPoint p{x, y};
+  while (lo < hi) {
+    const uint32_t mid = lo + (hi - lo) / 2;
+    if (point_less(pts[mid], p))
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return lo < n && pts[lo].x == x && pts[lo].y == y;
+}
+
 }  // namespace
 
 // One try at one band: its rows, its edges, and where DRAW's output goes.
@@ -40,6 +66,7 @@ struct BandConductor::Attempt {
   const Carry* carry_in = nullptr;
   uint32_t n_carry_in = 0, carry_cursor = 0, carry_used = 0;
   Carry* carry_out = nullptr;
+  RowPoint* carry_points = nullptr;  // each carried piece's lower end, rounded (for joining)
   uint32_t n_carry_out = 0, carry_capacity = 0;
   StoredPiece* pieces = nullptr;
   uint32_t n_pieces = 0, piece_capacity = 0;
@@ -64,6 +91,7 @@ struct BandConductor::Attempt {
     if (row_compare(e, up, a.y1) >= 0) {                       // runs past the top
       if (row_compare(e, low, a.y1) >= 0) return Status::kOk;  // wholly above: a later band's
       if (a.n_carry_out == a.carry_capacity) return Status::kBandCarryLost;  // one per edge
+      span_point(e, lower, &a.carry_points[a.n_carry_out].x, &a.carry_points[a.n_carry_out].y);
       a.carry_out[a.n_carry_out++] = Carry{id, uint32_t(lower - (rising(e) ? 0 : 1))};
       return Status::kOk;
     }
@@ -128,7 +156,7 @@ Status BandConductor::begin(const BandSpec& spec, EdgeSource source, void* arena
 // The edges meeting rows [lo, hi]: Edge3s from the front of the free arena, source indices
 // from its top down, so one read of the source fills both.
 Status BandConductor::gather(int64_t lo, int64_t hi, Gathered* g) {
-  uint8_t* base = arena_ + carve_round(size_t{n_carry_} * sizeof(Carry));
+  uint8_t* base = arena_ + front_bytes();
   uint8_t* top = arena_ + arena_bytes_;
   g->edges = reinterpret_cast<Edge3*>(base);
   g->ids_end = reinterpret_cast<uint32_t*>(top);
@@ -227,7 +255,7 @@ Status BandConductor::margin_pass() {
     if (ok(s)) s = cut_band(g, &cs, &after, &need);
     if (does_not_fit(s)) {
       if (y1 - y == 1) {
-        stats_.need_bytes = need + carve_round(size_t{n_carry_} * sizeof(Carry));
+        stats_.need_bytes = need + front_bytes();
         return Status::kArenaTooSmall;
       }
       h = shorter(y1 - y, need);
@@ -260,7 +288,8 @@ Status BandConductor::draw_band(Attempt& a) {
   for (uint32_t k = 0; k < a.g.n; ++k)
     if (edge_row_min(a.g.edges[k]) < a.y1 && edge_row_max(a.g.edges[k]) >= a.y1) ++a.carry_capacity;
   uint8_t* carry = p + scratch;
-  uint8_t* pieces = carry + carve_round(size_t{a.carry_capacity} * sizeof(Carry));
+  uint8_t* carry_points = carry + carve_round(size_t{a.carry_capacity} * sizeof(Carry));
+  uint8_t* pieces = carry_points + carve_round(size_t{a.carry_capacity} * sizeof(RowPoint));
   const size_t fixed = size_t(a.g.free_lo - arena_) + size_t(arena_ + arena_bytes_ - a.g.free_hi);
   if (pieces > a.g.free_hi) {
     a.need = fixed + size_t(pieces - a.g.free_lo);
@@ -269,6 +298,7 @@ Status BandConductor::draw_band(Attempt& a) {
   a.carry_in = reinterpret_cast<const Carry*>(arena_);
   a.n_carry_in = n_carry_;
   a.carry_out = reinterpret_cast<Carry*>(carry);
+  a.carry_points = reinterpret_cast<RowPoint*>(carry_points);
   a.pieces = reinterpret_cast<StoredPiece*>(pieces);
   a.piece_capacity = uint32_t(size_t(a.g.free_hi - pieces) / sizeof(StoredPiece));
   Status s = Status::kOk;
@@ -302,11 +332,14 @@ int64_t BandConductor::column_of(int64_t x_sum) const {
   return leftward_ ? -c : c;
 }
 
-// The band fitted up to its pieces: order them by column; if the segments and the largest
-// column's path fit, hand the pieces to the observer, move the carry to the front and lay the
-// pieces out as segments for next() to plan column by column.
+// The band fitted up to its pieces. The pieces it drew, with the pieces the band below deferred
+// to it, are laid out as segments for next() to plan column by column; the ones that join a
+// piece carried past the top (through shared ends, a polyline continuing across the border)
+// are deferred to the band above, so the polyline is drawn in one go there. Sizes are checked
+// first (the path of the widest column over all of them), and the observer sees the pieces
+// only once the band is sure to fit.
 Status BandConductor::commit_band(Attempt& a) {
-  const uint32_t np = a.n_pieces, nco = a.n_carry_out;
+  const uint32_t np = a.n_pieces, nco = a.n_carry_out, ndi = n_defer_;
   column_side_ = a.y1 - a.y0 > kMinColumn ? a.y1 - a.y0 : kMinColumn;
   leftward_ = (stats_.bands & 1) != 0;
   sort_in_place(a.pieces, np, [this](const StoredPiece& p, const StoredPiece& q) {
@@ -314,23 +347,38 @@ Status BandConductor::commit_band(Attempt& a) {
     if (cp != cq) return cp < cq;
     return p.local != q.local ? p.local < q.local : p.t0 < q.t0;
   });
+  Segment2* deferred_in = reinterpret_cast<Segment2*>(arena_ + carry_bytes(n_carry_));
+  auto seg_sum = [](const Segment2& g) { return int64_t{g.x0} + g.x1; };
+  sort_in_place(deferred_in, ndi, [&](const Segment2& p, const Segment2& q) {
+    const int64_t cp = column_of(seg_sum(p)), cq = column_of(seg_sum(q));
+    return cp != cq ? cp < cq : segment_less(p, q);
+  });
+  // The widest column over both sorted lists (a bound for the columns drawn here).
   uint32_t widest = 0;
-  for (uint32_t first = 0, last = 0; first < np; first = last) {
-    while (last < np && column_of(a.pieces[last].x_sum) == column_of(a.pieces[first].x_sum)) ++last;
-    if (last - first > widest) widest = last - first;
+  for (uint32_t i = 0, j = 0; i < np || j < ndi;) {
+    const int64_t c =
+        j == ndi || (i < np && column_of(a.pieces[i].x_sum) <= column_of(seg_sum(deferred_in[j])))
+            ? column_of(a.pieces[i].x_sum)
+            : column_of(seg_sum(deferred_in[j]));
+    uint32_t k = 0;
+    for (; i < np && column_of(a.pieces[i].x_sum) == c; ++i) ++k;
+    for (; j < ndi && column_of(seg_sum(deferred_in[j])) == c; ++j) ++k;
+    if (k > widest) widest = k;
   }
-  const size_t carry_size = carve_round(size_t{nco} * sizeof(Carry));
-  const size_t seg_size = carve_round(size_t{np} * sizeof(Segment2));
-  const size_t total = carry_size + seg_size +
+  const uint32_t nu = np + ndi;
+  uint8_t* pieces_end = reinterpret_cast<uint8_t*>(a.pieces + np);
+  const size_t total = carry_bytes(nco) + carve_round(size_t{nu} * sizeof(Segment2)) +
                        carve_round(size_t{path_points_max(widest)} * sizeof(PathPoint)) +
                        carve_round(path_plan_bytes(widest));
-  if (total > arena_bytes_) {
-    a.need = total;
+  const size_t middle = size_t(pieces_end - arena_) + size_t{ndi} * sizeof(Segment2);
+  if (total > arena_bytes_ || middle > arena_bytes_) {
+    a.need = total > middle ? total : middle;
     return Status::kWorkspaceTooSmall;
   }
-  note_used(total);
-  // Each piece becomes its segment in place, seen by the observer first.
-  Segment2* in_place = reinterpret_cast<Segment2*>(a.pieces);
+  note_used(total > middle ? total : middle);
+  // Each piece becomes its segment in place, seen by the observer first; the deferred ones
+  // from below follow them, so all nu segments stand in one array.
+  Segment2* u = reinterpret_cast<Segment2*>(a.pieces);
   for (uint32_t i = 0; i < np; ++i) {
     const StoredPiece sp = a.pieces[i];
     const Edge3& e = a.g.edges[sp.local];
@@ -340,28 +388,85 @@ Status BandConductor::commit_band(Attempt& a) {
     if (observer_.piece != nullptr)
       observer_.piece(observer_.ctx,
                       BandPiece{a.g.id(sp.local), sp.t0, int64_t{sp.t1_minus_1} + 1, g});
-    in_place[i] = g;
+    u[i] = g;
   }
-  // Forward copies: each destination starts below its source (the carry and the pieces sit
+  for (uint32_t j = 0; j < ndi; ++j) u[np + j] = deferred_in[j];
+  const uint32_t n_defer = defer_joined(a, u, nu, pieces_end + size_t{ndi} * sizeof(Segment2));
+  // Forward copies: each destination starts below its source (the carry and the segments sit
   // past the band's edges, which are at least as large).
   Carry* carry = reinterpret_cast<Carry*>(arena_);
   for (uint32_t i = 0; i < nco; ++i) carry[i] = a.carry_out[i];
-  segs_ = reinterpret_cast<Segment2*>(arena_ + carry_size);
-  for (uint32_t i = 0; i < np; ++i) {
-    const Segment2 g = in_place[i];
-    segs_[i] = g;
+  Segment2* dest = reinterpret_cast<Segment2*>(arena_ + carry_bytes(nco));
+  for (uint32_t i = 0; i < nu; ++i) {
+    const Segment2 g = u[i];
+    dest[i] = g;
   }
   n_carry_ = nco;
-  n_segs_ = np;
+  n_defer_ = n_defer;
+  segs_ = dest + n_defer;
+  n_segs_ = nu - n_defer;
   next_seg_ = 0;
   ++stats_.bands;
   stats_.pieces += np;
+  stats_.deferred += n_defer;
   if (np > stats_.most_pieces) stats_.most_pieces = np;
   if (nco > stats_.most_carry) stats_.most_carry = nco;
   if (a.g.n > stats_.most_edges) stats_.most_edges = a.g.n;
   stats_.band_edges += a.g.n;
   if (cuts()) stats_.records += a.cs.n_crossings;
   return Status::kOk;
+}
+
+// Puts the segments joined to a carried piece's lower end (through shared ends, a few links
+// deep) first, the rest after them in column order, and returns how many are deferred. Its
+// workspace (the ends found so far, sorted, and a mark per segment) comes from `free`; with too
+// little room, or more deferred than a quarter of the arena holds, nothing is deferred.
+uint32_t BandConductor::defer_joined(const Attempt& a, Segment2* u, uint32_t nu, uint8_t* free) {
+  const uint32_t nco = a.n_carry_out;
+  RowPoint* pts = reinterpret_cast<RowPoint*>(align_up(free));
+  const size_t cap = size_t{nco} + 2 * size_t{nu};
+  uint8_t* marks = reinterpret_cast<uint8_t*>(pts + cap);
+  uint32_t marked = 0;
+  if (marks + nu <= arena_ + arena_bytes_ && nco > 0) {
+    for (uint32_t i = 0; i < nco; ++i) pts[i] = a.carry_points[i];
+    uint32_t n_pts = nco;
+    for (uint32_t i = 0; i < nu; ++i) marks[i] = 0;
+    for (int round = 0; round < kJoinDepth; ++round) {
+      sort_in_place(pts, n_pts, &point_less);
+      const uint32_t sorted = n_pts;
+      for (uint32_t i = 0; i < nu; ++i) {
+        if (marks[i] ||
+            !(holds(pts, sorted, u[i].x0, u[i].y0) || holds(pts, sorted, u[i].x1, u[i].y1)))
+          continue;
+        marks[i] = 1;
+        ++marked;
+        pts[n_pts++] = RowPoint{u[i].x0, u[i].y0};
+        pts[n_pts++] = RowPoint{u[i].x1, u[i].y1};
+      }
+      if (n_pts == sorted) break;
+    }
+    if (size_t{marked} * sizeof(Segment2) > arena_bytes_ / 4) {
+      for (uint32_t i = 0; i < nu; ++i) marks[i] = 0;
+      marked = 0;
+    }
+    // Marked first (swap with the marks), then each part in a full order.
+    uint32_t front = 0;
+    for (uint32_t i = 0; i < nu; ++i)
+      if (marks[i]) {
+        const Segment2 t = u[front];
+        u[front] = u[i];
+        u[i] = t;
+        marks[i] = marks[front];
+        marks[front++] = 1;
+      }
+  }
+  sort_in_place(u, marked, &segment_less);
+  auto sum = [](const Segment2& g) { return int64_t{g.x0} + g.x1; };
+  sort_in_place(u + marked, nu - marked, [&](const Segment2& p, const Segment2& q) {
+    const int64_t cp = column_of(sum(p)), cq = column_of(sum(q));
+    return cp != cq ? cp < cq : segment_less(p, q);
+  });
+  return marked;
 }
 
 // The path of the band's next column, in the arena after the band's segments.
@@ -431,8 +536,7 @@ Status BandConductor::try_band(int32_t y1, bool* fitted) {
   const int64_t margin = stats_.margin;
   Status s = gather(a.y0 - margin, a.y1 - 1 + margin, &a.g);
   if (s == Status::kWorkspaceTooSmall)
-    a.need = carve_round(size_t{n_carry_} * sizeof(Carry)) +
-             size_t{a.g.n} * (sizeof(Edge3) + sizeof(uint32_t)) + 16;
+    a.need = front_bytes() + size_t{a.g.n} * (sizeof(Edge3) + sizeof(uint32_t)) + 16;
   a.after = a.g.free_lo;
   if (ok(s) && cuts()) {
     const uint64_t t0 = now();
@@ -466,7 +570,7 @@ Status BandConductor::next(const PathPoint** points, uint32_t* n) {
     }
     if (next_row_ > row_hi_) {
       done_ = true;
-      if (n_carry_ != 0) return Status::kBandCarryLost;
+      if (n_carry_ != 0 || n_defer_ != 0) return Status::kBandCarryLost;
       break;
     }
     const int64_t y1 =

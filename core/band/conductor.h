@@ -25,10 +25,12 @@
 // does not fit returns kArenaTooSmall with the bytes it needed in stats().need_bytes.
 //
 // Arena, during one band (low addresses left):
-//   [carry in | band edges -> ... CUTSET | CUT or DRAW scratch | carry out | pieces -> ... <- ids]
+//   [carry in, deferred in | band edges -> ... CUTSET | CUT or DRAW scratch | carry out |
+//    pieces -> ... <- ids]
 // and once the band fits:
-//   [carry out (the next band's carry in) | pieces as segments | one column's path points and
-//    path workspace]
+//   [carry out | segments deferred to the band above | segments to draw now | one column's
+//    path points and path workspace]
+// The carry and the deferred segments stay at the front while the next band is worked.
 #pragma once
 #include <stddef.h>
 #include <stdint.h>
@@ -78,7 +80,8 @@ struct BandStats {
   uint64_t edge_reads = 0;    // edges read from the source, both passes, every attempt
   uint64_t band_edges = 0;    // edges over the committed bands (an edge in k bands counts k)
   uint64_t pieces = 0;
-  uint64_t records = 0;  // CUTSET records over all committed bands (margins repeat some)
+  uint64_t deferred = 0;  // pieces drawn with the band above, to join a polyline there
+  uint64_t records = 0;   // CUTSET records over all committed bands (margins repeat some)
   uint64_t cut_runs = 0, draw_runs = 0;
   size_t peak_bytes = 0;  // the most of the arena any band used
   size_t need_bytes = 0;  // kArenaTooSmall: what the one-row band asked for
@@ -130,6 +133,13 @@ class BandConductor {
   Status try_band(int32_t y1, bool* fitted);
   Status draw_band(Attempt& a);
   Status commit_band(Attempt& a);
+  uint32_t defer_joined(const Attempt& a, Segment2* u, uint32_t nu, uint8_t* free);
+  static constexpr int kJoinDepth = 4;  // links followed from a carried piece's lower end
+  static size_t carry_bytes(uint32_t n) { return (size_t{n} * sizeof(Carry) + 7) & ~size_t{7}; }
+  // The front of the arena between bands: the carry and the segments deferred to the next band.
+  size_t front_bytes() const {
+    return carry_bytes(n_carry_) + ((size_t{n_defer_} * sizeof(Segment2) + 7) & ~size_t{7});
+  }
   Status plan_column(const PathPoint** points, uint32_t* n);
   int64_t column_of(int64_t x_sum) const;     // x_sum: x0 + x1 of a segment
   static constexpr int64_t kMinColumn = 256;  // steps: the narrowest path column
@@ -153,6 +163,7 @@ class BandConductor {
   bool margin_known_ = false;
   bool done_ = true;
   uint32_t n_carry_ = 0;  // carry entries at the front of the arena
+  uint32_t n_defer_ = 0;  // segments deferred to the next band, after the carry
   size_t band_used_ = 0;  // the current attempt's bytes
   // The committed band's segments, in column order, waiting for next() to plan them.
   Segment2* segs_ = nullptr;
