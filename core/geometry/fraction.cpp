@@ -14,6 +14,33 @@ int64_t scale_round(int64_t a, int64_t num, int64_t den) {
 }
 
 uint32_t frac_q32_small(int64_t num, int64_t den) {
+  if (den <= 0xffffffff) {
+    // Long division in 32-bit steps (a hardware divide each on the Cortex-M4): each step
+    // brings in as many bits as keep the shifted remainder below 2^32 (rem < den < 2^(32-k)).
+    const uint32_t d = static_cast<uint32_t>(den);
+    const int free_bits = __builtin_clz(d);  // d > 0
+    uint32_t rem = static_cast<uint32_t>(num), q = 0;
+    if (free_bits == 0) {  // d >= 2^31: one bit at a time, the remainder kept below 2^32
+      for (int i = 0; i < kFracBits; ++i) {
+        const bool carry = (rem >> 31) != 0;
+        rem <<= 1;
+        q <<= 1;
+        if (carry || rem >= d) {
+          rem -= d;
+          q |= 1u;
+        }
+      }
+      return q;
+    }
+    for (int left = kFracBits; left > 0;) {
+      const int step = free_bits < left ? free_bits : left;
+      rem <<= step;
+      q = (q << step) | (rem / d);
+      rem %= d;
+      left -= step;
+    }
+    return q;
+  }
   const int64_t high = (num << 22) / den;        // top 22 bits of the fraction
   const int64_t rem = (num << 22) - high * den;  // < den < 2^41
   const int64_t low = (rem << 10) / den;         // next 10 bits; rem << 10 < 2^51

@@ -136,6 +136,30 @@ int main() {
     }
     CHECK_MSG(same, "grid division, cell " + std::to_string(cell));
   }
+  // Q0.32 fractions below 2^32: the 32-bit long division takes every denominator width, the
+  // one-bit path (den >= 2^31) and the largest numerators.
+  for (int bits = 1; bits <= 32; ++bits)
+    for (int i = 0; i < 2000; ++i) {
+      const uint64_t top = uint64_t(1) << (bits - 1);
+      int64_t den = int64_t(top | (r.next() & (top - 1)));
+      if (i == 0) den = int64_t((top << 1) - 1);
+      if (i == 1) den = int64_t(top);
+      int64_t num = int64_t(r.next() % uint64_t(den));
+      if (i == 2) num = den - 1;
+      if (i == 3) num = 0;
+      const uint32_t want = uint32_t((i128(num) << 32) / den);
+      CHECK_MSG(frac_q32_small(num, den) == want,
+                "frac_q32_small below 2^32, " + std::to_string(num) + "/" + std::to_string(den));
+    }
+  // floor_div's 32-bit path and its 64-bit one, against __int128, around the 32-bit limits.
+  for (int i = 0; i < 200000; ++i) {
+    const int shift = int(r.next() % 40);
+    const int64_t a = int64_t(r.next() >> (24 + shift % 24)) * ((r.next() & 1) ? -1 : 1);
+    const int64_t b = int64_t(r.next() >> (shift + 24)) + 1;
+    i128 q = i128(a) / b;
+    if (i128(a) % b != 0 && a < 0) --q;
+    CHECK_MSG(floor_div(a, b) == int64_t(q), "floor_div");
+  }
   // Q0.32 fractions: both division routines give floor(num * 2^32 / den) exactly.
   for (int i = 0; i < 50000; ++i) {
     const int64_t den = int64_t(r.next() % ((uint64_t(1) << 41) - 1)) + 1;
