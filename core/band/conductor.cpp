@@ -129,18 +129,15 @@ Status BandConductor::begin(const BandSpec& spec, EdgeSource source, void* arena
   arena_bytes_ = arena == nullptr || arena_bytes < lost ? 0 : (arena_bytes - lost) & ~size_t{7};
   // One read of the scene: its rows, and every coordinate in range.
   int32_t lo = kCoordLimit, hi = -1;
-  Edge3 chunk[kEdgeSourceChunk];
-  for (uint32_t first = 0; first < source.n; first += kEdgeSourceChunk) {
-    const uint32_t count =
-        source.n - first < kEdgeSourceChunk ? source.n - first : kEdgeSourceChunk;
-    const Status s = source.read(source.ctx, first, count, chunk);
-    if (!ok(s)) return s;
-    for (uint32_t i = 0; i < count; ++i) {
-      if (!in_range(chunk[i])) return Status::kCoordinateOutOfRange;
-      if (edge_row_min(chunk[i]) < lo) lo = edge_row_min(chunk[i]);
-      if (edge_row_max(chunk[i]) > hi) hi = edge_row_max(chunk[i]);
-    }
-  }
+  bool in_range_all = true;
+  const Status s = for_each_edge(source, [&](uint32_t, const Edge3& e) {
+    in_range_all = in_range(e);
+    if (edge_row_min(e) < lo) lo = edge_row_min(e);
+    if (edge_row_max(e) > hi) hi = edge_row_max(e);
+    return in_range_all;
+  });
+  if (!ok(s)) return s;
+  if (!in_range_all) return Status::kCoordinateOutOfRange;
   stats_.edge_reads += source.n;
   pen_x_ = spec.start_x;
   pen_y_ = spec.start_y;
@@ -162,21 +159,16 @@ Status BandConductor::gather(int64_t lo, int64_t hi, Gathered* g) {
   g->ids_end = reinterpret_cast<uint32_t*>(top);
   const size_t room = top > base ? size_t(top - base) : 0;
   uint32_t m = 0;
-  Edge3 chunk[kEdgeSourceChunk];
-  for (uint32_t first = 0; first < source_.n; first += kEdgeSourceChunk) {
-    const uint32_t count =
-        source_.n - first < kEdgeSourceChunk ? source_.n - first : kEdgeSourceChunk;
-    const Status s = source_.read(source_.ctx, first, count, chunk);
-    if (!ok(s)) return s;
-    for (uint32_t i = 0; i < count; ++i) {
-      if (!edge_meets_rows(chunk[i], lo, hi)) continue;
-      if (size_t{m + 1} * (sizeof(Edge3) + sizeof(uint32_t)) <= room) {
-        g->edges[m] = chunk[i];
-        g->ids_end[-1 - int64_t{m}] = first + i;
-      }
-      ++m;
+  const Status s = for_each_edge(source_, [&](uint32_t index, const Edge3& e) {
+    if (!edge_meets_rows(e, lo, hi)) return true;
+    if (size_t{m + 1} * (sizeof(Edge3) + sizeof(uint32_t)) <= room) {
+      g->edges[m] = e;
+      g->ids_end[-1 - int64_t{m}] = index;
     }
-  }
+    ++m;
+    return true;  // keep counting past the room: the count says what the band needs
+  });
+  if (!ok(s)) return s;
   stats_.edge_reads += source_.n;
   g->n = m;
   if (size_t{m} * (sizeof(Edge3) + sizeof(uint32_t)) + 16 > room) return Status::kWorkspaceTooSmall;

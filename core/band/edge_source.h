@@ -20,6 +20,21 @@ struct EdgeSource {
 // The conductor reads this many edges per call (a small stack buffer).
 inline constexpr uint32_t kEdgeSourceChunk = 32;
 
+// Every edge of the source in order, visit(index, edge) for each; a read's failure stops it.
+template <typename Visit>
+Status for_each_edge(const EdgeSource& source, Visit visit) {  // visit returns false to stop
+  Edge3 chunk[kEdgeSourceChunk];
+  for (uint32_t first = 0; first < source.n; first += kEdgeSourceChunk) {
+    const uint32_t count =
+        source.n - first < kEdgeSourceChunk ? source.n - first : kEdgeSourceChunk;
+    const Status s = source.read(source.ctx, first, count, chunk);
+    if (!ok(s)) return s;
+    for (uint32_t i = 0; i < count; ++i)
+      if (!visit(first + i, chunk[i])) return Status::kOk;
+  }
+  return Status::kOk;
+}
+
 // A source over an edge array the caller keeps alive.
 inline EdgeSource array_edge_source(const Edge3* edges, uint32_t n) {
   EdgeSource s;

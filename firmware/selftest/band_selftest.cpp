@@ -15,6 +15,7 @@
 #include "platform/semihosting.h"
 #include "protocol/crc32.h"
 #include "scene/cube_array.h"
+#include "selftest_support.h"
 #include "trace/trace_encoder.h"
 
 using namespace haloplot;
@@ -29,17 +30,7 @@ alignas(8) uint8_t arena[kArenaBytes];
 Console console;
 CubeArrayEdges cubes;
 
-[[noreturn]] void fail(const char* what, Status s) {
-  char line[128];
-  char* p = append(line, "fw FAILED: ");
-  p = append(p, what);
-  p = append(p, ": ");
-  p = append(p, status_name(s));
-  append(p, "\n");
-  console.flush();
-  semihost_print(line);
-  semihost_exit(1);
-}
+[[noreturn]] void fail(const char* what, Status s) { selftest_fail(console, what, s); }
 
 // The trace's bytes, summed up instead of sent.
 struct TraceDigest {
@@ -50,15 +41,6 @@ struct TraceDigest {
     self->crc = crc32_update(self->crc, reinterpret_cast<const uint8_t*>(text), n);
     self->bytes += n;
   }
-};
-
-struct TraceHal {
-  uint64_t now = 0;
-  bool backward[2] = {false, false};
-  TraceEncoder* trace = nullptr;
-  void set_direction(uint8_t m, bool b) { backward[m] = b; }
-  void step(uint8_t m) { trace->step(now, m, backward[m]); }
-  void pen(bool down) { trace->pen(now, down); }
 };
 
 SegmentQueue<64> queue;

@@ -14,6 +14,7 @@
 #include "platform/instruction_counter.h"
 #include "platform/semihosting.h"
 #include "scene/cube_array.h"
+#include "selftest_support.h"
 #include "solid/hidden_lines.h"
 #include "surface/hidden_surface.h"
 #include "tick_workload.h"
@@ -38,27 +39,7 @@ alignas(8) uint8_t job_buffer[84 * 1024];
 Console console;
 void stat(const char* key, uint64_t value) { console.stat(key, value); }
 
-[[noreturn]] void fail(const char* what, Status s) {
-  char line[128];
-  char* p = append(line, "fw FAILED: ");
-  p = append(p, what);
-  p = append(p, ": ");
-  p = append(p, status_name(s));
-  append(p, "\n");
-  console.flush();
-  semihost_print(line);
-  semihost_exit(1);
-}
-
-// The recording HAL: every step and pen change goes to the trace encoder at the virtual tick.
-struct TraceHal {
-  uint64_t now = 0;
-  bool backward[2] = {false, false};
-  TraceEncoder* trace = nullptr;
-  void set_direction(uint8_t m, bool b) { backward[m] = b; }
-  void step(uint8_t m) { trace->step(now, m, backward[m]); }
-  void pen(bool down) { trace->pen(now, down); }
-};
+[[noreturn]] void fail(const char* what, Status s) { selftest_fail(console, what, s); }
 
 // A HAL like a GPIO port: one store per call. For the step-event instruction count.
 struct GpioHal {
