@@ -150,6 +150,44 @@ Status BandConductor::begin(const BandSpec& spec, EdgeSource source, void* arena
   return Status::kOk;
 }
 
+Status BandConductor::begin_streamed(const BandSpec& spec, int32_t margin, BandStream stream,
+                                     void* arena, size_t arena_bytes) {
+  if (stream.next == nullptr || margin < 0) return Status::kBadParameter;
+  const Status s = begin(spec, EdgeSource{}, arena, arena_bytes);
+  if (!ok(s)) return s;
+  stream_ = stream;
+  stats_.margin = margin;
+  margin_known_ = true;
+  done_ = false;
+  return Status::kOk;
+}
+
+// A streamed band: its edges read from the stream's buffer as the gathering reads a scene, then
+// worked like any band. It must fit: the host that sent it ran this arena.
+Status BandConductor::next_streamed_band() {
+  StreamedBand band;
+  bool end = false;
+  Status s = stream_.next(stream_.ctx, &band, &end);
+  if (!ok(s)) return s;  // kBusy: not here yet
+  if (end) {
+    done_ = true;
+    return n_carry_ != 0 || n_defer_ != 0 ? Status::kBandCarryLost : Status::kOk;
+  }
+  if (band.y0 != next_row_ && stats_.bands > 0) return Status::kMalformedRequest;
+  source_ = array_edge_source(band.edges, band.n);
+  stream_ids_ = band.ids;
+  next_row_ = band.y0;
+  bool fitted = false;
+  s = try_band(band.y1, &fitted);
+  stream_ids_ = nullptr;
+  source_ = EdgeSource{};
+  if (stream_.release != nullptr) stream_.release(stream_.ctx);
+  if (!ok(s)) return s;
+  if (!fitted) return Status::kArenaTooSmall;
+  next_row_ = band.y1;
+  return Status::kOk;
+}
+
 // The edges meeting rows [lo, hi]: Edge3s from the front of the free arena, source indices
 // from its top down, so one read of the source fills both.
 Status BandConductor::gather(int64_t lo, int64_t hi, Gathered* g) {
@@ -163,7 +201,7 @@ Status BandConductor::gather(int64_t lo, int64_t hi, Gathered* g) {
     if (!edge_meets_rows(e, lo, hi)) return true;
     if (size_t{m + 1} * (sizeof(Edge3) + sizeof(uint32_t)) <= room) {
       g->edges[m] = e;
-      g->ids_end[-1 - int64_t{m}] = index;
+      g->ids_end[-1 - int64_t{m}] = stream_ids_ != nullptr ? stream_ids_[index] : index;
     }
     ++m;
     return true;  // keep counting past the room: the count says what the band needs
@@ -171,7 +209,9 @@ Status BandConductor::gather(int64_t lo, int64_t hi, Gathered* g) {
   if (!ok(s)) return s;
   stats_.edge_reads += source_.n;
   g->n = m;
-  if (size_t{m} * (sizeof(Edge3) + sizeof(uint32_t)) + 16 > room) return Status::kWorkspaceTooSmall;
+  if (size_t{m} * (sizeof(Edge3) + sizeof(uint32_t)) + 16 > room ||
+      (spec_.max_band_edges > 0 && m > spec_.max_band_edges))
+    return Status::kWorkspaceTooSmall;
   g->free_lo = align_up(base + size_t{m} * sizeof(Edge3));
   g->free_hi = align_down(top - size_t{m} * sizeof(uint32_t));
   return Status::kOk;
@@ -398,6 +438,7 @@ Status BandConductor::commit_band(Attempt& a) {
   segs_ = dest + n_defer;
   n_segs_ = nu - n_defer;
   next_seg_ = 0;
+  if (observer_.band != nullptr) observer_.band(observer_.ctx, int32_t(a.y0), int32_t(a.y1));
   ++stats_.bands;
   stats_.pieces += np;
   stats_.deferred += n_defer;
@@ -558,6 +599,11 @@ Status BandConductor::next(const PathPoint** points, uint32_t* n) {
     if (next_seg_ < n_segs_) {  // the current band's next column
       const Status s = plan_column(points, n);
       if (!ok(s) || *n > 0) return s;
+      continue;
+    }
+    if (stream_.next != nullptr) {
+      const Status s = next_streamed_band();
+      if (!ok(s)) return s;
       continue;
     }
     if (next_row_ > row_hi_) {

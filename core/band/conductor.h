@@ -51,6 +51,27 @@ struct BandSpec {
   // >= 0: this margin instead of the margin pass's. Unsafe below the measured one (gaps from
   // outside the margin are lost); the band test uses it to show that its check sees that.
   int32_t fixed_margin = -1;
+  // > 0: at most this many edges in a band (a controller that receives bands over its link
+  // stages the next band in a buffer of this many edges); more is a band that does not fit.
+  uint32_t max_band_edges = 0;
+};
+
+// A band sent from outside: a host ran the same conductor over the whole scene with the same
+// arena, and sends each committed band's rows with the edges it gathered (the same rule, the
+// same order) and their indices in the scene. The controller never holds the scene.
+struct StreamedBand {
+  int32_t y0 = 0, y1 = 0;  // rows [y0, y1)
+  const Edge3* edges = nullptr;
+  const uint32_t* ids = nullptr;
+  uint32_t n = 0;
+};
+struct BandStream {
+  void* ctx = nullptr;
+  // The next band: kOk with *band filled; kOk with *end set after the last one; kBusy while
+  // the next one is still arriving (the plot then waits, and asks again).
+  Status (*next)(void* ctx, StreamedBand* band, bool* end) = nullptr;
+  // The band's edges are in the arena now: its buffer may take the next band.
+  void (*release)(void* ctx) = nullptr;
 };
 
 // A visible piece as a band emits it: the edge's index in the source, its Q0.32 ends along
@@ -66,6 +87,7 @@ struct BandPiece {
 struct PieceObserver {
   void (*piece)(void* ctx, const BandPiece& p) = nullptr;
   void* ctx = nullptr;
+  void (*band)(void* ctx, int32_t y0, int32_t y1) = nullptr;  // each band as it commits
 };
 
 struct BandStats {
@@ -96,8 +118,13 @@ class BandConductor {
  public:
   // Checks the scene (one read) and the settings; nothing is cut yet.
   Status begin(const BandSpec& spec, EdgeSource source, void* arena, size_t arena_bytes);
+  // The same plot from streamed bands, with the margin the host's run measured: no margin
+  // pass, no retries (the host's bands fit this arena, or kArenaTooSmall says they do not).
+  Status begin_streamed(const BandSpec& spec, int32_t margin, BandStream stream, void* arena,
+                        size_t arena_bytes);
   // The next band's path points, from where the previous band left the pen; n == 0 when the
-  // plot is done. The points live in the arena until the next call.
+  // plot is done; kBusy when a streamed band is still arriving. The points live in the arena
+  // until the next call.
   Status next(const PathPoint** points, uint32_t* n);
 
   void set_observer(PieceObserver o) { observer_ = o; }
@@ -131,6 +158,7 @@ class BandConductor {
   Status margin_pass();
   int64_t gap_reach(const CutSet& cs, const Crossing& r) const;
   Status try_band(int32_t y1, bool* fitted);
+  Status next_streamed_band();
   Status draw_band(Attempt& a);
   Status commit_band(Attempt& a);
   uint32_t defer_joined(const Attempt& a, Segment2* u, uint32_t nu, uint8_t* free);
@@ -162,6 +190,8 @@ class BandConductor {
   int64_t height_ = 0;               // the next attempt's height
   bool margin_known_ = false;
   bool done_ = true;
+  BandStream stream_{};                  // streamed mode when stream_.next is set
+  const uint32_t* stream_ids_ = nullptr;  // scene indices of the streamed band's edges
   uint32_t n_carry_ = 0;  // carry entries at the front of the arena
   uint32_t n_defer_ = 0;  // segments deferred to the next band, after the carry
   size_t band_used_ = 0;  // the current attempt's bytes

@@ -90,7 +90,10 @@ bool MotionPlanner::point_ready() {
   if (feed_.more == nullptr || !ok(feed_status_)) return false;
   const PathPoint* points = nullptr;
   uint32_t n = 0;
-  feed_status_ = feed_.more(feed_.ctx, &points, &n);
+  const Status s = feed_.more(feed_.ctx, &points, &n);
+  waiting_ = s == Status::kBusy;  // on their way (a band still arriving): ask again later
+  if (waiting_) return false;
+  feed_status_ = s;
   if (!ok(feed_status_) || n == 0) {
     feed_.more = nullptr;  // done (or failed): never ask again
     return false;
@@ -137,6 +140,10 @@ bool MotionPlanner::next(MotionItem* out) {
         return true;
       }
     }
+    // Waiting for points with room in the buffer: hold. Committing now would plan a stop the
+    // uninterrupted plan does not make; the step queue runs dry instead and the plot resumes
+    // with the same steps at the same ticks.
+    if (waiting_ && count_ < room) return false;
     const bool barrier = !point_ready() || (points_[next_point_].pen_down != 0) != pen_down_;
     if (count_ > 0 && (count_ == capacity_ || barrier)) {
       Block& b = at(0);

@@ -44,6 +44,8 @@ struct PlannerCounters {
 // conductor, band by band): more() hands over the next batch, n == 0 when the path is done.
 // The planner copies each point into its look-ahead blocks before it asks again, so a feed may
 // reuse the memory of the previous batch.
+// more() may answer kBusy: nothing yet (the next band is still arriving); the planner then
+// holds and asks again on its next call.
 struct PointFeed {
   Status (*more)(void* ctx, const PathPoint** points, uint32_t* n) = nullptr;
   void* ctx = nullptr;
@@ -63,6 +65,7 @@ class MotionPlanner {
   // failed: status() then says why.
   bool next(MotionItem* out);
   Status status() const { return feed_status_; }
+  bool waiting() const { return waiting_; }  // next() returned false: the feed said kBusy
   const PlannerCounters& counters() const { return counters_; }
 
  private:
@@ -94,6 +97,7 @@ class MotionPlanner {
   PlannerCounters counters_{};
   PointFeed feed_{};
   Status feed_status_ = Status::kOk;
+  bool waiting_ = false;
 };
 
 }  // namespace haloplot

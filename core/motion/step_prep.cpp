@@ -88,6 +88,7 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
       if (done_) return Status::kOk;
       MotionItem it;
       if (!planner.next(&it)) {
+        if (planner.waiting()) return Status::kOk;  // points on their way: nothing yet
         done_ = true;
         return planner.status();  // kOk, or why the point feed stopped
       }
