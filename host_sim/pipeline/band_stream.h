@@ -13,7 +13,7 @@ namespace haloplot::host {
 
 struct PlannedBand {
   int32_t y0 = 0, y1 = 0;
-  std::vector<Edge3> edges;  // the edges the band gathers, in scene order
+  std::vector<Edge3> edges;   // the edges the band gathers, in scene order
   std::vector<uint32_t> ids;  // their indices in the scene
 };
 

@@ -62,20 +62,79 @@ Status prepare_whole(const JobSpec& spec, const std::vector<Edge3>& edges,
   return Status::kOk;
 }
 
-// The banded run's feed: the conductor's bands, each band's points also kept for the report.
+// The banded run's feed: the conductor's bands, each band's points also kept for the report,
+// and the tick at which each band was asked for (the plot of the band before ends about then).
 struct BandFeed {
   BandConductor* conductor;
   SimReport* report;
+  const uint64_t* now = nullptr;
   static Status more(void* ctx, const PathPoint** points, uint32_t* n) {
     auto* self = static_cast<BandFeed*>(ctx);
+    const uint32_t before = self->conductor->stats().bands;
     const Status s = self->conductor->next(points, n);
     if (ok(s)) self->report->points.insert(self->report->points.end(), *points, *points + *n);
+    if (self->conductor->stats().bands != before) self->report->band_ticks.push_back(*self->now);
     return s;
   }
   static void piece(void* ctx, const BandPiece& p) {
     static_cast<BandFeed*>(ctx)->report->spans.push_back(p.segment);
   }
 };
+
+BandSpec band_spec(const JobSpec& spec) {
+  BandSpec bs;
+  bs.haloed = spec.drawing == DrawingEffect::kHaloed;
+  bs.draw = spec.draw;
+  bs.cut = spec.cut;
+  bs.start_x = spec.start_x;
+  bs.start_y = spec.start_y;
+  return bs;
+}
+
+// The motion of the plot: from r->points, then (with a conductor) from its bands.
+Status run_motion(const JobSpec& spec, BandConductor* conductor, std::ostream* trace,
+                  SimReport* r) {
+  r->planner_bytes = MotionPlanner::workspace_bytes(spec.effects);
+  std::vector<uint64_t> planner_ws(r->planner_bytes / 8 + 1);
+  MotionPlanner planner;
+  Status s = planner.init(spec.machine, spec.effects, r->points.data(), uint32_t(r->points.size()),
+                          planner_ws.data(), r->planner_bytes);
+  if (!ok(s)) return s;
+  std::unique_ptr<TraceWriter> writer;
+  if (trace) writer = std::make_unique<TraceWriter>(*trace, spec.machine);
+  RecordingHal hal;
+  hal.writer = writer.get();
+  hal.report = r;
+  BandFeed feed{conductor, r, &hal.now};
+  if (conductor != nullptr) {
+    conductor->set_observer(PieceObserver{&BandFeed::piece, &feed});
+    planner.set_feed(PointFeed{&BandFeed::more, &feed});
+  }
+  StepPrep prep;
+  s = prep.init(spec.machine, spec.effects);
+  if (!ok(s)) return s;
+  SegmentQueue<64> queue;
+  StepEngine<RecordingHal, SegmentQueue<64>> engine(hal, queue);
+  s = run_virtual(planner, prep, queue, hal, engine);
+  if (!ok(s)) return s;
+  r->end_tick = hal.now;
+  r->planner = planner.counters();
+  r->prep = prep.counters();
+  r->final_motors[0] = engine.position(0);
+  r->final_motors[1] = engine.position(1);
+  if (conductor != nullptr) {
+    r->bands = conductor->stats();
+    r->job.path = r->bands.path;
+    r->job.cut_runs = uint32_t(r->bands.cut_runs);
+    r->job.draw_runs = uint32_t(r->bands.draw_runs);
+  }
+  if (writer) writer->finish(hal.now);
+  return Status::kOk;
+}
+
+bool edge_drawing(const JobSpec& spec) {
+  return spec.drawing == DrawingEffect::kHaloed || spec.drawing == DrawingEffect::kAllEdges;
+}
 
 }  // namespace
 
@@ -86,60 +145,29 @@ Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostre
   Status s = validate(spec.machine);
   if (!ok(s)) return s;
   std::vector<uint64_t> buffer;
-  BandConductor conductor;
-  BandFeed feed{&conductor, r};
   if (arena_bytes == 0) {
     s = prepare_whole(spec, edges, &buffer, r);
-    if (!ok(s)) return s;
-  } else {
-    if (spec.drawing != DrawingEffect::kHaloed && spec.drawing != DrawingEffect::kAllEdges)
-      return Status::kBadParameter;
-    BandSpec bs;
-    bs.haloed = spec.drawing == DrawingEffect::kHaloed;
-    bs.draw = spec.draw;
-    bs.cut = spec.cut;
-    bs.start_x = spec.start_x;
-    bs.start_y = spec.start_y;
-    buffer.assign(arena_bytes / 8, 0);
-    conductor.set_observer(PieceObserver{&BandFeed::piece, &feed});
-    s = conductor.begin(bs, array_edge_source(edges.data(), uint32_t(edges.size())), buffer.data(),
-                        buffer.size() * 8);
-    if (!ok(s)) return s;
+    return ok(s) ? run_motion(spec, nullptr, trace, r) : s;
   }
+  if (!edge_drawing(spec)) return Status::kBadParameter;
+  buffer.assign(arena_bytes / 8, 0);
+  BandConductor conductor;
+  s = conductor.begin(band_spec(spec), array_edge_source(edges.data(), uint32_t(edges.size())),
+                      buffer.data(), buffer.size() * 8);
+  return ok(s) ? run_motion(spec, &conductor, trace, r) : s;
+}
 
-  r->planner_bytes = MotionPlanner::workspace_bytes(spec.effects);
-  std::vector<uint64_t> planner_ws(r->planner_bytes / 8 + 1);
-  MotionPlanner planner;
-  s = planner.init(spec.machine, spec.effects, r->points.data(), uint32_t(r->points.size()),
-                   planner_ws.data(), r->planner_bytes);
+Status simulate_streamed(const JobSpec& spec, BandStream stream, int32_t margin, size_t arena_bytes,
+                         std::ostream* trace, SimReport* r) {
+  *r = SimReport{};
+  r->arena_bytes = arena_bytes;
+  Status s = validate(spec.machine);
   if (!ok(s)) return s;
-  if (arena_bytes > 0) planner.set_feed(PointFeed{&BandFeed::more, &feed});
-  StepPrep prep;
-  s = prep.init(spec.machine, spec.effects);
-  if (!ok(s)) return s;
-
-  std::unique_ptr<TraceWriter> writer;
-  if (trace) writer = std::make_unique<TraceWriter>(*trace, spec.machine);
-  RecordingHal hal;
-  hal.writer = writer.get();
-  hal.report = r;
-  SegmentQueue<64> queue;
-  StepEngine<RecordingHal, SegmentQueue<64>> engine(hal, queue);
-  s = run_virtual(planner, prep, queue, hal, engine);
-  if (!ok(s)) return s;
-  r->end_tick = hal.now;
-  r->planner = planner.counters();
-  r->prep = prep.counters();
-  r->final_motors[0] = engine.position(0);
-  r->final_motors[1] = engine.position(1);
-  if (arena_bytes > 0) {
-    r->bands = conductor.stats();
-    r->job.path = r->bands.path;
-    r->job.cut_runs = uint32_t(r->bands.cut_runs);
-    r->job.draw_runs = uint32_t(r->bands.draw_runs);
-  }
-  if (writer) writer->finish(hal.now);
-  return Status::kOk;
+  if (!edge_drawing(spec)) return Status::kBadParameter;
+  std::vector<uint64_t> buffer(arena_bytes / 8);
+  BandConductor conductor;
+  s = conductor.begin_streamed(band_spec(spec), margin, stream, buffer.data(), buffer.size() * 8);
+  return ok(s) ? run_motion(spec, &conductor, trace, r) : s;
 }
 
 }  // namespace haloplot::host

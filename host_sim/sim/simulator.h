@@ -29,6 +29,7 @@ struct SimReport {
   int32_t final_motors[2] = {0, 0};
   size_t arena_bytes = 0;  // > 0: the plot ran in bands in this arena, as on the controller
   BandStats bands;
+  std::vector<uint64_t> band_ticks;  // the tick at which each band was asked for
 };
 
 // Runs the whole job and writes the trace to `trace` (may be null). Returns the first status
@@ -37,5 +38,10 @@ struct SimReport {
 // for the whole scene.
 Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostream* trace,
                 SimReport* report, size_t arena_bytes = 0);
+
+// The same with the bands streamed in (band/conductor.h begin_streamed), as a controller that
+// receives them over its link runs it: the stream may make the plot wait (kBusy).
+Status simulate_streamed(const JobSpec& spec, BandStream stream, int32_t margin, size_t arena_bytes,
+                         std::ostream* trace, SimReport* report);
 
 }  // namespace haloplot::host

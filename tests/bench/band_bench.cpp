@@ -16,6 +16,11 @@
 #include "demo/random_scene.h"
 #include "job/job.h"
 #include "perf_common.h"
+#include "pipeline/band_stream.h"
+#include "protocol/frame.h"
+#include "protocol/job_server.h"
+#include "protocol/messages.h"
+#include "sim/simulator.h"
 
 using namespace haloplot;
 
@@ -78,8 +83,8 @@ Whole whole(const std::vector<Edge3>& edges, const DrawParams& draw) {
     PreparedJob job;
     JobCounters c;
     const double t0 = bench::now_ms();
-    w.status = job_prepare(spec, edges.data(), n, capacity, buffer.data(), buffer.size() * 8,
-                           &job, &c);
+    w.status =
+        job_prepare(spec, edges.data(), n, capacity, buffer.data(), buffer.size() * 8, &job, &c);
     w.ms = bench::now_ms() - t0;
     w.bytes = b.total();
     w.pen_up = c.path.pen_up_length;
@@ -93,6 +98,54 @@ Whole whole(const std::vector<Edge3>& edges, const DrawParams& draw) {
 std::string kb(size_t bytes) { return bench::fmt(double(bytes) / 1024.0, 1); }
 
 }  // namespace
+
+// The link budget of a streamed Figure 4 on the demo job: each band's edges sent as 4-byte
+// scene indices with the 24-byte edge records the upload uses today, in frames of at most
+// kMaxPayload bytes (kFrameOverhead each), at 115200 baud 8N1 (11,520 bytes/s), against the
+// plot time of the band before it (the next band is received while this one plots).
+void link_budget(size_t arena) {
+  const std::vector<Edge3> edges = host::cube_array(CubeArrayParams{});
+  JobSpec job;
+  job.draw = DrawParams{50, HaloMode::kPaper};
+  job.machine.kinematics = Kinematics::kCoreXY;
+  BandSpec spec;
+  spec.draw = job.draw;
+  host::BandPlan plan;
+  if (!ok(host::plan_streamed_bands(edges, spec, arena, &plan))) return;
+  host::PlanStream stream;
+  stream.plan = &plan;
+  host::SimReport r;
+  if (!ok(host::simulate_streamed(job, stream.stream(), plan.margin, arena, nullptr, &r))) return;
+  constexpr double kBytesPerSecond = 115200.0 / 10.0;
+  const double record = double(kEdgeRecordBytes + 4);
+  const double per_frame = double(JobServer::kMaxPayload / size_t(record)) * record;
+  const double wire_per_edge = record * (1.0 + double(kFrameOverhead) / per_frame);
+  std::printf("\n| band | rows | edges sent | on the wire | upload | plot of the band before |\n");
+  std::printf("|---:|---|---:|---:|---:|---:|\n");
+  double worst = 0, total_bytes = 0;
+  for (size_t k = 0; k < plan.bands.size(); ++k) {
+    const double bytes = wire_per_edge * double(plan.bands[k].edges.size());
+    total_bytes += bytes;
+    const double upload = bytes / kBytesPerSecond;
+    double plot = 0;
+    if (k > 0) plot = double(r.band_ticks[k] - r.band_ticks[k - 1]) / double(job.machine.tick_hz);
+    if (k > 0 && upload / plot > worst) worst = upload / plot;
+    std::printf("| %zu | %d-%d | %zu | %s KB | %s s | %s |\n", k, plan.bands[k].y0,
+                plan.bands[k].y1 - 1, plan.bands[k].edges.size(), kb(size_t(bytes)).c_str(),
+                bench::fmt(upload, 2).c_str(),
+                k == 0 ? "(before the plot starts)" : (bench::fmt(plot, 1) + " s").c_str());
+  }
+  std::printf(
+      "\nFigure 4 streamed in %s KB: %zu bands, %s bytes on the wire per edge sent, "
+      "%s KB in all (%s s at 115200 baud) for a %s s plot; the first band takes %s s "
+      "before the pen moves; after that the upload of a band takes at most %s of the "
+      "plot time of the band before it.\n",
+      kb(arena).c_str(), plan.bands.size(), bench::fmt(wire_per_edge, 2).c_str(),
+      kb(size_t(total_bytes)).c_str(), bench::fmt(total_bytes / kBytesPerSecond, 1).c_str(),
+      bench::fmt(double(r.end_tick) / double(job.machine.tick_hz), 0).c_str(),
+      bench::fmt(wire_per_edge * double(plan.bands[0].edges.size()) / kBytesPerSecond, 2).c_str(),
+      (bench::fmt(100.0 * worst, 2) + " %").c_str());
+}
 
 int main(int argc, char** argv) {
   const size_t arena = argc > 1 ? size_t(std::atol(argv[1])) : 64 * 1024;
@@ -120,10 +173,11 @@ int main(int argc, char** argv) {
       scenes.push_back({"random, N = " + std::to_string(n) +
                             (mode == HaloMode::kExact ? ", exact gap" : ", paper's gap"),
                         host::paper_random(n, l, 7), DrawParams{200, mode}});
-  std::printf("| scene | edges | crossings | one band: bytes | bands in %s KB | margin (rows) | "
-              "peak bytes | edges read / N | pieces equal | time banded / one band | pen-up "
-              "banded / one band |\n",
-              kb(arena).c_str());
+  std::printf(
+      "| scene | edges | crossings | one band: bytes | bands in %s KB | margin (rows) | "
+      "peak bytes | edges read / N | pieces equal | time banded / one band | pen-up "
+      "banded / one band |\n",
+      kb(arena).c_str());
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|\n");
   for (const Scene& s : scenes) {
     const DrawParams& draw = s.draw;
@@ -145,17 +199,16 @@ int main(int argc, char** argv) {
                 (ok(r.status) && r.pieces == one.pieces ? ", pieces equal" : ", pieces differ") +
                 ")";
     }
-    std::printf("| %s | %zu | %llu | %s KB | %u | %d | %zu | %s | %s | %s | %s |\n",
-                s.name.c_str(), s.edges.size(), (unsigned long long)w.crossings,
-                kb(w.bytes).c_str(), b.stats.bands, b.stats.margin, b.stats.peak_bytes,
-                bench::fmt(double(b.stats.edge_reads) / double(s.edges.size()), 1).c_str(),
-                verdict.c_str(),
-                bench::fmt(b.ms / std::max(w.ms, 1e-3), 2).c_str(),
-                bench::fmt(double(b.stats.path.pen_up_length) /
-                               double(std::max<uint64_t>(w.pen_up, 1)),
-                           2)
-                    .c_str());
+    std::printf(
+        "| %s | %zu | %llu | %s KB | %u | %d | %zu | %s | %s | %s | %s |\n", s.name.c_str(),
+        s.edges.size(), (unsigned long long)w.crossings, kb(w.bytes).c_str(), b.stats.bands,
+        b.stats.margin, b.stats.peak_bytes,
+        bench::fmt(double(b.stats.edge_reads) / double(s.edges.size()), 1).c_str(), verdict.c_str(),
+        bench::fmt(b.ms / std::max(w.ms, 1e-3), 2).c_str(),
+        bench::fmt(double(b.stats.path.pen_up_length) / double(std::max<uint64_t>(w.pen_up, 1)), 2)
+            .c_str());
     std::fflush(stdout);
   }
+  link_budget(arena);
   return 0;
 }
