@@ -64,6 +64,12 @@ int cmd_send(int argc, char** argv) {
   JobFile jf;
   InputError ie = read_job_file(o.positional[0], &jf);
   if (ie.failed()) return send_fail(ie.message());
+  // The controller plots an uploaded scene whole; it does not take bands over the link yet, so a
+  // job that asks for bands would not plot what `sim` with the same arena plots.
+  if (jf.arena > 0)
+    return send_fail(o.positional[0] +
+                     ": 'arena' plots in bands, which the controller does not take over its link "
+                     "yet: remove the line to upload the whole scene");
   // An .edges scene goes as projected edges; an .obj model as world vertices and index pairs
   // (and triangles for the hidden-line drawings), projected on the controller with the view.
   std::vector<Edge3> edges;
