@@ -190,11 +190,11 @@ class BandConductor {
   int64_t height_ = 0;               // the next attempt's height
   bool margin_known_ = false;
   bool done_ = true;
-  BandStream stream_{};                  // streamed mode when stream_.next is set
+  BandStream stream_{};                   // streamed mode when stream_.next is set
   const uint32_t* stream_ids_ = nullptr;  // scene indices of the streamed band's edges
-  uint32_t n_carry_ = 0;  // carry entries at the front of the arena
-  uint32_t n_defer_ = 0;  // segments deferred to the next band, after the carry
-  size_t band_used_ = 0;  // the current attempt's bytes
+  uint32_t n_carry_ = 0;                  // carry entries at the front of the arena
+  uint32_t n_defer_ = 0;                  // segments deferred to the next band, after the carry
+  size_t band_used_ = 0;                  // the current attempt's bytes
   // The committed band's segments, in column order, waiting for next() to plan them.
   Segment2* segs_ = nullptr;
   uint32_t n_segs_ = 0, next_seg_ = 0;

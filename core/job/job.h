@@ -10,6 +10,7 @@
 #include "draw/draw.h"
 #include "motion/machine.h"
 #include "motion/path_plan.h"
+#include "motion/planner.h"
 #include "solid/hidden_lines.h"
 #include "status/status.h"
 
@@ -70,7 +71,8 @@ struct PreparedJob {
   uint32_t n_points = 0;
   uint32_t n_spans = 0;
   const Segment2* spans = nullptr;
-  CutSet cutset;  // valid when CUT ran: DRAW can rerun from it with another halo width
+  CutSet cutset;   // valid when CUT ran: DRAW can rerun from it with another halo width
+  PointFeed feed;  // set: the points come band by band from this feed (a streamed plot)
 };
 
 // Bytes the job needs for these edges when CUT may store up to `crossing_capacity` records.

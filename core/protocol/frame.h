@@ -30,7 +30,11 @@ enum class FrameType : uint8_t {
   kUploadEdgeIndices = 0x15,  // vertex index pairs
   kUploadFaces = 0x16,        // triangles (vertex indices + polygon id) for hidden lines
   kSetMachine = 0x17,
-  kSetHidden = 0x18,  // hidden-line method, outline pass, dash and gap
+  kSetHidden = 0x18,    // hidden-line method, outline pass, dash and gap
+  kStreamBegin = 0x19,  // the next plot's scene comes as bands (see messages.h)
+  kBandBegin = 0x1A,    // one band's rows and edge count; accepted while plotting
+  kBandEdges = 0x1B,    // the band's edges with their scene indices; accepted while plotting
+  kStreamEnd = 0x1C,    // no band follows
   kPlot = 0x20,
   kReplot = 0x21,  // another halo width: DRAW only, CUT's result is kept
   kQueryStatus = 0x30,

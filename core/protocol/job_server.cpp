@@ -73,7 +73,9 @@ void JobServer::on_frame(const Frame& f) {
     send_status(f.seq);
   } else {
     const Status s = act(f);
-    if (!ok(s)) last_error_ = s;
+    // A band offered while the last one is still staged is flow control, not a failure.
+    const bool flow = s == Status::kBusy && f.type == uint8_t(FrameType::kBandBegin);
+    if (!ok(s) && !flow) last_error_ = s;
     const uint8_t ack[2] = {f.seq, uint8_t(s)};
     reply(FrameType::kAck, ack, 2);
   }
@@ -90,6 +92,15 @@ Status JobServer::act(const Frame& f) {
   // Platform requests decide for themselves what a running plot allows.
   if (f.type >= kPlatformTypeFirst && extension_.handle)
     return extension_.handle(extension_.ctx, f);
+  // The bands of a streamed plot arrive while it plots.
+  if (type == FrameType::kBandBegin) return band_begin(f.payload, f.length);
+  if (type == FrameType::kBandEdges) return band_edges(f.payload, f.length);
+  if (type == FrameType::kStreamEnd) {
+    if (!streamed_ || f.length != 0 || staging_ == Staging::kReceiving)
+      return Status::kUploadMismatch;
+    stream_end_ = true;
+    return Status::kOk;
+  }
   if (state_ == ServerState::kPlotting) return Status::kBusy;
   switch (type) {
     case FrameType::kUploadBegin:
@@ -131,8 +142,11 @@ Status JobServer::act(const Frame& f) {
       if (ok(s)) spec_ = next;
       return s;
     }
+    case FrameType::kStreamBegin:
+      return stream_begin(f.payload, f.length);
     case FrameType::kPlot:
-      return f.length == 0 ? plot() : Status::kMalformedRequest;
+      if (f.length != 0) return Status::kMalformedRequest;
+      return streamed_ ? plot_streamed() : plot();
     case FrameType::kReplot:
       return replot(f.payload, f.length);
     default:
@@ -153,6 +167,7 @@ Status JobServer::upload_begin(const uint8_t* p, uint16_t n) {
                         uint64_t{b.edges} * sizeof(Edge3) + 8;
   if (need > arena_bytes_) return Status::kSceneTooLarge;
   scene_ = b;
+  streamed_ = false;
   received_vertices_ = received_edges_ = received_faces_ = 0;
   n_edges_ = 0;
   forget_cut();
@@ -312,6 +327,104 @@ void JobServer::service() {
   const Status s = motion_.result(motion_.ctx);
   if (!ok(s)) last_error_ = s;
   state_ = ServerState::kReady;
+  if (streamed_) {  // the bands are gone with the plot: a new stream or upload comes next
+    cut_runs_ += uint32_t(conductor_.stats().cut_runs);
+    draw_runs_ += uint32_t(conductor_.stats().draw_runs);
+    streamed_ = false;
+    state_ = ServerState::kIdle;
+  }
+}
+
+// kStreamBegin: the conductor takes the arena's front, the staging buffer the rest.
+Status JobServer::stream_begin(const uint8_t* p, uint16_t n) {
+  StreamBegin b;
+  const Status s = decode_stream_begin(p, n, &b);
+  if (!ok(s)) return s;
+  const size_t arena = align8(b.arena_bytes);
+  if (arena + kBandEdgeRecordBytes > arena_bytes_ || b.arena_bytes < 1024)
+    return Status::kSceneTooLarge;
+  stream_ = b;
+  streamed_ = true;
+  stream_end_ = false;
+  staging_ = Staging::kEmpty;
+  staging_capacity_ = uint32_t((arena_bytes_ - arena) / (sizeof(Edge3) + sizeof(uint32_t)));
+  staged_edges_ = reinterpret_cast<Edge3*>(arena_ + arena);
+  staged_ids_ = reinterpret_cast<uint32_t*>(staged_edges_ + staging_capacity_);
+  scene_ = UploadBegin{};
+  n_edges_ = 0;
+  forget_cut();
+  state_ = ServerState::kReady;
+  return Status::kOk;
+}
+
+Status JobServer::band_begin(const uint8_t* p, uint16_t n) {
+  if (!streamed_ || stream_end_) return Status::kUploadMismatch;
+  if (staging_ != Staging::kEmpty) return Status::kBusy;  // the plot has not taken the last one
+  BandBegin b;
+  const Status s = decode_band_begin(p, n, &b);
+  if (!ok(s)) return s;
+  if (b.edges > staging_capacity_) return Status::kSceneTooLarge;
+  staged_ = b;
+  staged_received_ = 0;
+  staging_ = b.edges == 0 ? Staging::kReady : Staging::kReceiving;
+  return Status::kOk;
+}
+
+Status JobServer::band_edges(const uint8_t* p, uint16_t n) {
+  if (!streamed_ || staging_ != Staging::kReceiving || n % kBandEdgeRecordBytes)
+    return Status::kUploadMismatch;
+  const uint32_t k = uint32_t(n / kBandEdgeRecordBytes);
+  if (k > staged_.edges - staged_received_) return Status::kUploadMismatch;
+  for (uint32_t i = 0; i < k; ++i) {
+    const uint8_t* r = p + size_t{i} * kBandEdgeRecordBytes;
+    staged_ids_[staged_received_ + i] = get_u32(r);
+    staged_edges_[staged_received_ + i] = decode_edge(r + 4);
+    if (!in_range(staged_edges_[staged_received_ + i])) return Status::kCoordinateOutOfRange;
+  }
+  staged_received_ += k;
+  if (staged_received_ == staged_.edges) staging_ = Staging::kReady;
+  return Status::kOk;
+}
+
+// The conductor's stream: the staged band once it is whole, the end after kStreamEnd.
+Status JobServer::next_band(void* ctx, StreamedBand* band, bool* end) {
+  auto* self = static_cast<JobServer*>(ctx);
+  *end = false;
+  if (self->staging_ != Staging::kReady) {
+    *end = self->stream_end_ && self->staging_ == Staging::kEmpty;
+    return *end ? Status::kOk : Status::kBusy;
+  }
+  band->y0 = self->staged_.y0;
+  band->y1 = self->staged_.y1;
+  band->edges = self->staged_edges_;
+  band->ids = self->staged_ids_;
+  band->n = self->staged_.edges;
+  return Status::kOk;
+}
+
+void JobServer::release_band(void* ctx) {
+  static_cast<JobServer*>(ctx)->staging_ = Staging::kEmpty;
+}
+
+Status JobServer::plot_streamed() {
+  if (spec_.drawing != DrawingEffect::kHaloed && spec_.drawing != DrawingEffect::kAllEdges)
+    return Status::kUnsupported;
+  BandSpec bs;
+  bs.haloed = spec_.drawing == DrawingEffect::kHaloed;
+  bs.draw = spec_.draw;
+  bs.cut = spec_.cut;
+  bs.start_x = spec_.start_x;
+  bs.start_y = spec_.start_y;
+  BandStream stream;
+  stream.ctx = this;
+  stream.next = &JobServer::next_band;
+  stream.release = &JobServer::release_band;
+  const Status s = conductor_.begin_streamed(bs, stream_.margin, stream, arena_,
+                                             stream_.arena_bytes & ~uint32_t{7});
+  if (!ok(s)) return s;
+  job_ = PreparedJob{};
+  job_.feed = PointFeed{&BandConductor::feed, &conductor_};
+  return start_motion();
 }
 
 void JobServer::send_status(uint8_t seq) {

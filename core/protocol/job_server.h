@@ -14,6 +14,13 @@
 // buffer for CUT, DRAW and the path (core/job), or for a hidden-line drawing the projected
 // vertices, the hidden-line run and its strokes (job_prepare_solid).
 //
+// Streamed plots (kStreamBegin): the scene never comes whole. The arena is split into the band
+// conductor's arena (the size the host planned its bands for) and a staging buffer behind it
+// that receives the next band (kBandBegin, kBandEdges: accepted while plotting, kBusy while the
+// staging buffer still holds a band the plot has not taken). kPlot starts the motion at once;
+// the planner waits for each band (band/conductor.h begin_streamed), and kStreamEnd says no
+// band follows.
+//
 // last_error is the most recent failure: of a request, or of the plot in motion. A plot that
 // starts clears it, so after a plot it says how that plot ended. The CUTSET stays at the front of
 // the job buffer after a plot, so kReplot with a new halo width runs only DRAW and the path.
@@ -21,6 +28,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "band/conductor.h"
 #include "job/job.h"
 #include "protocol/frame.h"
 #include "protocol/messages.h"
@@ -88,6 +96,12 @@ class JobServer {
   Status plot_hidden(uint8_t* job_mem, size_t job_bytes);
   Status replot(const uint8_t* p, uint16_t n);
   Status start_motion();
+  Status stream_begin(const uint8_t* p, uint16_t n);
+  Status band_begin(const uint8_t* p, uint16_t n);
+  Status band_edges(const uint8_t* p, uint16_t n);
+  Status plot_streamed();
+  static Status next_band(void* ctx, StreamedBand* band, bool* end);
+  static void release_band(void* ctx);
   void reply(FrameType type, const uint8_t* payload, uint16_t n);
   void send_status(uint8_t seq);
   void forget_cut() { has_cut_ = false; }
@@ -119,6 +133,17 @@ class JobServer {
   Extension extension_;
   uint64_t (*clock_)() = nullptr;
   uint64_t prepare_ticks_ = 0, redraw_ticks_ = 0;
+
+  // A streamed plot: its settings, the conductor, and the staged band.
+  enum class Staging : uint8_t { kEmpty, kReceiving, kReady };
+  bool streamed_ = false, stream_end_ = false;
+  StreamBegin stream_{};
+  BandConductor conductor_;
+  Staging staging_ = Staging::kEmpty;
+  BandBegin staged_{};
+  uint32_t staged_received_ = 0, staging_capacity_ = 0;
+  Edge3* staged_edges_ = nullptr;
+  uint32_t* staged_ids_ = nullptr;
 };
 
 }  // namespace haloplot

@@ -178,4 +178,33 @@ Status decode_hidden(const uint8_t* p, size_t n, HiddenJob* out) {
   return Status::kOk;
 }
 
+void encode_stream_begin(const StreamBegin& b, uint8_t out[kStreamBeginBytes]) {
+  put_i32(out, b.margin);
+  put_u32(out + 4, b.arena_bytes);
+}
+
+Status decode_stream_begin(const uint8_t* p, size_t n, StreamBegin* out) {
+  if (n != kStreamBeginBytes || get_i32(p) < 0 || get_i32(p) > 2 * kCoordLimit)
+    return Status::kMalformedRequest;
+  out->margin = get_i32(p);
+  out->arena_bytes = get_u32(p + 4);
+  return Status::kOk;
+}
+
+void encode_band_begin(const BandBegin& b, uint8_t out[kBandBeginBytes]) {
+  put_i32(out, b.y0);
+  put_i32(out + 4, b.y1);
+  put_u32(out + 8, b.edges);
+}
+
+Status decode_band_begin(const uint8_t* p, size_t n, BandBegin* out) {
+  if (n != kBandBeginBytes) return Status::kMalformedRequest;
+  const int32_t y0 = get_i32(p), y1 = get_i32(p + 4);
+  if (y0 < 0 || y1 <= y0 || y1 > kCoordLimit) return Status::kMalformedRequest;
+  out->y0 = y0;
+  out->y1 = y1;
+  out->edges = get_u32(p + 8);
+  return Status::kOk;
+}
+
 }  // namespace haloplot

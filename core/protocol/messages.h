@@ -21,6 +21,10 @@
 //                      max step rate, draw speed, travel speed, accel, junction deviation,
 //                      pen travel, pen settle, backlash 0, 1), 2 x i32 start x, y      61
 //   kReplot            as kSetHalo                                                      5
+//   kStreamBegin       i32 margin (rows), u32 arena bytes for the bands                     8
+//   kBandBegin         i32 y0, i32 y1 (rows [y0, y1)), u32 edges                           12
+//   kBandEdges         u32 scene index, then an Edge3 record                       28 per edge
+//   kStreamEnd         (empty)
 //   kAck               u8 seq, u8 status                                                2
 //   kNak               u8 expected seq                                                  1
 //   kStatus            u8 seq, u8 status, u8 state, u8 last error, then u32 free bytes,
@@ -38,7 +42,19 @@ namespace haloplot {
 inline constexpr size_t kUploadBeginBytes = 13, kEdgeRecordBytes = 24, kVertexRecordBytes = 12,
                         kIndexRecordBytes = 8, kViewBytes = 24, kHaloBytes = 5, kEffectsBytes = 2,
                         kMachineBytes = 61, kStatusBytes = 32, kFaceRecordBytes = 16,
-                        kHiddenBytes = 22;
+                        kHiddenBytes = 22, kStreamBeginBytes = 8, kBandBeginBytes = 12,
+                        kBandEdgeRecordBytes = 4 + kEdgeRecordBytes;
+
+// A streamed plot (band/conductor.h begin_streamed): the host's margin and the arena its bands
+// were sized for; then each band's rows and edge count.
+struct StreamBegin {
+  int32_t margin = 0;
+  uint32_t arena_bytes = 0;
+};
+struct BandBegin {
+  int32_t y0 = 0, y1 = 0;
+  uint32_t edges = 0;
+};
 
 enum class SceneFormat : uint8_t { kEdges = 0, kIndexed = 1 };
 
@@ -79,6 +95,8 @@ void encode_machine(const JobSpec& spec, uint8_t out[kMachineBytes]);
 void encode_status(const StatusReport& r, uint8_t out[kStatusBytes]);
 void encode_face(const Triangle& t, uint8_t out[kFaceRecordBytes]);
 void encode_hidden(const HiddenJob& h, uint8_t out[kHiddenBytes]);
+void encode_stream_begin(const StreamBegin& b, uint8_t out[kStreamBeginBytes]);
+void encode_band_begin(const BandBegin& b, uint8_t out[kBandBeginBytes]);
 
 // Decoders check the length and every enumerated field: kMalformedRequest otherwise. Ranges
 // (speeds, plot area) are checked later by validate() of the machine and the view.
@@ -92,5 +110,7 @@ Status decode_machine(const uint8_t* p, size_t n, JobSpec* spec);
 Status decode_status(const uint8_t* p, size_t n, StatusReport* out);
 Triangle decode_face(const uint8_t* p);
 Status decode_hidden(const uint8_t* p, size_t n, HiddenJob* out);
+Status decode_stream_begin(const uint8_t* p, size_t n, StreamBegin* out);
+Status decode_band_begin(const uint8_t* p, size_t n, BandBegin* out);
 
 }  // namespace haloplot

@@ -46,6 +46,7 @@ Status MotionRunner::begin(const JobSpec& spec, const PreparedJob& job) {
   if (ok(s))
     s = planner_.init(spec.machine, spec.effects, job.points, job.n_points, planner_ws_,
                       sizeof planner_ws_);
+  if (ok(s) && job.feed.more != nullptr) planner_.set_feed(job.feed);  // a streamed plot
   if (ok(s)) s = prep_.init(spec.machine, spec.effects);
   if (!ok(s)) return s;
   queue_.clear();

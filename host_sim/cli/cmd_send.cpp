@@ -64,12 +64,6 @@ int cmd_send(int argc, char** argv) {
   JobFile jf;
   InputError ie = read_job_file(o.positional[0], &jf);
   if (ie.failed()) return send_fail(ie.message());
-  // The controller plots an uploaded scene whole; it does not take bands over the link yet, so a
-  // job that asks for bands would not plot what `sim` with the same arena plots.
-  if (jf.arena > 0)
-    return send_fail(o.positional[0] +
-                     ": 'arena' plots in bands, which the controller does not take over its link "
-                     "yet: remove the line to upload the whole scene");
   // An .edges scene goes as projected edges; an .obj model as world vertices and index pairs
   // (and triangles for the hidden-line drawings), projected on the controller with the view.
   std::vector<Edge3> edges;
@@ -98,6 +92,25 @@ int cmd_send(int argc, char** argv) {
   } else {
     ie = read_edges_file(jf.scene_path, &edges);
     if (ie.failed()) return send_fail(ie.message());
+  }
+  // A job with an arena streams its scene in bands: plan them here with the controller's arena,
+  // exactly as `sim` with the same arena does, and send each band's edges as the plot needs them.
+  BandPlan plan;
+  if (jf.arena > 0) {
+    if (obj) return send_fail(o.positional[0] + ": 'arena' streams .edges scenes only");
+    BandSpec bs;
+    bs.haloed = jf.spec.drawing == DrawingEffect::kHaloed;
+    bs.draw = jf.spec.draw;
+    bs.cut = jf.spec.cut;
+    bs.start_x = jf.spec.start_x;
+    bs.start_y = jf.spec.start_y;
+    const Status ps = plan_streamed_bands(edges, bs, jf.arena, &plan);
+    if (!ok(ps))
+      return send_fail(
+          o.positional[0] + ": planning the bands: " + status_name(ps) +
+          (ps == Status::kArenaTooSmall
+               ? " (a band one row high needs " + std::to_string(plan.stats.need_bytes) + " bytes)"
+               : std::string()));
   }
   FaultPlan faults;
   uint32_t replot = 0, seed = 1;
@@ -132,11 +145,16 @@ int cmd_send(int argc, char** argv) {
   };
   StatusReport r;
   if (int e = link_or_status(client.sync(), "sync")) return e;
-  const bool sent =
-      obj ? client.upload_indexed(jf.spec, view, model.vertices, model.edge_pairs, &s, &triangles)
-          : client.upload(jf.spec, edges, &s);
-  if (int e = link_or_status(sent, "upload")) return e;
-  if (int e = link_or_status(client.request(FrameType::kPlot, {}, &s), "plot")) return e;
+  if (jf.arena > 0) {
+    if (int e = link_or_status(client.stream(jf.spec, plan, jf.arena, &s), "stream")) return e;
+    std::cout << "streamed " << plan.bands.size() << " bands, margin " << plan.margin << "\n";
+  } else {
+    const bool sent =
+        obj ? client.upload_indexed(jf.spec, view, model.vertices, model.edge_pairs, &s, &triangles)
+            : client.upload(jf.spec, edges, &s);
+    if (int e = link_or_status(sent, "upload")) return e;
+    if (int e = link_or_status(client.request(FrameType::kPlot, {}, &s), "plot")) return e;
+  }
   if (!o.get("--stop-after").empty()) {
     // Stop the plot once it has made this many step events: with an abort request, or (test
     // images) by closing limit switch 0. The controller must report how the plot ended.

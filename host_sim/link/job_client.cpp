@@ -140,6 +140,42 @@ bool JobClient::upload(const JobSpec& spec, const std::vector<Edge3>& edges, Sta
   return chunks(FrameType::kUploadEdges, records, kEdgeRecordBytes, status);
 }
 
+bool JobClient::stream(const JobSpec& spec, const BandPlan& plan, uint32_t arena_bytes,
+                       Status* status) {
+  if (!settings(spec, status)) return false;
+  if (!ok(*status)) return true;
+  std::vector<uint8_t> begin(kStreamBeginBytes);
+  encode_stream_begin(StreamBegin{plan.margin, arena_bytes}, begin.data());
+  if (!request(FrameType::kStreamBegin, begin, status)) return false;
+  if (!ok(*status)) return true;
+  if (!request(FrameType::kPlot, {}, status)) return false;
+  if (!ok(*status)) return true;
+  for (const PlannedBand& band : plan.bands) {
+    std::vector<uint8_t> head(kBandBeginBytes);
+    encode_band_begin(BandBegin{band.y0, band.y1, uint32_t(band.edges.size())}, head.data());
+    for (;;) {
+      if (!request(FrameType::kBandBegin, head, status)) return false;
+      if (*status != Status::kBusy) break;
+      StatusReport r;  // the last band is still staged: wait, unless the plot has ended
+      if (!query(&r)) return false;
+      if (r.state != ServerState::kPlotting) {
+        *status = r.last_error == Status::kOk ? Status::kAborted : r.last_error;
+        return true;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    if (!ok(*status)) return true;
+    std::vector<uint8_t> records(band.edges.size() * kBandEdgeRecordBytes);
+    for (size_t i = 0; i < band.edges.size(); ++i) {
+      put_u32(&records[i * kBandEdgeRecordBytes], band.ids[i]);
+      encode_edge(band.edges[i], &records[i * kBandEdgeRecordBytes + 4]);
+    }
+    if (!chunks(FrameType::kBandEdges, records, kBandEdgeRecordBytes, status)) return false;
+    if (!ok(*status)) return true;
+  }
+  return request(FrameType::kStreamEnd, {}, status);  // the last band is whole: no more
+}
+
 bool JobClient::upload_indexed(const JobSpec& spec, const View& view,
                                const std::vector<Point3>& world, const std::vector<uint32_t>& pairs,
                                Status* status, const std::vector<Triangle>* faces) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "job/job.h"
+#include "pipeline/band_stream.h"
 #include "protocol/frame.h"
 #include "protocol/messages.h"
 #include "solid/mesh.h"
@@ -53,6 +54,11 @@ class JobClient {
   bool upload_indexed(const JobSpec& spec, const View& view, const std::vector<Point3>& world,
                       const std::vector<uint32_t>& pairs, Status* status,
                       const std::vector<Triangle>* faces = nullptr);
+  // A streamed plot (the controller never holds the scene): the settings, the plan's margin and
+  // arena, the plot started at once, then each band as the controller takes it (while it
+  // still stages the last one it answers kBusy, and the band is offered again), then the end.
+  // *status is the first refusal; a plot that ends early stops the stream.
+  bool stream(const JobSpec& spec, const BandPlan& plan, uint32_t arena_bytes, Status* status);
   bool query(StatusReport* report);
   // Polls status until the plot ends; false on a link failure.
   bool wait_idle(StatusReport* report, int poll_ms = 20);

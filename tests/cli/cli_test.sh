@@ -156,9 +156,6 @@ rc=$?
 expect '[ $rc -eq 0 ] && [ "$(sed -n "s/^bands=//p" arenasim.txt)" -gt 1 ] && [ "$(sed -n "s/^spans=//p" arenasim.txt)" = "$(grep -c "^s " a.spans)" ]' "a job with an arena plots in bands, every piece: $(grep -E "^(bands|spans)=" arenasim.txt | tr '\n' ' ')"
 "$tool" replay arena.trace -o arena_replay.svg --stats 2> replay.txt
 expect '[ $? -eq 0 ]' "the banded trace replays"
-"$tool" send arena.job --port /nonexistent/port 2> err.txt
-rc=$?
-expect '[ $rc -ne 0 ] && grep -q "arena.job: .arena. plots in bands" err.txt' "send refuses a job with an arena by name: $(cat err.txt)"
 printf 'scene scene.edges\narena 12\n' > badarena.job
 "$tool" sim badarena.job -o x.trace 2> err.txt
 rc=$?

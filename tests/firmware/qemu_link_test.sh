@@ -13,6 +13,9 @@
 #   - a solid model (world vertices, edge pairs and triangles) plotted hidden-dashed, hatched
 #     (Franklin's regions) and with its outline pass is drawn by the controller's own hidden-line run exactly as `haloplot sim`
 #     draws it on the host;
+#   - a scene streamed in bands (the job's `arena`: the controller never holds the scene, the
+#     host sends each band's edges while the plot runs) is plotted exactly as `haloplot sim`
+#     plots it with the same arena, through damaged frames;
 #   - the image exits 0 through semihosting with no step underrun.
 # Usage: qemu_link_test.sh FIRMWARE_DIR HALOPLOT_TOOL
 source "$(dirname "$0")/qemu_common.sh" firmware_link "$1" "$2" fw_plotter_qemu.elf
@@ -31,6 +34,9 @@ printf 'scene cubes.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on
 "$tool" sim solid.job -o host_solid.trace
 "$tool" sim plot.job -o host_plot.trace
 "$tool" sim replot.job -o host_replot.trace
+# Streamed: 2 x 2 cubes in a 2 KB band arena take 8 bands.
+{ cat plot.job; echo "arena 2048"; } > stream.job
+"$tool" sim stream.job -o host_stream.trace --stats 2> stream_sim.txt
 
 timeout 600 qemu-system-arm -M netduinoplus2 -nographic -monitor none \
   -chardev socket,id=link,path="$work/link.sock",server=on,wait=off -serial chardev:link \
@@ -63,7 +69,15 @@ done
 "$tool" send solid.job --port "$work/link.sock" > solid.out 2>&1
 rc=$?
 if [ "$rc" -eq 0 ]; then ok; else bad "solid send failed ($rc): $(cat solid.out)"; fi
-# 4. Plot and re-plot with damaged frames on the way (a new connection: `send` reconnects if
+# 4. A streamed plot, with damaged frames on the way.
+"$tool" send stream.job --port "$work/link.sock" --corrupt-every 7 --seed 3 > stream.out 2>&1
+rc=$?
+if [ "$rc" -eq 0 ] && grep -q "^streamed $(sed -n 's/^bands=//p' stream_sim.txt) bands" stream.out; then
+  ok
+else
+  bad "streamed send ($rc): $(cat stream.out)"
+fi
+# 5. Plot and re-plot with damaged frames on the way (a new connection: `send` reconnects if
 #    QEMU still holds the last one).
 "$tool" send plot.job --port "$work/link.sock" --replot 120 --corrupt-every 5 \
   --truncate-every 11 --seed 7 --test-exit > send.out 2>&1
@@ -77,8 +91,9 @@ grep '^fw ' fw.out
 echo "controller session: $((SECONDS - start)) s"
 
 awk '/^haloplot-trace 1$/ { k++; on = 1 } on { print > ("fw_" k ".trace") } /^end / { on = 0 }' fw.out
-# Traces 1 and 2 are the stopped plots; 3 the solid; 4 and 5 the plot and the re-plot.
-for pair in "3 host_solid" "4 host_plot" "5 host_replot"; do
+# Traces 1 and 2 are the stopped plots; 3 the solid; 4 the streamed one; 5 and 6 the plot and
+# the re-plot.
+for pair in "3 host_solid" "4 host_stream" "5 host_plot" "6 host_replot"; do
   set -- $pair
   if [ -s "fw_$1.trace" ] && cmp -s "fw_$1.trace" "$2.trace"; then
     ok
