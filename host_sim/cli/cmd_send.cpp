@@ -55,12 +55,12 @@ int cmd_send(int argc, char** argv) {
   const Options o = parse_options(argc, argv, 2,
                                   {"--port", "--replot", "--corrupt-every", "--truncate-every",
                                    "--seed", "--stop-after", "--stop"},
-                                  {"--test-exit"});
+                                  {"--test-exit", "--trace-digest"});
   if (!o.error.empty()) return send_fail(o.error);
   if (o.positional.size() != 1 || o.get("--port").empty())
     return send_fail(
         "usage: haloplot send JOB.job --port PATH [--replot W] [--corrupt-every K] "
-        "[--truncate-every K] [--test-exit]");
+        "[--truncate-every K] [--test-exit] [--trace-digest]");
   JobFile jf;
   InputError ie = read_job_file(o.positional[0], &jf);
   if (ie.failed()) return send_fail(ie.message());
@@ -145,6 +145,9 @@ int cmd_send(int argc, char** argv) {
   };
   StatusReport r;
   if (int e = link_or_status(client.sync(), "sync")) return e;
+  if (o.has("--trace-digest")) {  // test images: the controller sums its traces (0x7D)
+    if (int e = link_or_status(client.request(FrameType(0x7D), {}, &s), "trace-digest")) return e;
+  }
   if (jf.arena > 0) {
     if (int e = link_or_status(client.stream(jf.spec, plan, jf.arena, &s), "stream")) return e;
     std::cout << "streamed " << plan.bands.size() << " bands, margin " << plan.margin << "\n";

@@ -162,7 +162,7 @@ bool JobClient::stream(const JobSpec& spec, const BandPlan& plan, uint32_t arena
         *status = r.last_error == Status::kOk ? Status::kAborted : r.last_error;
         return true;
       }
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
     if (!ok(*status)) return true;
     std::vector<uint8_t> records(band.edges.size() * kBandEdgeRecordBytes);
