@@ -21,7 +21,8 @@
 //   pen-travel-ticks 150000   pen-settle-ticks 50000   backlash 0 0
 //   steps-per-mm 80           for the G-code and HPGL exporters
 //   arena 65536               plot in bands in a job arena of this many bytes, as a controller
-//                             with that arena does (haloed and all; default: one band)
+//                             with that arena does (haloed and all; default: one band); `send`
+//                             then streams the scene band by band
 #pragma once
 #include <map>
 #include <string>
