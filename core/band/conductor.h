@@ -206,4 +206,16 @@ class BandConductor {
   BandStats stats_{};
 };
 
+// Every band, without motion (the host's dry run of a streamed plot, `plot --arena`): next()
+// until the plot is done, the points dropped.
+inline Status run_all_bands(BandConductor& conductor) {
+  Status s = Status::kOk;
+  while (ok(s) && !conductor.done()) {
+    const PathPoint* points = nullptr;
+    uint32_t n = 0;
+    s = conductor.next(&points, &n);
+  }
+  return s;
+}
+
 }  // namespace haloplot

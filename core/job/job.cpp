@@ -44,6 +44,16 @@ void size_path_stages(uint64_t spans, JobBytes* b) {
 
 }  // namespace
 
+BandSpec band_spec(const JobSpec& spec) {
+  BandSpec bs;
+  bs.haloed = spec.drawing == DrawingEffect::kHaloed;
+  bs.draw = spec.draw;
+  bs.cut = spec.cut;
+  bs.start_x = spec.start_x;
+  bs.start_y = spec.start_y;
+  return bs;
+}
+
 Status job_bytes(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
                  JobBytes* bytes) {
   if (needs_faces(spec.drawing)) return Status::kBadParameter;

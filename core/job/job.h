@@ -6,6 +6,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "band/conductor.h"
 #include "cut/cut.h"
 #include "draw/draw.h"
 #include "motion/machine.h"
@@ -74,6 +75,9 @@ struct PreparedJob {
   CutSet cutset;   // valid when CUT ran: DRAW can rerun from it with another halo width
   PointFeed feed;  // set: the points come band by band from this feed (a streamed plot)
 };
+
+// The band conductor's settings for an edge drawing of this job (kHaloed, or kAllEdges).
+BandSpec band_spec(const JobSpec& spec);
 
 // Bytes the job needs for these edges when CUT may store up to `crossing_capacity` records.
 // CUT's plan is computed here (O(N)); kCrossingCapacity from job_prepare() says how many

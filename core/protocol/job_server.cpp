@@ -409,17 +409,11 @@ void JobServer::release_band(void* ctx) {
 Status JobServer::plot_streamed() {
   if (spec_.drawing != DrawingEffect::kHaloed && spec_.drawing != DrawingEffect::kAllEdges)
     return Status::kUnsupported;
-  BandSpec bs;
-  bs.haloed = spec_.drawing == DrawingEffect::kHaloed;
-  bs.draw = spec_.draw;
-  bs.cut = spec_.cut;
-  bs.start_x = spec_.start_x;
-  bs.start_y = spec_.start_y;
   BandStream stream;
   stream.ctx = this;
   stream.next = &JobServer::next_band;
   stream.release = &JobServer::release_band;
-  const Status s = conductor_.begin_streamed(bs, stream_.margin, stream, arena_,
+  const Status s = conductor_.begin_streamed(band_spec(spec_), stream_.margin, stream, arena_,
                                              stream_.arena_bytes & ~uint32_t{7});
   if (!ok(s)) return s;
   job_ = PreparedJob{};

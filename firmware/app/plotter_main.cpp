@@ -22,7 +22,7 @@
 
 #ifdef HALOPLOT_FW_TEST_HOOKS
 #include "platform/semihosting.h"
-#include "protocol/crc32.h"
+#include "platform/trace_digest.h"
 #endif
 
 using namespace haloplot;
@@ -65,17 +65,8 @@ constexpr uint64_t kIdleTicks = 168000;
 Console console;
 void stat(const char* key, uint64_t value) { console.stat(key, value); }
 
-struct TraceDigest {
-  bool on = false;
-  uint32_t crc = 0;
-  uint64_t bytes = 0;
-  static void write(void* ctx, const char* text, uint32_t n) {
-    auto* self = static_cast<TraceDigest*>(ctx);
-    self->crc = crc32_update(self->crc, reinterpret_cast<const uint8_t*>(text), n);
-    self->bytes += n;
-  }
-};
 TraceDigest digest;
+bool digesting = false;
 #endif
 
 }  // namespace
@@ -104,8 +95,8 @@ int main() {
                                return Status::kOk;
                              }
                              if (f.type == kTestDigestType) {
-                               digest.on = true;
-                               motion.set_trace(CharSink{&TraceDigest::write, &digest});
+                               digesting = true;
+                               motion.set_trace(digest.sink());
                                return Status::kOk;
                              }
                              if (f.type != kTestExitType) return Status::kMalformedRequest;
@@ -147,7 +138,7 @@ int main() {
     __asm__ volatile("cpsie i" ::: "memory");
 #ifdef HALOPLOT_FW_TEST_HOOKS
     if (!motion.running()) console.flush();  // each plot's trace whole, before the next
-    if (!motion.running() && digest.on && digest.bytes > 0) {
+    if (!motion.running() && digesting && digest.bytes > 0) {
       stat("trace_crc32", digest.crc);
       stat("trace_bytes", digest.bytes);
       console.flush();

@@ -13,7 +13,7 @@
 #include "platform/console.h"
 #include "platform/instruction_counter.h"
 #include "platform/semihosting.h"
-#include "protocol/crc32.h"
+#include "platform/trace_digest.h"
 #include "scene/cube_array.h"
 #include "selftest_support.h"
 #include "trace/trace_encoder.h"
@@ -31,17 +31,6 @@ Console console;
 CubeArrayEdges cubes;
 
 [[noreturn]] void fail(const char* what, Status s) { selftest_fail(console, what, s); }
-
-// The trace's bytes, summed up instead of sent.
-struct TraceDigest {
-  uint32_t crc = 0;
-  uint64_t bytes = 0;
-  static void write(void* ctx, const char* text, uint32_t n) {
-    auto* self = static_cast<TraceDigest*>(ctx);
-    self->crc = crc32_update(self->crc, reinterpret_cast<const uint8_t*>(text), n);
-    self->bytes += n;
-  }
-};
 
 SegmentQueue<64> queue;
 
@@ -80,7 +69,7 @@ int main() {
   s = prep.init(machine, effects);
   if (!ok(s)) fail("prep", s);
   TraceDigest digest;
-  TraceEncoder trace(CharSink{&TraceDigest::write, &digest}, machine);
+  TraceEncoder trace(digest.sink(), machine);
   TraceHal hal;
   hal.trace = &trace;
   StepEngine<TraceHal, SegmentQueue<64>> engine(hal, queue);

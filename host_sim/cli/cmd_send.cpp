@@ -98,13 +98,7 @@ int cmd_send(int argc, char** argv) {
   BandPlan plan;
   if (jf.arena > 0) {
     if (obj) return send_fail(o.positional[0] + ": 'arena' streams .edges scenes only");
-    BandSpec bs;
-    bs.haloed = jf.spec.drawing == DrawingEffect::kHaloed;
-    bs.draw = jf.spec.draw;
-    bs.cut = jf.spec.cut;
-    bs.start_x = jf.spec.start_x;
-    bs.start_y = jf.spec.start_y;
-    const Status ps = plan_streamed_bands(edges, bs, jf.arena, &plan);
+    const Status ps = plan_streamed_bands(edges, band_spec(jf.spec), jf.arena, &plan);
     if (!ok(ps))
       return send_fail(
           o.positional[0] + ": planning the bands: " + status_name(ps) +

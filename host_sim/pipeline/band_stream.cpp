@@ -20,13 +20,9 @@ Status plan_streamed_bands(const std::vector<Edge3>& edges, const BandSpec& spec
   conductor.set_observer(observer);
   Status s = conductor.begin(spec, array_edge_source(edges.data(), uint32_t(edges.size())),
                              arena.data(), arena.size() * 8);
-  while (ok(s) && !conductor.done()) {
-    const PathPoint* points = nullptr;
-    uint32_t n = 0;
-    s = conductor.next(&points, &n);
-  }
+  if (ok(s)) s = run_all_bands(conductor);
+  out->stats = conductor.stats();  // with the bytes a band asked for, when one did not fit
   if (!ok(s)) return s;
-  out->stats = conductor.stats();
   out->margin = out->stats.margin;
   // What each band gathers: the conductor's own rule (band_rule.h), in scene order.
   for (PlannedBand& b : out->bands) {

@@ -79,11 +79,7 @@ Status host_banded_draw(const std::vector<Edge3>& edges, const CutParams& cut,
   const auto t0 = std::chrono::steady_clock::now();
   Status s = conductor.begin(spec, array_edge_source(edges.data(), uint32_t(edges.size())),
                              arena.data(), arena.size() * 8);
-  while (ok(s) && !conductor.done()) {
-    const PathPoint* points = nullptr;
-    uint32_t n = 0;
-    s = conductor.next(&points, &n);
-  }
+  if (ok(s)) s = run_all_bands(conductor);
   out->draw_ms = ms_since(t0);
   *bands = conductor.stats();
   out->scratch_bytes = bands->peak_bytes;

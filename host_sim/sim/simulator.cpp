@@ -81,16 +81,6 @@ struct BandFeed {
   }
 };
 
-BandSpec band_spec(const JobSpec& spec) {
-  BandSpec bs;
-  bs.haloed = spec.drawing == DrawingEffect::kHaloed;
-  bs.draw = spec.draw;
-  bs.cut = spec.cut;
-  bs.start_x = spec.start_x;
-  bs.start_y = spec.start_y;
-  return bs;
-}
-
 // The motion of the plot: from r->points, then (with a conductor) from its bands.
 Status run_motion(const JobSpec& spec, BandConductor* conductor, std::ostream* trace,
                   SimReport* r) {

@@ -13,23 +13,22 @@ qemu "$fw/fw_band_selftest.elf" > "$work/fw.out"
 rc=$?
 if [ "$rc" -eq 0 ]; then ok; else bad "band self-test exit status $rc: $(grep FAILED "$work/fw.out")"; fi
 grep '^fw ' "$work/fw.out"
-stat() { sed -n "s/^fw $1=//p" "$work/fw.out"; }
+fwstat() { sed -n "s/^fw $1=//p" "$work/fw.out"; }
 
 cd "$work"
 "$tool" demo-scene -o demo.edges
 sed -e 's|^scene .*|scene demo.edges|' "$src/scenes/demo.job" > demo.job
 echo "arena 65536" >> demo.job
 "$tool" sim demo.job -o host.trace --stats 2> host.stats
-read -r host_crc host_len < <(gzip -c host.trace | tail -c 8 | od -An -tu4)
-host_bytes=$(wc -c < host.trace)
-if [ -n "$(stat trace_crc32)" ] && [ "$(stat trace_crc32)" = "$host_crc" ] &&
-   [ "$(stat trace_bytes)" = "$host_bytes" ]; then
+host=$(trace_digest host.trace)
+rm -f host.trace
+if same_digest "$work/fw.out" "$host"; then
   ok
-  echo "traces identical: $host_bytes bytes, CRC-32 $host_crc"
+  echo "traces identical (CRC-32 and bytes): $host"
 else
-  bad "firmware trace (CRC $(stat trace_crc32), $(stat trace_bytes) bytes) differs from haloplot sim (CRC $host_crc, $host_bytes bytes)"
+  bad "firmware trace ($(grep '^fw trace_' "$work/fw.out" | tr '\n' ' ')) differs from haloplot sim ($host)"
 fi
 host_bands=$(sed -n 's/^bands=//p' host.stats)
-if [ "$(stat bands)" = "$host_bands" ] && [ "${host_bands:-0}" -gt 1 ]; then ok; else bad "bands: firmware $(stat bands), host $host_bands"; fi
-if [ -n "$(stat peak_bytes)" ] && [ "$(stat peak_bytes)" -le 65536 ]; then ok; else bad "peak $(stat peak_bytes) bytes beyond the 64 KB arena"; fi
+if [ "$(fwstat bands)" = "$host_bands" ] && [ "${host_bands:-0}" -gt 1 ]; then ok; else bad "bands: firmware $(fwstat bands), host $host_bands"; fi
+if [ -n "$(fwstat peak_bytes)" ] && [ "$(fwstat peak_bytes)" -le 65536 ]; then ok; else bad "peak $(fwstat peak_bytes) bytes beyond the 64 KB arena"; fi
 finish

@@ -16,6 +16,30 @@ qemu() {
   timeout 600 qemu-system-arm -M netduinoplus2 -nographic -monitor none -serial none \
     -semihosting-config enable=on,target=native -icount shift=0,align=off,sleep=off -kernel "$1"
 }
+# The controller image with USART1 on a Unix socket ($work/link.sock), in the background:
+# its semihosting output in $work/fw.out, its pid in qemu_pid. Usage: qemu_linked SECONDS IMAGE
+qemu_linked() {
+  timeout "$1" qemu-system-arm -M netduinoplus2 -nographic -monitor none \
+    -chardev socket,id=link,path="$work/link.sock",server=on,wait=off -serial chardev:link \
+    -semihosting-config enable=on,target=native -icount shift=0,align=off,sleep=off \
+    -kernel "$2" > "$work/fw.out" 2> "$work/qemu.err" &
+  qemu_pid=$!
+}
+# A trace file's CRC-32 and length (gzip's trailer holds the CRC-32 of what it compressed),
+# as a test image prints them for its own trace: "CRC BYTES".
+trace_digest() {
+  local crc _
+  read -r crc _ < <(gzip -c "$1" | tail -c 8 | od -An -tu4)
+  echo "$crc $(wc -c < "$1")"
+}
+# Is the image's trace (its "fw trace_crc32=" and "fw trace_bytes=" lines in FILE) the one
+# of the host's trace? Usage: same_digest FW_OUT "CRC BYTES"
+same_digest() {
+  local crc bytes
+  crc=$(sed -n 's/^fw trace_crc32=//p' "$1")
+  bytes=$(sed -n 's/^fw trace_bytes=//p' "$1")
+  [ -n "$crc" ] && [ "$crc $bytes" = "$2" ]
+}
 finish() {
   echo "$test_name: $pass passed, $fail failed"
   [ "$fail" -eq 0 ]

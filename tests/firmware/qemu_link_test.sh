@@ -38,11 +38,7 @@ printf 'scene cubes.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on
 { cat plot.job; echo "arena 2048"; } > stream.job
 "$tool" sim stream.job -o host_stream.trace --stats 2> stream_sim.txt
 
-timeout 600 qemu-system-arm -M netduinoplus2 -nographic -monitor none \
-  -chardev socket,id=link,path="$work/link.sock",server=on,wait=off -serial chardev:link \
-  -semihosting-config enable=on,target=native -icount shift=0,align=off,sleep=off \
-  -kernel "$fw/fw_plotter_qemu.elf" > fw.out 2> qemu.err &
-qemu_pid=$!
+qemu_linked 600 "$fw/fw_plotter_qemu.elf"
 
 # 1. Too large: refused by name (the controller keeps serving).
 start=$SECONDS

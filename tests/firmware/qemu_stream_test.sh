@@ -15,15 +15,10 @@ cd "$work"
 sed -e 's|^scene .*|scene demo.edges|' "$src/scenes/demo.job" > demo.job
 echo "arena 65536" >> demo.job
 "$tool" sim demo.job -o host.trace --stats 2> host.stats
-read -r host_crc host_len < <(gzip -c host.trace | tail -c 8 | od -An -tu4)
-host_bytes=$(wc -c < host.trace)
+host=$(trace_digest host.trace)
 rm -f host.trace
 
-timeout 1500 qemu-system-arm -M netduinoplus2 -nographic -monitor none \
-  -chardev socket,id=link,path="$work/link.sock",server=on,wait=off -serial chardev:link \
-  -semihosting-config enable=on,target=native -icount shift=0,align=off,sleep=off \
-  -kernel "$fw/fw_plotter_qemu.elf" > fw.out 2> qemu.err &
-qemu_pid=$!
+qemu_linked 1500 "$fw/fw_plotter_qemu.elf"
 start=$SECONDS
 "$tool" send demo.job --port "$work/link.sock" --trace-digest --test-exit > send.out 2>&1
 rc=$?
@@ -34,13 +29,11 @@ rc=$?
 if [ "$rc" -eq 0 ]; then ok; else bad "controller exit status $rc: $(cat qemu.err)"; fi
 grep '^fw ' fw.out
 echo "controller session: $((SECONDS - start)) s"
-fw() { sed -n "s/^fw $1=//p" fw.out; }
-if [ -n "$(fw trace_crc32)" ] && [ "$(fw trace_crc32)" = "$host_crc" ] &&
-   [ "$(fw trace_bytes)" = "$host_bytes" ]; then
+if same_digest fw.out "$host"; then
   ok
-  echo "traces identical: $host_bytes bytes, CRC-32 $host_crc"
+  echo "traces identical (CRC-32 and bytes): $host"
 else
-  bad "controller trace (CRC $(fw trace_crc32), $(fw trace_bytes) bytes) differs from haloplot sim (CRC $host_crc, $host_bytes bytes)"
+  bad "controller trace ($(grep '^fw trace_' fw.out | tr '\n' ' ')) differs from haloplot sim ($host)"
 fi
 bands=$(sed -n 's/^bands=//p' host.stats)
 if [ "${bands:-0}" -gt 1 ] && grep -q "^streamed $bands bands" send.out; then
