@@ -145,7 +145,7 @@ Status BandConductor::begin(const BandSpec& spec, EdgeSource source, void* arena
   row_lo_ = lo;
   row_hi_ = hi;
   next_row_ = lo;
-  height_ = int64_t{hi} - lo + 1;  // first try: the whole scene in one band
+  height_ = int64_t{hi} - lo + 1;  // the first attempt: the whole scene in one band
   done_ = false;
   return Status::kOk;
 }

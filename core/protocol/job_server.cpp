@@ -327,7 +327,7 @@ void JobServer::service() {
   const Status s = motion_.result(motion_.ctx);
   if (!ok(s)) last_error_ = s;
   state_ = ServerState::kReady;
-  if (streamed_) {  // the bands are gone with the plot: a new stream or upload comes next
+  if (streamed_) {  // the bands are gone with the plot: another stream or upload comes next
     cut_runs_ += uint32_t(conductor_.stats().cut_runs);
     draw_runs_ += uint32_t(conductor_.stats().draw_runs);
     streamed_ = false;

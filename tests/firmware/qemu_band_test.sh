@@ -7,7 +7,6 @@
 #   - it drew in more than one band (the scene does not fit the arena whole).
 # Usage: qemu_band_test.sh FIRMWARE_DIR HALOPLOT_TOOL
 source "$(dirname "$0")/qemu_common.sh" firmware_bands "$1" "$2" fw_band_selftest.elf
-src=$(cd "$(dirname "$0")/../.." && pwd)
 
 qemu "$fw/fw_band_selftest.elf" > "$work/fw.out"
 rc=$?
@@ -16,12 +15,7 @@ grep '^fw ' "$work/fw.out"
 fwstat() { sed -n "s/^fw $1=//p" "$work/fw.out"; }
 
 cd "$work"
-"$tool" demo-scene -o demo.edges
-sed -e 's|^scene .*|scene demo.edges|' "$src/scenes/demo.job" > demo.job
-echo "arena 65536" >> demo.job
-"$tool" sim demo.job -o host.trace --stats 2> host.stats
-host=$(trace_digest host.trace)
-rm -f host.trace
+host=$(demo_job_digest 65536)
 if same_digest "$work/fw.out" "$host"; then
   ok
   echo "traces identical (CRC-32 and bytes): $host"

@@ -3,6 +3,7 @@
 # Usage in a test: source qemu_common.sh TEST_NAME FIRMWARE_DIR HALOPLOT_TOOL IMAGE...
 set -u
 test_name="$1"
+repo_root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)  # before any test changes folder
 fw="$2"
 tool="$3"
 shift 3
@@ -39,6 +40,16 @@ same_digest() {
   crc=$(sed -n 's/^fw trace_crc32=//p' "$1")
   bytes=$(sed -n 's/^fw trace_bytes=//p' "$1")
   [ -n "$crc" ] && [ "$crc $bytes" = "$2" ]
+}
+# The README's demo job (scenes/demo.job) on the demo scene with `arena ARENA`, in $work, and
+# `haloplot sim` of it: prints the digest of the host's trace; its --stats in $work/host.stats.
+demo_job_digest() {
+  "$tool" demo-scene -o "$work/demo.edges"
+  sed -e 's|^scene .*|scene demo.edges|' "$repo_root/scenes/demo.job" > "$work/demo.job"
+  echo "arena $1" >> "$work/demo.job"
+  "$tool" sim "$work/demo.job" -o "$work/host.trace" --stats 2> "$work/host.stats"
+  trace_digest "$work/host.trace"
+  rm -f "$work/host.trace"
 }
 finish() {
   echo "$test_name: $pass passed, $fail failed"

@@ -8,15 +8,9 @@
 # Slow under QEMU (4 million step interrupts: several minutes), so the sanitizer build skips it.
 # Usage: qemu_stream_test.sh FIRMWARE_DIR HALOPLOT_TOOL
 source "$(dirname "$0")/qemu_common.sh" firmware_stream "$1" "$2" fw_plotter_qemu.elf
-src=$(cd "$(dirname "$0")/../.." && pwd)
 
 cd "$work"
-"$tool" demo-scene -o demo.edges
-sed -e 's|^scene .*|scene demo.edges|' "$src/scenes/demo.job" > demo.job
-echo "arena 65536" >> demo.job
-"$tool" sim demo.job -o host.trace --stats 2> host.stats
-host=$(trace_digest host.trace)
-rm -f host.trace
+host=$(demo_job_digest 65536)
 
 qemu_linked 1500 "$fw/fw_plotter_qemu.elf"
 start=$SECONDS
