@@ -51,6 +51,17 @@ demo_job_digest() {
   trace_digest "$work/host.trace"
   rm -f "$work/host.trace"
 }
+# After the session's last `send` (its exit status rc, its output in send.out, in $work): the
+# send and the controller image must both end well; prints the image's counters.
+end_session() {
+  cat "$work/send.out"
+  if [ "$1" -eq 0 ]; then ok; else bad "send failed ($1)"; kill "$qemu_pid"; fi
+  wait "$qemu_pid"
+  local code=$?
+  if [ "$code" -eq 0 ]; then ok; else bad "controller exit status $code: $(cat "$work/qemu.err")"; fi
+  grep '^fw ' "$work/fw.out"
+  echo "controller session: $((SECONDS - start)) s"
+}
 finish() {
   echo "$test_name: $pass passed, $fail failed"
   [ "$fail" -eq 0 ]

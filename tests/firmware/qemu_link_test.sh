@@ -77,14 +77,7 @@ fi
 #    QEMU still holds the last one).
 "$tool" send plot.job --port "$work/link.sock" --replot 120 --corrupt-every 5 \
   --truncate-every 11 --seed 7 --test-exit > send.out 2>&1
-rc=$?
-cat send.out
-if [ "$rc" -eq 0 ]; then ok; else bad "send failed ($rc)"; kill "$qemu_pid"; fi
-wait "$qemu_pid"
-rc=$?
-if [ "$rc" -eq 0 ]; then ok; else bad "controller exit status $rc: $(cat qemu.err)"; fi
-grep '^fw ' fw.out
-echo "controller session: $((SECONDS - start)) s"
+end_session $?
 
 awk '/^haloplot-trace 1$/ { k++; on = 1 } on { print > ("fw_" k ".trace") } /^end / { on = 0 }' fw.out
 # Traces 1 and 2 are the stopped plots; 3 the solid; 4 the streamed one; 5 and 6 the plot and

@@ -15,14 +15,7 @@ host=$(demo_job_digest 65536)
 qemu_linked 1500 "$fw/fw_plotter_qemu.elf"
 start=$SECONDS
 "$tool" send demo.job --port "$work/link.sock" --trace-digest --test-exit > send.out 2>&1
-rc=$?
-cat send.out
-if [ "$rc" -eq 0 ]; then ok; else bad "send failed ($rc)"; kill "$qemu_pid"; fi
-wait "$qemu_pid"
-rc=$?
-if [ "$rc" -eq 0 ]; then ok; else bad "controller exit status $rc: $(cat qemu.err)"; fi
-grep '^fw ' fw.out
-echo "controller session: $((SECONDS - start)) s"
+end_session $?
 if same_digest fw.out "$host"; then
   ok
   echo "traces identical (CRC-32 and bytes): $host"
