@@ -3,6 +3,7 @@
 #include "cut/near_miss.h"
 #include "geometry/fraction.h"
 #include "geometry/predicates.h"
+#include "memory/carve.h"
 #include "sort/in_place_sort.h"
 
 namespace haloplot {
@@ -19,8 +20,6 @@ uint32_t cutset_capacity(uint32_t n_edges, size_t bytes) {
 }
 
 namespace {
-
-size_t align8(size_t v) { return (v + 7) & ~size_t{7}; }
 
 // What a cell list holds per (cell, edge) pair: the edge's index, or a compact copy of its
 // projected endpoints with the index (CutParams::compact_cells). Both read like an edge.
@@ -48,7 +47,7 @@ size_t entry_bytes(const CutParams& p) {
 // Scratch layout: cell_start[cells + 1], then the cell lists (cell_pairs entries). After the
 // cell loop the same bytes hold next[n_edges] for grouping, so the scratch is the larger.
 size_t scratch_for(uint32_t cells, uint32_t cell_pairs, uint32_t n_edges, size_t entry) {
-  const size_t grid_part = align8((size_t{cells} + 1) * 4) + size_t{cell_pairs} * entry;
+  const size_t grid_part = carve_round((size_t{cells} + 1) * 4) + size_t{cell_pairs} * entry;
   const size_t group_part = size_t{n_edges} * 4;
   return grid_part > group_part ? grid_part : group_part;
 }
@@ -279,6 +278,25 @@ Status run_cut(const CutPlan& plan, const Edge3* edges, void* scratch, size_t sc
   out->reach = plan.params.reach;
   if (stats) *stats = st;
   return Status::kOk;
+}
+
+size_t CutStage::bytes(const StageNeeds& needs) const {
+  return carve_round(cutset_bytes(plan->n_edges, needs.crossings)) +
+         carve_round(plan->scratch_bytes);
+}
+
+Status CutStage::run(const StageNeeds& needs, void* buffer, size_t bytes, StageNeeds* want) {
+  const size_t cutset = carve_round(cutset_bytes(plan->n_edges, needs.crossings));
+  const size_t scratch = carve_round(plan->scratch_bytes);
+  if (bytes < cutset + scratch) {
+    want->bytes = cutset + scratch;
+    return Status::kWorkspaceTooSmall;
+  }
+  uint8_t* base = static_cast<uint8_t*>(buffer);
+  const Status s = run_cut(*plan, edges, base + cutset, bytes - cutset, base, cutset, out, stats);
+  if (s == Status::kCrossingCapacity)
+    want->crossings = need_count(stats->crossings + stats->near_misses);
+  return s;
 }
 
 }  // namespace haloplot

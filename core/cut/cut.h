@@ -11,6 +11,7 @@
 
 #include "cut/cutset.h"
 #include "cut/grid.h"
+#include "memory/sized_stage.h"
 #include "status/status.h"
 
 namespace haloplot {
@@ -62,5 +63,16 @@ Status plan_cut(const Edge3* edges, uint32_t n, const CutParams& params, CutPlan
 // retry needs; the CUTSET is left empty (never half-filled).
 Status run_cut(const CutPlan& plan, const Edge3* edges, void* scratch, size_t scratch_bytes,
                void* cutset_storage, size_t cutset_storage_bytes, CutSet* out, CutStats* stats);
+
+// CUT as a sized stage (memory/sized_stage.h): the CUTSET with needs.crossings records at the
+// buffer's start (it outlives CUT), the scratch after it.
+struct CutStage {
+  const CutPlan* plan;
+  const Edge3* edges;
+  CutSet* out;
+  CutStats* stats;
+  size_t bytes(const StageNeeds& needs) const;
+  Status run(const StageNeeds& needs, void* buffer, size_t bytes, StageNeeds* want);
+};
 
 }  // namespace haloplot

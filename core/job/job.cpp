@@ -1,12 +1,11 @@
 #include "job/job.h"
 
+#include "memory/carve.h"
 #include "solid/modes.h"
 #include "surface/hidden_surface.h"
 
 namespace haloplot {
 namespace {
-
-size_t align8(size_t v) { return (v + 7) & ~size_t{7}; }
 
 bool needs_faces(DrawingEffect d) {
   return d != DrawingEffect::kAllEdges && d != DrawingEffect::kHaloed;
@@ -37,9 +36,9 @@ size_t peak_of(const JobBytes& b) {
 
 // Span and path bytes for at most `spans` spans.
 void size_path_stages(uint64_t spans, JobBytes* b) {
-  b->spans = align8(size_t(spans) * sizeof(Segment2));
-  b->path = align8(path_plan_bytes(uint32_t(spans)));
-  b->points = align8(size_t{path_points_max(uint32_t(spans))} * sizeof(PathPoint));
+  b->spans = carve_round(size_t(spans) * sizeof(Segment2));
+  b->path = carve_round(path_plan_bytes(uint32_t(spans)));
+  b->points = carve_round(size_t{path_points_max(uint32_t(spans))} * sizeof(PathPoint));
 }
 
 }  // namespace
@@ -63,10 +62,10 @@ Status job_bytes(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t c
     CutPlan plan;
     const Status s = plan_cut(edges, n, spec.cut, &plan);
     if (!ok(s)) return s;
-    b.cut_scratch = align8(plan.scratch_bytes);
-    b.cutset = align8(cutset_bytes(n, crossing_capacity));
+    b.cut_scratch = carve_round(plan.scratch_bytes);
+    b.cutset = carve_round(cutset_bytes(n, crossing_capacity));
     // DRAW's scratch is one Gap per record of the busiest edge: at most all records.
-    b.draw_scratch = align8(size_t{crossing_capacity} * sizeof(Gap));
+    b.draw_scratch = carve_round(size_t{crossing_capacity} * sizeof(Gap));
     max_spans += crossing_capacity;  // each gap splits an edge at most once more
   } else {
     for (uint32_t i = 0; i < n; ++i)
@@ -109,8 +108,8 @@ Status plan_stage(const JobSpec& spec, uint8_t* base, size_t spans_offset, size_
 Status draw_stage(const JobSpec& spec, uint32_t n, size_t cutset_size, uint8_t* base,
                   size_t buffer_bytes, PreparedJob* job, JobCounters* c) {
   const uint64_t span_bound = uint64_t{n} + job->cutset.n_crossings;
-  const size_t spans_size = align8(size_t(span_bound) * sizeof(Segment2));
-  const size_t draw_size = align8(draw_scratch_bytes(job->cutset));
+  const size_t spans_size = carve_round(size_t(span_bound) * sizeof(Segment2));
+  const size_t draw_size = carve_round(draw_scratch_bytes(job->cutset));
   if (buffer_bytes < cutset_size + spans_size + draw_size) return Status::kWorkspaceTooSmall;
   SpanCollector collect{reinterpret_cast<Segment2*>(base + cutset_size), uint32_t(span_bound), 0};
   ++c->draw_runs;
@@ -135,8 +134,8 @@ Status job_prepare(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t
     CutPlan plan;
     s = plan_cut(edges, n, spec.cut, &plan);
     if (!ok(s)) return s;
-    const size_t cutset_size = align8(cutset_bytes(n, crossing_capacity));
-    const size_t scratch = align8(plan.scratch_bytes);
+    const size_t cutset_size = carve_round(cutset_bytes(n, crossing_capacity));
+    const size_t scratch = carve_round(plan.scratch_bytes);
     if (buffer_bytes < cutset_size + scratch) return Status::kWorkspaceTooSmall;
     ++c.cut_runs;
     s = run_cut(plan, edges, base + cutset_size, scratch, base, cutset_size, &job.cutset, &c.cut);
@@ -144,7 +143,7 @@ Status job_prepare(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t
   } else {
     for (uint32_t i = 0; i < n; ++i)
       if (!in_range(edges[i])) return Status::kCoordinateOutOfRange;
-    const size_t spans_size = align8(size_t{n} * sizeof(Segment2));
+    const size_t spans_size = carve_round(size_t{n} * sizeof(Segment2));
     if (buffer_bytes < spans_size) return Status::kWorkspaceTooSmall;
     SpanCollector collect{reinterpret_cast<Segment2*>(base), n, 0};
     for (uint32_t i = 0; i < n; ++i)
@@ -167,8 +166,8 @@ Status job_redraw(const JobSpec& spec, uint32_t n, uint32_t crossing_capacity, v
   JobCounters c;
   PreparedJob next;
   next.cutset = job->cutset;
-  s = draw_stage(spec, n, align8(cutset_bytes(n, crossing_capacity)), static_cast<uint8_t*>(buffer),
-                 buffer_bytes, &next, &c);
+  s = draw_stage(spec, n, carve_round(cutset_bytes(n, crossing_capacity)),
+                 static_cast<uint8_t*>(buffer), buffer_bytes, &next, &c);
   if (counters) *counters = c;
   if (!ok(s)) return s;
   *job = next;
@@ -223,9 +222,9 @@ struct HatchWriter {
 };
 
 // Franklin's hidden surfaces, hatched, into the strokes: [edges | outlines] becomes
-// [edges | hatching | outlines]. Two runs: the first counts the strokes (its workspace after
-// the strokes so far), the second writes them once the outlines have moved up to make room.
-// Capacities grow on the counts a short run reports, as the host's retries do.
+// [edges | hatching | outlines]. Two sized runs in the buffer's free tail: the first counts the
+// strokes (its workspace after the strokes so far), the second writes them once the outlines
+// have moved up to make room.
 Status add_hatching(const HiddenJob& h, const SolidInput& in, uint32_t crossings,
                     uint32_t incidences, uint8_t* base, size_t bytes, uint32_t edges,
                     uint32_t* count) {
@@ -234,26 +233,30 @@ Status add_hatching(const HiddenJob& h, const SolidInput& in, uint32_t crossings
   hp.angle_mdeg = h.hatch_angle_mdeg;
   hp.mdeg_per_depth = h.hatch_mdeg_per_depth;
   Segment2* strokes = reinterpret_cast<Segment2*>(base);
-  HiddenSurfaceCapacity cap{crossings, incidences, 4 * in.n_edges + 64};
+  StageNeeds needs;
+  needs.crossings = crossings;
+  needs.incidences = incidences;
+  needs.segments = 4 * in.n_edges + 64;
   HatchWriter writer{nullptr, 0};
   HiddenSurfaceStats st;
-  Status s = Status::kOk;
+  HiddenSurfaceStage stage{&in,
+                           FranklinParams{},
+                           hp,
+                           FranklinSink{nullptr, nullptr},
+                           HatchSink{&HatchWriter::emit, &writer},
+                           &st};
+  auto counted = restarting(&stage, [&writer] { writer.count = 0; });
   for (int pass = 0; pass < 2; ++pass) {
     const uint32_t before = *count + (pass == 1 ? writer.count : 0);
-    const size_t used = align8(size_t{before} * sizeof(Segment2));
+    const size_t used = carve_round(size_t{before} * sizeof(Segment2));
     if (used > bytes) return Status::kWorkspaceTooSmall;
     if (pass == 1) {
       const uint32_t hatch = writer.count;
       for (uint32_t i = *count; i > edges; --i) strokes[i - 1 + hatch] = strokes[i - 1];
       writer = HatchWriter{strokes + edges, 0};
     }
-    for (int attempt = 0; attempt < 3; ++attempt) {
-      writer.count = 0;
-      s = hidden_surface(in, FranklinParams{}, hp, cap.crossings, cap.incidences, cap.segments,
-                         base + used, bytes - used, FranklinSink{nullptr, nullptr},
-                         HatchSink{&HatchWriter::emit, &writer}, &st);
-      if (!cap.grow(s, st)) break;
-    }
+    FixedMemory tail{base + used, bytes - used};
+    const Status s = run_sized(counted, tail.memory(), &needs);
     if (s != Status::kOk) return s;
   }
   *count += writer.count;
@@ -310,12 +313,36 @@ Status job_prepare_solid(const JobSpec& spec, const SolidInput& in, uint32_t cro
   }
   SpanCollector spans{front, collect.count, collect.count};
   PreparedJob job;
-  s = plan_stage(spec, base, 0, align8(size_t{collect.count} * sizeof(Segment2)), buffer_bytes,
+  s = plan_stage(spec, base, 0, carve_round(size_t{collect.count} * sizeof(Segment2)), buffer_bytes,
                  spans, &job, &c);
   if (counters) *counters = c;
   if (!ok(s)) return s;
   *out = job;
   return Status::kOk;
+}
+
+size_t EdgeJobStage::bytes(const StageNeeds& needs) {
+  JobBytes b;
+  if (!ok(job_bytes(*spec, edges, n, needs.crossings, &b))) return 0;
+  if (sized != nullptr) *sized = b;
+  return b.total();
+}
+
+Status EdgeJobStage::run(const StageNeeds& needs, void* buffer, size_t bytes, StageNeeds* want) {
+  const Status s = job_prepare(*spec, edges, n, needs.crossings, buffer, bytes, out, counters);
+  cut_runs += counters->cut_runs;
+  draw_runs += counters->draw_runs;
+  if (s == Status::kCrossingCapacity)
+    want->crossings = need_count(counters->cut.crossings + counters->cut.near_misses);
+  return s;
+}
+
+Status SolidJobStage::run(const StageNeeds& needs, void* buffer, size_t bytes, StageNeeds* want) {
+  const Status s = job_prepare_solid(*spec, *in, needs.crossings, needs.incidences, buffer, bytes,
+                                     out, counters, report);
+  cut_runs += counters->cut_runs;
+  hidden_lines_needs(s, *report, bytes, want);
+  return s;
 }
 
 }  // namespace haloplot

@@ -103,4 +103,30 @@ Status job_prepare_solid(const JobSpec& spec, const SolidInput& in, uint32_t cro
 Status job_redraw(const JobSpec& spec, uint32_t n, uint32_t crossing_capacity, void* buffer,
                   size_t buffer_bytes, PreparedJob* job, JobCounters* counters);
 
+// job_prepare() as a sized stage (memory/sized_stage.h): needs.crossings is CUT's record
+// capacity. cut_runs and draw_runs add up over every run.
+struct EdgeJobStage {
+  const JobSpec* spec;
+  const Edge3* edges;
+  uint32_t n;
+  PreparedJob* out;
+  JobCounters* counters;
+  JobBytes* sized;  // may be null: the last query's bytes per stage
+  uint32_t cut_runs = 0, draw_runs = 0;
+  size_t bytes(const StageNeeds& needs);
+  Status run(const StageNeeds& needs, void* buffer, size_t bytes, StageNeeds* want);
+};
+
+// job_prepare_solid() as a sized stage: needs.crossings and .incidences are the capacities.
+struct SolidJobStage {
+  const JobSpec* spec;
+  const SolidInput* in;
+  PreparedJob* out;
+  JobCounters* counters;
+  HiddenReport* report;
+  uint32_t cut_runs = 0;
+  size_t bytes(const StageNeeds&) const { return hidden_lines_first_bytes(*in); }
+  Status run(const StageNeeds& needs, void* buffer, size_t bytes, StageNeeds* want);
+};
+
 }  // namespace haloplot

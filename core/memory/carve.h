@@ -9,12 +9,14 @@ namespace haloplot {
 
 inline size_t carve_round(size_t bytes) { return (bytes + 7) & ~size_t{7}; }
 
-// Counts bytes: call take<T>(n) for each array in the same order the run carves them.
+// Counts bytes: call take<T>(n) for each array in the same order the run carves them. take()
+// returns nullptr like an exhausted Carver, so one template can do the carving for both.
 struct ByteCounter {
   size_t total = 0;
   template <typename T>
-  void take(size_t n) {
+  T* take(size_t n) {
     total += carve_round(n * sizeof(T));
+    return nullptr;
   }
 };
 

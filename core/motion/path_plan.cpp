@@ -1,6 +1,7 @@
 #include "motion/path_plan.h"
 
 #include "geometry/wide.h"
+#include "memory/carve.h"
 #include "sort/in_place_sort.h"
 
 namespace haloplot {
@@ -39,28 +40,32 @@ uint32_t walk(const uint32_t* link, uint32_t start, Visit visit) {
   }
 }
 
-size_t align8(size_t v) { return (v + 7) & ~size_t{7}; }
-
-// Workspace layout. The endpoint sort is dead once the chains exist, so the nearest-
-// neighbour grid (cell starts and items) reuses its bytes.
-struct Layout {
-  size_t link, chains, done, ends, cell_start, cell_items, total;
-  uint32_t cells_cap;
+// The workspace, in carving order (memory/carve.h): the links, the chains, their done flags,
+// then the endpoint sort. The sort is dead once the chains exist, so the nearest-neighbour
+// grid (cell starts and items) is carved from the same place by a second carver. C is a
+// Carver for the run, or a ByteCounter for path_plan_bytes().
+struct Workspace {
+  uint32_t* link;
+  Chain* chains;
+  uint8_t* done;
+  EndKey* ends;
+  uint32_t* cell_start;
+  uint32_t* items;  // 2 * chain + end
 };
 
-Layout layout(uint32_t n) {
-  Layout l;
-  l.cells_cap = n + 1;
-  l.link = 0;
-  l.chains = align8(l.link + size_t{2} * n * 4);
-  l.done = align8(l.chains + size_t{n} * sizeof(Chain));
-  l.ends = align8(l.done + size_t{n});
-  const size_t sort_end = align8(l.ends + size_t{2} * n * sizeof(EndKey));
-  l.cell_start = l.ends;  // overlaps the dead endpoint sort
-  l.cell_items = align8(l.cell_start + (size_t{l.cells_cap} + 1) * 4);
-  const size_t grid_end = align8(l.cell_items + size_t{2} * n * 4);
-  l.total = sort_end > grid_end ? sort_end : grid_end;
-  return l;
+uint32_t cells_cap(uint32_t n) { return n + 1; }
+
+template <typename C>
+Workspace carve_workspace(C* front, C* grid, uint32_t n) {
+  Workspace w;
+  w.link = front->template take<uint32_t>(size_t{2} * n);
+  w.chains = front->template take<Chain>(n);
+  w.done = front->template take<uint8_t>(n);
+  *grid = *front;
+  w.ends = front->template take<EndKey>(size_t{2} * n);
+  w.cell_start = grid->template take<uint32_t>(size_t{cells_cap(n)} + 1);
+  w.items = grid->template take<uint32_t>(size_t{2} * n);
+  return w;
 }
 
 }  // namespace
@@ -69,19 +74,23 @@ uint32_t length_floor(int64_t dx, int64_t dy) {
   return isqrt_u64(static_cast<uint64_t>(dx * dx + dy * dy));
 }
 
-size_t path_plan_bytes(uint32_t n_spans) { return layout(n_spans).total; }
+size_t path_plan_bytes(uint32_t n_spans) {
+  ByteCounter front, grid;
+  carve_workspace(&front, &grid, n_spans);
+  return front.total > grid.total ? front.total : grid.total;
+}
 
 Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t start_y,
                  void* workspace, size_t workspace_bytes, PathPoint* out, uint32_t out_capacity,
                  uint32_t* out_count, PathStats* stats) {
-  const Layout lay = layout(n);
-  if (workspace_bytes < lay.total) return Status::kWorkspaceTooSmall;
+  Carver front(workspace, workspace_bytes), grid = front;
+  const Workspace ws = carve_workspace(&front, &grid, n);
+  if (front.short_ || grid.short_) return Status::kWorkspaceTooSmall;
   if (out_capacity < path_points_max(n)) return Status::kBadParameter;
-  uint8_t* base = static_cast<uint8_t*>(workspace);
-  EndKey* ends = reinterpret_cast<EndKey*>(base + lay.ends);
-  uint32_t* link = reinterpret_cast<uint32_t*>(base + lay.link);
-  Chain* chains = reinterpret_cast<Chain*>(base + lay.chains);
-  uint8_t* done = base + lay.done;
+  EndKey* ends = ws.ends;
+  uint32_t* link = ws.link;
+  Chain* chains = ws.chains;
+  uint8_t* done = ws.done;
   PathStats st;
 
   // Naive pen-up travel: every span on its own, in input order.
@@ -157,10 +166,10 @@ Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t sta
   const uint64_t w = uint64_t(xmax - xmin) + 1, h = uint64_t(ymax - ymin) + 1;
   // Cell side: about one chain end per cell.
   uint32_t side = isqrt_u64(w * h / (2ull * n_chains + 1)) + 1;
-  while ((w / side + 1) * (h / side + 1) > lay.cells_cap) side += side / 8 + 1;
+  while ((w / side + 1) * (h / side + 1) > cells_cap(n)) side += side / 8 + 1;
   const uint32_t gx = uint32_t(w / side + 1), gy = uint32_t(h / side + 1);
-  uint32_t* cell_start = reinterpret_cast<uint32_t*>(base + lay.cell_start);
-  uint32_t* items = reinterpret_cast<uint32_t*>(base + lay.cell_items);  // 2 * chain + end
+  uint32_t* cell_start = ws.cell_start;
+  uint32_t* items = ws.items;
   auto cell_of = [&](int32_t x, int32_t y) {
     return uint32_t(uint64_t(y - ymin) / side) * gx + uint32_t(uint64_t(x - xmin) / side);
   };

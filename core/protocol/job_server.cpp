@@ -1,15 +1,19 @@
 #include "protocol/job_server.h"
 
+#include "memory/carve.h"
+
 namespace haloplot {
 namespace {
 
-size_t align8(size_t v) { return (v + 7) & ~size_t{7}; }
-
 // Scene bytes at the front of the arena, by format (see the layout in job_server.h).
-size_t world_bytes(const UploadBegin& s) { return align8(size_t{s.vertices} * sizeof(Point3)); }
-size_t pair_bytes(const UploadBegin& s) { return align8(size_t{s.edges} * 2 * sizeof(uint32_t)); }
-size_t edge_bytes(const UploadBegin& s) { return align8(size_t{s.edges} * sizeof(Edge3)); }
-size_t face_bytes(const UploadBegin& s) { return align8(size_t{s.faces} * sizeof(Triangle)); }
+size_t world_bytes(const UploadBegin& s) {
+  return carve_round(size_t{s.vertices} * sizeof(Point3));
+}
+size_t pair_bytes(const UploadBegin& s) {
+  return carve_round(size_t{s.edges} * 2 * sizeof(uint32_t));
+}
+size_t edge_bytes(const UploadBegin& s) { return carve_round(size_t{s.edges} * sizeof(Edge3)); }
+size_t face_bytes(const UploadBegin& s) { return carve_round(size_t{s.faces} * sizeof(Triangle)); }
 
 bool hidden_line_drawing(DrawingEffect d) {
   return d == DrawingEffect::kHiddenRemoved || d == DrawingEffect::kHiddenDashed;
@@ -237,21 +241,17 @@ Status JobServer::plot() {
   }
   forget_cut();
   if (hidden_line_drawing(spec_.drawing)) return plot_hidden(job_mem, job_bytes);
-  // The crossing count is unknown before CUT: start from a guess and retry once with the
+  // The crossing count is unknown before CUT: start from a guess and run again with the
   // exact count CUT reports (it never stores a partial CUTSET).
-  crossing_capacity_ = n_edges_ + 64;
-  Status s = Status::kOk;
+  StageNeeds needs;
+  needs.crossings = n_edges_ + 64;
   const uint64_t t0 = clock_ ? clock_() : 0;
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    s = job_prepare(spec_, edges, n_edges_, crossing_capacity_, job_mem, job_bytes, &job_,
-                    &counters_);
-    cut_runs_ += counters_.cut_runs;
-    draw_runs_ += counters_.draw_runs;
-    if (s != Status::kCrossingCapacity) break;
-    const uint64_t need = counters_.cut.crossings + counters_.cut.near_misses;
-    if (need > 0xffffffffu) break;
-    crossing_capacity_ = uint32_t(need);
-  }
+  EdgeJobStage stage{&spec_, edges, n_edges_, &job_, &counters_, nullptr};
+  FixedMemory memory{job_mem, job_bytes};
+  const Status s = run_sized(stage, memory.memory(), &needs);
+  crossing_capacity_ = needs.crossings;
+  cut_runs_ += stage.cut_runs;
+  draw_runs_ += stage.draw_runs;
   if (clock_) prepare_ticks_ = clock_() - t0;
   if (!ok(s)) return s;
   has_cut_ = spec_.drawing == DrawingEffect::kHaloed;
@@ -262,7 +262,7 @@ Status JobServer::plot_hidden(uint8_t* job_mem, size_t job_bytes) {
   if (scene_.format != SceneFormat::kIndexed || scene_.faces == 0) return Status::kNoFaces;
   // The projected vertices stay at the front of the job buffer (plot() put them there); the
   // hidden-line run and its strokes take the rest.
-  const size_t screen_bytes = align8(size_t{scene_.vertices} * sizeof(Point3));
+  const size_t screen_bytes = carve_round(size_t{scene_.vertices} * sizeof(Point3));
   if (screen_bytes > job_bytes) return Status::kWorkspaceTooSmall;
   SolidInput in;
   in.vertices = reinterpret_cast<const Point3*>(job_mem);
@@ -272,22 +272,16 @@ Status JobServer::plot_hidden(uint8_t* job_mem, size_t job_bytes) {
   in.triangles =
       reinterpret_cast<const Triangle*>(arena_ + world_bytes(scene_) + pair_bytes(scene_));
   in.n_triangles = scene_.faces;
-  // Capacities are unknown before the run: guess, then retry with the counts it reports.
-  uint32_t crossings = n_edges_ + 3 * scene_.faces + 64, incidences = scene_.vertices + 16;
-  Status s = Status::kOk;
+  // Capacities are unknown before the run: guess, then run again with the counts it reports.
+  StageNeeds needs;
+  needs.crossings = n_edges_ + 3 * scene_.faces + 64;
+  needs.incidences = scene_.vertices + 16;
   const uint64_t t0 = clock_ ? clock_() : 0;
-  for (int attempt = 0; attempt < 3; ++attempt) {
-    HiddenReport report;
-    s = job_prepare_solid(spec_, in, crossings, incidences, job_mem + screen_bytes,
-                          job_bytes - screen_bytes, &job_, &counters_, &report);
-    cut_runs_ += counters_.cut_runs;
-    if (s == Status::kCrossingCapacity)
-      crossings = uint32_t(report.cut.crossings);
-    else if (s == Status::kIncidenceCapacity)
-      incidences = report.incidences_needed;
-    else
-      break;
-  }
+  HiddenReport report;
+  SolidJobStage stage{&spec_, &in, &job_, &counters_, &report};
+  FixedMemory memory{job_mem + screen_bytes, job_bytes - screen_bytes};
+  const Status s = run_sized(stage, memory.memory(), &needs);
+  cut_runs_ += stage.cut_runs;
   if (clock_) prepare_ticks_ = clock_() - t0;
   if (!ok(s)) return s;
   return start_motion();
@@ -340,7 +334,7 @@ Status JobServer::stream_begin(const uint8_t* p, uint16_t n) {
   StreamBegin b;
   const Status s = decode_stream_begin(p, n, &b);
   if (!ok(s)) return s;
-  const size_t arena = align8(b.arena_bytes);
+  const size_t arena = carve_round(b.arena_bytes);
   if (arena + kBandEdgeRecordBytes > arena_bytes_ || b.arena_bytes < 1024)
     return Status::kSceneTooLarge;
   stream_ = b;

@@ -167,4 +167,29 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
   return s;
 }
 
+Status HiddenLinesStage::run(const StageNeeds& needs, void* buffer, size_t bytes,
+                             StageNeeds* want) {
+  HiddenParams p = params;
+  p.crossing_capacity = needs.crossings;
+  p.incidence_capacity = needs.incidences;
+  const Status s = hidden_lines(*in, p, buffer, bytes, sink, report);
+  hidden_lines_needs(s, *report, bytes, want);
+  return s;
+}
+
+void hidden_lines_needs(Status s, const HiddenReport& report, size_t bytes, StageNeeds* want) {
+  if (s == Status::kCrossingCapacity)
+    want->crossings = need_count(report.cut.crossings + report.cut.near_misses);
+  if (s == Status::kIncidenceCapacity) want->incidences = report.incidences_needed;
+  if (s == Status::kWorkspaceTooSmall) {
+    const size_t more = bytes + bytes / 2;
+    want->bytes = report.bytes_needed > more ? report.bytes_needed : more;
+  }
+}
+
+size_t hidden_lines_first_bytes(const SolidInput& in) {
+  return topology_bytes(in) * 3 + 96 * (size_t{in.n_edges} + 3 * size_t{in.n_triangles}) +
+         (size_t{1} << 16);
+}
+
 }  // namespace haloplot

@@ -81,4 +81,24 @@ struct HiddenSink {
 Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buffer, size_t bytes,
                     HiddenSink sink, HiddenReport* report);
 
+// hidden_lines() as a sized stage (memory/sized_stage.h): needs.crossings and .incidences
+// replace the params' capacities. No query sizes every stage before a run, so bytes() is the
+// caller's first guess, and a short run's bytes_needed (a lower bound) asks for at least half
+// as much again as the run had.
+struct HiddenLinesStage {
+  const SolidInput* in;
+  HiddenParams params;
+  HiddenSink sink;
+  HiddenReport* report;
+  size_t first_bytes;
+  size_t bytes(const StageNeeds&) const { return first_bytes; }
+  Status run(const StageNeeds& needs, void* buffer, size_t bytes, StageNeeds* want);
+};
+
+// What a run of hidden_lines() that ended with `s` in a buffer of `bytes` needs (*want).
+void hidden_lines_needs(Status s, const HiddenReport& report, size_t bytes, StageNeeds* want);
+
+// A first guess at hidden_lines()'s bytes that fits most scenes.
+size_t hidden_lines_first_bytes(const SolidInput& in);
+
 }  // namespace haloplot

@@ -23,6 +23,7 @@
 #include <stdint.h>
 
 #include "cut/grid.h"
+#include "memory/sized_stage.h"
 #include "solid/mesh.h"
 #include "status/status.h"
 
@@ -86,5 +87,24 @@ size_t franklin_bytes(const SolidInput& in, const FranklinParams& p, uint32_t cr
 Status franklin_hidden_lines(const SolidInput& in, const FranklinParams& p,
                              uint32_t crossing_capacity, uint32_t incidence_capacity, void* buffer,
                              size_t bytes, FranklinSink sink, FranklinStats* stats);
+
+// Franklin's hidden lines as a sized stage (memory/sized_stage.h): needs.crossings and
+// needs.incidences are the capacities.
+struct FranklinStage {
+  const SolidInput* in;
+  FranklinParams params;
+  FranklinSink sink;
+  FranklinStats* stats;
+  size_t bytes(const StageNeeds& needs) const {
+    return franklin_bytes(*in, params, needs.crossings, needs.incidences);
+  }
+  Status run(const StageNeeds& needs, void* buffer, size_t bytes, StageNeeds* want) {
+    const Status s = franklin_hidden_lines(*in, params, needs.crossings, needs.incidences, buffer,
+                                           bytes, sink, stats);
+    want->crossings = need_count(stats->crossings);
+    want->incidences = stats->incidences;
+    return s;
+  }
+};
 
 }  // namespace haloplot

@@ -18,6 +18,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "memory/sized_stage.h"
 #include "solid/mesh.h"
 #include "status/status.h"
 #include "view/trig.h"
@@ -62,5 +63,21 @@ size_t hatch_bytes(const SolidInput& in, const HatchParams& params, uint32_t cro
 // kCrossingCapacity: stats->crossings says the count a retry needs.
 Status hatch_faces(const SolidInput& in, const HatchParams& params, uint32_t crossing_capacity,
                    void* buffer, size_t bytes, HatchSink sink, HatchStats* stats);
+
+// The per-face hatching as a sized stage (memory/sized_stage.h): needs.crossings is the
+// capacity, needs.bytes what a short run reported.
+struct HatchStage {
+  const SolidInput* in;
+  HatchParams params;
+  HatchSink sink;
+  HatchStats* stats;
+  size_t bytes(const StageNeeds& needs) const { return hatch_bytes(*in, params, needs.crossings); }
+  Status run(const StageNeeds& needs, void* buffer, size_t bytes, StageNeeds* want) {
+    const Status s = hatch_faces(*in, params, needs.crossings, buffer, bytes, sink, stats);
+    if (s == Status::kCrossingCapacity) want->crossings = need_count(stats->crossings);
+    if (s == Status::kWorkspaceTooSmall) want->bytes = stats->bytes_needed;
+    return s;
+  }
+};
 
 }  // namespace haloplot

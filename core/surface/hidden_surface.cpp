@@ -40,18 +40,6 @@ struct Collector {
 
 }  // namespace
 
-bool HiddenSurfaceCapacity::grow(Status s, const HiddenSurfaceStats& st) {
-  if (s == Status::kCrossingCapacity)
-    crossings = uint32_t(st.franklin.crossings);
-  else if (s == Status::kIncidenceCapacity)
-    incidences = st.franklin.incidences;
-  else if (s == Status::kSegmentCapacity)
-    segments = st.segments;
-  else
-    return false;
-  return true;
-}
-
 size_t hidden_surface_bytes(const SolidInput& in, const FranklinParams& fp,
                             uint32_t crossing_capacity, uint32_t incidence_capacity,
                             uint32_t segment_capacity) {
@@ -68,8 +56,16 @@ Status hidden_surface(const SolidInput& in, const FranklinParams& fp, const Hatc
                       HatchSink hatch, HiddenSurfaceStats* stats) {
   HiddenSurfaceStats st;
   Carver carve(buffer, bytes);
+  // Short of what the capacities take: the query's bytes are what a run needs.
+  auto asked = [&] {
+    return hidden_surface_bytes(in, fp, crossing_capacity, incidence_capacity, segment_capacity);
+  };
   RegionSegment* segments = carve.take<RegionSegment>(segment_capacity);
-  if (carve.short_) return Status::kWorkspaceTooSmall;
+  if (carve.short_) {
+    st.bytes_needed = asked();
+    if (stats) *stats = st;
+    return Status::kWorkspaceTooSmall;
+  }
   FranklinParams every = fp;
   every.every_piece = true;
   Collector col{segments, segment_capacity, 0, lines, FranklinPiece{}, false};
@@ -78,6 +74,7 @@ Status hidden_surface(const SolidInput& in, const FranklinParams& fp, const Hatc
   if (s == Status::kOk) s = col.flush();
   st.segments = col.count;
   if (s == Status::kOk && col.count > segment_capacity) s = Status::kSegmentCapacity;
+  if (s == Status::kWorkspaceTooSmall) st.bytes_needed = asked();
   if (s != Status::kOk) {
     if (stats) *stats = st;
     return s;
@@ -102,6 +99,17 @@ Status hidden_surface(const SolidInput& in, const FranklinParams& fp, const Hatc
     }
   }
   if (stats) *stats = st;
+  return s;
+}
+
+Status HiddenSurfaceStage::run(const StageNeeds& needs, void* buffer, size_t bytes,
+                               StageNeeds* want) {
+  const Status s = hidden_surface(*in, franklin, hatch_params, needs.crossings, needs.incidences,
+                                  needs.segments, buffer, bytes, lines, hatch, stats);
+  if (s == Status::kCrossingCapacity) want->crossings = need_count(stats->franklin.crossings);
+  if (s == Status::kIncidenceCapacity) want->incidences = stats->franklin.incidences;
+  if (s == Status::kSegmentCapacity) want->segments = stats->segments;
+  if (s == Status::kWorkspaceTooSmall) want->bytes = stats->bytes_needed;
   return s;
 }
 

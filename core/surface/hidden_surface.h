@@ -18,15 +18,8 @@ struct HiddenSurfaceStats {
   FranklinStats franklin;
   RegionStats regions;
   RegionHatchStats hatch;
-  uint32_t segments = 0;    // visible segments (the count a retry needs on kSegmentCapacity)
+  uint32_t segments = 0;    // visible segments (the count a run needs on kSegmentCapacity)
   size_t bytes_needed = 0;  // on kWorkspaceTooSmall once the regions are known
-};
-
-// The capacities a run asks for. After a run that ended short of one, grow() takes the count
-// the stats report and says true (retry); for any other status it says false.
-struct HiddenSurfaceCapacity {
-  uint32_t crossings, incidences, segments;
-  bool grow(Status s, const HiddenSurfaceStats& st);
 };
 
 // Bytes for everything but the hatching's list of line crossings (known once the regions are:
@@ -41,5 +34,20 @@ Status hidden_surface(const SolidInput& in, const FranklinParams& fp, const Hatc
                       uint32_t crossing_capacity, uint32_t incidence_capacity,
                       uint32_t segment_capacity, void* buffer, size_t bytes, FranklinSink lines,
                       HatchSink hatch, HiddenSurfaceStats* stats);
+
+// hidden_surface() as a sized stage (memory/sized_stage.h): needs.crossings, .incidences and
+// .segments are the capacities, needs.bytes what a short run reported.
+struct HiddenSurfaceStage {
+  const SolidInput* in;
+  FranklinParams franklin;
+  HatchParams hatch_params;
+  FranklinSink lines;
+  HatchSink hatch;
+  HiddenSurfaceStats* stats;
+  size_t bytes(const StageNeeds& needs) const {
+    return hidden_surface_bytes(*in, franklin, needs.crossings, needs.incidences, needs.segments);
+  }
+  Status run(const StageNeeds& needs, void* buffer, size_t bytes, StageNeeds* want);
+};
 
 }  // namespace haloplot

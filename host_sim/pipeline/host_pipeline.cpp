@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "pipeline/host_memory.h"
+
 namespace haloplot::host {
 namespace {
 
@@ -21,25 +23,21 @@ Status host_cut(std::vector<Edge3> edges, const CutParams& params, HostCut* out)
   out->edges = std::move(edges);
   const uint32_t n = static_cast<uint32_t>(out->edges.size());
   if (out->edges.size() > kMaxEdges) return Status::kTooManyEdges;
-  // A first guess at the record count; a short guess costs one retry, never a wrong answer.
-  uint64_t capacity = 4ull * n + 1024;
-  std::vector<uint64_t> scratch;
-  for (int attempt = 0;; ++attempt) {
-    const auto t0 = std::chrono::steady_clock::now();
-    Status s = plan_cut(out->edges.data(), n, params, &out->plan);
-    if (!ok(s)) return s;
-    scratch.assign((out->plan.scratch_bytes + 7) / 8, 0);
-    const size_t bytes = cutset_bytes(n, static_cast<uint32_t>(capacity));
-    out->storage.assign((bytes + 7) / 8, 0);
-    s = run_cut(out->plan, out->edges.data(), scratch.data(), scratch.size() * 8,
-                out->storage.data(), out->storage.size() * 8, &out->set, &out->stats);
-    out->cut_ms = ms_since(t0);
-    out->retries = attempt;
-    out->scratch_bytes = out->plan.scratch_bytes;
-    if (s != Status::kCrossingCapacity || attempt > 0) return s;
-    capacity = out->stats.crossings + out->stats.near_misses;
-    if (capacity > 0xffffffffu) return Status::kCrossingCapacity;
-  }
+  const auto t0 = std::chrono::steady_clock::now();
+  Status s = plan_cut(out->edges.data(), n, params, &out->plan);
+  if (!ok(s)) return s;
+  // A first guess at the record count; a short guess costs one more run, never a wrong answer.
+  StageNeeds needs;
+  needs.crossings = 4 * n + 1024;
+  CutStage stage{&out->plan, out->edges.data(), &out->set, &out->stats};
+  HostMemory memory;
+  int rounds = 0;
+  s = run_sized(stage, memory.memory(), &needs, &rounds);
+  out->storage = std::move(memory.words);  // the CUTSET lives at its start
+  out->cut_ms = ms_since(t0);
+  out->retries = rounds - 1;
+  out->scratch_bytes = out->plan.scratch_bytes;
+  return s;
 }
 
 void LoadedCut::bind() {

@@ -1,5 +1,5 @@
-// The core's CUT and DRAW on the host: buffers sized from the core's own queries, a retry
-// when the first crossing-capacity guess was short, and timings that cover CUT or DRAW alone.
+// The core's CUT and DRAW on the host: buffers sized by the core's sized-stage protocol
+// (memory/sized_stage.h), and timings that cover CUT or DRAW alone.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -11,12 +11,12 @@ namespace haloplot::host {
 
 struct HostCut {
   std::vector<Edge3> edges;       // owned copy: the CUTSET points into it
-  std::vector<uint64_t> storage;  // CUTSET storage (8-byte aligned)
+  std::vector<uint64_t> storage;  // the CUTSET at its start (8-byte aligned), then CUT's scratch
   CutPlan plan;
   CutSet set;
   CutStats stats;
-  double cut_ms = 0;  // plan + run of the final pass, no I/O
-  int retries = 0;    // capacity retries (each reruns CUT)
+  double cut_ms = 0;  // plan and every run, no I/O
+  int retries = 0;    // runs after the first (each reruns CUT with the count it reported)
   size_t scratch_bytes = 0;
 };
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "pipeline/host_memory.h"
+
 namespace haloplot::host {
 namespace {
 
@@ -81,32 +83,22 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
   params.method = method;
   params.outline = outlines;
   params.kira = kira.use_classes || kira.use_vc;
-  // First guesses; the core says what a retry needs (never a wrong or partial answer).
-  params.crossing_capacity = 4 * (in.n_edges + 3 * in.n_triangles) + 1024;
-  params.incidence_capacity = in.n_vertices + 64;
-  // A first guess that fits most scenes (a short buffer costs one more run, never a wrong one).
-  size_t bytes = topology_bytes(in) * 3 + 96 * (size_t{in.n_edges} + 3 * size_t{in.n_triangles}) +
-                 (size_t{1} << 16);
+  // First guesses; the core says what a short run needs (never a wrong or partial answer).
+  StageNeeds needs;
+  needs.crossings = 4 * (in.n_edges + 3 * in.n_triangles) + 1024;
+  needs.incidences = in.n_vertices + 64;
   HiddenReport r;
-  Status s = Status::kOk;
-  for (int attempt = 0; attempt < 8; ++attempt) {
-    std::vector<uint64_t> buffer(bytes / 8 + 1);
-    Collect c{out};
+  Collect c{out};
+  HiddenLinesStage stage{&in, params, HiddenSink{nullptr, &collect_piece, &collect_outline, &c}, &r,
+                         hidden_lines_first_bytes(in)};
+  auto restart = restarting(&stage, [out, &in] {
     out->pieces.clear();
     out->contour_diagonals.clear();
     out->outline.clear();
     out->n_drawn = in.n_edges;
-    s = hidden_lines(in, params, buffer.data(), buffer.size() * 8,
-                     HiddenSink{nullptr, &collect_piece, &collect_outline, &c}, &r);
-    if (s == Status::kWorkspaceTooSmall)
-      bytes = std::max(bytes * 2, r.bytes_needed * 2);
-    else if (s == Status::kCrossingCapacity)
-      params.crossing_capacity = uint32_t(r.cut.crossings + r.cut.near_misses);
-    else if (s == Status::kIncidenceCapacity)
-      params.incidence_capacity = r.incidences_needed;
-    else
-      break;
-  }
+  });
+  HostMemory memory;
+  const Status s = run_sized(restart, memory.memory(), &needs);
   out->check = r.check;
   out->classes = r.classes;
   out->cut = r.cut;

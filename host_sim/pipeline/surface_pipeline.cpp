@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "pipeline/host_memory.h"
+
 namespace haloplot::host {
 namespace {
 
@@ -11,28 +13,34 @@ Status collect(void* context, const FranklinPiece& p) {
   return Status::kOk;
 }
 
+// The first guesses every host run starts from; the core's report sizes the next run.
+StageNeeds first_guess(const SolidInput& in) {
+  StageNeeds needs;
+  needs.crossings = 4 * in.n_edges + 1024;
+  needs.incidences = in.n_vertices + 64;
+  needs.segments = 4 * in.n_edges + 1024;
+  return needs;
+}
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
 }  // namespace
 
 Status run_franklin(const SolidScene& scene, const FranklinParams& params, FranklinRun* out) {
   const SolidInput in = solid_input(scene);
-  uint32_t crossings = 4 * in.n_edges + 1024, incidences = in.n_vertices + 64;
-  Status s = Status::kOk;
-  for (int attempt = 0; attempt < 4; ++attempt) {
-    out->bytes = franklin_bytes(in, params, crossings, incidences);
-    std::vector<uint64_t> buffer(out->bytes / 8 + 1);
+  StageNeeds needs = first_guess(in);
+  FranklinStage stage{&in, params, FranklinSink{&collect, &out->pieces}, &out->stats};
+  auto t0 = std::chrono::steady_clock::now();  // the last run's start: ms times it alone
+  auto restart = restarting(&stage, [out, &t0] {
     out->pieces.clear();
-    const auto t0 = std::chrono::steady_clock::now();
-    s = franklin_hidden_lines(in, params, crossings, incidences, buffer.data(), buffer.size() * 8,
-                              FranklinSink{&collect, &out->pieces}, &out->stats);
-    out->ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    if (s == Status::kCrossingCapacity)
-      crossings = uint32_t(out->stats.crossings);
-    else if (s == Status::kIncidenceCapacity)
-      incidences = out->stats.incidences;
-    else
-      break;
-  }
+    t0 = std::chrono::steady_clock::now();
+  });
+  HostMemory memory;
+  const Status s = run_sized(restart, memory.memory(), &needs);
+  out->ms = ms_since(t0);
+  out->bytes = stage.bytes(needs);
   return s;
 }
 
@@ -56,21 +64,12 @@ Status run_regions(const SolidScene& scene, const FranklinParams& params, Region
   const SolidInput in = solid_input(scene);
   FranklinParams every = params;
   every.every_piece = true;
-  uint32_t crossings = 4 * in.n_edges + 1024, incidences = in.n_vertices + 64;
-  Status s = Status::kOk;
+  StageNeeds needs = first_guess(in);
   FranklinStats fs;
-  for (int attempt = 0; attempt < 4; ++attempt) {
-    std::vector<uint64_t> buffer(franklin_bytes(in, every, crossings, incidences) / 8 + 1);
-    out->segments.clear();
-    s = franklin_hidden_lines(in, every, crossings, incidences, buffer.data(), buffer.size() * 8,
-                              FranklinSink{&collect_visible, &out->segments}, &fs);
-    if (s == Status::kCrossingCapacity)
-      crossings = uint32_t(fs.crossings);
-    else if (s == Status::kIncidenceCapacity)
-      incidences = fs.incidences;
-    else
-      break;
-  }
+  FranklinStage franklin{&in, every, FranklinSink{&collect_visible, &out->segments}, &fs};
+  auto restart = restarting(&franklin, [out] { out->segments.clear(); });
+  HostMemory memory;
+  Status s = run_sized(restart, memory.memory(), &needs);
   if (s != Status::kOk) return s;
   const uint32_t n = uint32_t(out->segments.size());
   std::vector<uint64_t> buffer(regions_bytes(in, n) / 8 + 1);
@@ -90,27 +89,21 @@ namespace {
 
 Status run_regions_hatch(const SolidInput& in, const HatchParams& params, const FranklinParams& fp,
                          HatchRun* out) {
-  HiddenSurfaceCapacity cap{4 * in.n_edges + 1024, in.n_vertices + 64, 4 * in.n_edges + 1024};
-  size_t bytes = hidden_surface_bytes(in, fp, cap.crossings, cap.incidences, cap.segments);
-  Status s = Status::kOk;
-  for (int attempt = 0; attempt < 8; ++attempt) {
-    std::vector<uint64_t> buffer(bytes / 8 + 1);
+  StageNeeds needs = first_guess(in);
+  HiddenSurfaceStage stage{&in,
+                           fp,
+                           params,
+                           FranklinSink{nullptr, nullptr},
+                           HatchSink{&collect_stroke, &out->strokes},
+                           &out->surface};
+  auto t0 = std::chrono::steady_clock::now();  // the last run's start: ms times it alone
+  auto restart = restarting(&stage, [out, &t0] {
     out->strokes.clear();
-    const auto t0 = std::chrono::steady_clock::now();
-    s = hidden_surface(in, fp, params, cap.crossings, cap.incidences, cap.segments, buffer.data(),
-                       buffer.size() * 8, FranklinSink{nullptr, nullptr},
-                       HatchSink{&collect_stroke, &out->strokes}, &out->surface);
-    out->ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    const HiddenSurfaceStats& st = out->surface;
-    if (s == Status::kWorkspaceTooSmall)
-      bytes = std::max(st.bytes_needed, bytes * 2);
-    else if (cap.grow(s, st))
-      bytes = std::max(bytes,
-                       hidden_surface_bytes(in, fp, cap.crossings, cap.incidences, cap.segments));
-    else
-      break;
-  }
+    t0 = std::chrono::steady_clock::now();
+  });
+  HostMemory memory;
+  const Status s = run_sized(restart, memory.memory(), &needs);
+  out->ms = ms_since(t0);
   return s;
 }
 
@@ -120,23 +113,12 @@ Status run_hatch(const SolidScene& scene, const HatchParams& params, HatchRun* o
                  HatchMethod method, FranklinParams franklin) {
   const SolidInput in = solid_input(scene);
   if (method == HatchMethod::kRegions) return run_regions_hatch(in, params, franklin, out);
-  uint32_t crossings = 8 * in.n_triangles + 1024;
-  size_t bytes = hatch_bytes(in, params, crossings);
-  Status s = Status::kOk;
-  for (int attempt = 0; attempt < 6; ++attempt) {
-    std::vector<uint64_t> buffer(bytes / 8 + 1);
-    out->strokes.clear();
-    s = hatch_faces(in, params, crossings, buffer.data(), buffer.size() * 8,
-                    HatchSink{&collect_stroke, &out->strokes}, &out->stats);
-    if (s == Status::kCrossingCapacity) {
-      crossings = uint32_t(out->stats.crossings);
-      bytes = hatch_bytes(in, params, crossings);
-    } else if (s == Status::kWorkspaceTooSmall) {
-      bytes = out->stats.bytes_needed + bytes / 2;
-    } else {
-      break;
-    }
-  }
+  StageNeeds needs;
+  needs.crossings = 8 * in.n_triangles + 1024;
+  HatchStage stage{&in, params, HatchSink{&collect_stroke, &out->strokes}, &out->stats};
+  auto restart = restarting(&stage, [out] { out->strokes.clear(); });
+  HostMemory memory;
+  const Status s = run_sized(restart, memory.memory(), &needs);
   return s;
 }
 

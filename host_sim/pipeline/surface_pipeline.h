@@ -1,5 +1,5 @@
-// Franklin 1980's hidden lines on the host: buffers from the core's own query, a retry when a
-// first capacity guess was short, and the pieces collected.
+// Franklin 1980's hidden lines on the host: buffers by the core's sized-stage protocol
+// (memory/sized_stage.h), and the pieces collected.
 #pragma once
 #include <vector>
 
@@ -14,7 +14,7 @@ struct FranklinRun {
   std::vector<FranklinPiece> pieces;
   FranklinStats stats;
   size_t bytes = 0;
-  double ms = 0;  // the core run alone (the last attempt)
+  double ms = 0;  // the core run alone (the last round)
 };
 
 Status run_franklin(const SolidScene& scene, const FranklinParams& params, FranklinRun* out);
@@ -39,10 +39,10 @@ struct HatchRun {
   std::vector<HatchStroke> strokes;
   HatchStats stats;            // kPerFace
   HiddenSurfaceStats surface;  // kRegions
-  double ms = 0;               // the core run alone (the last attempt)
+  double ms = 0;               // the core run alone (the last round)
 };
 
-// The hatching of every visible face, retried until the buffers fit.
+// The hatching of every visible face, in buffers sized by the sized-stage protocol.
 Status run_hatch(const SolidScene& scene, const HatchParams& params, HatchRun* out,
                  HatchMethod method = HatchMethod::kRegions, FranklinParams franklin = {});
 

@@ -4,6 +4,7 @@
 
 #include "motion/step_engine.h"
 #include "motion/virtual_run.h"
+#include "pipeline/host_memory.h"
 #include "sim/trace.h"
 
 namespace haloplot::host {
@@ -39,24 +40,17 @@ struct RecordingHal {
 Status prepare_whole(const JobSpec& spec, const std::vector<Edge3>& edges,
                      std::vector<uint64_t>* buffer, SimReport* r) {
   const uint32_t n = uint32_t(edges.size());
-  // Size the job buffer from the core's own query; one retry if CUT needs more records.
-  uint32_t capacity = 4 * n + 1024;
+  // The job buffer from the core's own query; a second run if CUT needs more records.
+  StageNeeds needs;
+  needs.crossings = 4 * n + 1024;
   PreparedJob job;
-  Status s;
-  for (;;) {
-    s = job_bytes(spec, edges.data(), n, capacity, &r->bytes);
-    if (!ok(s)) return s;
-    buffer->assign(r->bytes.total() / 8 + 1, 0);
-    s = job_prepare(spec, edges.data(), n, capacity, buffer->data(), buffer->size() * 8, &job,
-                    &r->job);
-    if (s == Status::kCrossingCapacity && r->retries == 0) {
-      capacity = uint32_t(r->job.cut.crossings + r->job.cut.near_misses);
-      ++r->retries;
-      continue;
-    }
-    if (!ok(s)) return s;
-    break;
-  }
+  EdgeJobStage stage{&spec, edges.data(), n, &job, &r->job, &r->bytes};
+  HostMemory memory;
+  int rounds = 0;
+  const Status s = run_sized(stage, memory.memory(), &needs, &rounds);
+  *buffer = std::move(memory.words);  // a move keeps the storage the points lie in
+  r->retries = rounds - 1;
+  if (!ok(s)) return s;
   r->points.assign(job.points, job.points + job.n_points);
   r->spans.assign(job.spans, job.spans + job.n_spans);
   return Status::kOk;
