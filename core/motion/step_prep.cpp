@@ -9,12 +9,19 @@ namespace {
 uint32_t abs32(int32_t v) { return v < 0 ? uint32_t(0) - uint32_t(v) : uint32_t(v); }
 uint64_t speed_q8(uint64_t v2_q8) { return isqrt_u64(v2_q8 << 8); }  // sqrt(v^2 * 2^16)
 
+// The bit budget of block_time_q8() (see step_prep.h): init() refuses tick_hz >= 2^24,
+// validate() accel >= 2^22, and the planner keeps a move below 2^21 plot steps (Q16: 2^37).
+constexpr uint64_t kTickHzLimit = uint64_t{1} << 24, kAccelLimit = uint64_t{1} << 22;
+constexpr uint64_t kDistanceQ16Limit = uint64_t{1} << 37;
+static_assert(kDistanceQ16Limit <= UINT64_MAX / kTickHzLimit, "distance * tick_hz fits");
+static_assert(kDistanceQ16Limit <= UINT64_MAX / (2 * kAccelLimit), "2 * accel * distance fits");
+
 }  // namespace
 
 Status StepPrep::init(const Machine& m, const PlotterEffects& fx) {
   const Status s = validate(m);
   if (!ok(s)) return s;
-  if (m.tick_hz >= (1u << 24)) return Status::kBadParameter;
+  if (m.tick_hz >= kTickHzLimit) return Status::kBadParameter;
   *this = StepPrep{};
   m_ = m;
   fx_ = fx;
@@ -70,13 +77,18 @@ Status StepPrep::begin_move(const MotionItem& it) {
 }
 
 uint64_t StepPrep::block_time_q8(uint32_t j) const {
-  const uint64_t s = uint64_t(j) * item_.length_q8 / n_;  // plot distance, Q8
+  // Plot distance of dominant step j in Q16: a Q8 distance is off by up to 1/256 step, which
+  // at 3,000 steps/s moves a step by 1.3 ticks and shows as one-step speed jitter; in Q16 the
+  // time is off by well under a tick at any speed.
+  const uint64_t jl = uint64_t(j) * item_.length_q8;  // j <= n < 2^32, length < 2^32
+  const uint64_t s = ((jl / n_) << 8) + ((jl % n_) << 8) / n_;
   const uint64_t hz = m_.tick_hz;
-  if (item_.accel == 0) return s * hz * 256 / vtop_q8_;
+  if (item_.accel == 0) return s * hz / vtop_q8_;
   const uint64_t a = item_.accel;
-  if (s <= s_acc_q8_) return (speed_q8(entry2_ + 2 * a * s) - vin_q8_) * hz / a;
-  if (s <= s_dec_q8_) return t_acc_q8_ + (s - s_acc_q8_) * hz * 256 / vtop_q8_;
-  const uint64_t drop = 2 * a * (s - s_dec_q8_);
+  const uint64_t s_acc = s_acc_q8_ << 8, s_dec = s_dec_q8_ << 8;
+  if (s <= s_acc) return (speed_q8(entry2_ + ((2 * a * s + 128) >> 8)) - vin_q8_) * hz / a;
+  if (s <= s_dec) return t_acc_q8_ + (s - s_acc) * hz / vtop_q8_;
+  const uint64_t drop = (2 * a * (s - s_dec) + 128) >> 8;
   const uint64_t v2 = drop < vtop2_ ? vtop2_ - drop : 0;
   return t_dec_q8_ + (vtop_q8_ - speed_q8(v2)) * hz / a;
 }
@@ -137,29 +149,34 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
       in_move_ = false;
       continue;
     }
-    // Segment length: up to kSegmentSteps, halved while the exact interval changes by more
-    // than 1/8 across it, so the tick's linear interval ramp stays close to the true curve
-    // (near rest, where t grows like sqrt(j), segments shrink to single, exact steps). The
-    // middle interval is checked too: a short move that accelerates and brakes within one
-    // segment has equal first and last intervals, yet a V-shaped profile no ramp can follow.
+    // Segment length: up to kSegmentSteps, halved until the tick's linear interval ramp
+    // follows the exact profile (near rest, where t grows like sqrt(j), segments shrink to
+    // single, exact steps). The ramp starts at the exact first interval and is aimed at the
+    // exact end time; it must also end within a tick of the exact last interval and pass
+    // within a tick of the exact middle one. Otherwise the next segment, which starts at its
+    // exact interval again, would jump: a short move that peaks inside one segment has equal
+    // first and last intervals, yet a V-shaped profile no ramp can follow.
     uint32_t j1 = j_ + kSegmentSteps < n_ ? j_ + kSegmentSteps : n_;
-    const uint64_t t_first = block_start_q8_ + block_time_q8(j_ + 1);
+    const int64_t first = int64_t(block_start_q8_ + block_time_q8(j_ + 1)) - int64_t(time_q8_);
     auto interval_at = [&](uint32_t j) {  // the exact interval before step j (1-based)
       return int64_t(block_time_q8(j) - (j > 1 ? block_time_q8(j - 1) : 0));
     };
+    auto ramp_add = [&](uint32_t end) {  // the ramp's step from `first` to the end time
+      const int64_t k = end - j_;
+      const int64_t total = int64_t(block_start_q8_ + block_time_q8(end)) - int64_t(time_q8_);
+      return k > 1 ? floor_div(2 * (total - k * first), k * (k - 1)) : 0;
+    };
+    auto within_tick = [](int64_t a, int64_t b) { return (a > b ? a - b : b - a) <= 128; };
+    int64_t add = ramp_add(j1);
     while (j1 > j_ + 1) {
-      const int64_t i_first = interval_at(j_ + 1), i_last = interval_at(j1);
-      const int64_t i_mid = interval_at(j_ + 1 + (j1 - j_ - 1) / 2);
-      const int64_t lo = i_first < i_last ? i_first : i_last;
-      const int64_t diff = i_first > i_last ? i_first - i_last : i_last - i_first;
-      const int64_t bend = 2 * i_mid - i_first - i_last;  // twice the mid's offset from a line
-      if (8 * diff <= lo && 4 * (bend < 0 ? -bend : bend) <= lo) break;
+      const int64_t k = j1 - j_, half = (k - 1) / 2;
+      if (within_tick(first + (k - 1) * add, interval_at(j1)) &&
+          within_tick(first + half * add, interval_at(j_ + 1 + uint32_t(half))))
+        break;
       j1 = j_ + (j1 - j_) / 2;
+      add = ramp_add(j1);
     }
     const int64_t m = j1 - j_;
-    const int64_t first = int64_t(t_first) - int64_t(time_q8_);
-    const int64_t total = int64_t(block_start_q8_ + block_time_q8(j1)) - int64_t(time_q8_);
-    const int64_t add = m > 1 ? floor_div(2 * (total - m * first), m * (m - 1)) : 0;
     const int64_t floor_q8 = int64_t{m_.min_interval} * 256;
     if (first < floor_q8 || first + (m - 1) * add < floor_q8) return Status::kTimerFloor;
     // The tick runs in 32 bits: every interval of the segment (linear, so its two ends) and

@@ -8,8 +8,9 @@
 // interval change. The prep mirrors the tick's arithmetic exactly, so each segment aims at
 // the exact boundary time from where the tick really is: timing error never accumulates.
 //
-// Budget: tick_hz < 2^24 (validated), speeds Q8 < 2^24, so speed * tick_hz < 2^48 and
-// distance_q8 * tick_hz * 256 < 2^61.
+// Budget: tick_hz < 2^24 (validated), speeds Q8 < 2^24, so speed * tick_hz < 2^48; distances
+// along a move are Q16 (< 2^37: moves < 2^21 steps), so distance * tick_hz < 2^61 and
+// 2 * accel * distance < 2^60 (accel < 2^22).
 #pragma once
 #include <stdint.h>
 

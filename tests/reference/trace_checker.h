@@ -4,10 +4,26 @@
 //   - an acceleration above the limit: on a fixed time grid of h ticks the step count x
 //     satisfies |x(t+h) - 2 x(t) + x(t-h)| <= A h^2 + 4 for any motion with |x''| <= A,
 //     since a count never strays a full step from the true position (so +4 covers it);
-//   - a step while the pen is still moving or settling.
+//   - a step while the pen is still moving or settling;
+//   - a speed jump at one step (check_step_speeds): for each motor and each step whose
+//     neighbours go the same way, the speeds over the intervals before and after it, v = hz / i,
+//     may differ by at most A (i1 + i2) / (2 hz), the acceleration over the time between the
+//     two intervals' midpoints. Before comparing, each interval is widened by its rounding:
+//     1.5 ticks (an event lies within a tick of its exact time, and a linear interval ramp ends
+//     within a tick of the exact interval), plus, where the other motor steps faster, that
+//     motor's interval (Bresenham puts the slower motor's steps on the faster one's ticks).
+//     Where the pen path turns (a junction) the motors' speeds may jump by design (grbl's
+//     junction deviation). Given the path's vertices (Limits::path), a jump within 3 steps of
+//     a vertex may exceed the bound by v_j |u_out - u_in| per motor, where u are the motor's
+//     parts of the unit directions in and out and v_j^2 = a delta s / (1 - s), s = sin(theta/2)
+//     (grbl's junction speed, 5 % slack for the planner's integers); anywhere else it fails.
+//     Without the vertices, a jump is excused where the replayed positions within 24 events
+//     either side stray more than 2 steps from their chord (a turn the checker can see).
 #pragma once
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -16,6 +32,9 @@ namespace reference {
 
 struct CheckedTrace {
   uint64_t tick_hz = 0, end = 0;
+  bool corexy = false;
+  int64_t steps_num = 1, steps_den = 1;        // motor steps per plot step
+  int64_t backlash[2] = {0, 0};                // slack per motor, motor steps
   std::vector<int64_t> step_tick[2];           // each motor's step ticks, in order
   std::vector<int8_t> step_dir[2];             // +1 / -1
   std::vector<std::pair<uint64_t, bool>> pen;  // (tick, down)
@@ -33,7 +52,16 @@ inline CheckedTrace parse_trace_independently(const std::string& text) {
     w >> k;
     if (k == "tick_hz")
       w >> t.tick_hz;
-    else if (k == "end")
+    else if (k == "kinematics") {
+      std::string kin;
+      w >> kin;
+      t.corexy = kin == "corexy";
+    } else if (k == "backlash") {
+      w >> t.backlash[0] >> t.backlash[1];
+    } else if (k == "steps") {
+      char slash;
+      w >> t.steps_num >> slash >> t.steps_den;
+    } else if (k == "end")
       w >> t.end;
     else if (k == "p") {
       uint64_t tick;
@@ -68,6 +96,11 @@ struct Limits {
   double motor_accel = 0;  // motor steps / s^2
   uint64_t dwell = 0;      // ticks after each pen change with no step
   uint64_t window = 0;     // h, ticks
+  // The pen path's vertices in plot steps, in order from where the pen starts (empty: junctions
+  // are found from the steps alone), and the machine's plot acceleration and junction
+  // deviation for grbl's junction speed there.
+  std::vector<std::pair<int64_t, int64_t>> path;
+  double plot_accel = 0, junction_deviation = 0;
 };
 
 struct CheckResult {
@@ -75,12 +108,170 @@ struct CheckResult {
   double worst_accel_ratio = 0;  // max |second difference| / (A h^2 + 4)
   double peak_accel = 0;         // max |second difference| / h^2, steps / s^2
   uint64_t dwell_violations = 0;
+  double worst_step_ratio = 0;  // max speed change at one step / what accel allows (off junctions)
+  uint64_t step_jumps = 0;      // steps whose speed change exceeds it
+  uint64_t junctions_excused = 0;  // steps over it where the path turns
+  int64_t worst_step_tick = -1;
   bool ok = true;
   std::string why;
 };
 
+// The pen path replayed from the steps: the plot position after each event of either motor,
+// and each motor step's index among the events. With backlash, the first `backlash` steps
+// after a motor reverses take up its slack and leave the carriage where it is (the slack
+// starts taken up for + moves).
+struct ReplayedPath {
+  std::vector<double> x, y;
+  std::vector<size_t> event_of[2];
+};
+
+inline ReplayedPath replay_path(const CheckedTrace& t) {
+  ReplayedPath p;
+  std::vector<std::pair<int64_t, int>> ev;  // (tick, motor)
+  for (int m = 0; m < 2; ++m)
+    for (int64_t tick : t.step_tick[m]) ev.push_back({tick, m});
+  std::stable_sort(ev.begin(), ev.end(), [](auto a, auto b) { return a.first < b.first; });
+  size_t next[2] = {0, 0};
+  int64_t motor[2] = {0, 0}, slack_left[2] = {0, 0};
+  int8_t last_dir[2] = {1, 1};
+  for (const auto& [tick, m] : ev) {
+    (void)tick;
+    const int8_t d = t.step_dir[m][next[m]];
+    if (d != last_dir[m]) slack_left[m] = t.backlash[m];
+    last_dir[m] = d;
+    if (slack_left[m] > 0)
+      --slack_left[m];
+    else
+      motor[m] += d;
+    p.event_of[m].push_back(p.x.size());
+    ++next[m];
+    p.x.push_back(t.corexy ? 0.5 * double(motor[0] + motor[1]) : double(motor[0]));
+    p.y.push_back(t.corexy ? 0.5 * double(motor[0] - motor[1]) : double(motor[1]));
+  }
+  return p;
+}
+
+// Does the pen path turn within `w` events of event e (a point strays from the chord)?
+inline bool path_turns_near(const ReplayedPath& p, size_t e, size_t w) {
+  const size_t a = e > w ? e - w : 0, b = std::min(p.x.size() - 1, e + w);
+  const double dx = p.x[b] - p.x[a], dy = p.y[b] - p.y[a], len = std::hypot(dx, dy);
+  for (size_t i = a; i <= b; ++i) {
+    const double ox = p.x[i] - p.x[a], oy = p.y[i] - p.y[a];
+    const double off = len > 0 ? std::abs(dx * oy - dy * ox) / len : std::hypot(ox, oy);
+    if (off > 2.0) return true;
+  }
+  return false;
+}
+
+// The path's vertices found by position (a grid of 8-step cells), and the most a motor's speed
+// may change at each by grbl's junction speed.
+struct Junctions {
+  std::vector<double> extra[2];  // per vertex: the motor's largest speed change, steps / s
+  std::vector<std::pair<int64_t, int64_t>> at;
+  std::multimap<std::pair<int64_t, int64_t>, size_t> cells;
+
+  Junctions(const CheckedTrace& t, const Limits& lim) {
+    const auto& p = lim.path;
+    const double ratio = double(t.steps_num) / double(t.steps_den);
+    for (size_t k = 0; k < p.size(); ++k) {
+      double e[2] = {0, 0};
+      if (k > 0 && k + 1 < p.size()) {
+        const double ix = double(p[k].first - p[k - 1].first),
+                     iy = double(p[k].second - p[k - 1].second);
+        const double ox = double(p[k + 1].first - p[k].first),
+                     oy = double(p[k + 1].second - p[k].second);
+        const double li = std::hypot(ix, iy), lo = std::hypot(ox, oy);
+        if (li > 0 && lo > 0) {
+          const double cos_theta = -(ix * ox + iy * oy) / (li * lo);
+          const double sin_half = std::sqrt(std::max(0.0, 0.5 * (1 - cos_theta)));
+          const double vj =
+              sin_half > 0.9999
+                  ? 65536.0
+                  : std::min(65536.0, 1.05 * std::sqrt(lim.plot_accel * lim.junction_deviation *
+                                                       sin_half / (1 - sin_half)));
+          const double du[2] = {
+              t.corexy ? (ox / lo + oy / lo) - (ix / li + iy / li) : ox / lo - ix / li,
+              t.corexy ? (ox / lo - oy / lo) - (ix / li - iy / li) : oy / lo - iy / li};
+          for (int m = 0; m < 2; ++m) e[m] = vj * std::abs(du[m]) * ratio;
+        }
+      }
+      extra[0].push_back(e[0]);
+      extra[1].push_back(e[1]);
+      at.push_back(p[k]);
+      cells.insert({{p[k].first >> 3, p[k].second >> 3}, k});
+    }
+  }
+  // The largest allowance of a vertex within 3 steps of (x, y), or -1 when there is none.
+  double allowance(int m, double x, double y) const {
+    double best = -1;
+    const int64_t cx = int64_t(std::floor(x)) >> 3, cy = int64_t(std::floor(y)) >> 3;
+    for (int64_t gx = cx - 1; gx <= cx + 1; ++gx)
+      for (int64_t gy = cy - 1; gy <= cy + 1; ++gy) {
+        auto range = cells.equal_range({gx, gy});
+        for (auto it = range.first; it != range.second; ++it) {
+          const auto& v = at[it->second];
+          if (std::hypot(double(v.first) - x, double(v.second) - y) <= 3.0)
+            best = std::max(best, extra[m][it->second]);
+        }
+      }
+    return best;
+  }
+};
+
+// The per-step speed check described at the top of this file.
+inline void check_step_speeds(const CheckedTrace& t, const Limits& lim, CheckResult* r) {
+  const ReplayedPath path = replay_path(t);
+  const Junctions junctions(t, lim);
+  const double scale = double(t.steps_den) / double(t.steps_num);  // motor space to plot steps
+  const double hz = double(t.tick_hz);
+  for (int m = 0; m < 2; ++m) {
+    const auto& ticks = t.step_tick[m];
+    const auto& other = t.step_tick[1 - m];
+    for (size_t k = 1; k + 1 < ticks.size(); ++k) {
+      if (t.step_dir[m][k - 1] != t.step_dir[m][k] || t.step_dir[m][k] != t.step_dir[m][k + 1])
+        continue;
+      const double i1 = double(ticks[k] - ticks[k - 1]), i2 = double(ticks[k + 1] - ticks[k]);
+      double widen = 1.5;
+      auto it = std::upper_bound(other.begin(), other.end(), ticks[k]);
+      if (it != other.begin() && it != other.end()) {
+        const double d = double(*it - *(it - 1));
+        if (d <= std::max(i1, i2)) widen += d;
+      }
+      const double lo1 = hz / (i1 + widen), hi1 = hz / std::max(i1 - widen, 0.5);
+      const double lo2 = hz / (i2 + widen), hi2 = hz / std::max(i2 - widen, 0.5);
+      const double gap = std::max({0.0, lo2 - hi1, lo1 - hi2});
+      const double allowed = lim.motor_accel * (i1 + i2) / (2 * hz);
+      const double ratio = gap / allowed;
+      if (ratio <= 1.0) {
+        r->worst_step_ratio = std::max(r->worst_step_ratio, ratio);
+        continue;
+      }
+      const size_t e = path.event_of[m][k];
+      if (lim.path.empty()
+              ? path_turns_near(path, e, 24)
+              : gap <= allowed + junctions.allowance(m, path.x[e] * scale, path.y[e] * scale)) {
+        ++r->junctions_excused;
+        continue;
+      }
+      ++r->step_jumps;
+      if (ratio > r->worst_step_ratio) {
+        r->worst_step_ratio = ratio;
+        r->worst_step_tick = ticks[k];
+      }
+    }
+  }
+  if (r->step_jumps > 0) {
+    r->ok = false;
+    r->why += std::to_string(r->step_jumps) +
+              " speed jumps at one step away from junctions (worst " +
+              std::to_string(r->worst_step_ratio) + "x the limit at tick " +
+              std::to_string(r->worst_step_tick) + "); ";
+  }
+}
+
 inline CheckResult check_trace(const CheckedTrace& t, const Limits& lim) {
   CheckResult r;
+  check_step_speeds(t, lim, &r);
   const double h = double(lim.window) / double(t.tick_hz);  // seconds
   for (int m = 0; m < 2; ++m) {
     const auto& ticks = t.step_tick[m];
