@@ -345,4 +345,14 @@ Status SolidJobStage::run(const StageNeeds& needs, void* buffer, size_t bytes, S
   return s;
 }
 
+Status init_planner(MotionPlanner* planner, const JobSpec& spec, const PreparedJob& job,
+                    void* workspace, size_t workspace_bytes) {
+  const Status s = planner->init(spec.machine, spec.effects, job.points, job.n_points, workspace,
+                                 workspace_bytes);
+  if (!ok(s)) return s;
+  if (job.feed.more != nullptr) planner->set_feed(job.feed);
+  planner->set_finish_home(spec.finish_home);
+  return Status::kOk;
+}
+
 }  // namespace haloplot

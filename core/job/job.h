@@ -45,6 +45,7 @@ struct JobSpec {
   Machine machine;
   PlotterEffects effects;
   int32_t start_x = 0, start_y = 0;  // where the pen is before the job
+  bool finish_home = true;           // end pen up at the origin (job key `finish home|stay`)
 };
 
 // Bytes each stage takes from the job buffer (0: the stage does not run), and the peak the
@@ -102,6 +103,12 @@ Status job_prepare_solid(const JobSpec& spec, const SolidInput& in, uint32_t cro
 // point: a new halo width costs only DRAW). `job` is updated in place.
 Status job_redraw(const JobSpec& spec, uint32_t n, uint32_t crossing_capacity, void* buffer,
                   size_t buffer_bytes, PreparedJob* job, JobCounters* counters);
+
+// The planner for a prepared job: its points, then the band feed of a streamed plot, then the
+// travel home (spec.finish_home). The simulator, the controller and the self-tests all start
+// their motion through this one call, so their traces can only differ by arithmetic.
+Status init_planner(MotionPlanner* planner, const JobSpec& spec, const PreparedJob& job,
+                    void* workspace, size_t workspace_bytes);
 
 // job_prepare() as a sized stage (memory/sized_stage.h): needs.crossings is CUT's record
 // capacity. cut_runs and draw_runs add up over every run.

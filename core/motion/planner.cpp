@@ -87,7 +87,7 @@ void MotionPlanner::replan() {
 
 bool MotionPlanner::point_ready() {
   if (next_point_ < n_) return true;
-  if (feed_.more == nullptr || !ok(feed_status_)) return false;
+  if (feed_.more == nullptr || !ok(feed_status_)) return home_point();
   const PathPoint* points = nullptr;
   uint32_t n = 0;
   const Status s = feed_.more(feed_.ctx, &points, &n);
@@ -96,10 +96,21 @@ bool MotionPlanner::point_ready() {
   feed_status_ = s;
   if (!ok(feed_status_) || n == 0) {
     feed_.more = nullptr;  // done (or failed): never ask again
-    return false;
+    return home_point();
   }
   points_ = points;
   n_ = n;
+  next_point_ = 0;
+  return true;
+}
+
+// The path is done: the travel home, once, as one more pen-up point (not after a failed feed:
+// the plot stops where it failed).
+bool MotionPlanner::home_point() {
+  if (!home_pending_ || !ok(feed_status_)) return false;
+  home_pending_ = false;
+  points_ = &home_;
+  n_ = 1;
   next_point_ = 0;
   return true;
 }

@@ -61,6 +61,9 @@ class MotionPlanner {
               void* workspace, size_t workspace_bytes, uint32_t lookahead = kDefaultLookahead);
   // Set after init(): points past the initial ones come from the feed.
   void set_feed(PointFeed feed) { feed_ = feed; }
+  // Set after init(): once the path is done, travel pen up to the origin (a job's
+  // `finish home`), so the next job and the user find the pen where plots start.
+  void set_finish_home(bool home) { home_pending_ = home; }
   // The next committed item; false when the path is done (the pen ends up), or when the feed
   // failed: status() then says why.
   bool next(MotionItem* out);
@@ -77,6 +80,7 @@ class MotionPlanner {
   };
   bool make_move(const PathPoint& p, Block* b);
   bool point_ready();  // a point is waiting (asks the feed when the current batch is used up)
+  bool home_point();   // the travel home as the last point, when asked for and not yet made
   uint64_t junction_v2(const Block& prev, const Block& next) const;
   void replan();
   Block& at(uint32_t i) { return ring_[(head_ + i) % capacity_]; }
@@ -98,6 +102,8 @@ class MotionPlanner {
   PointFeed feed_{};
   Status feed_status_ = Status::kOk;
   bool waiting_ = false;
+  bool home_pending_ = false;  // the travel home is still to come
+  PathPoint home_{0, 0, 0};    // where it goes: the origin, pen up
 };
 
 }  // namespace haloplot

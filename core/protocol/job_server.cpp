@@ -138,7 +138,7 @@ Status JobServer::act(const Frame& f) {
       return Status::kOk;
     }
     case FrameType::kSetEffects:
-      return decode_effects(f.payload, f.length, &spec_.drawing, &spec_.effects);
+      return decode_effects(f.payload, f.length, &spec_);
     case FrameType::kSetMachine: {
       JobSpec next = spec_;
       Status s = decode_machine(f.payload, f.length, &next);

@@ -31,9 +31,11 @@ void encode_halo(const DrawParams& d, uint8_t out[kHaloBytes]) {
   out[4] = d.mode == HaloMode::kExact ? 1 : 0;
 }
 
-void encode_effects(DrawingEffect drawing, const PlotterEffects& e, uint8_t out[kEffectsBytes]) {
-  out[0] = uint8_t(drawing);
-  out[1] = uint8_t((e.acceleration ? 1 : 0) | (e.pen_servo ? 2 : 0) | (e.backlash ? 4 : 0));
+void encode_effects(const JobSpec& spec, uint8_t out[kEffectsBytes]) {
+  const PlotterEffects& e = spec.effects;
+  out[0] = uint8_t(spec.drawing);
+  out[1] = uint8_t((e.acceleration ? 1 : 0) | (e.pen_servo ? 2 : 0) | (e.backlash ? 4 : 0) |
+                   (spec.finish_home ? 0 : 8));
 }
 
 namespace {
@@ -101,13 +103,14 @@ Status decode_halo(const uint8_t* p, size_t n, DrawParams* out) {
   return Status::kOk;
 }
 
-Status decode_effects(const uint8_t* p, size_t n, DrawingEffect* drawing, PlotterEffects* out) {
-  if (n != kEffectsBytes || p[0] > uint8_t(DrawingEffect::kHatch) || (p[1] & ~7u))
+Status decode_effects(const uint8_t* p, size_t n, JobSpec* spec) {
+  if (n != kEffectsBytes || p[0] > uint8_t(DrawingEffect::kHatch) || (p[1] & ~15u))
     return Status::kMalformedRequest;
-  *drawing = DrawingEffect(p[0]);
-  out->acceleration = p[1] & 1;
-  out->pen_servo = p[1] & 2;
-  out->backlash = p[1] & 4;
+  spec->drawing = DrawingEffect(p[0]);
+  spec->effects.acceleration = p[1] & 1;
+  spec->effects.pen_servo = p[1] & 2;
+  spec->effects.backlash = p[1] & 4;
+  spec->finish_home = (p[1] & 8) == 0;
   return Status::kOk;
 }
 

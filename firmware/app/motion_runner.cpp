@@ -43,10 +43,7 @@ MotionPort MotionRunner::port() {
 Status MotionRunner::begin(const JobSpec& spec, const PreparedJob& job) {
   if (active_) return Status::kBusy;
   Status s = step_timer_init(spec.machine.tick_hz, time_scale_);
-  if (ok(s))
-    s = planner_.init(spec.machine, spec.effects, job.points, job.n_points, planner_ws_,
-                      sizeof planner_ws_);
-  if (ok(s) && job.feed.more != nullptr) planner_.set_feed(job.feed);  // a streamed plot
+  if (ok(s)) s = init_planner(&planner_, spec, job, planner_ws_, sizeof planner_ws_);
   if (ok(s)) s = prep_.init(spec.machine, spec.effects);
   if (!ok(s)) return s;
   queue_.clear();

@@ -6,6 +6,7 @@
 // compares them with `haloplot sim` of the demo job with `arena 65536`. Instruction counts
 // come from the TIM5 counter under -icount (one count per instruction).
 #include "band/conductor.h"
+#include "job/job.h"
 #include "motion/planner.h"
 #include "motion/step_engine.h"
 #include "motion/step_prep.h"
@@ -52,9 +53,10 @@ int main() {
   // The demo job (scenes/demo.job): halo 50, the paper's gap, CoreXY, acceleration and pen servo.
   BandSpec spec;
   spec.draw = DrawParams{50, HaloMode::kPaper};
-  Machine machine;
-  machine.kinematics = Kinematics::kCoreXY;
-  const PlotterEffects effects;
+  JobSpec job;  // the demo job's machine and effects (finish home, the default)
+  job.machine.kinematics = Kinematics::kCoreXY;
+  const Machine& machine = job.machine;
+  const PlotterEffects& effects = job.effects;
 
   BandConductor conductor;
   conductor.set_clock(&counter_ticks);
@@ -62,9 +64,10 @@ int main() {
   if (!ok(s)) fail("bands", s);
   alignas(8) static uint8_t planner_ws[MotionPlanner::kDefaultLookahead * 64];
   MotionPlanner planner;
-  s = planner.init(machine, effects, nullptr, 0, planner_ws, sizeof planner_ws);
+  PreparedJob streamed;
+  streamed.feed = PointFeed{&BandConductor::feed, &conductor};
+  s = init_planner(&planner, job, streamed, planner_ws, sizeof planner_ws);
   if (!ok(s)) fail("planner", s);
-  planner.set_feed(PointFeed{&BandConductor::feed, &conductor});
   StepPrep prep;
   s = prep.init(machine, effects);
   if (!ok(s)) fail("prep", s);

@@ -256,8 +256,7 @@ int main() {
 
   alignas(8) static uint8_t planner_ws[MotionPlanner::kDefaultLookahead * 64];
   MotionPlanner planner;
-  s = planner.init(spec.machine, spec.effects, job.points, job.n_points, planner_ws,
-                   sizeof planner_ws);
+  s = init_planner(&planner, spec, job, planner_ws, sizeof planner_ws);
   if (!ok(s)) fail("planner", s);
   StepPrep prep;
   s = prep.init(spec.machine, spec.effects);

@@ -84,6 +84,10 @@ InputError read_job_file(const std::string& path, JobFile* out) {
         else if (f[i] != "none")
           return bad("unknown effect '" + f[i] + "' (acceleration, pen-servo, backlash, none)");
       }
+    } else if (key == "finish") {
+      if (f.size() != 2 || (f[1] != "home" && f[1] != "stay"))
+        return bad("finish is home (end pen up at the origin, the default) or stay");
+      j.finish_home = f[1] == "home";
     } else if (key == "kinematics" && f.size() == 2 && (f[1] == "cartesian" || f[1] == "corexy")) {
       j.machine.kinematics = f[1] == "corexy" ? Kinematics::kCoreXY : Kinematics::kCartesian;
     } else if (key == "steps" && f.size() == 2) {

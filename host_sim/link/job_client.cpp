@@ -102,7 +102,7 @@ bool JobClient::sync() {
 bool JobClient::settings(const JobSpec& spec, Status* status) {
   std::vector<uint8_t> m(kMachineBytes), e(kEffectsBytes), h(kHaloBytes), hl(kHiddenBytes);
   encode_machine(spec, m.data());
-  encode_effects(spec.drawing, spec.effects, e.data());
+  encode_effects(spec, e.data());
   encode_halo(spec.draw, h.data());
   encode_hidden(spec.hidden, hl.data());
   for (auto [type, payload] :

@@ -80,20 +80,22 @@ Status run_motion(const JobSpec& spec, BandConductor* conductor, std::ostream* t
                   SimReport* r) {
   r->planner_bytes = MotionPlanner::workspace_bytes(spec.effects);
   std::vector<uint64_t> planner_ws(r->planner_bytes / 8 + 1);
+  RecordingHal hal;
+  BandFeed feed{conductor, r, &hal.now};
+  PreparedJob job;  // the whole plan's points, or (banded) none and the bands' feed
+  job.points = r->points.data();
+  job.n_points = uint32_t(r->points.size());
+  if (conductor != nullptr) {
+    conductor->set_observer(PieceObserver{&BandFeed::piece, &feed});
+    job.feed = PointFeed{&BandFeed::more, &feed};
+  }
   MotionPlanner planner;
-  Status s = planner.init(spec.machine, spec.effects, r->points.data(), uint32_t(r->points.size()),
-                          planner_ws.data(), r->planner_bytes);
+  Status s = init_planner(&planner, spec, job, planner_ws.data(), r->planner_bytes);
   if (!ok(s)) return s;
   std::unique_ptr<TraceWriter> writer;
   if (trace) writer = std::make_unique<TraceWriter>(*trace, spec.machine);
-  RecordingHal hal;
   hal.writer = writer.get();
   hal.report = r;
-  BandFeed feed{conductor, r, &hal.now};
-  if (conductor != nullptr) {
-    conductor->set_observer(PieceObserver{&BandFeed::piece, &feed});
-    planner.set_feed(PointFeed{&BandFeed::more, &feed});
-  }
   StepPrep prep;
   s = prep.init(spec.machine, spec.effects);
   if (!ok(s)) return s;
@@ -106,6 +108,10 @@ Status run_motion(const JobSpec& spec, BandConductor* conductor, std::ostream* t
   r->prep = prep.counters();
   r->final_motors[0] = engine.position(0);
   r->final_motors[1] = engine.position(1);
+  // The travel home is the plan's last point too (the exporters' G-code and HPGL end there).
+  if (spec.finish_home && !r->points.empty() &&
+      (r->points.back().x != 0 || r->points.back().y != 0))
+    r->points.push_back(PathPoint{0, 0, 0});
   if (conductor != nullptr) {
     r->bands = conductor->stats();
     r->job.path = r->bands.path;

@@ -161,5 +161,17 @@ printf 'scene scene.edges\narena 12\n' > badarena.job
 rc=$?
 expect '[ $rc -ne 0 ] && grep -q "badarena.job:2: arena" err.txt' "a bad arena names its line: $(cat err.txt)"
 
+# finish: home (the default) ends the trace at the origin, stay where the last stroke ended.
+printf 'scene scene.edges\ndrawing all\n' > home.job
+printf 'scene scene.edges\ndrawing all\nfinish stay\n' > stay.job
+"$tool" sim home.job -o home.trace --gcode home.gcode 2> err.txt && "$tool" sim stay.job -o stay.trace 2>> err.txt
+rc=$?
+expect '[ $rc -eq 0 ] && [ "$(tail -1 home.trace)" != "$(tail -1 stay.trace)" ] && grep -q "X0.000 Y0.000" home.gcode' "finish home travels to the origin, stay does not: $(cat err.txt; tail -1 home.trace stay.trace; grep -c . home.gcode)"
+printf 'scene scene.edges\nfinish sideways\n' > badfinish.job
+"$tool" sim badfinish.job -o x.trace 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "badfinish.job:2: finish is home" err.txt' "a bad finish names its line: $(cat err.txt)"
+
+
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

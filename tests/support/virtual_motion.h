@@ -40,8 +40,7 @@ struct VirtualMotion {
         &out};
     std::vector<uint8_t> ws(MotionPlanner::kDefaultLookahead * 64);
     MotionPlanner planner;
-    Status s =
-        planner.init(spec.machine, spec.effects, job.points, job.n_points, ws.data(), ws.size());
+    Status s = init_planner(&planner, spec, job, ws.data(), ws.size());
     StepPrep prep;
     if (ok(s)) s = prep.init(spec.machine, spec.effects);
     if (!ok(s)) return s;

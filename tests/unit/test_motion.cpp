@@ -321,5 +321,35 @@ int main() {
     m.travel_speed = 20000;  // fine on cartesian, sqrt(2) * 20,000 > 25,000 on CoreXY
     CHECK(validate(m) == Status::kStepRateExceeded);
   }
+  // 7. Home: a job ends pen up at the origin (finish home, the default), or where its last
+  //    stroke ended (finish stay); the trace's own steps sum to that, and its end line is the
+  //    last event. Both kinematics, a step ratio that rounds.
+  for (Kinematics k : {Kinematics::kCartesian, Kinematics::kCoreXY}) {
+    JobSpec home = base_spec(k, 7, 3);
+    JobSpec stay = home;
+    stay.finish_home = false;
+    const Run h = sim(home, scene), st = sim(stay, scene);
+    CHECK(ok(h.status) && ok(st.status));
+    CHECK_EQ(h.report.final_motors[0], 0);
+    CHECK_EQ(h.report.final_motors[1], 0);
+    const auto ph = reference::parse_trace_independently(h.trace);
+    for (int m = 0; m < 2; ++m) {
+      int64_t sum = 0;
+      for (int8_t d : ph.step_dir[m]) sum += d;
+      CHECK_EQ(sum, int64_t{0});
+    }
+    int64_t last = 0;
+    for (int m = 0; m < 2; ++m)
+      if (!ph.step_tick[m].empty()) last = std::max(last, ph.step_tick[m].back());
+    CHECK_EQ(int64_t(ph.end), last);  // the end line is the arrival home
+    const PathPoint& end = st.report.points.back();
+    int32_t want[2];
+    motor_position(stay.machine, end.x, end.y, want);
+    CHECK(end.x != 0 || end.y != 0);
+    CHECK_EQ(st.report.final_motors[0], want[0]);
+    CHECK_EQ(st.report.final_motors[1], want[1]);
+    CHECK(h.report.end_tick > st.report.end_tick);     // the travel home takes time
+    CHECK(h.report.pen_lifts == st.report.pen_lifts);  // and no extra pen change
+  }
   return check::finish("motion");
 }

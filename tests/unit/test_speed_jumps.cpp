@@ -135,6 +135,7 @@ void triangles_peak_in_the_middle() {
     JobSpec spec;
     spec.drawing = DrawingEffect::kAllEdges;
     spec.effects.pen_servo = false;
+    spec.finish_home = false;  // the one travel alone
     const int32_t x = 1000 + len, y = 1000 + len / 3;
     std::ostringstream out;
     SimReport r;
