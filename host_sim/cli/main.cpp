@@ -540,8 +540,9 @@ int cmd_send(int argc, char** argv);    // cli/cmd_send.cpp
 int cmd_view2d(int argc, char** argv);  // cli/cmd_view2d.cpp
 }  // namespace haloplot::host
 
-int main(int argc, char** argv) {
-  if (argc < 2) return fail(kUsage);
+namespace {
+
+int run_command(int argc, char** argv) {
   const std::string cmd = argv[1];
   if (cmd == "--help" || cmd == "-h" || cmd == "help") {
     std::cout << kUsage;
@@ -557,4 +558,17 @@ int main(int argc, char** argv) {
   if (cmd == "send") return haloplot::host::cmd_send(argc, argv);
   if (cmd == "view2d") return haloplot::host::cmd_view2d(argc, argv);
   return fail("unknown command '" + cmd + "'\n" + kUsage);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) return fail(kUsage);
+  // Every output of the command is staged here and put in place only when the command
+  // succeeds, all together (io/atomic_file.h); a failed command leaves none behind.
+  haloplot::host::OutputSet outputs;
+  const int rc = run_command(argc, argv);
+  if (rc != 0) return rc;
+  const std::string error = outputs.commit();
+  return error.empty() ? 0 : fail(error);
 }

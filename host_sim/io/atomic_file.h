@@ -1,12 +1,45 @@
-// Write-then-rename, so a failed run never leaves a half-written output behind.
+// The outputs of one run, committed together or not at all: a failed run leaves no output
+// behind, neither half-written nor a partial set (the SVG without the spans that failed).
+//
+// Where an output goes:
+//   - a regular file, or a path that does not exist yet: written to PATH.tmp beside it and
+//     renamed over it when the run commits;
+//   - a symbolic link: followed; its target is written as above and the link stays a link;
+//   - "-": standard output; a character device (/dev/null, a serial port) or a FIFO: written
+//     through when the run commits (staged in a temporary file until then), never replaced;
+//   - anything else (a directory, a socket, a link to nowhere) is refused by name.
 #pragma once
 #include <fstream>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace haloplot::host {
 
-// Calls write(stream) on PATH.tmp, then renames it over PATH. Returns "" or an error message.
+class OutputSet {
+ public:
+  OutputSet();   // becomes the current set: write_atomically() stages into it
+  ~OutputSet();  // removes what was staged and not committed
+  OutputSet(const OutputSet&) = delete;
+  OutputSet& operator=(const OutputSet&) = delete;
+
+  // Stages one output; "" or an error message naming the path.
+  std::string stage(const std::string& path, const std::function<bool(std::ostream&)>& write);
+  // Puts every staged output in place, in the order staged; "" or an error message.
+  std::string commit();
+
+ private:
+  struct Staged {
+    std::string path, target, tmp;
+    bool through;  // "-", a device or a FIFO: copied into, never replaced
+  };
+  std::vector<Staged> staged_;
+  OutputSet* previous_;
+};
+
+// Stages PATH in the current OutputSet (the haloplot tool keeps one per command and commits
+// it when the command succeeds); with none current, writes and commits at once. Returns "" or
+// an error message.
 std::string write_atomically(const std::string& path,
                              const std::function<bool(std::ostream&)>& write);
 

@@ -172,6 +172,39 @@ printf 'scene scene.edges\nfinish sideways\n' > badfinish.job
 rc=$?
 expect '[ $rc -ne 0 ] && grep -q "badfinish.job:2: finish is home" err.txt' "a bad finish names its line: $(cat err.txt)"
 
+# Outputs: "-" is standard output; links are written through, devices and FIFOs too, never
+# replaced; a directory is refused by name; a failed secondary output leaves no output at all.
+"$tool" plot scene.edges --halo 5 -o - > stdout.svg 2> err.txt
+rc=$?
+expect '[ $rc -eq 0 ] && [ ! -e - ] && grep -q "<svg" stdout.svg' "-o - writes the SVG to standard output: $(cat err.txt)"
+: > real.svg
+ln -s real.svg link.svg
+"$tool" plot scene.edges --halo 5 -o link.svg 2> err.txt
+rc=$?
+expect '[ $rc -eq 0 ] && [ -L link.svg ] && grep -q "<svg" real.svg' "an output that is a symlink is written through, the link kept: $(cat err.txt)"
+mkfifo pipe.svg
+timeout 30 cat pipe.svg > from_pipe.svg &
+reader=$!
+"$tool" plot scene.edges --halo 5 -o pipe.svg 2> err.txt
+rc=$?
+wait $reader
+expect '[ $rc -eq 0 ] && [ -p pipe.svg ] && cmp -s from_pipe.svg stdout.svg' "a FIFO is written through and stays a FIFO: $(cat err.txt)"
+# A device node of our own (a copy of /dev/null, so a tool that replaced it harms nothing).
+if mknod null.dev c 1 3 2> /dev/null; then
+  "$tool" plot scene.edges --halo 5 -o null.dev 2> err.txt
+  rc=$?
+  expect '[ $rc -eq 0 ] && [ -c null.dev ]' "a character device stays a device: $(cat err.txt)"
+fi
+mkdir adir
+"$tool" plot scene.edges --halo 5 -o adir 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "adir: cannot write there (is a directory)" err.txt && [ -d adir ]' "a directory is refused by name: $(cat err.txt)"
+"$tool" plot scene.edges --halo 5 -o first.svg --spans no_such_dir/x.spans 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && [ ! -e first.svg ] && [ ! -e first.svg.tmp ]' "a failed secondary output leaves no SVG: $(cat err.txt; ls)"
+"$tool" sim home.job -o second.trace --gcode no_such_dir/x.gcode 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && [ ! -e second.trace ]' "a failed G-code leaves no trace: $(cat err.txt)"
 
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
