@@ -87,8 +87,11 @@ int cmd_send(int argc, char** argv) {
                                so.hatch_params.angle_mdeg,
                                so.hatch_params.mdeg_per_depth};
     if (jf.spec.drawing == DrawingEffect::kHiddenRemoved ||
-        jf.spec.drawing == DrawingEffect::kHiddenDashed)
-      triangles = triangulate(model.vertices, model.faces, nullptr);
+        jf.spec.drawing == DrawingEffect::kHiddenDashed) {
+      TriangulateStats ts;
+      triangles = triangulate(model.vertices, model.faces, &ts);
+      if (ts.first_not_simple >= 0) return send_fail(not_simple_message(jf.scene_path, model, ts));
+    }
   } else {
     ie = read_edges_file(jf.scene_path, &edges);
     if (ie.failed()) return send_fail(ie.message());

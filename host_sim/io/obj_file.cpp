@@ -47,8 +47,8 @@ InputError read_obj(std::istream& in, const std::string& name, ObjModel* out) {
   while (reader.next(&f)) {
     const std::string& k = f[0];
     if (k == "v") {
-      if (f.size() < 4 || f.size() > 5)
-        return {name, reader.line(), "a vertex needs x y z (and an optional w)"};
+      if (f.size() < 4)
+        return {name, reader.line(), "a vertex needs x y z (then w, or r g b, may follow)"};
       double c[3];
       for (int i = 0; i < 3; ++i)
         if (!parse_real(f[1 + i], &c[i]))
@@ -71,6 +71,7 @@ InputError read_obj(std::istream& in, const std::string& name, ObjModel* out) {
       if (k == "f") {
         add_edge(idx.back(), idx.front());
         out->faces.push_back(idx);
+        out->face_lines.push_back(uint32_t(reader.line()));
       } else {
         ++out->lines;
       }

@@ -1,4 +1,5 @@
-// Wavefront OBJ on the host: `v x y z [w]`, `f` n-gons (indices in the v, v/vt, v//vn and
+// Wavefront OBJ on the host: `v x y z [w | r g b]` (trailing fields such as vertex colours are
+// ignored), `f` n-gons (indices in the v, v/vt, v//vn and
 // v/vt/vn forms, negative indices counting back from the last vertex), `l` polylines; other
 // statements (vt, vn, o, g, s, usemtl, mtllib, ...) are skipped. Comments, blank lines, CRLF
 // and a last line without a newline are fine. Errors name the file, the line and the reason.
@@ -22,6 +23,7 @@ struct ObjModel {
   std::vector<Point3> vertices;              // integer world coordinates (see above)
   std::vector<uint32_t> edge_pairs;          // 2 vertex indices per edge
   std::vector<std::vector<uint32_t>> faces;  // vertex indices per face, as given
+  std::vector<uint32_t> face_lines;          // the line each face was read from
   uint32_t lines = 0;                        // `l` statements read
 };
 

@@ -116,6 +116,16 @@ bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* e
   return dump_edges(o, path, *edges, error);
 }
 
+std::string not_simple_message(const std::string& path, const ObjModel& model,
+                               const TriangulateStats& stats) {
+  const size_t f = size_t(stats.first_not_simple);
+  const std::string line = f < model.face_lines.size() ? std::to_string(model.face_lines[f]) : "?";
+  return path + ":" + line +
+         ": this face's boundary crosses itself, so no triangulation of it is right (" +
+         std::to_string(stats.not_simple) + " such face" + (stats.not_simple > 1 ? "s" : "") +
+         " in the model); split it into simple polygons";
+}
+
 bool load_solid_scene(const Options& o, const std::string& path, SolidScene* scene,
                       TriangulateStats* stats, std::string* error) {
   if (!ends_with(path, ".obj")) {
@@ -125,7 +135,13 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
   ObjModel model;
   if (!project_obj(o, path, &model, &scene->vertices, error)) return false;
   scene->edge_pairs = model.edge_pairs;
-  scene->triangles = triangulate(model.vertices, model.faces, stats);
+  TriangulateStats ts;
+  scene->triangles = triangulate(model.vertices, model.faces, &ts);
+  if (stats != nullptr) *stats = ts;
+  if (ts.first_not_simple >= 0) {
+    *error = not_simple_message(path, model, ts);
+    return false;
+  }
   std::vector<Edge3> edges(model.edge_pairs.size() / 2);
   const Status s =
       edges_from_indices(scene->vertices.data(), uint32_t(scene->vertices.size()),

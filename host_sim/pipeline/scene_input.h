@@ -35,6 +35,12 @@ bool job_solid_settings(const JobFile& jf, SolidOptions* so, View* view, std::st
 // (visible pieces, dashes, and the outline pass redrawn last), decided on the host.
 bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* error);
 
+struct ObjModel;
+// The refusal of a face whose boundary crosses itself (TriangulateStats::first_not_simple):
+// "FILE:LINE: this face's boundary crosses itself: ...".
+std::string not_simple_message(const std::string& path, const ObjModel& model,
+                               const TriangulateStats& stats);
+
 // An OBJ model with its faces for the hidden-line modes: projected vertices, the drawn edges
 // (in the order every output uses) and the polygons split into triangles.
 bool load_solid_scene(const Options& o, const std::string& path, SolidScene* scene,

@@ -2,9 +2,13 @@
 // triangles). Ear clipping in the polygon's own plane, exactly in integers: the plane's normal
 // is Newell's (sums of products of 20-bit world coordinates), the polygon is projected along
 // its largest component, and ears are tested with exact orientations. Convex polygons come out
-// as the fan from their first corner. Corners keep the polygon's winding, so the triangles face
-// the way the polygon did. A polygon that is not simple gets the fan (and is counted), since no
-// triangulation of it is right; repeated corners are dropped first.
+// as the fan from their first corner. Corners keep the polygon's winding, so every triangle
+// faces the way the polygon does. Repeated corners and a loop given twice are dropped first;
+// a boundary that touches itself (a keyhole bridge to an inner boundary, traversed there and
+// back) is clipped as one weakly simple polygon. A boundary that crosses itself has no right
+// triangulation: it is counted (first_not_simple names it) for the caller to refuse, and no
+// triangle of its undone part is made. A polygon with no area (all corners on a line) is
+// counted as degenerate and gives no triangle.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -17,6 +21,7 @@ namespace haloplot::host {
 
 struct TriangulateStats {
   uint32_t polygons = 0, triangles = 0, concave = 0, not_simple = 0, degenerate = 0;
+  int64_t first_not_simple = -1;  // the first face whose boundary crosses itself
 };
 
 std::vector<Triangle> triangulate(const std::vector<Point3>& world,
