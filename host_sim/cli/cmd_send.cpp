@@ -1,7 +1,10 @@
 // haloplot send JOB.job --port PATH: upload a job to a plotter controller and plot it, over
 // the job protocol (core/protocol). Options re-plot with another halo width (DRAW only on
 // the controller), damage frames on purpose (to test the link), and end a QEMU test image.
+#include <sys/stat.h>
+
 #include <chrono>
+#include <cstdio>
 #include <iostream>
 #include <thread>
 
@@ -120,6 +123,10 @@ int cmd_send(int argc, char** argv) {
   // A socket server that still holds the previous session may close a new connection at
   // once (QEMU's chardev serves one client): reconnect a few times before giving up.
   std::unique_ptr<Transport> port;
+  struct stat port_stat {};
+  if (::stat(o.get("--port").c_str(), &port_stat) != 0 && o.get("--port").rfind("/dev/", 0) != 0)
+    std::fprintf(stderr, "haloplot send: waiting up to 20 s for %s to appear\n",
+                 o.get("--port").c_str());
   for (int attempt = 0; attempt < 20; ++attempt) {
     port = open_port(o.get("--port"), 20000, &error);
     if (!port) return send_fail(error);

@@ -68,6 +68,32 @@ bool one_input_and_output(const Options& o) {
   return o.positional.size() == 1 && !o.get("-o").empty();
 }
 
+// The usage lines of one command (its line in kUsage and the lines that continue it).
+std::string usage_of(const std::string& cmd) {
+  std::istringstream in(kUsage);
+  std::string line, out;
+  bool in_cmd = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("  haloplot ", 0) == 0) in_cmd = line.rfind("  haloplot " + cmd + " ", 0) == 0;
+    if (in_cmd) out += line + "\n";
+  }
+  return out.empty() ? std::string(kUsage) : "usage:\n" + out;
+}
+
+// What is missing or extra among the input and -o, named, then the command's usage.
+int bad_arguments(const Options& o, const std::string& cmd) {
+  std::string what;
+  if (o.positional.empty())
+    what = "missing the input file";
+  else if (o.positional.size() > 1)
+    what = "one input file expected, got " + std::to_string(o.positional.size()) + " ('" +
+           o.positional[0] + "', '" + o.positional[1] + "'" +
+           (o.positional.size() > 2 ? ", ..." : "") + ")";
+  else
+    what = "missing -o OUTPUT";
+  return fail(cmd + ": " + what + "\n" + usage_of(cmd));
+}
+
 int fail_status(const char* stage, Status s) {
   return fail(std::string(stage) + " failed: " + status_name(s));
 }
@@ -210,7 +236,9 @@ int cmd_demo_scene(int argc, char** argv) {
   const Options o = parse_options(argc, argv, 2, {"-o", "--cubes"}, {});
   if (!o.error.empty()) return fail(o.error);
   if (o.get("-o").empty() || !o.positional.empty())
-    return fail(std::string("bad arguments\n") + kUsage);
+    return fail(std::string(o.get("-o").empty() ? "demo-scene: missing -o OUTPUT"
+                                                : "demo-scene: takes no input file") +
+                "\n" + usage_of("demo-scene"));
   int64_t cubes = 28;
   std::string error;
   if (!read_int_option(o, "--cubes", 1, 200, &cubes, &error)) return fail(error);
@@ -267,9 +295,11 @@ bool parse_millionths(const std::string& s, int64_t* out) {
 int cmd_random_scene(int argc, char** argv) {
   const Options o = parse_options(argc, argv, 2, {"-o", "--edges", "--length", "--seed"}, {});
   if (!o.error.empty()) return fail(o.error);
-  if (o.get("-o").empty() || o.get("--edges").empty() || o.get("--length").empty() ||
-      !o.positional.empty())
-    return fail(std::string("bad arguments\n") + kUsage);
+  for (const char* need : {"-o", "--edges", "--length"})
+    if (o.get(need).empty())
+      return fail(std::string("random-scene: missing ") + need + "\n" + usage_of("random-scene"));
+  if (!o.positional.empty())
+    return fail("random-scene: takes no input file\n" + usage_of("random-scene"));
   int64_t n = 0, seed = 1, l = 0;
   std::string error;
   if (!read_int_option(o, "--edges", 1, 100000000, &n, &error) ||
@@ -293,7 +323,7 @@ int cmd_cut(int argc, char** argv) {
   std::set<std::string> valued = kCutValued;
   const Options o = parse_options(argc, argv, 2, valued, {"--stats"});
   if (!o.error.empty()) return fail(o.error);
-  if (!one_input_and_output(o)) return fail(std::string("bad arguments\n") + kUsage);
+  if (!one_input_and_output(o)) return bad_arguments(o, "cut");
   CutParams cp;
   std::string error;
   if (!cut_params(o, &cp, &error)) return fail(error);
@@ -315,7 +345,7 @@ int cmd_draw(int argc, char** argv) {
   const Options o =
       parse_options(argc, argv, 2, {"-o", "--halo", "--spans"}, {"--exact-halo", "--stats"});
   if (!o.error.empty()) return fail(o.error);
-  if (!one_input_and_output(o)) return fail(std::string("bad arguments\n") + kUsage);
+  if (!one_input_and_output(o)) return bad_arguments(o, "draw");
   DrawParams dp;
   std::string error;
   if (!draw_params(o, &dp, &error)) return fail(error);
@@ -368,11 +398,16 @@ int cmd_plot(int argc, char** argv) {
   valued.insert(std::begin(kSceneOptions), std::end(kSceneOptions));
   const Options o = parse_options(argc, argv, 2, valued, {"--exact-halo", "--stats", "--outline"});
   if (!o.error.empty()) return fail(o.error);
-  if (!one_input_and_output(o)) return fail(std::string("bad arguments\n") + kUsage);
+  if (!one_input_and_output(o)) return bad_arguments(o, "plot");
   if (o.get("--mode", "haloed") != "haloed") return cmd_plot_solid(o);
   if (o.has("--outline"))
     return fail(
         "--outline needs the faces: use it with --mode all, hidden-removed or hidden-dashed");
+  for (const char* solid_only : {"--hatch", "--dash", "--method"})
+    if (!o.get(solid_only).empty())
+      return fail(std::string(solid_only) +
+                  " is for solid drawings: use it with --mode hidden-removed or hidden-dashed" +
+                  " (haloed lines have no faces)");
   CutParams cp;
   DrawParams dp;
   std::string error;
@@ -426,7 +461,7 @@ int cmd_sim(int argc, char** argv) {
   const Options o =
       parse_options(argc, argv, 2, {"-o", "--gcode", "--hpgl", "--arena"}, {"--stats"});
   if (!o.error.empty()) return fail(o.error);
-  if (!one_input_and_output(o)) return fail(std::string("bad arguments\n") + kUsage);
+  if (!one_input_and_output(o)) return bad_arguments(o, "sim");
   JobFile jf;
   InputError ie = read_job_file(o.positional[0], &jf);
   if (ie.failed()) return fail(ie.message());
@@ -502,7 +537,7 @@ int cmd_sim(int argc, char** argv) {
 int cmd_replay(int argc, char** argv) {
   const Options o = parse_options(argc, argv, 2, {"-o"}, {"--stats"});
   if (!o.error.empty()) return fail(o.error);
-  if (!one_input_and_output(o)) return fail(std::string("bad arguments\n") + kUsage);
+  if (!one_input_and_output(o)) return bad_arguments(o, "replay");
   std::ifstream in(o.positional[0]);
   if (!in) return fail(o.positional[0] + ": cannot open");
   Trace t;
@@ -548,6 +583,15 @@ int run_command(int argc, char** argv) {
     std::cout << kUsage;
     return 0;
   }
+  if (cmd == "--version" || cmd == "version") {
+    std::cout << "haloplot " HALOPLOT_VERSION "\n";
+    return 0;
+  }
+  for (int i = 2; i < argc; ++i)
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+      std::cout << usage_of(cmd);
+      return 0;
+    }
   if (cmd == "demo-scene") return cmd_demo_scene(argc, argv);
   if (cmd == "random-scene") return cmd_random_scene(argc, argv);
   if (cmd == "cut") return cmd_cut(argc, argv);
@@ -557,7 +601,10 @@ int run_command(int argc, char** argv) {
   if (cmd == "replay") return cmd_replay(argc, argv);
   if (cmd == "send") return haloplot::host::cmd_send(argc, argv);
   if (cmd == "view2d") return haloplot::host::cmd_view2d(argc, argv);
-  return fail("unknown command '" + cmd + "'\n" + kUsage);
+  const std::string near = nearest(cmd, {"demo-scene", "random-scene", "cut", "draw", "plot", "sim",
+                                         "replay", "send", "view2d"});
+  return fail("unknown command '" + cmd + "'" +
+              (near.empty() ? "" : " (did you mean " + near + "?)") + "\n" + kUsage);
 }
 
 }  // namespace

@@ -21,7 +21,13 @@ struct Options {
   }
 };
 
-// valued: options that take a value ("-o", "--halo"); boolean: options that do not.
+// The edit distance between two words (insertions, deletions, substitutions).
+size_t edit_distance(const std::string& a, const std::string& b);
+// The candidate nearest to `word` within two edits, or "" (for "did you mean" suggestions).
+std::string nearest(const std::string& word, const std::vector<std::string>& candidates);
+
+// valued: options that take a value ("-o", "--halo"); boolean: options that do not. An unknown
+// option is an error that suggests the nearest known one.
 Options parse_options(int argc, char** argv, int first, const std::set<std::string>& valued,
                       const std::set<std::string>& boolean);
 

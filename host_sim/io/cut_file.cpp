@@ -53,11 +53,11 @@ InputError read_cut(std::istream& in, const std::string& name, LoadedCut* out) {
       int64_t v[7];
       if (!parse_int(f[1], 0, kMaxEdges, &v[0]) || v[0] != int64_t(out->edges.size()))
         return {name, line,
-                "edge index '" + f[1] + "' out of order (expected " +
+                "edge index '" + excerpt(f[1]) + "' out of order (expected " +
                     std::to_string(out->edges.size()) + ")"};
       for (int i = 1; i < 7; ++i)
         if (!parse_int(f[i + 1], 0, kCoordMax, &v[i]))
-          return {name, line, "'" + f[i + 1] + "' is not an integer in [0, 1048575]"};
+          return {name, line, "'" + excerpt(f[i + 1]) + "' is not an integer in [0, 1048575]"};
       out->edges.push_back(Edge3{{int32_t(v[1]), int32_t(v[2]), int32_t(v[3])},
                                  {int32_t(v[4]), int32_t(v[5]), int32_t(v[6])}});
     } else if (f[0] == "c") {
@@ -66,13 +66,13 @@ InputError read_cut(std::istream& in, const std::string& name, LoadedCut* out) {
       const int64_t n = int64_t(out->edges.size());
       int64_t behind, front, t;
       if (!parse_int(f[1], 0, n - 1, &behind))
-        return {name, line, "BEHIND '" + f[1] + "' is not an edge index"};
+        return {name, line, "BEHIND '" + excerpt(f[1]) + "' is not an edge index"};
       if (!parse_int(f[2], 0, n - 1, &front) || front == behind)
-        return {name, line, "FRONT '" + f[2] + "' is not another edge's index"};
+        return {name, line, "FRONT '" + excerpt(f[2]) + "' is not another edge's index"};
       if (!parse_int(f[5], 0, 0xffffffffLL, &t))
-        return {name, line, "T '" + f[5] + "' is not an integer in [0, 2^32)"};
+        return {name, line, "T '" + excerpt(f[5]) + "' is not an integer in [0, 2^32)"};
       if (f[6] != "cross" && f[6] != "near")
-        return {name, line, "KIND '" + f[6] + "' is neither 'cross' nor 'near'"};
+        return {name, line, "KIND '" + excerpt(f[6]) + "' is neither 'cross' nor 'near'"};
       Crossing c{uint32_t(behind), uint32_t(front) | (f[6] == "near" ? Crossing::kNearBit : 0u),
                  uint32_t(t)};
       if (!out->crossings.empty()) {
@@ -86,9 +86,10 @@ InputError read_cut(std::istream& in, const std::string& name, LoadedCut* out) {
       }
       out->crossings.push_back(c);
     } else {
-      return {name, line, "unknown record '" + f[0] + "' (expected 'e' or 'c')"};
+      return {name, line, "unknown record '" + excerpt(f[0]) + "' (expected 'e' or 'c')"};
     }
   }
+  if (!reader.error().empty()) return {name, reader.line(), reader.error()};
   if (in.bad()) return {name, 0, "read error"};
   const size_t at = comments.find("# reach ");
   if (at != std::string::npos) {

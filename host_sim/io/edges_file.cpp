@@ -19,12 +19,13 @@ InputError read_edges(std::istream& in, const std::string& name, std::vector<Edg
     int64_t v[6];
     for (int i = 0; i < 6; ++i)
       if (!parse_int(f[i], 0, kCoordMax, &v[i]))
-        return {
-            name, reader.line(),
-            "field " + std::to_string(i + 1) + " '" + f[i] + "' is not an integer in [0, 1048575]"};
+        return {name, reader.line(),
+                "field " + std::to_string(i + 1) + " '" + excerpt(f[i]) +
+                    "' is not an integer in [0, 1048575]"};
     edges->push_back(Edge3{{int32_t(v[0]), int32_t(v[1]), int32_t(v[2])},
                            {int32_t(v[3]), int32_t(v[4]), int32_t(v[5])}});
   }
+  if (!reader.error().empty()) return {name, reader.line(), reader.error()};
   if (in.bad()) return {name, 0, "read error"};
   return {};
 }

@@ -1,12 +1,100 @@
 #include "io/job_file.h"
 
+#include <algorithm>
 #include <fstream>
+#include <map>
 
+#include "cli/options.h"
 #include "cli/solid_options.h"
 #include "io/line_reader.h"
 #include "pipeline/scene_input.h"
 
 namespace haloplot::host {
+namespace {
+
+// Every key a job file may hold, with the form of its value (for the message when a value is
+// malformed, and for a suggestion when a key is misspelt).
+const std::map<std::string, std::string> kKeys = {
+    {"scene", "FILE (.edges or .obj)"},
+    {"drawing", "all | haloed | hidden-removed | hidden-dashed"},
+    {"hatch", "SPACING ANGLE TURN (mm, degrees)"},
+    {"view", "AZ,EL (degrees)"},
+    {"perspective", "D (world units)"},
+    {"method", "auto | qi | fallback"},
+    {"dash", "DASH GAP (mm)"},
+    {"outline", "on | off"},
+    {"halo", "W (steps)"},
+    {"halo-mode", "paper | exact"},
+    {"effects", "acceleration pen-servo backlash | none"},
+    {"finish", "home | stay"},
+    {"kinematics", "cartesian | corexy"},
+    {"steps", "N/D (motor steps per plot step)"},
+    {"backlash", "A B (motor steps)"},
+    {"tick-hz", "HZ"},
+    {"min-interval", "TICKS"},
+    {"max-step-rate", "STEPS/S"},
+    {"draw-speed", "STEPS/S"},
+    {"travel-speed", "STEPS/S"},
+    {"accel", "STEPS/S^2"},
+    {"junction-deviation", "STEPS"},
+    {"pen-travel-ticks", "TICKS"},
+    {"pen-settle-ticks", "TICKS"},
+    {"arena", "BYTES"},
+    {"steps-per-mm", "STEPS"},
+};
+
+// What is wrong with a line whose key no branch took.
+std::string unknown_or_malformed(const std::vector<std::string>& f) {
+  const std::string& key = f[0];
+  auto it = kKeys.find(key);
+  if (it != kKeys.end()) {
+    std::string value;
+    for (size_t i = 1; i < f.size(); ++i) value += (i > 1 ? " " : "") + f[i];
+    return key + " takes " + it->second + ", not '" + excerpt(value) + "'";
+  }
+  std::vector<std::string> keys;
+  for (const auto& kv : kKeys) keys.push_back(kv.first);
+  const std::string best = nearest(key, keys);
+  return "unknown setting '" + excerpt(key) + "'" +
+         (best.empty() ? "" : " (did you mean '" + best + "'?)");
+}
+
+// Why validate() refused the machine, by the settings that broke it, and the line of the one
+// most to blame (0 when none was set in the file).
+InputError machine_problem(const std::string& path, const Machine& m, Status s,
+                           const std::map<std::string, int>& lines) {
+  auto at = [&](std::initializer_list<const char*> keys) {
+    int line = 0;
+    for (const char* k : keys) {
+      auto it = lines.find(k);
+      if (it != lines.end() && it->second > line) line = it->second;
+    }
+    return line;
+  };
+  const std::string ratio = std::to_string(m.steps_num) + "/" + std::to_string(m.steps_den);
+  if (s == Status::kStepRateExceeded) {
+    const uint32_t fastest = std::max(m.draw_speed, m.travel_speed);
+    const double motor = double(fastest) * m.steps_num / m.steps_den *
+                         (m.kinematics == Kinematics::kCoreXY ? 1.4142135623730951 : 1.0);
+    return {path, at({"steps", "draw-speed", "travel-speed", "max-step-rate", "kinematics"}),
+            "a speed of " + std::to_string(fastest) + " steps/s at steps " + ratio +
+                (m.kinematics == Kinematics::kCoreXY ? " on CoreXY (x sqrt 2)" : "") + " needs " +
+                std::to_string(int64_t(motor)) + " motor steps/s, above max-step-rate " +
+                std::to_string(m.max_step_rate)};
+  }
+  if (s == Status::kTimerFloor)
+    return {path, at({"max-step-rate", "min-interval", "tick-hz"}),
+            "max-step-rate " + std::to_string(m.max_step_rate) + " needs steps " +
+                std::to_string(m.tick_hz / std::max<uint32_t>(m.max_step_rate, 1)) +
+                " ticks apart at tick-hz " + std::to_string(m.tick_hz) + ", below min-interval " +
+                std::to_string(m.min_interval)};
+  if (m.steps_num > 16 * m.steps_den || 64 * m.steps_num < m.steps_den)
+    return {path, at({"steps"}),
+            "steps " + ratio + ": the motor steps per plot step must lie in [1/64, 16]"};
+  return {path, 0, std::string("machine settings rejected: ") + status_name(s)};
+}
+
+}  // namespace
 
 InputError read_job_file(const std::string& path, JobFile* out) {
   std::ifstream in(path);
@@ -15,9 +103,11 @@ InputError read_job_file(const std::string& path, JobFile* out) {
   JobSpec& j = out->spec;
   LineReader reader(in);
   std::vector<std::string> f;
+  std::map<std::string, int> key_lines;  // where each setting was last made
   while (reader.next(&f)) {
     const int line = reader.line();
     const std::string& key = f[0];
+    key_lines[key] = line;
     auto bad = [&](const std::string& what) { return InputError{path, line, what}; };
     auto number = [&](int64_t lo, int64_t hi, uint32_t* dst) -> bool {
       int64_t v;
@@ -44,8 +134,8 @@ InputError read_job_file(const std::string& path, JobFile* out) {
             "hatching is the setting 'hatch SPACING ANGLE TURN' with drawing hidden-removed or "
             "hidden-dashed");
       else
-        return bad("drawing must be all, haloed, hidden-removed or hidden-dashed, not '" + f[1] +
-                   "'");
+        return bad("drawing must be all, haloed, hidden-removed or hidden-dashed, not '" +
+                   excerpt(f[1]) + "'");
     } else if (key == "hatch" && f.size() >= 2 && f.size() <= 4) {
       std::string v = f[1];
       for (size_t k = 2; k < f.size(); ++k) v += "," + f[k];
@@ -82,7 +172,8 @@ InputError read_job_file(const std::string& path, JobFile* out) {
         else if (f[i] == "backlash")
           j.effects.backlash = true;
         else if (f[i] != "none")
-          return bad("unknown effect '" + f[i] + "' (acceleration, pen-servo, backlash, none)");
+          return bad("unknown effect '" + excerpt(f[i]) +
+                     "' (acceleration, pen-servo, backlash, none)");
       }
     } else if (key == "finish") {
       if (f.size() != 2 || (f[1] != "home" && f[1] != "stay"))
@@ -134,9 +225,10 @@ InputError read_job_file(const std::string& path, JobFile* out) {
     } else if (key == "steps-per-mm") {
       if (!number(1, 100000, &out->style.steps_per_mm)) return bad("steps-per-mm in [1, 100000]");
     } else {
-      return bad("unknown or malformed setting '" + key + "'");
+      return bad(unknown_or_malformed(f));
     }
   }
+  if (!reader.error().empty()) return {path, reader.line(), reader.error()};
   if (out->scene_path.empty()) return {path, 0, "no 'scene' line"};
   const bool obj = out->scene_path.size() > 4 &&
                    out->scene_path.compare(out->scene_path.size() - 4, 4, ".obj") == 0;
@@ -144,7 +236,7 @@ InputError read_job_file(const std::string& path, JobFile* out) {
     return {path, 0, "drawing " + out->solid_options["--mode"] + " needs an .obj scene (faces)"};
   if (j.draw.mode == HaloMode::kExact) j.cut.reach = j.draw.halo;
   const Status s = validate(j.machine);
-  if (!ok(s)) return {path, 0, std::string("machine settings rejected: ") + status_name(s)};
+  if (!ok(s)) return machine_problem(path, j.machine, s, key_lines);
   return {};
 }
 

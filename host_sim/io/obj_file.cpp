@@ -23,8 +23,8 @@ bool parse_index(const std::string& corner, size_t n_vertices, uint32_t* out, st
   const std::string v = corner.substr(0, corner.find('/'));
   int64_t i = 0;
   if (!parse_int(v, -int64_t(n_vertices), int64_t(n_vertices), &i) || i == 0) {
-    *why = "vertex index '" + v + "' is not in 1.." + std::to_string(n_vertices) + " or -1..-" +
-           std::to_string(n_vertices) + " (vertices defined so far)";
+    *why = "vertex index '" + excerpt(v) + "' is not in 1.." + std::to_string(n_vertices) +
+           " or -1..-" + std::to_string(n_vertices) + " (vertices defined so far)";
     return false;
   }
   *out = uint32_t(i > 0 ? i - 1 : int64_t(n_vertices) + i);
@@ -52,7 +52,7 @@ InputError read_obj(std::istream& in, const std::string& name, ObjModel* out) {
       double c[3];
       for (int i = 0; i < 3; ++i)
         if (!parse_real(f[1 + i], &c[i]))
-          return {name, reader.line(), "coordinate '" + f[1 + i] + "' is not a number"};
+          return {name, reader.line(), "coordinate '" + excerpt(f[1 + i]) + "' is not a number"};
       xyz.insert(xyz.end(), c, c + 3);
     } else if (k == "f" || k == "l") {
       const size_t need = k == "f" ? 3 : 2;
@@ -77,6 +77,7 @@ InputError read_obj(std::istream& in, const std::string& name, ObjModel* out) {
       }
     }
   }
+  if (!reader.error().empty()) return {name, reader.line(), reader.error()};
   if (in.bad()) return {name, 0, "read error"};
   if (xyz.empty()) return {name, reader.line(), "no vertices"};
   // Centre and scale uniformly: the largest extent spans 2^19 world units.

@@ -18,10 +18,11 @@ InputError read_polygon(std::istream& in, const std::string& name, std::vector<P
     for (int i = 0; i < 2; ++i)
       if (!parse_int(f[i], -kView2dLimit, kView2dLimit, &v[i]))
         return {name, reader.line(),
-                "field " + std::to_string(i + 1) + " '" + f[i] +
+                "field " + std::to_string(i + 1) + " '" + excerpt(f[i]) +
                     "' is not an integer in [-1048576, 1048576]"};
     out->push_back(Point2{int32_t(v[0]), int32_t(v[1])});
   }
+  if (!reader.error().empty()) return {name, reader.line(), reader.error()};
   if (in.bad()) return {name, 0, "read error"};
   if (out->size() < 3)
     return {name, reader.line(),

@@ -68,10 +68,11 @@ InputError read_trace(std::istream& in, const std::string& name, Trace* out, uin
       out->end_tick = uint64_t(v[0]);
       ended = true;
     } else {
-      return bad("unrecognised trace line '" + f[0] + "'");
+      return bad("unrecognised trace line '" + excerpt(f[0]) + "'");
     }
   }
   if (!header) return {name, 0, "empty trace"};
+  if (!reader.error().empty()) return {name, reader.line(), reader.error()};
   if (!ended) return {name, 0, "the trace has no 'end' line: truncated?"};
   // Time order; at equal ticks motor 0, motor 1, then the pen: the tick steps first and only
   // then moves on to a pen change.

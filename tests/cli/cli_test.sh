@@ -206,5 +206,60 @@ expect '[ $rc -ne 0 ] && [ ! -e first.svg ] && [ ! -e first.svg.tmp ]' "a failed
 rc=$?
 expect '[ $rc -ne 0 ] && [ ! -e second.trace ]' "a failed G-code leaves no trace: $(cat err.txt)"
 
+# Hostile lines and fields: bounded memory and time, a short excerpt in the message.
+python3 -c "open('longline.edges','w').write('1 2 3 4 5 ' + '9' * 50000000 + '\\n')"
+/usr/bin/time -f "%M" -o mem.txt "$tool" plot longline.edges --halo 5 -o x.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "longline.edges:1: line longer than 1048576 bytes" err.txt && [ "$(tail -1 mem.txt)" -lt 200000 ]' "a 50 MB line is refused in bounded memory: $(cat err.txt mem.txt | cut -c1-200)"
+python3 -c "open('longfield.edges','w').write('1 2 3 4 5 ' + '7' * 5000 + '\\n')"
+"$tool" plot longfield.edges --halo 5 -o x.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && [ "$(wc -c < err.txt)" -lt 300 ] && grep -q "77777\\.\\.\\." err.txt' "a long field is quoted as a short excerpt: $(cut -c1-200 err.txt)"
+python3 -c "open('utf16.obj','wb').write('v 0 0 0\\nv 1 0 0\\nv 0 1 0\\nf 1 2 3\\n'.encode('utf-16'))"
+"$tool" plot utf16.obj --mode all -o x.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "utf16.obj:1: UTF-16 text" err.txt' "UTF-16 is refused by name: $(cat err.txt)"
+printf '\xef\xbb\xbfv 0 0 0\nv 1 0 0 0.5 0.5 0.5\nv 0 1 0\nf 1 2 3\n' > bom.obj
+"$tool" plot bom.obj --mode hidden-removed -o x.svg 2> err.txt
+rc=$?
+expect '[ $rc -eq 0 ]' "a UTF-8 byte-order mark and vertex colours are read: $(cat err.txt)"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4 1 2 3 4\n' > twice.obj
+"$tool" plot twice.obj --mode hidden-removed -o x.svg 2> err.txt
+rc=$?
+expect '[ $rc -eq 0 ]' "a face that repeats its loop is drawn: $(cat err.txt)"
+
+# Settings named with their line and the reason.
+for bad in 'kinematics delta|kinematics takes cartesian | corexy, not .delta.' \
+           'steps 1000/1|steps 1000/1: the motor steps per plot step must lie in' \
+           'kinematcs corexy|unknown setting .kinematcs. (did you mean .kinematics.?)' \
+           'travel-speed 30000|a speed of 30000 steps/s at steps 1/1 needs 30000 motor steps/s'; do
+  printf 'scene scene.edges\n%s\n' "${bad%%|*}" > setting.job
+  "$tool" sim setting.job -o x.trace 2> err.txt
+  rc=$?
+  expect '[ $rc -ne 0 ] && grep -q "setting.job:2: ${bad#*|}" err.txt' "'${bad%%|*}' is named with its line: $(cat err.txt)"
+done
+
+# Help, version, missing and misspelt arguments, flags that do not go together.
+for cmd in plot sim cut draw replay send view2d demo-scene random-scene; do
+  "$tool" "$cmd" --help > help.txt 2> err.txt
+  expect '[ $? -eq 0 ] && grep -q "haloplot $cmd " help.txt' "$cmd --help prints its usage"
+done
+"$tool" --version > v.txt
+rc=$?
+expect '[ $rc -eq 0 ] && grep -qE "^haloplot [0-9]+\\.[0-9]+\\.[0-9]+$" v.txt' "--version: $(cat v.txt)"
+"$tool" plot scene.edges --halo 5 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "plot: missing -o OUTPUT" err.txt' "a missing -o is named: $(head -1 err.txt)"
+"$tool" plot scene.edges --hallo 5 -o x.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "unknown option --hallo (did you mean --halo?)" err.txt' "a misspelt flag gets a suggestion: $(cat err.txt)"
+"$tool" plot scene.edges --halo 5 --hatch 1 -o x.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q -- "--hatch is for solid drawings" err.txt' "--hatch with --halo is refused: $(cat err.txt)"
+start=$(date +%s)
+"$tool" send home.job --port /dev/ttyHALOPLOTNONE 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && [ $(( $(date +%s) - start )) -lt 5 ] && grep -q "no such serial device" err.txt' "send to a missing device fails at once: $(cat err.txt)"
+
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
