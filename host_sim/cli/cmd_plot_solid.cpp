@@ -92,6 +92,7 @@ int cmd_plot_solid(const Options& o) {
   }
   SvgStyle style;
   style.second_pen = &d.outline;
+  style.steps_per_mm = so.steps_per_mm;
   error = write_atomically(o.get("-o"), [&](std::ostream& out) {
     std::vector<Span> first = d.spans;
     first.insert(first.end(), d.hatch.begin(), d.hatch.end());

@@ -43,8 +43,9 @@ const char* kUsage =
     "  haloplot cut SCENE.edges -o SCENE.cut [--lambda X] [--cell G] [--cover exact|bbox]\n"
     "               [--reach R] [--stats]\n"
     "  haloplot draw SCENE.cut --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans] [--stats]\n"
+    "               [--steps-per-mm N]   (the SVG's size in mm; default 80)\n"
     "  haloplot plot SCENE.edges|MODEL.obj --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans]\n"
-    "               [--cut OUT.cut] [cut options] [--arena BYTES] [--stats]\n"
+    "               [--cut OUT.cut] [cut options] [--arena BYTES] [--steps-per-mm N] [--stats]\n"
     "               [--view AZ,EL] [--perspective D] [--dump-edges OUT.edges]   (for .obj)\n"
     "  haloplot plot MODEL.obj --mode all|hidden-removed|hidden-dashed -o OUT.svg [--outline]\n"
     "               [--dash LEN,GAP (mm)] [--steps-per-mm N] [--method auto|qi|fallback]\n"
@@ -208,8 +209,14 @@ void print_draw_stats(const HostDraw& d) {
 
 // Writes the SVG and, if asked, the spans. Returns 0 or 1 after reporting.
 int write_drawing(const Options& o, const HostDraw& d) {
+  SvgStyle style;
+  int64_t per_mm = 80;
+  if (!o.get("--steps-per-mm").empty() && !parse_int(o.get("--steps-per-mm"), 1, 10000, &per_mm))
+    return fail("--steps-per-mm '" + o.get("--steps-per-mm") +
+                "' must be an integer in [1, 10000]");
+  style.steps_per_mm = double(per_mm);
   std::string err = write_atomically(o.get("-o"), [&](std::ostream& out) {
-    write_svg(out, d.spans, SvgStyle{});
+    write_svg(out, d.spans, style);
     return true;
   });
   if (!err.empty()) return fail(err);
@@ -342,8 +349,8 @@ int cmd_cut(int argc, char** argv) {
 }
 
 int cmd_draw(int argc, char** argv) {
-  const Options o =
-      parse_options(argc, argv, 2, {"-o", "--halo", "--spans"}, {"--exact-halo", "--stats"});
+  const Options o = parse_options(argc, argv, 2, {"-o", "--halo", "--spans", "--steps-per-mm"},
+                                  {"--exact-halo", "--stats"});
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "draw");
   DrawParams dp;

@@ -38,12 +38,50 @@ void write_cut(std::ostream& out, const CutSet& set, const std::string& extra_he
   }
 }
 
+namespace {
+
+using i128 = __int128;
+
+// Does a 'cross' record tell the truth? Edge p (BEHIND) and edge q (FRONT) must cross in the
+// projection at p's parameter T (the floor of the exact t in Q0.32, as CUT writes it), with q
+// nearer there. Exact: cross products of 21-bit differences, compared in 128 bits.
+std::string check_cross(const Edge3& p, const Edge3& q, uint32_t t32) {
+  const int64_t dpx = int64_t(p.b.x) - p.a.x, dpy = int64_t(p.b.y) - p.a.y;
+  const int64_t dqx = int64_t(q.b.x) - q.a.x, dqy = int64_t(q.b.y) - q.a.y;
+  const int64_t wx = int64_t(q.a.x) - p.a.x, wy = int64_t(q.a.y) - p.a.y;
+  int64_t den = dpx * dqy - dpy * dqx;                         // cross(dp, dq)
+  int64_t tn = wx * dqy - wy * dqx, un = wx * dpy - wy * dpx;  // t = tn/den, u = un/den
+  if (den == 0) return "the two edges are parallel in the projection: they do not cross";
+  if (den < 0) den = -den, tn = -tn, un = -un;
+  if (tn < 0 || tn > den || un < 0 || un > den) return "the two edges do not cross";
+  if (tn == den || ((i128(tn) << 32) / den) != i128(t32))
+    return "T " + std::to_string(t32) + " is not where they cross (" +
+           std::to_string(uint64_t((i128(tn) << 32) / den)) + ")";
+  // Depths at the crossing, over den: q must be nearer (a larger z is nearer).
+  const i128 zp = i128(p.a.z) * den + i128(int64_t(p.b.z) - p.a.z) * tn;
+  const i128 zq = i128(q.a.z) * den + i128(int64_t(q.b.z) - q.a.z) * un;
+  if (zq <= zp) return "FRONT is not in front of BEHIND where they cross";
+  return "";
+}
+
+// X and Y as write_cut() writes them: an integer, a point and three decimals.
+bool is_position(const std::string& s) {
+  size_t i = s[0] == '-' ? 1 : 0;
+  const size_t dot = s.find('.');
+  if (dot == std::string::npos || dot == i || s.size() - dot != 4) return false;
+  for (size_t k = i; k < s.size(); ++k)
+    if (k != dot && (s[k] < '0' || s[k] > '9')) return false;
+  return true;
+}
+
+}  // namespace
+
 InputError read_cut(std::istream& in, const std::string& name, LoadedCut* out) {
   *out = LoadedCut{};
   LineReader reader(in);
   std::vector<std::string> f;
   std::string comments;
-  bool in_crossings = false;
+  bool in_crossings = false, near_records = false;
   int64_t reach = 0;
   while (reader.next(&f, &comments)) {
     const int line = reader.line();
@@ -73,6 +111,24 @@ InputError read_cut(std::istream& in, const std::string& name, LoadedCut* out) {
         return {name, line, "T '" + excerpt(f[5]) + "' is not an integer in [0, 2^32)"};
       if (f[6] != "cross" && f[6] != "near")
         return {name, line, "KIND '" + excerpt(f[6]) + "' is neither 'cross' nor 'near'"};
+      if (f.size() != 7)
+        return {name, line, "a 'c' line has 7 fields, not " + std::to_string(f.size())};
+      for (int k : {3, 4})
+        if (!is_position(f[k]))
+          return {name, line,
+                  std::string(k == 3 ? "X" : "Y") + " '" + excerpt(f[k]) +
+                      "' is not a position in steps with three decimals"};
+      const Edge3& e = out->edges[size_t(behind)];
+      if (f[3] != decimal_position(e.a.x, e.b.x - e.a.x, uint32_t(t)) ||
+          f[4] != decimal_position(e.a.y, e.b.y - e.a.y, uint32_t(t)))
+        return {name, line,
+                "X Y " + f[3] + " " + f[4] + " is not where T " + f[5] + " lies on BEHIND"};
+      if (f[6] == "cross") {
+        const std::string why = check_cross(e, out->edges[size_t(front)], uint32_t(t));
+        if (!why.empty()) return {name, line, why};
+      } else {
+        near_records = true;
+      }
       Crossing c{uint32_t(behind), uint32_t(front) | (f[6] == "near" ? Crossing::kNearBit : 0u),
                  uint32_t(t)};
       if (!out->crossings.empty()) {
@@ -91,11 +147,22 @@ InputError read_cut(std::istream& in, const std::string& name, LoadedCut* out) {
   }
   if (!reader.error().empty()) return {name, reader.line(), reader.error()};
   if (in.bad()) return {name, 0, "read error"};
+  // The header: the format and its version first, then the reach the records were found with.
+  const std::string kHeader = "# haloplot cutset v";
+  if (comments.compare(0, kHeader.size(), kHeader) != 0)
+    return {name, 1, "not a haloplot CUTSET: the first line must be '# haloplot cutset v1'"};
+  const std::string version = comments.substr(kHeader.size(), comments.find('\n') - kHeader.size());
+  if (version != "1")
+    return {name, 1, "CUTSET version '" + excerpt(version) + "' is not one this tool reads (v1)"};
   const size_t at = comments.find("# reach ");
   if (at != std::string::npos) {
     const std::string value = comments.substr(at + 8, comments.find('\n', at) - at - 8);
     if (!parse_int(value, 0, kCoordMax, &reach)) return {name, 0, "bad '# reach' header"};
   }
+  if (near_records && reach == 0)
+    return {name, 0,
+            "'near' records with reach 0: near misses are only found within a reach "
+            "(the '# reach R' header)"};
   out->set.reach = int32_t(reach);
   out->first.assign(out->edges.size() + 1, 0);
   for (const Crossing& c : out->crossings) ++out->first[c.behind + 1];

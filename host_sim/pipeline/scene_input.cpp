@@ -94,12 +94,31 @@ bool parse_view(const Options& o, View* out, std::string* error) {
   return true;
 }
 
+namespace {
+
+// Nothing at all to draw is an error, not an empty picture: no edges, or every edge seen
+// end-on (all vertices equal, or a model of lines along the view direction).
+bool something_to_draw(const std::string& path, const std::vector<Edge3>& edges,
+                       std::string* error) {
+  if (edges.empty()) {
+    *error = path + ": no edges: nothing to draw";
+    return false;
+  }
+  for (const Edge3& e : edges)
+    if (e.a.x != e.b.x || e.a.y != e.b.y) return true;
+  *error = path + ": all " + std::to_string(edges.size()) +
+           " edges project to single points: nothing to draw";
+  return false;
+}
+
+}  // namespace
+
 bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* edges,
                 std::string* error) {
   if (!ends_with(path, ".obj")) {
     const InputError ie = read_edges_file(path, edges);
     if (ie.failed()) *error = ie.message();
-    return !ie.failed();
+    return !ie.failed() && something_to_draw(path, *edges, error);
   }
   ObjModel model;
   std::vector<Point3> screen;
@@ -113,7 +132,7 @@ bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* e
     *error = path + ": projection failed: " + status_name(s);
     return false;
   }
-  return dump_edges(o, path, *edges, error);
+  return something_to_draw(path, *edges, error) && dump_edges(o, path, *edges, error);
 }
 
 std::string not_simple_message(const std::string& path, const ObjModel& model,
@@ -150,7 +169,7 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
     *error = path + ": " + status_name(s);
     return false;
   }
-  return dump_edges(o, path, edges, error);
+  return something_to_draw(path, edges, error) && dump_edges(o, path, edges, error);
 }
 
 namespace {

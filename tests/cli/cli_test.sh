@@ -261,5 +261,22 @@ start=$(date +%s)
 rc=$?
 expect '[ $rc -ne 0 ] && [ $(( $(date +%s) - start )) -lt 5 ] && grep -q "no such serial device" err.txt' "send to a missing device fails at once: $(cat err.txt)"
 
+# The SVG's size is the plot's, in millimetres at the plotter's steps per mm.
+"$tool" plot scene.edges --halo 5 -o mm80.svg && "$tool" plot scene.edges --halo 5 --steps-per-mm 40 -o mm40.svg
+w80=$(sed -n 's/.*<svg[^>]* width="\([0-9.]*\)mm".*/\1/p' mm80.svg)
+w40=$(sed -n 's/.*<svg[^>]* width="\([0-9.]*\)mm".*/\1/p' mm40.svg)
+vb=$(sed -n 's/.*viewBox="[-0-9]* [-0-9]* \([0-9]*\) .*/\1/p' mm80.svg)
+expect '[ -n "$w80" ] && python3 -c "import sys; w80, w40, vb = map(float, sys.argv[1:]); sys.exit(not (abs(w80 - vb / 80) < 0.001 and abs(w40 - 2 * w80) < 0.002))" "$w80" "$w40" "$vb"' "SVG width in mm: $w80 at 80 steps/mm, $w40 at 40, viewBox width $vb"
+
+# Nothing to draw is an error, not an empty picture.
+: > empty.edges
+"$tool" plot empty.edges --halo 5 -o nothing.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "empty.edges: no edges: nothing to draw" err.txt && [ ! -e nothing.svg ]' "an empty scene is refused: $(cat err.txt)"
+printf 'v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n' > point.obj
+"$tool" plot point.obj --halo 5 -o x.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "point.obj" err.txt' "a model with all vertices equal is refused: $(cat err.txt)"
+
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

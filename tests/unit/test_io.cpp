@@ -70,19 +70,43 @@ int main() {
     const InputError e2 = read_cut(s, "t.cut", &l);
     return e2.failed() && e2.line == line && e2.what.find(fragment) != std::string::npos;
   };
-  const std::string two = "e 0 0 0 0 10 10 10\ne 1 0 10 0 10 0 10\n";
-  CHECK(cut_error("e 1 0 0 0 1 1 1\n", 1, "out of order"));
-  CHECK(cut_error(two + "c 0 5 5 5 0 cross\n", 3, "FRONT"));
-  CHECK(cut_error(two + "c 0 0 5 5 0 cross\n", 3, "FRONT"));
-  CHECK(cut_error(two + "c 0 1 5 5 4294967296 cross\n", 3, "T '"));
-  CHECK(cut_error(two + "c 0 1 5 5 7 maybe\n", 3, "KIND"));
-  CHECK(cut_error(two + "c 1 0 5 5 7 cross\nc 0 1 5 5 7 cross\n", 4, "grouped"));
-  CHECK(cut_error(two + "c 0 1 5 5 7 cross\ne 2 1 1 1 1 1 1\n", 4, "after the first"));
-  CHECK(cut_error(two + "x 0 1\n", 3, "unknown record"));
-  {  // the fuzzer's crash input, replayed: no fault, no error
+  const std::string hdr = "# haloplot cutset v1\n# reach 0\n";
+  // e0 and e2 cross at (4, 4), e2 in front; e2 and e1 cross at (6, 4), e1 in front; e3 meets
+  // none of them. Records start on line 7.
+  const std::string edges4 = hdr +
+                             "e 0 0 0 0 10 10 0\ne 1 0 10 20 10 0 20\ne 2 0 4 10 10 4 10\n"
+                             "e 3 8 0 5 10 0 5\n";
+  const std::string c02 = "c 0 2 4.000 4.000 1717986918 cross\n";
+  const std::string c21 = "c 2 1 6.000 4.000 2576980377 cross\n";
+  {
+    std::istringstream good(edges4 + c02 + c21);
+    LoadedCut l;
+    const InputError read = read_cut(good, "t.cut", &l);
+    CHECK_MSG(!read.failed(), "true records are read: " + read.message());
+  }
+  CHECK(cut_error(hdr + "e 1 0 0 0 1 1 1\n", 3, "out of order"));
+  CHECK(cut_error(edges4 + "c 0 5 4.000 4.000 0 cross\n", 7, "FRONT"));
+  CHECK(cut_error(edges4 + "c 0 0 4.000 4.000 0 cross\n", 7, "FRONT"));
+  CHECK(cut_error(edges4 + "c 0 2 4.000 4.000 4294967296 cross\n", 7, "T '"));
+  CHECK(cut_error(edges4 + "c 0 2 4.000 4.000 1717986918 maybe\n", 7, "KIND"));
+  CHECK(cut_error(edges4 + c21 + c02, 8, "grouped"));
+  CHECK(cut_error(edges4 + c02 + "e 4 1 1 1 1 1 1\n", 8, "after the first"));
+  CHECK(cut_error(edges4 + "x 0 1\n", 7, "unknown record"));
+  // What the reader used to accept (issue 17): a bad header or version, a malformed X, a
+  // near miss with reach 0, and records that are not true.
+  CHECK(cut_error("e 0 0 0 0 10 10 0\n", 1, "first line must be '# haloplot cutset v1'"));
+  CHECK(cut_error("# haloplot cutset v9\ne 0 0 0 0 10 10 0\n", 1, "version '9'"));
+  CHECK(cut_error(edges4 + "c 0 2 69x1.000 4.000 1717986918 cross\n", 7, "X '69x1.000'"));
+  CHECK(cut_error(edges4 + "c 0 2 4.000 4.000 1717986918 near\n", 0, "reach 0"));
+  CHECK(cut_error(edges4 + "c 0 3 0.000 0.000 0 cross\n", 7, "do not cross"));
+  CHECK(cut_error(edges4 + "c 2 0 4.000 4.000 1717986918 cross\n", 7, "not in front"));
+  CHECK(cut_error(edges4 + "c 0 2 4.000 4.000 1717986919 cross\n", 7, "is not where they cross"));
+  CHECK(cut_error(edges4 + "c 0 2 4.001 4.000 1717986918 cross\n", 7, "is not where T"));
+  {  // the fuzzer's crash input, replayed: no fault, and refused for want of a header
     std::istringstream vt("\v\n");
     LoadedCut l;
-    CHECK(!read_cut(vt, "t.cut", &l).failed());
+    const InputError read = read_cut(vt, "t.cut", &l);
+    CHECK(read.failed() && read.what.find("cutset v1") != std::string::npos);
   }
 
   // Decimal positions against long double, including negative directions.
