@@ -81,6 +81,14 @@ int cmd_send(int argc, char** argv) {
     if (!job_solid_settings(jf, &so, &view, &why)) return send_fail(o.positional[0] + ": " + why);
     ie = read_obj_file(jf.scene_path, &model);
     if (ie.failed()) return send_fail(ie.message());
+    {  // the world the controller projects is Z-up, as the host's (scene_input.h)
+      Options up_option;
+      up_option.values = jf.solid_options;
+      UpAxis up;
+      std::string up_error;
+      if (!parse_up(up_option, &up, &up_error)) return send_fail(o.positional[0] + ": " + up_error);
+      make_z_up(&model, up);
+    }
     jf.spec.hidden = HiddenJob{so.method,
                                so.spec.outline,
                                so.spec.dash_steps,

@@ -46,7 +46,8 @@ const char* kUsage =
     "               [--steps-per-mm N]   (the SVG's size in mm; default 80)\n"
     "  haloplot plot SCENE.edges|MODEL.obj --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans]\n"
     "               [--cut OUT.cut] [cut options] [--arena BYTES] [--steps-per-mm N] [--stats]\n"
-    "               [--view AZ,EL] [--perspective D] [--dump-edges OUT.edges]   (for .obj)\n"
+    "               [--view AZ,EL] [--perspective D] [--up y|z] [--dump-edges OUT.edges]\n"
+    "               (for .obj; --up: the file's up axis, default y as most OBJ files)\n"
     "  haloplot plot MODEL.obj --mode all|hidden-removed|hidden-dashed -o OUT.svg [--outline]\n"
     "               [--dash LEN,GAP (mm)] [--steps-per-mm N] [--method auto|qi|fallback]\n"
     "               [--hatch SPACING[,ANGLE[,TURN]]] [--spans OUT.spans] [--view AZ,EL]\n"
@@ -252,15 +253,17 @@ int cmd_demo_scene(int argc, char** argv) {
   const std::string path = o.get("-o");
   if (path.size() > 4 && path.compare(path.size() - 4, 4, ".obj") == 0) {
     // The same array as a solid model in world units (side 100, pitch 125), for the
-    // hidden-line modes: six quads per cube, counter-clockwise seen from outside.
+    // hidden-line modes: six quads per cube, counter-clockwise seen from outside. Written
+    // Y-up, as most OBJ files are (read back with the default --up y, the cubes stand on the
+    // ground plane as the chip's own cube arrays do): world (x, y, z) is file (x, z, -y).
     error = write_atomically(path, [&](std::ostream& out) {
       out << "# haloplot demo: " << cubes << " x " << cubes
           << " cubes (HALO paper, Figure 4) as a solid model\n";
       for (int64_t i = 0; i < cubes; ++i)
         for (int64_t j = 0; j < cubes; ++j)
           for (int k = 0; k < 8; ++k)
-            out << "v " << i * 125 + (k & 1) * 100 << ' ' << j * 125 + ((k >> 1) & 1) * 100 << ' '
-                << ((k >> 2) & 1) * 100 << '\n';
+            out << "v " << i * 125 + (k & 1) * 100 << ' ' << ((k >> 2) & 1) * 100 << ' '
+                << -(j * 125 + ((k >> 1) & 1) * 100) << '\n';
       static const int kFaces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
                                        {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
       for (int64_t c = 0; c < cubes * cubes; ++c)

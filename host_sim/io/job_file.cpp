@@ -20,6 +20,7 @@ const std::map<std::string, std::string> kKeys = {
     {"hatch", "SPACING ANGLE TURN (mm, degrees)"},
     {"view", "AZ,EL (degrees)"},
     {"perspective", "D (world units)"},
+    {"up", "y | z (the OBJ file's up axis)"},
     {"method", "auto | qi | fallback"},
     {"dash", "DASH GAP (mm)"},
     {"outline", "on | off"},
@@ -145,7 +146,8 @@ InputError read_job_file(const std::string& path, JobFile* out) {
       SolidOptions so;
       std::string error;
       if (!parse_solid_options(o, &so, &error)) return bad(error);
-    } else if ((key == "view" || key == "perspective" || key == "method" || key == "dash") &&
+    } else if ((key == "view" || key == "perspective" || key == "method" || key == "dash" ||
+                key == "up") &&
                f.size() == (key == "dash" ? 3u : 2u)) {
       out->solid_options["--" + key] = key == "dash" ? f[1] + "," + f[2] : f[1];
       // Checked here, so a bad value is reported with its line.
@@ -154,7 +156,10 @@ InputError read_job_file(const std::string& path, JobFile* out) {
       SolidOptions so;
       View view;
       std::string error;
-      if (!parse_solid_options(o, &so, &error) || !parse_view(o, &view, &error)) return bad(error);
+      UpAxis up;
+      if (!parse_solid_options(o, &so, &error) || !parse_view(o, &view, &error) ||
+          !parse_up(o, &up, &error))
+        return bad(error);
     } else if (key == "outline" && f.size() == 2 && (f[1] == "on" || f[1] == "off")) {
       out->outline = f[1] == "on";
     } else if (key == "halo") {

@@ -104,4 +104,15 @@ InputError read_obj_file(const std::string& path, ObjModel* out) {
   return read_obj(in, path, out);
 }
 
+bool parse_up_axis(const std::string& text, UpAxis* out) {
+  if (text != "y" && text != "z") return false;
+  *out = text == "y" ? UpAxis::kY : UpAxis::kZ;
+  return true;
+}
+
+void make_z_up(ObjModel* model, UpAxis up) {
+  if (up == UpAxis::kZ) return;
+  for (Point3& p : model->vertices) p = Point3{p.x, -p.z, p.y};
+}
+
 }  // namespace haloplot::host

@@ -28,6 +28,15 @@ struct ObjModel {
 };
 
 InputError read_obj(std::istream& in, const std::string& name, ObjModel* out);
+
+// Which axis of the file points up. Most OBJ files are Y-up (Blender's and Maya's export
+// default, LightWave's files); haloplot's world is Z-up (the view's convention, core/view).
+enum class UpAxis { kY, kZ };
+// "y" or "z"; false for anything else.
+bool parse_up_axis(const std::string& text, UpAxis* out);
+// The model in haloplot's Z-up world: a Y-up file's (x, y, z) becomes (x, -z, y), a rotation
+// (exact on the integer coordinates, and the centring and scale are unchanged).
+void make_z_up(ObjModel* model, UpAxis up);
 InputError read_obj_file(const std::string& path, ObjModel* out);
 
 }  // namespace haloplot::host

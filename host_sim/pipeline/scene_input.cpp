@@ -11,7 +11,7 @@
 
 namespace haloplot::host {
 
-const char* const kSceneOptions[3] = {"--view", "--perspective", "--dump-edges"};
+const char* const kSceneOptions[4] = {"--view", "--perspective", "--dump-edges", "--up"};
 
 namespace {
 
@@ -34,16 +34,29 @@ bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
+}  // namespace
+
+bool parse_up(const Options& o, UpAxis* up, std::string* error) {
+  if (parse_up_axis(o.get("--up", "y"), up)) return true;
+  *error = "--up '" + o.get("--up") + "' must be y (most OBJ files: Blender, Maya) or z";
+  return false;
+}
+
+namespace {
+
 // Reads and projects an OBJ model; on failure *error is complete.
 bool project_obj(const Options& o, const std::string& path, ObjModel* model,
                  std::vector<Point3>* screen, std::string* error) {
   View view;
   if (!parse_view(o, &view, error)) return false;
+  UpAxis up;
+  if (!parse_up(o, &up, error)) return false;
   const InputError ie = read_obj_file(path, model);
   if (ie.failed()) {
     *error = ie.message();
     return false;
   }
+  make_z_up(model, up);
   screen->resize(model->vertices.size());
   const Status s =
       project_points(view, model->vertices.data(), uint32_t(screen->size()), screen->data());

@@ -6,6 +6,7 @@
 
 #include "cli/options.h"
 #include "geometry/contract.h"
+#include "io/obj_file.h"
 #include "pipeline/solid_pipeline.h"
 #include "pipeline/triangulate.h"
 #include "view/projection.h"
@@ -15,7 +16,11 @@ namespace haloplot::host {
 // The options every scene-taking command accepts (valued): --view AZ,EL (degrees, up to three
 // decimals; default 30,40), --perspective D (world units after the OBJ's scaling to 2^19;
 // default orthographic), --dump-edges FILE (the projected scene, in the order all outputs use).
-extern const char* const kSceneOptions[3];
+// --up y|z: the OBJ file's up axis (default y, what most OBJ files use).
+extern const char* const kSceneOptions[4];
+
+// --up from the options (default y); false with *error naming the value.
+bool parse_up(const Options& o, UpAxis* up, std::string* error);
 
 // Loads and, for OBJ, projects. On failure *error is a complete message (file:line: reason,
 // or the option or projection problem).

@@ -278,5 +278,20 @@ printf 'v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n' > point.obj
 rc=$?
 expect '[ $rc -ne 0 ] && grep -q "point.obj" err.txt' "a model with all vertices equal is refused: $(cat err.txt)"
 
+# Up axis: a Y-up file (the default, as Blender and most exporters write) and the same model
+# written Z-up with --up z give the same projected edges; a bad value is named.
+printf 'v 0 0 0\nv 4 0 0\nv 4 1 0\nv 0 1 0\nv 0 0 9\nv 4 0 9\nl 1 2 3 4 1 5 6\n' > zup.obj
+awk '$1 == "v" { printf "v %s %s %s\n", $2, $4, -$3; next } { print }' zup.obj > yup.obj
+"$tool" plot zup.obj --up z --halo 5 -o z.svg --dump-edges z.edges && "$tool" plot yup.obj --halo 5 -o y.svg --dump-edges y.edges
+rc=$?
+grep -v '^#' z.edges > z.data; grep -v '^#' y.edges > y.data; grep -v '^#' yz.edges > yz.data 2> /dev/null
+expect '[ $rc -eq 0 ] && [ -s z.data ] && cmp -s z.data y.data' "a Y-up file and its Z-up twin project alike"
+"$tool" plot zup.obj --halo 5 -o yz.svg --dump-edges yz.edges
+grep -v '^#' yz.edges > yz.data
+expect '! cmp -s z.data yz.data' "the up axis matters (a Z-up file read as Y-up lies on its back)"
+"$tool" plot zup.obj --up x --halo 5 -o x.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q -- "--up .x. must be y" err.txt' "a bad --up is named: $(cat err.txt)"
+
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

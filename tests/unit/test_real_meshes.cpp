@@ -32,10 +32,12 @@ struct Loaded {
   bool ok = false;
 };
 
+// The files written below are Z-up (flat ones lie in the ground plane); assimp's are Y-up.
 Loaded load(const std::string& path, const std::string& view) {
   Loaded l;
   Options o;
   o.values["--view"] = view;
+  o.values["--up"] = path.rfind("/usr/share/assimp", 0) == 0 ? "y" : "z";
   l.ok = load_solid_scene(o, path, &l.scene, &l.stats, &l.error);
   const InputError e = read_obj_file(path, &l.model);
   CHECK_MSG(!e.failed(), e.message());
