@@ -38,11 +38,11 @@ bool crosses_itself(const std::vector<P2>& p) {
   return false;
 }
 
-// A loop given twice or more (`f 1 2 3 4 1 2 3 4`): the loop once.
+// A loop given twice or more (`f 1 2 3 4 1 2 3 4`, or cut off part way round as in assimp's
+// box_longline.obj): the loop once.
 void drop_repeated_loop(std::vector<uint32_t>* v) {
   const std::size_t n = v->size();
   for (std::size_t period = 3; period < n; ++period) {
-    if (n % period != 0) continue;
     bool repeats = true;
     for (std::size_t i = period; i < n && repeats; ++i) repeats = (*v)[i] == (*v)[i - period];
     if (repeats) {
