@@ -467,6 +467,21 @@ std::string thousandths(uint64_t v) {
   return std::to_string(v / 1000) + "." + std::string(3 - f.size(), '0') + f;
 }
 
+// A plot far slower than its speeds allow (accel 1 plans hours of ramps) is legal but almost
+// surely not meant: say so, with the time the speeds alone would take.
+void warn_if_slow(const JobSpec& spec, const SimReport& r) {
+  const Machine& m = spec.machine;
+  const double hz = m.tick_hz, plotted = double(r.end_tick) / hz;
+  const double at_speed = double(r.job.path.pen_down_length) / m.draw_speed +
+                          double(r.job.path.pen_up_length) / m.travel_speed +
+                          double(r.planner.dwell_ticks) / hz;
+  if (plotted > 60 && plotted > 3 * at_speed)
+    std::fprintf(stderr,
+                 "haloplot: warning: the plot takes %.0f s, %.0f times what its speeds alone "
+                 "would take (%.0f s): is accel %u steps/s^2 meant?\n",
+                 plotted, plotted / std::max(at_speed, 1e-9), at_speed, m.accel);
+}
+
 int cmd_sim(int argc, char** argv) {
   const Options o =
       parse_options(argc, argv, 2, {"-o", "--gcode", "--hpgl", "--arena"}, {"--stats"});
@@ -502,6 +517,7 @@ int cmd_sim(int argc, char** argv) {
     return fail("sim: arena of " + std::to_string(jf.arena) + " bytes too small: a band one row " +
                 "high needs " + std::to_string(r.bands.need_bytes));
   if (!ok(s)) return fail_status("sim", s);
+  warn_if_slow(spec, r);
   if (!error.empty()) return fail(error);
   if (!o.get("--gcode").empty()) {
     error = write_atomically(o.get("--gcode"), [&](std::ostream& out) {

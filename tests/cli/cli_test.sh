@@ -293,5 +293,13 @@ expect '! cmp -s z.data yz.data' "the up axis matters (a Z-up file read as Y-up 
 rc=$?
 expect '[ $rc -ne 0 ] && grep -q -- "--up .x. must be y" err.txt' "a bad --up is named: $(cat err.txt)"
 
+# A legal but absurd acceleration is warned about; a sane one is not.
+printf 'scene scene.edges\ndrawing all\naccel 1\n' > slow.job
+"$tool" sim slow.job -o slow.trace 2> err.txt
+rc=$?
+expect '[ $rc -eq 0 ] && grep -q "warning: the plot takes .* is accel 1 steps/s^2 meant" err.txt' "accel 1 is warned about: $(cat err.txt)"
+"$tool" sim home.job -o home2.trace 2> err.txt
+expect '! grep -q warning err.txt' "a sane job has no warning: $(cat err.txt)"
+
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
