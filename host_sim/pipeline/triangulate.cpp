@@ -150,6 +150,12 @@ std::vector<Triangle> triangulate(const std::vector<Point3>& world,
       reflex = reflex || o < 0;
       flat = flat || o == 0;
     }
+    // A corner met twice (a keyhole, or a boundary that wraps round) is no convex polygon even
+    // when every corner turns left: the fan would reuse it in one triangle.
+    std::vector<P2> sorted = p;
+    std::sort(sorted.begin(), sorted.end(),
+              [](const P2& a, const P2& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+    for (std::size_t i = 1; i < sorted.size() && !flat; ++i) flat = same(sorted[i - 1], sorted[i]);
     if (!reflex && !flat) {  // strictly convex: the fan from the first corner
       for (std::size_t k = 1; k + 1 < v.size(); ++k)
         out.push_back(Triangle{{v[0], v[k], v[k + 1]}, f});
