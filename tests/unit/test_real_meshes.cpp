@@ -3,8 +3,8 @@
 // Each is drawn right or refused by name. "Right" is checked against a brute-force reference
 // written from the definition: a point of a drawn edge is hidden exactly when some polygon of
 // the file (the polygon as given, not our triangles) covers it on the screen, strictly in
-// front of it. The reference samples every step of every edge, in long double, and a
-// disagreement counts unless a piece of ours ends within one step of it.
+// front of it. The reference samples every step of an edge (up to 400 points along a long one),
+// in long double, and a disagreement counts unless a piece of ours ends within one step of it.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -14,8 +14,10 @@
 #include "../check.h"
 #include "cli/options.h"
 #include "io/obj_file.h"
+#include "pipeline/drawing_modes.h"
 #include "pipeline/scene_input.h"
 #include "pipeline/solid_pipeline.h"
+#include "pipeline/surface_pipeline.h"
 
 using namespace haloplot;
 using namespace haloplot::host;
@@ -85,7 +87,10 @@ size_t disagreements(const Loaded& l, const SolidRun& run, const std::string& la
     std::vector<SolidPiece> mine;
     for (const SolidPiece& p : run.pieces)
       if (p.edge == e) mine.push_back(p);
-    for (int64_t k = 0; k <= steps; ++k) {
+    // Every step of short edges, at most 400 samples along long ones (each still judged
+    // within one step of our piece ends).
+    const int64_t stride = std::max<int64_t>(1, steps / 400);
+    for (int64_t k = 0; k <= steps; k += stride) {
       const LD t = steps > 0 ? LD(k) / LD(steps) : LD(0.5);
       const LD x = a.x + t * (LD(b.x) - a.x), y = a.y + t * (LD(b.y) - a.y);
       const LD z = a.z + t * (LD(b.z) - a.z);
@@ -138,7 +143,8 @@ const char* kKeyhole =
     "v 3 3 0\nv 3 7 0\nv 7 7 0\nv 7 3 0\n"
     "f 1 2 3 4 1 5 6 7 8 5\n";
 
-// Every OBJ of assimp's test models, haloed and hidden-removed with outlines: each is drawn, or
+// Every OBJ of assimp's test models in every mode (haloed, hidden-removed and hidden-dashed with
+// outlines, hatched): each is drawn, or
 // refused with a message that names the file. Those up to 300 faces are also checked against
 // the brute-force reference (the big ones differ by sub-step rounding: issue 18).
 void assimp_corpus() {
@@ -187,6 +193,17 @@ void assimp_corpus() {
     std::string error;
     CHECK_MSG(load_scene(o, path, &edges, &error) || error.find(name) != std::string::npos,
               std::string(name) + ": haloed: " + error);
+    // The other modes: dashed hidden lines with outlines, and the visible faces hatched.
+    ModeSpec dashed;
+    dashed.mode = SolidMode::kHiddenDashed;
+    dashed.outline = true;
+    const ModeDrawing md = make_mode_drawing(run, dashed);
+    CHECK_MSG(md.spans.size() >= run.pieces.size() / 2, std::string(name) + ": dashed strokes");
+    if (l.model.faces.size() <= 300) {  // the big ones take minutes at this spacing
+      HatchRun hatch;
+      const Status hs = run_hatch(l.scene, HatchParams{}, &hatch);
+      CHECK_MSG(hs == Status::kOk, std::string(name) + ": hatching: " + status_name(hs));
+    }
     ++drawn;
     if (l.model.faces.size() <= 300 && s == Status::kOk) {
       ++checked;
