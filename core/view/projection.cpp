@@ -99,7 +99,7 @@ Status validate(const View& v) {
   return Status::kOk;
 }
 
-// Perspective: (x, y) * D / (D - d), to Q16 world units, in one rounded 128-bit division. The
+// Perspective: (x, y, d) * D / (D - d), to Q16 world units, in one rounded 128-bit division. The
 // eye is at depth D (Q(B): eye_q); kCoordinateOutOfRange for points within kEyeClearance of
 // the eye plane or behind it.
 template <int B>
@@ -115,7 +115,11 @@ Status perspective(const Rotated& r, int64_t eye_q, int32_t distance, Rotated* o
     const uint64_t q = divide_round(num, uint64_t(gap), &overflow);
     return neg ? -int64_t(q) : int64_t(q);
   };
-  *out = Rotated{scale(r.x), scale(r.y), r.d};
+  // Depth the same way: d * D / (D - d) grows with d (nearer stays nearer), and with the same
+  // divisor as x and y it is a projective map of the scene, so along a projected edge it
+  // changes linearly, as CUT and every depth test interpolate it. The linear d does not: at a
+  // crossing it would name the wrong edge in front.
+  *out = Rotated{scale(r.x), scale(r.y), scale(r.d)};
   return Status::kOk;
 }
 

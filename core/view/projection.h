@@ -6,8 +6,9 @@
 // then fitted uniformly into the plot area (the same steps per world unit on both axes,
 // centred on neither: the lower-left corner sits at the margin) and depth scaled to
 // [0, 2^20). With View::perspective = D, the eye sits on the view axis at depth D and a point
-// at depth d is scaled by D / (D - d) before the fit (depth itself is kept: along a ray from
-// the eye it still orders nearer and farther).
+// at depth d is scaled by D / (D - d) before the fit, depth included: d D / (D - d) orders
+// nearer and farther as d does, and is linear along every projected edge (the projective
+// depth), so the depths CUT and the hidden-line tests interpolate are the scene's.
 //
 // Numbers: world coordinates within +-2^20; sin and cos in Q2.30 (view/trig.h); the rotated
 // values are exact products in int64 (< 2^53) and are fitted with one rounding per output.
@@ -31,7 +32,7 @@ struct View {
   int32_t width = 20000, height = 16000;  // plot area, steps
   int32_t margin = 400;                   // lower-left corner of the plot area
   // Perspective: the eye on the view axis at this depth (world units, in front of the world
-  // origin); 0 is orthographic. A point at depth d maps to (x', y') * D / (D - d).
+  // origin); 0 is orthographic. A point at depth d maps to (x', y', d) * D / (D - d).
   int32_t perspective = 0;
 };
 

@@ -2,6 +2,7 @@
 // every millidegree of the first octant and on random angles; projected points within the
 // documented 1/2 + 2^-9 steps of an exact-real fit computed independently here; bad views,
 // out-of-range world points and bad edge indices refused by name.
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -38,6 +39,16 @@ void check_trig() {
   CHECK_EQ(sin_cos_mdeg(-90000).sin, -kTrigOne);
 }
 
+// The projective depths d D / (D - d) of the points, in world units (perspective only).
+void reference_depths(const View& v, const std::vector<Point3>& w, std::vector<long double>* out) {
+  const long double az = v.azimuth_mdeg * kPi / 180000.0L, el = v.elevation_mdeg * kPi / 180000.0L;
+  for (const Point3& p : w) {
+    const long double y1 = p.x * std::sin(az) + p.y * std::cos(az);
+    const long double d = p.z * std::sin(el) - y1 * std::cos(el);
+    out->push_back(d * v.perspective / (v.perspective - d));
+  }
+}
+
 // The reference fit: the README's convention in long double, then the same uniform fit.
 std::vector<Point3> reference(const View& v, const std::vector<Point3>& w,
                               std::vector<long double>* exact) {
@@ -50,10 +61,10 @@ std::vector<Point3> reference(const View& v, const std::vector<Point3>& w,
     const long double xs = p.x * std::cos(az) - p.y * std::sin(az);
     const long double y1 = p.x * std::sin(az) + p.y * std::cos(az);
     long double x = xs, y = p.z * std::cos(el) + y1 * std::sin(el);
-    const long double d = p.z * std::sin(el) - y1 * std::cos(el);
-    if (v.perspective > 0) {  // the README's perspective: scale by D / (D - d)
-      x = x * v.perspective / (v.perspective - d);
-      y = y * v.perspective / (v.perspective - d);
+    long double d = p.z * std::sin(el) - y1 * std::cos(el);
+    if (v.perspective > 0) {  // the README's perspective: scale by D / (D - d), depth too
+      const long double k = v.perspective / (v.perspective - d);
+      x *= k, y *= k, d *= k;
     }
     r.push_back({x, y, d});
   }
@@ -76,6 +87,14 @@ std::vector<Point3> reference(const View& v, const std::vector<Point3>& w,
 
 // Projects w with the core and returns the largest distance of a coordinate from the
 // long-double projection (depth included when with_depth); every output must be in range.
+long double depth_slack(const View& v, const std::vector<Point3>& w) {
+  if (v.perspective == 0) return 0;
+  std::vector<long double> exact;
+  reference_depths(v, w, &exact);
+  const auto [lo, hi] = std::minmax_element(exact.begin(), exact.end());
+  return *hi > *lo ? kCoordMax / ((*hi - *lo) * 65536.0L) : 0;
+}
+
 long double worst_error(const View& v, const std::vector<Point3>& w, bool with_depth) {
   std::vector<Point3> got(w.size());
   CHECK(ok(project_points(v, w.data(), uint32_t(w.size()), got.data())));
@@ -85,7 +104,11 @@ long double worst_error(const View& v, const std::vector<Point3>& w, bool with_d
   for (size_t i = 0; i < w.size(); ++i) {
     worst = std::max(worst, std::fabs(got[i].x - exact[3 * i]));
     worst = std::max(worst, std::fabs(got[i].y - exact[3 * i + 1]));
-    if (with_depth) worst = std::max(worst, std::fabs(got[i].z - exact[3 * i + 2]));
+    // Under perspective the depth is divided to Q16 world units like x and y, and the depth
+    // fit then magnifies that rounding (2^-17 unit, on the point and on the range's low end)
+    // by its steps per unit: 1/2 + 2^-9 + 2^-16 * kCoordMax / (depth range in units).
+    if (with_depth)
+      worst = std::max(worst, std::fabs(got[i].z - exact[3 * i + 2]) - depth_slack(v, w));
     CHECK(in_range(got[i].x) && in_range(got[i].y) && in_range(got[i].z));
   }
   return worst;
