@@ -156,10 +156,6 @@ rc=$?
 expect '[ $rc -eq 0 ] && [ "$(sed -n "s/^bands=//p" arenasim.txt)" -gt 1 ] && [ "$(sed -n "s/^spans=//p" arenasim.txt)" = "$(grep -c "^s " a.spans)" ]' "a job with an arena plots in bands, every piece: $(grep -E "^(bands|spans)=" arenasim.txt | tr '\n' ' ')"
 "$tool" replay arena.trace -o arena_replay.svg --stats 2> replay.txt
 expect '[ $? -eq 0 ]' "the banded trace replays"
-printf 'scene scene.edges\narena 12\n' > badarena.job
-"$tool" sim badarena.job -o x.trace 2> err.txt
-rc=$?
-expect '[ $rc -ne 0 ] && grep -q "badarena.job:2: arena" err.txt' "a bad arena names its line: $(cat err.txt)"
 
 # finish: home (the default) ends the trace at the origin, stay where the last stroke ended.
 printf 'scene scene.edges\ndrawing all\n' > home.job
@@ -167,10 +163,6 @@ printf 'scene scene.edges\ndrawing all\nfinish stay\n' > stay.job
 "$tool" sim home.job -o home.trace --gcode home.gcode 2> err.txt && "$tool" sim stay.job -o stay.trace 2>> err.txt
 rc=$?
 expect '[ $rc -eq 0 ] && [ "$(tail -1 home.trace)" != "$(tail -1 stay.trace)" ] && grep -q "X0.000 Y0.000" home.gcode' "finish home travels to the origin, stay does not: $(cat err.txt; tail -1 home.trace stay.trace; grep -c . home.gcode)"
-printf 'scene scene.edges\nfinish sideways\n' > badfinish.job
-"$tool" sim badfinish.job -o x.trace 2> err.txt
-rc=$?
-expect '[ $rc -ne 0 ] && grep -q "badfinish.job:2: finish is home" err.txt' "a bad finish names its line: $(cat err.txt)"
 
 # Outputs: "-" is standard output; links are written through, devices and FIFOs too, never
 # replaced; a directory is refused by name; a failed secondary output leaves no output at all.
@@ -232,6 +224,8 @@ expect '[ $rc -eq 0 ]' "a face that repeats its loop is drawn: $(cat err.txt)"
 for bad in 'kinematics delta|kinematics takes cartesian | corexy, not .delta.' \
            'steps 1000/1|steps 1000/1: the motor steps per plot step must lie in' \
            'kinematcs corexy|unknown setting .kinematcs. (did you mean .kinematics.?)' \
+           'arena 12|arena needs the controller.s job arena' \
+           'finish sideways|finish is home' \
            'travel-speed 30000|a speed of 30000 steps/s at steps 1/1 needs 30000 motor steps/s'; do
   printf 'scene scene.edges\n%s\n' "${bad%%|*}" > setting.job
   "$tool" sim setting.job -o x.trace 2> err.txt
