@@ -6,6 +6,10 @@
 namespace haloplot {
 namespace {
 
+bool within_tick(int64_t a, int64_t b) { return (a > b ? a - b : b - a) <= 128; }  // Q8
+// How far a ramp that goes on may let the time drift from the exact profile before it is
+// re-aimed (Q8): an eighth of a tick, so a cruise stays symmetric to within a step.
+constexpr int64_t kDrift = 32;
 uint32_t abs32(int32_t v) { return v < 0 ? uint32_t(0) - uint32_t(v) : uint32_t(v); }
 uint64_t speed_q8(uint64_t v2_q8) { return isqrt_u64(v2_q8 << 8); }  // sqrt(v^2 * 2^16)
 
@@ -93,6 +97,71 @@ uint64_t StepPrep::block_time_q8(uint32_t j) const {
   return t_dec_q8_ + (vtop_q8_ - speed_q8(v2)) * hz / a;
 }
 
+int64_t StepPrep::interval_at(uint32_t j) const {
+  return int64_t(block_time_q8(j) - (j > 1 ? block_time_q8(j - 1) : 0));
+}
+
+// Does the ramp (first, add) from where the tick is to step j1 stay as close to the exact
+// profile as an aimed segment would? Its end within half a tick of the exact time (so timing
+// error cannot accumulate) and its first, middle and last intervals within half a tick of the
+// exact ones.
+bool StepPrep::fits(uint32_t j1, int64_t first, int64_t add) const {
+  const int64_t k = j1 - j_, half = (k - 1) / 2;
+  const int64_t end = int64_t(time_q8_) + k * first + add * (k * (k - 1) / 2);
+  const int64_t exact_end = int64_t(block_start_q8_ + block_time_q8(j1));
+  const int64_t drift = end > exact_end ? end - exact_end : exact_end - end;
+  return drift <= kDrift && within_tick(first, interval_at(j_ + 1)) &&
+         within_tick(first + half * add, interval_at(j_ + 1 + uint32_t(half))) &&
+         within_tick(first + (k - 1) * add, interval_at(j1));
+}
+
+// Segment length: up to kSegmentSteps, halved until the tick's linear interval ramp follows
+// the exact profile (near rest, where t grows like sqrt(j), segments shrink to single, exact
+// steps). The ramp starts at the exact first interval and is aimed at the exact end time; it
+// must also end within a tick of the exact last interval and pass within a tick of the exact
+// middle one. Otherwise the next segment, which starts at its exact interval again, would
+// jump: a short move that peaks inside one segment has equal first and last intervals, yet a
+// V-shaped profile no ramp can follow.
+//
+// Two simpler ramps come first when they fit as well: the last segment's ramp going on (same
+// interval register, same add), then, where the exact intervals are level (a cruise: they
+// differ by a Q8 rounding at most), a flat one (add 0, the mean interval). A cruise at a
+// fractional interval (67.5 ticks) is then one flat ramp going on for as long as its Q8
+// interval stays within half a tick of the exact times, instead of a segment re-aimed at
+// every boundary (67, 68, 67, ...), and a trace writes it as one line.
+void StepPrep::choose_ramp(uint32_t* j1_out, int64_t* first_out, int64_t* add_out) const {
+  uint32_t j1 = j_ + kSegmentSteps < n_ ? j_ + kSegmentSteps : n_;
+  *j1_out = j1;
+  if (!first_segment_ && fits(j1, reg_q8_, reg_add_)) {
+    *first_out = reg_q8_, *add_out = reg_add_;
+    return;
+  }
+  const int64_t k1 = j1 - j_;
+  const int64_t span = int64_t(block_start_q8_ + block_time_q8(j1)) - int64_t(time_q8_);
+  const int64_t mean = floor_div(2 * span + k1, 2 * k1);       // rounded
+  const int64_t rise = interval_at(j1) - interval_at(j_ + 1);  // a cruise: at most 1 either way
+  if (k1 == int64_t{kSegmentSteps} && rise >= -1 && rise <= 1 && fits(j1, mean, 0)) {
+    *first_out = mean, *add_out = 0;
+    return;
+  }
+  const int64_t first = int64_t(block_start_q8_ + block_time_q8(j_ + 1)) - int64_t(time_q8_);
+  auto ramp_add = [&](uint32_t end) {  // the ramp's step from `first` to the end time
+    const int64_t k = end - j_;
+    const int64_t total = int64_t(block_start_q8_ + block_time_q8(end)) - int64_t(time_q8_);
+    return k > 1 ? floor_div(2 * (total - k * first), k * (k - 1)) : 0;
+  };
+  int64_t add = ramp_add(j1);
+  while (j1 > j_ + 1) {
+    const int64_t k = j1 - j_, half = (k - 1) / 2;
+    if (within_tick(first + (k - 1) * add, interval_at(j1)) &&
+        within_tick(first + half * add, interval_at(j_ + 1 + uint32_t(half))))
+      break;
+    j1 = j_ + (j1 - j_) / 2;
+    add = ramp_add(j1);
+  }
+  *j1_out = j1, *first_out = first, *add_out = add;
+}
+
 Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* have) {
   *have = false;
   for (;;) {
@@ -149,33 +218,9 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
       in_move_ = false;
       continue;
     }
-    // Segment length: up to kSegmentSteps, halved until the tick's linear interval ramp
-    // follows the exact profile (near rest, where t grows like sqrt(j), segments shrink to
-    // single, exact steps). The ramp starts at the exact first interval and is aimed at the
-    // exact end time; it must also end within a tick of the exact last interval and pass
-    // within a tick of the exact middle one. Otherwise the next segment, which starts at its
-    // exact interval again, would jump: a short move that peaks inside one segment has equal
-    // first and last intervals, yet a V-shaped profile no ramp can follow.
-    uint32_t j1 = j_ + kSegmentSteps < n_ ? j_ + kSegmentSteps : n_;
-    const int64_t first = int64_t(block_start_q8_ + block_time_q8(j_ + 1)) - int64_t(time_q8_);
-    auto interval_at = [&](uint32_t j) {  // the exact interval before step j (1-based)
-      return int64_t(block_time_q8(j) - (j > 1 ? block_time_q8(j - 1) : 0));
-    };
-    auto ramp_add = [&](uint32_t end) {  // the ramp's step from `first` to the end time
-      const int64_t k = end - j_;
-      const int64_t total = int64_t(block_start_q8_ + block_time_q8(end)) - int64_t(time_q8_);
-      return k > 1 ? floor_div(2 * (total - k * first), k * (k - 1)) : 0;
-    };
-    auto within_tick = [](int64_t a, int64_t b) { return (a > b ? a - b : b - a) <= 128; };
-    int64_t add = ramp_add(j1);
-    while (j1 > j_ + 1) {
-      const int64_t k = j1 - j_, half = (k - 1) / 2;
-      if (within_tick(first + (k - 1) * add, interval_at(j1)) &&
-          within_tick(first + half * add, interval_at(j_ + 1 + uint32_t(half))))
-        break;
-      j1 = j_ + (j1 - j_) / 2;
-      add = ramp_add(j1);
-    }
+    uint32_t j1 = 0;
+    int64_t first = 0, add = 0;
+    choose_ramp(&j1, &first, &add);
     const int64_t m = j1 - j_;
     const int64_t floor_q8 = int64_t{m_.min_interval} * 256;
     if (first < floor_q8 || first + (m - 1) * add < floor_q8) return Status::kTimerFloor;
@@ -195,6 +240,8 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
     out->add_q8 = int32_t(add);
     first_segment_ = false;
     advance_time(uint32_t(m), first, add);
+    reg_q8_ = first + m * add;  // the tick's interval register after the segment
+    reg_add_ = add;
     counters_.motor_steps[dominant_] += uint64_t(m);
     ++counters_.segments;
     j_ = j1;

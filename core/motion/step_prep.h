@@ -57,6 +57,9 @@ class StepPrep {
   Status begin_move(const MotionItem& item);
   uint64_t block_time_q8(uint32_t j) const;  // time of dominant step j from the block start
   void advance_time(uint32_t events, int64_t interval, int64_t add);
+  int64_t interval_at(uint32_t j) const;  // the exact interval before dominant step j (1-based)
+  bool fits(uint32_t j1, int64_t first, int64_t add) const;  // close enough to the exact times?
+  void choose_ramp(uint32_t* j1, int64_t* first, int64_t* add) const;  // the next segment
 
   Machine m_{};
   PlotterEffects fx_{};
@@ -67,8 +70,10 @@ class StepPrep {
   uint32_t n_ = 0, j_ = 0;  // dominant steps in the move, steps prepared
   uint8_t dominant_ = 0, dir_bits_ = 0;
   uint32_t minor_ = 0;
-  uint64_t block_start_q8_ = 0;  // tick time (Q8) the move starts at
-  uint64_t time_q8_ = 0;         // where the tick's clock will be after the pushed segments
+
+  uint64_t block_start_q8_ = 0;       // tick time (Q8) the move starts at
+  uint64_t time_q8_ = 0;              // where the tick's clock will be after the pushed segments
+  int64_t reg_q8_ = 0, reg_add_ = 0;  // the tick's interval and add after the last segment
   // Trapezoid of the current move, in plot-path units (see planner.h).
   uint64_t vin_q8_ = 0, vtop_q8_ = 0, vtop2_ = 0, entry2_ = 0;
   uint64_t s_acc_q8_ = 0, s_dec_q8_ = 0, t_acc_q8_ = 0, t_dec_q8_ = 0;

@@ -28,7 +28,7 @@ void TraceEncoder::put_i64(int64_t v) {
 }
 
 TraceEncoder::TraceEncoder(CharSink sink, const Machine& m) : sink_(sink) {
-  put("haloplot-trace 1\ntick_hz ");
+  put("haloplot-trace 2\ntick_hz ");
   put_u64(m.tick_hz);
   put(m.kinematics == Kinematics::kCoreXY ? "\nkinematics corexy\nsteps "
                                           : "\nkinematics cartesian\nsteps ");
@@ -42,56 +42,77 @@ TraceEncoder::TraceEncoder(CharSink sink, const Machine& m) : sink_(sink) {
   put("\n");
 }
 
-void TraceEncoder::flush(uint8_t motor) {
-  Run& r = runs_[motor];
-  if (r.count == 0) return;
-  put(motor == 0 ? "m 0 " : "m 1 ");
-  put_u64(r.t0);
+// Writes the open line with the events it really ran (all of them, unless the plot stopped
+// inside it), after its block's b line if that is not out yet. The interval is written as the
+// change the segment makes to the tick's interval register, which after a line of n events
+// from I by A holds I + n A: a ramp that goes on writes 0 there, so lines stay short.
+void TraceEncoder::close_line() {
+  if (!line_.open) return;
+  line_.open = false;
+  if (line_.ran == 0) return;  // loaded, never stepped: the plot stopped first
+  if (block_pending_) {
+    block_pending_ = false;
+    put(block_.dominant == 0 ? "b 0 " : "b 1 ");
+    put_u64(block_.major);
+    put(" ");
+    put_u64(block_.minor);
+    put((block_.dir_bits & 1u) ? " -" : " +");
+    put((block_.dir_bits & 2u) ? "-\n" : "+\n");
+  }
+  put("s ");
+  put_u64(line_.ran);
   put(" ");
-  put_u64(r.count);
+  put_i64(line_.interval_q8 - register_q8_);
   put(" ");
-  put_i64(r.dt);
-  put(" ");
-  put_i64(r.ddt);
-  put(r.backward ? " -\n" : " +\n");
-  r = Run{};
+  put_i64(line_.add_q8);
+  put("\n");
+  register_q8_ = line_.interval_q8 + int64_t(line_.ran) * line_.add_q8;
+}
+
+void TraceEncoder::segment(const StepSegment& s) {
+  if (s.kind == StepSegment::kPen) {
+    close_line();
+    put("p ");
+    put_u64(pen_tick_);
+    put(pen_down_ ? " down " : " up ");
+    put_u64(s.dwell_ticks);
+    put("\n");
+    return;
+  }
+  // The tick's register after the open line's promised events: a segment that starts there
+  // with the same add continues the ramp and joins the line.
+  const int64_t next = line_.interval_q8 + int64_t(line_.count) * line_.add_q8;
+  if (line_.open && !s.new_block && line_.ran == line_.count && s.interval_q8 == next &&
+      s.add_q8 == line_.add_q8) {
+    line_.count += s.count;
+    return;
+  }
+  close_line();
+  if (s.new_block) {
+    block_ = s;
+    block_pending_ = true;
+    dominant_ = s.dominant;
+  }
+  line_ = Line{s.count, 0, s.interval_q8, s.add_q8, true};
 }
 
 void TraceEncoder::step(uint64_t tick, uint8_t motor, bool backward) {
-  Run& r = runs_[motor];
-  if (r.count > 0 && r.backward == backward) {
-    const int64_t gap = int64_t(tick - r.last);
-    if (r.count == 1) {
-      r.dt = r.last_dt = gap;
-      r.last = tick;
-      ++r.count;
-      return;
-    }
-    if (r.count == 2) r.ddt = gap - r.last_dt;
-    if (gap == r.last_dt + r.ddt) {
-      r.last_dt = gap;
-      r.last = tick;
-      ++r.count;
-      return;
-    }
-  }
-  flush(motor);
-  r.t0 = r.last = tick;
-  r.count = 1;
-  r.backward = backward;
+  digest_ = trace_digest_step(digest_, 8 * tick + 2u * motor + (backward ? 1u : 0u));
+  if (motor == dominant_) ++line_.ran;
 }
 
 void TraceEncoder::pen(uint64_t tick, bool down) {
-  put("p ");
-  put_u64(tick);
-  put(down ? " down\n" : " up\n");
+  digest_ = trace_digest_step(digest_, 8 * tick + 4u + (down ? 1u : 0u));
+  pen_tick_ = tick;
+  pen_down_ = down;
 }
 
 void TraceEncoder::finish(uint64_t end_tick) {
-  flush(0);
-  flush(1);
+  close_line();
   put("end ");
   put_u64(end_tick);
+  put(" ");
+  put_u64(digest_);
   put("\n");
 }
 

@@ -1,11 +1,19 @@
 // The step-trace text encoder, freestanding so the firmware and the host simulator write the
-// same bytes for the same steps (the format is in the README and host_sim/sim/trace.h).
-// Each motor's steps are run-length encoded as (T0, COUNT, DT, DDT, DIR): ticks T0, T0 + DT,
-// T0 + 2 DT + DDT, ... A run closes when the direction changes or a gap breaks the pattern.
+// same bytes for the same plot (the format is in the README and host_sim/sim/trace.h).
+//
+// Version 2 records the schedule the step tick runs, not its steps: the segments the tick
+// takes from its queue (trace/traced_queue.h hands them over), from which every step's tick
+// follows exactly by the tick's own rules (a Q8 running time, Bresenham for the other motor).
+// A cruise or a steady ramp is one `s` line whatever its fractional interval, where a list of
+// step ticks needs a line every few steps (67, 68, 67, ... ticks at 67.5). The HAL's step and
+// pen calls still come here: they count the events each line really ran (an abort cuts the
+// last line short) and fold every step into a digest on the `end` line, so a replayer can
+// prove that its expansion gives the steps the pins saw.
 #pragma once
 #include <stdint.h>
 
 #include "motion/machine.h"
+#include "motion/step_segment.h"
 
 namespace haloplot {
 
@@ -14,26 +22,45 @@ struct CharSink {
   void* context;
 };
 
+// The digest of the steps and pen changes: h = h * kTraceDigestPrime + code + 1 (mod 2^64),
+// code = 8 * tick + 2 * motor + backward for a step, 8 * tick + 4 + down for a pen change,
+// in the order the tick makes them. One multiply-add a step: cheap enough for a test image.
+constexpr uint64_t kTraceDigestPrime = 0x100000001b3ull;
+inline uint64_t trace_digest_step(uint64_t h, uint64_t code) {
+  return h * kTraceDigestPrime + code + 1;
+}
+
 class TraceEncoder {
  public:
   TraceEncoder(CharSink sink, const Machine& m);  // writes the header
+  void segment(const StepSegment& s);             // the tick took s from its queue
   void step(uint64_t tick, uint8_t motor, bool backward);
   void pen(uint64_t tick, bool down);
-  void finish(uint64_t end_tick);  // closes the open runs and writes "end"
+  void finish(uint64_t end_tick);  // writes the last line with the events it ran, then "end"
 
  private:
-  struct Run {
-    uint64_t t0 = 0, last = 0, count = 0;
-    int64_t dt = 0, ddt = 0, last_dt = 0;
-    bool backward = false;
+  // The open `s` line: consecutive segments of one block whose intervals continue one linear
+  // ramp (the next starts where the last left off, with the same add) join it.
+  struct Line {
+    uint64_t count = 0;  // events the segments promise
+    uint64_t ran = 0;    // events the HAL reported (dominant steps)
+    int64_t interval_q8 = 0, add_q8 = 0;
+    bool open = false;
   };
-  void flush(uint8_t motor);
+  void close_line();
   void put(const char* text);
   void put_u64(uint64_t v);
   void put_i64(int64_t v);
 
   CharSink sink_;
-  Run runs_[2];
+  Line line_;
+  StepSegment block_{};         // the block of the open line (b line), written with it
+  bool block_pending_ = false;  // its b line is not written yet
+  uint8_t dominant_ = 0;        // the motor whose steps count events
+  uint64_t pen_tick_ = 0;       // the HAL's last pen change, written with its dwell
+  bool pen_down_ = false;
+  int64_t register_q8_ = 0;  // the tick's interval register after the last s line
+  uint64_t digest_ = 0;
 };
 
 }  // namespace haloplot

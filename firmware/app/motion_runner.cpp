@@ -52,6 +52,9 @@ Status MotionRunner::begin(const JobSpec& spec, const PreparedJob& job) {
   hal_ = ChipHal{};
   trace_ = tracing_ ? new (trace_storage_) TraceEncoder(trace_sink_, spec.machine) : nullptr;
   hal_.trace = trace_;
+#ifdef HALOPLOT_FW_TEST_HOOKS
+  queue_.set_encoder(trace_);
+#endif
   abort_ = false;
   limit_ = 0;
   result_ = Status::kOk;

@@ -14,7 +14,7 @@
 #include "motion/step_engine.h"
 #include "motion/step_prep.h"
 #include "protocol/job_server.h"
-#include "trace/trace_encoder.h"
+#include "trace/traced_queue.h"
 
 namespace haloplot::fw {
 
@@ -31,7 +31,11 @@ struct ChipHal {
 
 class MotionRunner {
  public:
+#ifdef HALOPLOT_FW_TEST_HOOKS
+  using Queue = TracedQueue<SegmentQueue<64>>;  // shows the trace each segment the tick takes
+#else
   using Queue = SegmentQueue<64>;
+#endif
 
   MotionPort port();
   void service();                // main loop: refill, restart after a dry queue, notice the end

@@ -17,7 +17,7 @@
 #include "platform/trace_digest.h"
 #include "scene/cube_array.h"
 #include "selftest_support.h"
-#include "trace/trace_encoder.h"
+#include "trace/traced_queue.h"
 
 using namespace haloplot;
 using namespace haloplot::fw;
@@ -33,7 +33,7 @@ CubeArrayEdges cubes;
 
 [[noreturn]] void fail(const char* what, Status s) { selftest_fail(console, what, s); }
 
-SegmentQueue<64> queue;
+TracedQueue<SegmentQueue<64>> queue;
 
 Status read_cubes(void*, uint32_t first, uint32_t count, Edge3* out) {
   for (uint32_t i = 0; i < count; ++i) out[i] = cubes.edge(first + i);
@@ -75,7 +75,8 @@ int main() {
   TraceEncoder trace(digest.sink(), machine);
   TraceHal hal;
   hal.trace = &trace;
-  StepEngine<TraceHal, SegmentQueue<64>> engine(hal, queue);
+  queue.set_encoder(&trace);
+  StepEngine<TraceHal, TracedQueue<SegmentQueue<64>>> engine(hal, queue);
   const uint64_t t0 = counter_ticks();
   s = run_virtual(planner, prep, queue, hal, engine);
   const uint64_t t1 = counter_ticks();

@@ -18,7 +18,7 @@
 #include "solid/hidden_lines.h"
 #include "surface/hidden_surface.h"
 #include "tick_workload.h"
-#include "trace/trace_encoder.h"
+#include "trace/traced_queue.h"
 #include "view/projection.h"
 
 using namespace haloplot;
@@ -50,7 +50,7 @@ struct GpioHal {
   void pen(bool down) { bsrr = down ? 1u << 4 : 1u << 20; }
 };
 
-SegmentQueue<64> queue;
+TracedQueue<SegmentQueue<64>> queue;
 
 // Hidden lines of 3 x 3 solid cubes (the demo's geometry, view 30,40) on the chip: the whole
 // core/solid run in the job buffer. The host test compares the visible pieces with
@@ -264,7 +264,8 @@ int main() {
   TraceEncoder trace(console.sink(), spec.machine);
   TraceHal hal;
   hal.trace = &trace;
-  StepEngine<TraceHal, SegmentQueue<64>> engine(hal, queue);
+  queue.set_encoder(&trace);
+  StepEngine<TraceHal, TracedQueue<SegmentQueue<64>>> engine(hal, queue);
   const uint64_t t5 = counter_ticks();
   s = run_virtual(planner, prep, queue, hal, engine);
   const uint64_t t6 = counter_ticks();

@@ -6,6 +6,7 @@
 #include "motion/virtual_run.h"
 #include "pipeline/host_memory.h"
 #include "sim/trace.h"
+#include "trace/traced_queue.h"
 
 namespace haloplot::host {
 namespace {
@@ -99,8 +100,9 @@ Status run_motion(const JobSpec& spec, BandConductor* conductor, std::ostream* t
   StepPrep prep;
   s = prep.init(spec.machine, spec.effects);
   if (!ok(s)) return s;
-  SegmentQueue<64> queue;
-  StepEngine<RecordingHal, SegmentQueue<64>> engine(hal, queue);
+  TracedQueue<SegmentQueue<64>> queue;
+  if (writer) queue.set_encoder(writer->encoder());
+  StepEngine<RecordingHal, TracedQueue<SegmentQueue<64>>> engine(hal, queue);
   s = run_virtual(planner, prep, queue, hal, engine);
   if (!ok(s)) return s;
   r->end_tick = hal.now;

@@ -1,18 +1,19 @@
-// Step traces: what the motors and the pen did, tick by tick, as text that compresses well.
+// Step traces: what the motors and the pen did, as the schedule the step tick ran (version 2;
+// the rules that expand it into steps are in the README's trace section):
 //
-//   haloplot-trace 1
+//   haloplot-trace 2
 //   tick_hz 1000000
 //   kinematics corexy            cartesian | corexy
 //   steps 1/1                    motor steps per plot step
 //   backlash 0 0                 slack per motor, in motor steps
-//   p TICK down|up               a pen change
-//   m MOTOR T0 COUNT DT DDT DIR  COUNT steps of MOTOR in direction DIR (+ or -) at ticks
-//                                T0, T0 + DT, T0 + 2 DT + DDT, ...: the gap grows by DDT each
-//                                step, so cruising and steady ramps take one line each
-//   end TICK                     the tick of the last event
+//   b DOM MAJOR MINOR DIRS       a move: Bresenham of MINOR other-motor steps in MAJOR events
+//   s COUNT DELTA ADD            COUNT events: the interval register (Q8 ticks) changes by
+//                                DELTA, then grows by ADD after each event
+//   p TICK down|up DWELL         a pen change, then DWELL ticks without events
+//   end TICK DIGEST              the last event, and a digest of every step and pen change
 //
-// Lines appear in the order runs close, which is fixed for a given job: the same job always
-// gives the same bytes.
+// Version 1 (m MOTOR T0 COUNT DT DDT DIR lines, one per run of one motor's steps) still reads.
+// The same job always gives the same bytes.
 #pragma once
 #include <cstdint>
 #include <iosfwd>
@@ -38,6 +39,7 @@ class TraceWriter {
   void step(uint64_t tick, uint8_t motor, bool backward) { encoder_.step(tick, motor, backward); }
   void pen(uint64_t tick, bool down) { encoder_.pen(tick, down); }
   void finish(uint64_t end_tick) { encoder_.finish(end_tick); }
+  TraceEncoder* encoder() { return &encoder_; }
 
  private:
   static void write(void* context, const char* text, uint32_t length);

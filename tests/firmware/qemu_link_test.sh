@@ -79,7 +79,7 @@ fi
   --truncate-every 11 --seed 7 --test-exit > send.out 2>&1
 end_session $?
 
-awk '/^haloplot-trace 1$/ { k++; on = 1 } on { print > ("fw_" k ".trace") } /^end / { on = 0 }' fw.out
+awk '/^haloplot-trace 2$/ { k++; on = 1 } on { print > ("fw_" k ".trace") } /^end / { on = 0 }' fw.out
 # Traces 1 and 2 are the stopped plots; 3 the solid; 4 the streamed one; 5 and 6 the plot and
 # the re-plot.
 for pair in "3 host_solid" "4 host_stream" "5 host_plot" "6 host_replot"; do

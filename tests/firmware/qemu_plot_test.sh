@@ -16,7 +16,7 @@ qemu "$fw/fw_plot_selftest.elf" > "$work/fw.out"
 rc=$?
 if [ "$rc" -eq 0 ]; then ok; else bad "self-test exit status $rc: $(grep FAILED "$work/fw.out")"; fi
 grep '^fw ' "$work/fw.out"
-sed -n '/^haloplot-trace 1$/,/^end /p' "$work/fw.out" > "$work/fw.trace"
+sed -n '/^haloplot-trace 2$/,/^end /p' "$work/fw.out" > "$work/fw.trace"
 
 cd "$work"
 "$tool" demo-scene --cubes 6 -o scene.edges

@@ -1,5 +1,5 @@
-// An independent reader and checker of step traces (its own parser: it shares nothing with
-// host_sim/sim). It checks what a machine must never see:
+// An independent reader and checker of step traces, versions 1 and 2 (its own parser: it shares
+// nothing with host_sim/sim). It checks what a machine must never see:
 //   - two steps of one motor closer than the step-rate limit or the timer floor;
 //   - an acceleration above the limit: on a fixed time grid of h ticks the step count x
 //     satisfies |x(t+h) - 2 x(t) + x(t-h)| <= A h^2 + 4 for any motion with |x''| <= A,
@@ -41,16 +41,35 @@ struct CheckedTrace {
   std::string error;
 };
 
+// Version 2 lists the tick's schedule; this expands it by the README's rules, in its own way:
+// the k-th event of an s line (k = 1, 2, ...) lies k I + A k (k - 1) / 2 Q8 ticks after the
+// line's start, in closed form, where the simulator's reader adds intervals one by one. The
+// digest on the end line must then match the expanded steps, or the expansion is wrong.
+struct ScheduleExpansion {
+  unsigned __int128 start_q8 = 0;  // Q8 time of the line's start
+  int64_t reg = 0;                 // the interval register
+  int dominant = 0;
+  int8_t dir[2] = {1, 1};
+  int64_t major = 1, minor = 0, err = 0;
+  uint64_t digest = 0;
+  bool in_block = false;
+  void fold(uint64_t code) { digest = digest * 0x100000001b3ull + code + 1; }
+};
+
 inline CheckedTrace parse_trace_independently(const std::string& text) {
   CheckedTrace t;
   std::istringstream in(text);
   std::string line;
   std::vector<std::pair<int64_t, int8_t>> ev[2];
+  ScheduleExpansion x;
+  int version = 0;
   while (std::getline(in, line)) {
     std::istringstream w(line);
     std::string k;
     w >> k;
-    if (k == "tick_hz")
+    if (k == "haloplot-trace")
+      w >> version;
+    else if (k == "tick_hz")
       w >> t.tick_hz;
     else if (k == "kinematics") {
       std::string kin;
@@ -61,13 +80,49 @@ inline CheckedTrace parse_trace_independently(const std::string& text) {
     } else if (k == "steps") {
       char slash;
       w >> t.steps_num >> slash >> t.steps_den;
-    } else if (k == "end")
+    } else if (k == "end") {
       w >> t.end;
-    else if (k == "p") {
-      uint64_t tick;
+      uint64_t digest = 0;
+      if (version == 2 && (!(w >> digest) || digest != x.digest))
+        t.error = "the expanded steps do not give the end line's digest";
+    } else if (k == "p") {
+      uint64_t tick, dwell = 0;
       std::string s;
       w >> tick >> s;
+      if (version == 2) {
+        w >> dwell;
+        if (uint64_t(x.start_q8 >> 8) != tick) t.error = "a p line's tick is not the schedule's";
+        x.fold(8 * tick + 4 + (s == "down"));
+        x.start_q8 += (unsigned __int128)dwell * 256;
+      }
       t.pen.push_back({tick, s == "down"});
+    } else if (k == "b") {
+      std::string dirs;
+      w >> x.dominant >> x.major >> x.minor >> dirs;
+      x.err = x.major / 2;
+      for (int m = 0; m < 2; ++m) x.dir[m] = dirs.size() == 2 && dirs[m] == '-' ? -1 : 1;
+      x.in_block = true;
+    } else if (k == "s") {
+      int64_t count, delta, add;
+      w >> count >> delta >> add;
+      if (!x.in_block) t.error = "an s line outside a block";
+      const int64_t first = x.reg + delta;
+      for (int64_t e = 1; e <= count; ++e) {
+        const unsigned __int128 q8 =
+            x.start_q8 + (unsigned __int128)(e * first + add * e * (e - 1) / 2);
+        const int64_t tick = int64_t(q8 >> 8);
+        const int d = x.dominant, o = 1 - x.dominant;
+        ev[d].push_back({tick, x.dir[d]});
+        x.fold(8 * uint64_t(tick) + 2 * d + (x.dir[d] < 0));
+        x.err += x.minor;
+        if (x.err >= x.major) {
+          x.err -= x.major;
+          ev[o].push_back({tick, x.dir[o]});
+          x.fold(8 * uint64_t(tick) + 2 * o + (x.dir[o] < 0));
+        }
+      }
+      x.start_q8 += (unsigned __int128)(count * first + add * count * (count - 1) / 2);
+      x.reg = first + count * add;
     } else if (k == "m") {
       int m;
       int64_t t0, count, dt, ddt;
@@ -271,6 +326,11 @@ inline void check_step_speeds(const CheckedTrace& t, const Limits& lim, CheckRes
 
 inline CheckResult check_trace(const CheckedTrace& t, const Limits& lim) {
   CheckResult r;
+  if (!t.error.empty()) {  // a trace that does not expand to its own digest is not checked
+    r.ok = false;
+    r.why = t.error + "; ";
+    return r;
+  }
   check_step_speeds(t, lim, &r);
   const double h = double(lim.window) / double(t.tick_hz);  // seconds
   for (int m = 0; m < 2; ++m) {

@@ -10,7 +10,7 @@
 #include "motion/step_prep.h"
 #include "motion/virtual_run.h"
 #include "protocol/job_server.h"
-#include "trace/trace_encoder.h"
+#include "trace/traced_queue.h"
 
 namespace haloplot::test {
 
@@ -47,8 +47,9 @@ struct VirtualMotion {
     TraceEncoder trace(sink, spec.machine);
     Hal hal;
     hal.trace = &trace;
-    SegmentQueue<64> queue;
-    StepEngine<Hal, SegmentQueue<64>> engine(hal, queue);
+    TracedQueue<SegmentQueue<64>> queue;
+    queue.set_encoder(&trace);
+    StepEngine<Hal, TracedQueue<SegmentQueue<64>>> engine(hal, queue);
     s = run_virtual(planner, prep, queue, hal, engine);
     trace.finish(hal.now);
     self->traces.push_back(out);
