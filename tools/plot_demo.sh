@@ -3,6 +3,7 @@
 # Figure 4, 28 x 28 cubes) and simulate the plotter drawing it. Writes to out/:
 #   demo.edges  demo.cut  demo.spans  demo.svg  demo.png     the haloed picture
 #   demo.trace  demo.replay.svg  demo.replay.png              the motors' steps, replayed
+#   demo.btrace                                               the same trace, binary form
 #   demo.gcode  demo.hpgl                                     for plotters with other firmware
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -14,6 +15,8 @@ mkdir -p out
 "$tool" demo-scene --cubes 28 -o out/demo.edges
 "$tool" plot out/demo.edges --halo 50 -o out/demo.svg --spans out/demo.spans --cut out/demo.cut --stats
 "$tool" sim scenes/demo.job -o out/demo.trace --gcode out/demo.gcode --hpgl out/demo.hpgl --stats
+"$tool" sim scenes/demo.job -o out/demo.btrace --binary
+echo "trace: $(wc -c < out/demo.trace) bytes as text, $(wc -c < out/demo.btrace) binary (demo.btrace)"
 "$tool" replay out/demo.trace -o out/demo.replay.svg --stats
 if command -v rsvg-convert >/dev/null 2>&1; then
   rsvg-convert -w 1600 -b white out/demo.svg -o out/demo.png

@@ -1,6 +1,11 @@
 #include "trace/trace_encoder.h"
 
 namespace haloplot {
+namespace {
+// Signed values go out zigzagged (0, -1, 1, -2, ... as 0, 1, 2, 3, ...) so small ones of
+// either sign take one byte.
+uint64_t zigzag(int64_t v) { return (uint64_t(v) << 1) ^ (v < 0 ? ~uint64_t(0) : 0); }
+}  // namespace
 
 void TraceEncoder::put(const char* text) {
   uint32_t n = 0;
@@ -27,8 +32,18 @@ void TraceEncoder::put_i64(int64_t v) {
   }
 }
 
-TraceEncoder::TraceEncoder(CharSink sink, const Machine& m) : sink_(sink) {
-  put("haloplot-trace 2\ntick_hz ");
+void TraceEncoder::put_varint(uint64_t v) {
+  while (v >= 0x80) {
+    put_byte(uint8_t(v | 0x80));
+    v >>= 7;
+  }
+  put_byte(uint8_t(v));
+}
+
+TraceEncoder::TraceEncoder(CharSink sink, const Machine& m, TraceForm form)
+    : sink_(sink), form_(form) {
+  put(form == TraceForm::kBinary ? "haloplot-trace 2 binary\ntick_hz "
+                                 : "haloplot-trace 2\ntick_hz ");
   put_u64(m.tick_hz);
   put(m.kinematics == Kinematics::kCoreXY ? "\nkinematics corexy\nsteps "
                                           : "\nkinematics cartesian\nsteps ");
@@ -39,6 +54,67 @@ TraceEncoder::TraceEncoder(CharSink sink, const Machine& m) : sink_(sink) {
   put_u64(m.backlash[0]);
   put(" ");
   put_u64(m.backlash[1]);
+  put(form == TraceForm::kBinary ? "\ndata\n" : "\n");
+}
+
+// Tags of the binary form: the low two bits say the record, the rest carry small fields.
+void TraceEncoder::write_block(const StepSegment& b) {
+  if (form_ == TraceForm::kBinary) {
+    put_byte(uint8_t(1 | b.dominant << 2 | (b.dir_bits & 3u) << 3));
+    put_varint(b.major);
+    put_varint(b.minor);
+    return;
+  }
+  put(b.dominant == 0 ? "b 0 " : "b 1 ");
+  put_u64(b.major);
+  put(" ");
+  put_u64(b.minor);
+  put((b.dir_bits & 1u) ? " -" : " +");
+  put((b.dir_bits & 2u) ? "-\n" : "+\n");
+}
+
+void TraceEncoder::write_steps(uint64_t count, int64_t delta, int64_t add) {
+  if (form_ == TraceForm::kBinary) {
+    put_byte(uint8_t(count < 64 ? count << 2 : 0));  // 0: the count follows as a varint
+    if (count >= 64) put_varint(count);
+    put_varint(zigzag(delta));
+    put_varint(zigzag(add));
+    return;
+  }
+  put("s ");
+  put_u64(count);
+  put(" ");
+  put_i64(delta);
+  put(" ");
+  put_i64(add);
+  put("\n");
+}
+
+void TraceEncoder::write_pen(uint64_t tick, bool down, uint32_t dwell) {
+  if (form_ == TraceForm::kBinary) {
+    put_byte(uint8_t(2 | (down ? 4 : 0)));
+    put_varint(tick);
+    put_varint(dwell);
+    return;
+  }
+  put("p ");
+  put_u64(tick);
+  put(down ? " down " : " up ");
+  put_u64(dwell);
+  put("\n");
+}
+
+void TraceEncoder::write_end(uint64_t tick) {
+  if (form_ == TraceForm::kBinary) {
+    put_byte(3);
+    put_varint(tick);
+    put_varint(digest_);
+    return;
+  }
+  put("end ");
+  put_u64(tick);
+  put(" ");
+  put_u64(digest_);
   put("\n");
 }
 
@@ -52,31 +128,16 @@ void TraceEncoder::close_line() {
   if (line_.ran == 0) return;  // loaded, never stepped: the plot stopped first
   if (block_pending_) {
     block_pending_ = false;
-    put(block_.dominant == 0 ? "b 0 " : "b 1 ");
-    put_u64(block_.major);
-    put(" ");
-    put_u64(block_.minor);
-    put((block_.dir_bits & 1u) ? " -" : " +");
-    put((block_.dir_bits & 2u) ? "-\n" : "+\n");
+    write_block(block_);
   }
-  put("s ");
-  put_u64(line_.ran);
-  put(" ");
-  put_i64(line_.interval_q8 - register_q8_);
-  put(" ");
-  put_i64(line_.add_q8);
-  put("\n");
+  write_steps(line_.ran, line_.interval_q8 - register_q8_, line_.add_q8);
   register_q8_ = line_.interval_q8 + int64_t(line_.ran) * line_.add_q8;
 }
 
 void TraceEncoder::segment(const StepSegment& s) {
   if (s.kind == StepSegment::kPen) {
     close_line();
-    put("p ");
-    put_u64(pen_tick_);
-    put(pen_down_ ? " down " : " up ");
-    put_u64(s.dwell_ticks);
-    put("\n");
+    write_pen(pen_tick_, pen_down_, s.dwell_ticks);
     return;
   }
   // The tick's register after the open line's promised events: a segment that starts there
@@ -109,11 +170,7 @@ void TraceEncoder::pen(uint64_t tick, bool down) {
 
 void TraceEncoder::finish(uint64_t end_tick) {
   close_line();
-  put("end ");
-  put_u64(end_tick);
-  put(" ");
-  put_u64(digest_);
-  put("\n");
+  write_end(end_tick);
 }
 
 }  // namespace haloplot

@@ -30,10 +30,15 @@ inline uint64_t trace_digest_step(uint64_t h, uint64_t code) {
   return h * kTraceDigestPrime + code + 1;
 }
 
+// Text (the default, one line a record) or binary: the same records, each a tag byte and
+// LEB128 varints (the README's trace section), about 2.6 times smaller. The controller's test
+// images write text; `haloplot sim --binary` writes either from this one encoder.
+enum class TraceForm : uint8_t { kText, kBinary };
+
 class TraceEncoder {
  public:
-  TraceEncoder(CharSink sink, const Machine& m);  // writes the header
-  void segment(const StepSegment& s);             // the tick took s from its queue
+  TraceEncoder(CharSink sink, const Machine& m, TraceForm form = TraceForm::kText);  // header
+  void segment(const StepSegment& s);  // the tick took s from its queue
   void step(uint64_t tick, uint8_t motor, bool backward);
   void pen(uint64_t tick, bool down);
   void finish(uint64_t end_tick);  // writes the last line with the events it ran, then "end"
@@ -48,11 +53,18 @@ class TraceEncoder {
     bool open = false;
   };
   void close_line();
+  void write_block(const StepSegment& b);
+  void write_steps(uint64_t count, int64_t delta, int64_t add);
+  void write_pen(uint64_t tick, bool down, uint32_t dwell);
+  void write_end(uint64_t tick);
+  void put_byte(uint8_t b) { sink_.write(sink_.context, reinterpret_cast<const char*>(&b), 1); }
+  void put_varint(uint64_t v);  // LEB128: 7 bits a byte, low first, high bit = more follow
   void put(const char* text);
   void put_u64(uint64_t v);
   void put_i64(int64_t v);
 
   CharSink sink_;
+  TraceForm form_;
   Line line_;
   StepSegment block_{};         // the block of the open line (b line), written with it
   bool block_pending_ = false;  // its b line is not written yet

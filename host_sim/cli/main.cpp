@@ -53,7 +53,7 @@ const char* kUsage =
     "               [--hatch SPACING[,ANGLE[,TURN]]] [--spans OUT.spans] [--view AZ,EL]\n"
     "               [--perspective D] [--stats]\n"
     "  haloplot sim JOB.job -o OUT.trace [--gcode OUT.gcode] [--hpgl OUT.hpgl] [--arena BYTES]\n"
-    "               [--stats]\n"
+    "               [--binary] [--stats]   (--binary: the compact binary trace)\n"
     "  haloplot replay IN.trace -o OUT.svg [--stats]\n"
     "  haloplot send JOB.job --port PATH [--replot W] [--corrupt-every K] [--truncate-every K]\n"
     "               [--test-exit]   (upload to a controller over its serial port or socket)\n"
@@ -484,9 +484,10 @@ void warn_if_slow(const JobSpec& spec, const SimReport& r) {
 
 int cmd_sim(int argc, char** argv) {
   const Options o =
-      parse_options(argc, argv, 2, {"-o", "--gcode", "--hpgl", "--arena"}, {"--stats"});
+      parse_options(argc, argv, 2, {"-o", "--gcode", "--hpgl", "--arena"}, {"--stats", "--binary"});
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "sim");
+  const TraceForm form = o.has("--binary") ? TraceForm::kBinary : TraceForm::kText;
   JobFile jf;
   InputError ie = read_job_file(o.positional[0], &jf);
   if (ie.failed()) return fail(ie.message());
@@ -510,7 +511,7 @@ int cmd_sim(int argc, char** argv) {
   SimReport r;
   Status s = Status::kOk;
   error = write_atomically(o.get("-o"), [&](std::ostream& out) {
-    s = simulate(spec, edges, &out, &r, jf.arena);
+    s = simulate(spec, edges, &out, &r, jf.arena, form);
     return ok(s);
   });
   if (s == Status::kArenaTooSmall)

@@ -77,8 +77,8 @@ struct BandFeed {
 };
 
 // The motion of the plot: from r->points, then (with a conductor) from its bands.
-Status run_motion(const JobSpec& spec, BandConductor* conductor, std::ostream* trace,
-                  SimReport* r) {
+Status run_motion(const JobSpec& spec, BandConductor* conductor, std::ostream* trace, SimReport* r,
+                  TraceForm form = TraceForm::kText) {
   r->planner_bytes = MotionPlanner::workspace_bytes(spec.effects);
   std::vector<uint64_t> planner_ws(r->planner_bytes / 8 + 1);
   RecordingHal hal;
@@ -94,7 +94,7 @@ Status run_motion(const JobSpec& spec, BandConductor* conductor, std::ostream* t
   Status s = init_planner(&planner, spec, job, planner_ws.data(), r->planner_bytes);
   if (!ok(s)) return s;
   std::unique_ptr<TraceWriter> writer;
-  if (trace) writer = std::make_unique<TraceWriter>(*trace, spec.machine);
+  if (trace) writer = std::make_unique<TraceWriter>(*trace, spec.machine, form);
   hal.writer = writer.get();
   hal.report = r;
   StepPrep prep;
@@ -131,7 +131,7 @@ bool edge_drawing(const JobSpec& spec) {
 }  // namespace
 
 Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostream* trace,
-                SimReport* r, size_t arena_bytes) {
+                SimReport* r, size_t arena_bytes, TraceForm form) {
   *r = SimReport{};
   r->arena_bytes = arena_bytes;
   Status s = validate(spec.machine);
@@ -139,14 +139,14 @@ Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostre
   std::vector<uint64_t> buffer;
   if (arena_bytes == 0) {
     s = prepare_whole(spec, edges, &buffer, r);
-    return ok(s) ? run_motion(spec, nullptr, trace, r) : s;
+    return ok(s) ? run_motion(spec, nullptr, trace, r, form) : s;
   }
   if (!edge_drawing(spec)) return Status::kBadParameter;
   buffer.assign(arena_bytes / 8, 0);
   BandConductor conductor;
   s = conductor.begin(band_spec(spec), array_edge_source(edges.data(), uint32_t(edges.size())),
                       buffer.data(), buffer.size() * 8);
-  return ok(s) ? run_motion(spec, &conductor, trace, r) : s;
+  return ok(s) ? run_motion(spec, &conductor, trace, r, form) : s;
 }
 
 Status simulate_streamed(const JobSpec& spec, BandStream stream, int32_t margin, size_t arena_bytes,

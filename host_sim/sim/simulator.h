@@ -10,6 +10,7 @@
 #include "job/job.h"
 #include "motion/planner.h"
 #include "motion/step_prep.h"
+#include "trace/trace_encoder.h"
 
 namespace haloplot::host {
 
@@ -35,9 +36,9 @@ struct SimReport {
 // Runs the whole job and writes the trace to `trace` (may be null). Returns the first status
 // that stopped it. With arena_bytes > 0 the drawing runs in bands in an arena of that size
 // (band/conductor.h), exactly as a controller with that arena runs it; 0: one job buffer sized
-// for the whole scene.
+// for the whole scene. The trace is text, or the binary form of the same records.
 Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostream* trace,
-                SimReport* report, size_t arena_bytes = 0);
+                SimReport* report, size_t arena_bytes = 0, TraceForm form = TraceForm::kText);
 
 // The same with the bands streamed in (band/conductor.h begin_streamed), as a controller that
 // receives them over its link runs it: the stream may make the plot wait (kBusy).

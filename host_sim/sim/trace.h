@@ -35,7 +35,7 @@ struct StepEvent {
 // Writes a trace to a stream through the core's encoder (the firmware uses the same one).
 class TraceWriter {
  public:
-  TraceWriter(std::ostream& out, const Machine& m);
+  TraceWriter(std::ostream& out, const Machine& m, TraceForm form = TraceForm::kText);
   void step(uint64_t tick, uint8_t motor, bool backward) { encoder_.step(tick, motor, backward); }
   void pen(uint64_t tick, bool down) { encoder_.pen(tick, down); }
   void finish(uint64_t end_tick) { encoder_.finish(end_tick); }

@@ -156,6 +156,14 @@ rc=$?
 expect '[ $rc -eq 0 ] && [ "$(sed -n "s/^bands=//p" arenasim.txt)" -gt 1 ] && [ "$(sed -n "s/^spans=//p" arenasim.txt)" = "$(grep -c "^s " a.spans)" ]' "a job with an arena plots in bands, every piece: $(grep -E "^(bands|spans)=" arenasim.txt | tr '\n' ' ')"
 "$tool" replay arena.trace -o arena_replay.svg --stats 2> replay.txt
 expect '[ $? -eq 0 ]' "the banded trace replays"
+"$tool" sim arena.job -o arena.btrace --binary 2> err.txt
+"$tool" replay arena.btrace -o arena_breplay.svg 2>> err.txt
+rc=$?
+expect '[ $rc -eq 0 ] && [ "$(wc -c < arena.btrace)" -lt "$(wc -c < arena.trace)" ] && cmp -s arena_replay.svg arena_breplay.svg' "the binary trace is smaller and replays to the same picture: $(cat err.txt)"
+head -c 200 arena.btrace > cut.btrace
+"$tool" replay cut.btrace -o cut.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "cut.btrace" err.txt && [ ! -e cut.svg ]' "a binary trace cut short is refused by name: $(cat err.txt)"
 
 # finish: home (the default) ends the trace at the origin, stay where the last stroke ended.
 printf 'scene scene.edges\ndrawing all\n' > home.job

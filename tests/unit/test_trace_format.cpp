@@ -60,7 +60,8 @@ struct Recorded {
 };
 
 // The plan's points come from the simulator; the motion runs here on the core alone.
-Recorded run_pins(const JobSpec& spec, const std::vector<Edge3>& edges) {
+Recorded run_pins(const JobSpec& spec, const std::vector<Edge3>& edges,
+                  TraceForm form = TraceForm::kText) {
   SimReport report;
   CHECK(ok(simulate(spec, edges, nullptr, &report)));
   PreparedJob job;
@@ -76,7 +77,7 @@ Recorded run_pins(const JobSpec& spec, const std::vector<Edge3>& edges) {
   const CharSink sink{
       [](void* c, const char* t, uint32_t n) { static_cast<std::string*>(c)->append(t, n); },
       &r.trace};
-  TraceEncoder encoder(sink, spec.machine);
+  TraceEncoder encoder(sink, spec.machine, form);
   PinHal hal;
   hal.trace = &encoder;
   TracedQueue<SegmentQueue<64>> queue;
@@ -125,8 +126,22 @@ void expands_to_the_pins(const std::string& label, const JobSpec& spec,
   size_t pens = 0;
   for (const PinCall& c : pins) pens += c.motor == 2;
   CHECK_EQ(x.pen.size(), pens);
-  std::printf("%s: %zu pin calls, %zu trace bytes (%.2f per step)\n", label.c_str(), pins.size(),
-              r.trace.size(), double(r.trace.size()) / double(pins.size() - pens));
+  // The binary form of the same run: the same pin calls through the simulator's reader, and
+  // fewer bytes.
+  const Recorded b = run_pins(spec, edges, TraceForm::kBinary);
+  std::istringstream bin(b.trace);
+  Trace bt;
+  const InputError be = read_trace(bin, label + " (binary)", &bt);
+  CHECK_MSG(!be.failed(), be.message());
+  std::vector<PinCall> bread;
+  for (const StepEvent& ev : bt.events) bread.push_back({ev.tick, ev.motor, ev.flag});
+  CHECK_MSG(bread == pins, label + ": the binary trace expands to the pin calls");
+  CHECK_EQ(bt.end_tick, r.end);
+  CHECK_MSG(b.trace.size() * 2 < r.trace.size(), label + ": binary is under half the text");
+  const double steps = double(pins.size() - pens);
+  std::printf("%s: %zu pin calls, %zu text bytes (%.2f per step), %zu binary (%.2f)\n",
+              label.c_str(), pins.size(), r.trace.size(), double(r.trace.size()) / steps,
+              b.trace.size(), double(b.trace.size()) / steps);
 }
 
 JobSpec machine(Kinematics k, uint32_t num, uint32_t den, bool backlash) {
@@ -201,6 +216,26 @@ void damage_is_refused() {
     const size_t last = ls[b_line].size() - 1;
     ls[b_line][last] = ls[b_line][last] == '+' ? '-' : '+';
     refused(ls, "a direction flipped");
+  }
+  // The binary form: a byte changed anywhere in its records, or the trace cut short.
+  const Recorded b =
+      run_pins(machine(Kinematics::kCoreXY, 1, 1, false), cubes(2), TraceForm::kBinary);
+  const size_t data = b.trace.find("data\n") + 5;
+  CHECK(data > 5 && data < b.trace.size());
+  int missed = 0;
+  for (size_t k = 0; k < 50; ++k) {
+    std::string damaged = b.trace;
+    const size_t at = data + (damaged.size() - data) * (2 * k + 1) / 100;
+    damaged[at] = char(damaged[at] ^ (1 << (k % 7)));
+    std::istringstream in2(damaged);
+    Trace t2;
+    missed += !read_trace(in2, "damaged", &t2).failed();
+  }
+  CHECK_MSG(missed == 0, std::to_string(missed) + " of 50 one-bit changes read as a whole trace");
+  {
+    std::istringstream in2(b.trace.substr(0, b.trace.size() - 3));
+    Trace t2;
+    CHECK_MSG(read_trace(in2, "cut", &t2).failed(), "a binary trace cut short is refused");
   }
   // The undamaged trace passes both.
   std::istringstream s(r.trace);
