@@ -1,10 +1,46 @@
-// The step clock: a one-shot timer that calls the step tick, which returns the delay to the
-// next event in ticks (0: stop). The firmware arms a hardware timer compare; the simulator
-// just adds the delay to its virtual time.
+// The step clock. On a board it is a one-shot timer whose interrupt calls the step tick, which
+// returns the delay to the next event in ticks (0: stop); see board_hal.h for the calls the
+// controller makes. In virtual time (core/motion/virtual_run.h: the simulator and the chip's
+// self-tests) the clock is a counter on the step HAL that the run advances by each delay:
 //
-//   struct MyClock {
-//     static constexpr uint32_t kHz = 1000000;  // must equal Machine::tick_hz
-//     void arm(uint32_t ticks);                 // call the tick after `ticks`
-//     void stop();
+//   struct MyHal {
+//     uint64_t now;   // ticks since the plot began; events are stamped with it
 //   };
 #pragma once
+#include <stdint.h>
+
+#include "detect.h"
+
+namespace haloplot::hal {
+
+HALOPLOT_HAL_MEMBER(HasVirtualClock, detail::object<H>().now += uint32_t{1})
+
+template <typename H>
+constexpr bool check_virtual_clock() {
+  static_assert(HasVirtualClock<H>::value,
+                "this HAL has no uint64_t now: run_virtual stamps events with it "
+                "(hal/step_clock.h)");
+  return true;
+}
+
+// The board's one-shot step timer (board_hal.h). A delay longer than the timer's reach runs in
+// chunks; timer_chunk_pending() says the interrupt is such a chunk, not yet the tick's.
+HALOPLOT_HAL_MEMBER(HasTimerInit, H::timer_init(uint32_t{1}, uint32_t{1}))
+HALOPLOT_HAL_MEMBER(HasTimerStart, H::timer_start(uint32_t{1}))
+HALOPLOT_HAL_MEMBER(HasTimerNext, H::timer_next(uint32_t{1}))
+HALOPLOT_HAL_MEMBER(HasTimerStop, H::timer_stop())
+HALOPLOT_HAL_MEMBER(HasTimerChunk, static_cast<bool>(H::timer_chunk_pending()))
+
+template <typename B>
+constexpr bool check_board_clock() {
+  static_assert(HasTimerInit<B>::value,
+                "the board has no static Status timer_init(uint32_t tick_hz, uint32_t scale)");
+  static_assert(HasTimerStart<B>::value,
+                "the board has no static void timer_start(uint32_t first_delay)");
+  static_assert(HasTimerNext<B>::value, "the board has no static void timer_next(uint32_t delay)");
+  static_assert(HasTimerStop<B>::value, "the board has no static void timer_stop()");
+  static_assert(HasTimerChunk<B>::value, "the board has no static bool timer_chunk_pending()");
+  return true;
+}
+
+}  // namespace haloplot::hal

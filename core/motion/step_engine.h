@@ -7,17 +7,21 @@
 // parameter, so each pin write inlines. Events fire at the floor of the exact running sum of
 // the Q8 intervals: rounding never accumulates.
 //
-// Hal must provide: void step(uint8_t motor); void set_direction(uint8_t motor, bool backward);
-//                   void pen(bool down);
+// Hal must provide what hal/plotter_hal.h names: void step(uint8_t motor);
+// void set_direction(uint8_t motor, bool backward); void pen(bool down). It is checked here,
+// where every HAL is plugged in, and a missing member fails the build with its name.
 #pragma once
 #include <stdint.h>
 
 #include "motion/step_segment.h"
+#include "plotter_hal.h"
 
 namespace haloplot {
 
 template <typename Hal, typename Queue>
 class StepEngine {
+  static_assert(hal::check_plotter_hal<Hal>(), "the step engine's HAL (hal/plotter_hal.h)");
+
  public:
   StepEngine(Hal& hal, Queue& queue) : hal_(hal), queue_(queue) {}
 

@@ -2,26 +2,24 @@
 
 #include <new>  // placement construction into static storage: no heap
 
-#include "drivers/gpio.h"
-#include "drivers/servo_pwm.h"
-#include "drivers/step_timer.h"
+#include "board/board.h"
 
 namespace haloplot::fw {
 
 void ChipHal::set_direction(uint8_t m, bool b) {
   backward[m] = b;
-  dir_pin(m, b);
+  Board::set_dir(m, b);
 }
 // The trace is test instrumentation: only test images compile it onto the step path (its
 // decimal text needs division; the flashed image's step path has none, see check_image.cmake).
 void ChipHal::step(uint8_t m) {
-  step_pin_high(m);
+  Board::step_high(m);
 #ifdef HALOPLOT_FW_TEST_HOOKS
   if (trace) trace->step(now, m, backward[m]);
 #endif
 }
 void ChipHal::pen(bool down) {
-  servo_pen(down);
+  Board::pen_set(down);
 #ifdef HALOPLOT_FW_TEST_HOOKS
   if (trace) trace->pen(now, down);
 #endif
@@ -42,7 +40,7 @@ MotionPort MotionRunner::port() {
 
 Status MotionRunner::begin(const JobSpec& spec, const PreparedJob& job) {
   if (active_) return Status::kBusy;
-  Status s = step_timer_init(spec.machine.tick_hz, time_scale_);
+  Status s = Board::timer_init(spec.machine.tick_hz, time_scale_);
   if (ok(s)) s = init_planner(&planner_, spec, job, planner_ws_, sizeof planner_ws_);
   if (ok(s)) s = prep_.init(spec.machine, spec.effects);
   if (!ok(s)) return s;
@@ -62,17 +60,17 @@ Status MotionRunner::begin(const JobSpec& spec, const PreparedJob& job) {
   timer_idle_ = true;
   s = prep_.fill(planner_, queue_);
   if (!ok(s)) return s;
-  drivers_enable(true);
+  Board::enable_drivers(true);
   active_ = true;
   service();  // starts the timer
   return Status::kOk;
 }
 
 void MotionRunner::finish(Status s) {
-  step_timer_stop();
-  step_pins_low();
+  Board::timer_stop();
+  Board::steps_low();
   queue_.clear();
-  if (!ok(s)) servo_pen(false);  // an interrupted plot lifts the pen
+  if (!ok(s)) Board::pen_set(false);  // an interrupted plot lifts the pen
   if (trace_) trace_->finish(hal_.now);
   result_ = s;
   active_ = false;
@@ -95,24 +93,24 @@ void MotionRunner::service() {
   if (mid_plot) ++underruns_;
   delay_ = d;
   timer_idle_ = false;
-  step_timer_start(d);
+  Board::timer_start(d);
 }
 
 void MotionRunner::on_timer() {
-  step_pins_low();
+  Board::steps_low();
   hal_.now += delay_;
   const uint32_t d = engine_.tick();
   if (d == 0) {  // the queue is dry: the main loop refills and restarts (or ends the plot)
-    step_timer_stop();
+    Board::timer_stop();
     timer_idle_ = true;
     return;
   }
   delay_ = d;
-  step_timer_next(d);
+  Board::timer_next(d);
 }
 
 void MotionRunner::on_limit(uint8_t motor) {
-  step_timer_stop();  // first: no further step, whatever the main loop is doing
+  Board::timer_stop();  // first: no further step, whatever the main loop is doing
   timer_idle_ = true;
   limit_ = uint8_t(motor + 1);
 }

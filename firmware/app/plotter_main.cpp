@@ -10,12 +10,7 @@
 // SYS_EXIT_EXTENDED. The flashed image has none of that: semihosting would fault without a
 // debugger attached.
 #include "app/motion_runner.h"
-#include "drivers/gpio.h"
-#include "drivers/limit_switches.h"
-#include "drivers/servo_pwm.h"
-#include "drivers/step_timer.h"
-#include "drivers/usart.h"
-#include "drivers/watchdog.h"
+#include "board/board.h"
 #include "platform/console.h"
 #include "platform/instruction_counter.h"
 #include "protocol/job_server.h"
@@ -72,26 +67,26 @@ bool digesting = false;
 }  // namespace
 
 extern "C" void systick_handler() {
-  if (step_timer_chunk_pending()) return;  // a long delay (a pen dwell) is still running
+  if (Board::timer_chunk_pending()) return;  // a long delay (a pen dwell) is still running
   motion.on_timer();
 }
 
 extern "C" uint32_t stack_unused_bytes();
 
 int main() {
-  gpio_init();
-  servo_init();
-  usart_init(board::kUsartBaud);
-  limit_switches_init([](uint8_t m) { motion.on_limit(m); });
+  Board::init();
+  Board::pen_init();
+  Board::serial_init(Board::kSerialBaud);
+  Board::limits_init([](uint8_t m) { motion.on_limit(m); });
   counter_start();
-  watchdog_start();
+  Board::watchdog_start();
 #ifdef HALOPLOT_FW_TEST_HOOKS
   motion.set_trace(console.sink());
   motion.set_time_scale(kQemuTimeScale);
   bool exit_requested = false;
   JobServer::Extension ext{&exit_requested, [](void* c, const Frame& f) {
                              if (f.type == kTestLimitType) {
-                               chip::nvic_set_pending(chip::kExti0);
+                               Board::test_close_limit(0);
                                return Status::kOk;
                              }
                              if (f.type == kTestDigestType) {
@@ -106,7 +101,7 @@ int main() {
 #endif
   JobServer server(
       arena, sizeof arena, rx_frame, sizeof rx_frame,
-      ByteOutput{nullptr, [](void*, const uint8_t* b, uint32_t n) { usart_write(b, n); }},
+      ByteOutput{nullptr, [](void*, const uint8_t* b, uint32_t n) { Board::serial_write(b, n); }},
       motion.port());
 #ifdef HALOPLOT_FW_TEST_HOOKS
   server.set_extension(ext);
@@ -115,9 +110,9 @@ int main() {
   uint64_t last_byte = counter_ticks();
   bool quiet = true;
   for (;;) {
-    watchdog_kick();
+    Board::watchdog_kick();
     uint8_t b;
-    while (usart_read(&b)) {
+    while (Board::serial_read(&b)) {
       server.push(b);
       last_byte = counter_ticks();
       quiet = false;
@@ -150,7 +145,7 @@ int main() {
       stat("prepare_instructions", ticks_to_instructions(server.prepare_ticks()));
       stat("replot_instructions", ticks_to_instructions(server.redraw_ticks()));
       stat("underruns", motion.underruns());
-      stat("usart_overruns", usart_overruns());
+      stat("usart_overruns", Board::serial_overruns());
       stat("stack_used_bytes", 16 * 1024 - stack_unused_bytes());
       stat("arena_bytes", sizeof arena);
       console.flush();

@@ -10,6 +10,7 @@
 #include "../check.h"
 #include "../reference/trace_checker.h"
 #include "../support/scenes.h"
+#include "../support/test_machine.h"
 #include "demo/cube_array.h"
 #include "motion/step_engine.h"
 #include "sim/replay.h"
@@ -33,18 +34,7 @@ static Run sim(const JobSpec& spec, const std::vector<Edge3>& edges) {
 }
 
 static JobSpec base_spec(Kinematics k, uint32_t num, uint32_t den) {
-  JobSpec s;
-  s.drawing = DrawingEffect::kHaloed;
-  s.draw.halo = 40;
-  s.machine.kinematics = k;
-  s.machine.steps_num = num;
-  s.machine.steps_den = den;
-  // Keep every motor under its step rate at this ratio.
-  s.machine.draw_speed = 3000 * den / num;
-  s.machine.travel_speed = 6000 * den / num;
-  s.machine.pen_travel_ticks = 20000;
-  s.machine.pen_settle_ticks = 5000;
-  return s;
+  return test_support::test_machine(k, num, den);
 }
 
 // Squared distance from p to segment ab is <= r^2 (exact integers).

@@ -9,6 +9,7 @@
 
 #include "../check.h"
 #include "../reference/trace_checker.h"
+#include "../support/test_machine.h"
 #include "demo/cube_array.h"
 #include "motion/step_engine.h"
 #include "motion/virtual_run.h"
@@ -145,16 +146,7 @@ void expands_to_the_pins(const std::string& label, const JobSpec& spec,
 }
 
 JobSpec machine(Kinematics k, uint32_t num, uint32_t den, bool backlash) {
-  JobSpec s;
-  s.drawing = DrawingEffect::kHaloed;
-  s.draw.halo = 40;
-  s.machine.kinematics = k;
-  s.machine.steps_num = num;
-  s.machine.steps_den = den;
-  s.machine.draw_speed = 3000 * den / num;
-  s.machine.travel_speed = 6000 * den / num;
-  s.machine.pen_travel_ticks = 20000;
-  s.machine.pen_settle_ticks = 5000;
+  JobSpec s = test_support::test_machine(k, num, den);
   if (backlash) {
     s.effects.backlash = true;
     s.machine.backlash[0] = 7;
