@@ -102,9 +102,9 @@ int64_t StepPrep::interval_at(uint32_t j) const {
 }
 
 // Does the ramp (first, add) from where the tick is to step j1 stay as close to the exact
-// profile as an aimed segment would? Its end within half a tick of the exact time (so timing
-// error cannot accumulate) and its first, middle and last intervals within half a tick of the
-// exact ones.
+// profile as an aimed segment would? Its end within kDrift (1/8 tick) of the exact time, so
+// timing error cannot accumulate, and its first, middle and last intervals within half a tick
+// of the exact ones.
 bool StepPrep::fits(uint32_t j1, int64_t first, int64_t add) const {
   const int64_t k = j1 - j_, half = (k - 1) / 2;
   const int64_t end = int64_t(time_q8_) + k * first + add * (k * (k - 1) / 2);
@@ -127,8 +127,8 @@ bool StepPrep::fits(uint32_t j1, int64_t first, int64_t add) const {
 // interval register, same add), then, where the exact intervals are level (a cruise: they
 // differ by a Q8 rounding at most), a flat one (add 0, the mean interval). A cruise at a
 // fractional interval (67.5 ticks) is then one flat ramp going on for as long as its Q8
-// interval stays within half a tick of the exact times, instead of a segment re-aimed at
-// every boundary (67, 68, 67, ...), and a trace writes it as one line.
+// interval keeps the time within 1/8 tick of the exact one (50 to 100 events), instead of a
+// segment re-aimed at every boundary (67, 68, 67, ...), and a trace writes it as one line.
 void StepPrep::choose_ramp(uint32_t* j1_out, int64_t* first_out, int64_t* add_out) const {
   uint32_t j1 = j_ + kSegmentSteps < n_ ? j_ + kSegmentSteps : n_;
   *j1_out = j1;

@@ -1,14 +1,15 @@
-// The step-trace text encoder, freestanding so the firmware and the host simulator write the
-// same bytes for the same plot (the format is in the README and host_sim/sim/trace.h).
+// The step-trace encoder, freestanding so the firmware and the host simulator write the same
+// bytes for the same plot (the format is in the README and host_sim/sim/trace.h).
 //
 // Version 2 records the schedule the step tick runs, not its steps: the segments the tick
 // takes from its queue (trace/traced_queue.h hands them over), from which every step's tick
 // follows exactly by the tick's own rules (a Q8 running time, Bresenham for the other motor).
-// A cruise or a steady ramp is one `s` line whatever its fractional interval, where a list of
-// step ticks needs a line every few steps (67, 68, 67, ... ticks at 67.5). The HAL's step and
-// pen calls still come here: they count the events each line really ran (an abort cuts the
-// last line short) and fold every step into a digest on the `end` line, so a replayer can
-// prove that its expansion gives the steps the pins saw.
+// A ramp that goes on joins one `s` line: a cruise at a fractional interval takes a line per
+// 50 to 100 events (step prep's flat ramp), where a list of step ticks needs a line every few
+// steps (67, 68, 67, ... ticks at 67.5). The HAL's step and pen calls still come here: they
+// count the events each line really ran (an abort cuts the last line short) and fold every
+// step into a digest on the `end` line, so a replayer can prove that its expansion gives the
+// steps the pins saw.
 #pragma once
 #include <stdint.h>
 
