@@ -252,7 +252,7 @@ InputError read_trace(std::istream& in, const std::string& name, Trace* out, uin
     } else if (version == 1 && f[0] == "m") {
       why = run_line_v1(f, out, max_events);
     } else if (version == 1 && f[0] == "p") {
-      int64_t tick;
+      int64_t tick = 0;
       if (f.size() != 3 || !parse_int(f[1], 0, INT64_MAX, &tick) ||
           (f[2] != "down" && f[2] != "up"))
         why = "a p line is 'p TICK down|up'";
@@ -261,11 +261,11 @@ InputError read_trace(std::istream& in, const std::string& name, Trace* out, uin
       else
         out->events.push_back({uint64_t(tick), 2, f[2] == "down"});
     } else if (version == 1 && f[0] == "end") {
-      int64_t tick;
+      int64_t tick = 0;
       if (f.size() != 2 || !parse_int(f[1], 0, INT64_MAX, &tick))
         why = "the end line is 'end TICK'";
-      out->end_tick = uint64_t(tick);
-      ended = why.empty();
+      else
+        out->end_tick = uint64_t(tick), ended = true;
     } else {
       why = header_line(f, out);
     }
