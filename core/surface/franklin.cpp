@@ -107,26 +107,35 @@ bool blocks(const Plane& f, const Cell& c) {
          f.holds(c.x0, c.y1, true) && f.holds(c.x1, c.y1, true);
 }
 
-// Step 7a(i): the edge's part inside the cell (clipped exactly, positions n / d) is behind
-// the blocking face at both of its ends, hence all along it.
-bool edge_behind(const Edge3& e, const Plane& fb, const Cell& c) {
+// A segment's parameter range [lo, hi] (positions n / d, |n|, d < 2^21) clipped exactly to a
+// closed cell, one axis at a time: p + t d within [c0, c1].
+struct CellClip {
   int64_t lo_n = 0, lo_d = 1, hi_n = 1, hi_d = 1;
-  auto clip = [&](int64_t a, int64_t d, int64_t c0, int64_t c1) {
-    if (d == 0) return a >= c0 && a <= c1;
-    int64_t n0 = c0 - a, n1 = c1 - a, den = d;
-    if (den < 0) {
-      den = -den;
+  bool axis(int64_t p, int64_t d, int64_t c0, int64_t c1) {
+    if (d == 0) return p >= c0 && p <= c1;
+    int64_t n0 = c0 - p, n1 = c1 - p;
+    if (d < 0) {
+      d = -d;
       const int64_t t = -n0;
       n0 = -n1;
       n1 = t;
     }
-    if (n0 * lo_d > lo_n * den) lo_n = n0, lo_d = den;  // later entry
-    if (n1 * hi_d < hi_n * den) hi_n = n1, hi_d = den;  // earlier exit
+    if (n0 * lo_d > lo_n * d) lo_n = n0, lo_d = d;  // later entry
+    if (n1 * hi_d < hi_n * d) hi_n = n1, hi_d = d;  // earlier exit
     return true;
-  };
-  if (!clip(e.a.x, e.b.x - e.a.x, c.x0, c.x1) || !clip(e.a.y, e.b.y - e.a.y, c.y0, c.y1))
-    return false;
-  if (lo_n * hi_d > hi_n * lo_d) return false;  // no part in the cell
+  }
+  // The part of segment ab in the cell; false when there is none.
+  bool segment(const Point3& a, const Point3& b, const Cell& c) {
+    return axis(a.x, int64_t{b.x} - a.x, c.x0, c.x1) && axis(a.y, int64_t{b.y} - a.y, c.y0, c.y1) &&
+           lo_n * hi_d <= hi_n * lo_d;
+  }
+};
+
+// Step 7a(i): the edge's part inside the cell (clipped exactly) is behind the blocking face at
+// both of its ends, hence all along it.
+bool edge_behind(const Edge3& e, const Plane& fb, const Cell& c) {
+  CellClip k;
+  if (!k.segment(e.a, e.b, c)) return false;  // no part in the cell
   // g(t) = (edge depth - plane depth) * area, linear in t: g(n/d) * d = ga (d - n) + gb n.
   const Wide ga = mul_i64(int64_t{e.a.z}, fb.area) - fb.value(e.a.x, e.a.y);
   const Wide gb = mul_i64(int64_t{e.b.z}, fb.area) - fb.value(e.b.x, e.b.y);
@@ -135,7 +144,7 @@ bool edge_behind(const Edge3& e, const Plane& fb, const Cell& c) {
     const int s = v.negative() ? -1 : (v.is_zero() ? 0 : 1);
     return fb.area > 0 ? s : -s;
   };
-  return sign_at(lo_n, lo_d) < 0 && sign_at(hi_n, hi_d) < 0;
+  return sign_at(k.lo_n, k.lo_d) < 0 && sign_at(k.hi_n, k.hi_d) < 0;
 }
 
 // A polygon is the run of consecutive triangles with its id (the host splits each polygon into
@@ -162,9 +171,9 @@ bool flat_group(const SolidInput& in, uint32_t start, uint32_t end) {
   return true;
 }
 
-// Is (x, y) on a side of the group that no other triangle of it shares (the polygon's own
-// boundary, not a diagonal)?
-bool on_group_boundary(const SolidInput& in, uint32_t start, uint32_t end, int64_t x, int64_t y) {
+// Does a side of the group that no other triangle of it shares (the polygon's own boundary,
+// not a diagonal) meet the closed cell?
+bool boundary_meets_cell(const SolidInput& in, uint32_t start, uint32_t end, const Cell& c) {
   for (uint32_t t = start; t < end; ++t)
     for (int k = 0; k < 3; ++k) {
       const uint32_t u = in.triangles[t].v[k], w = in.triangles[t].v[(k + 1) % 3];
@@ -174,17 +183,17 @@ bool on_group_boundary(const SolidInput& in, uint32_t start, uint32_t end, int64
           const uint32_t p = in.triangles[o].v[j], q = in.triangles[o].v[(j + 1) % 3];
           shared = shared || (p == w && q == u) || (p == u && q == w);
         }
-      if (shared) continue;
-      const Point3 a = in.vertices[u], b = in.vertices[w];
-      const int64_t cr = int64_t{b.x - a.x} * (y - a.y) - int64_t{b.y - a.y} * (x - a.x);
-      const bool within = (x - a.x) * (x - b.x) <= 0 && (y - a.y) * (y - b.y) <= 0;
-      if (cr == 0 && within) return true;
+      if (!shared && CellClip{}.segment(in.vertices[u], in.vertices[w], c)) return true;
     }
   return false;
 }
 
-// The group's projection holds all four corners strictly inside (see blocks()): each in one of
-// its triangles, and none on the polygon's own boundary (a corner on a diagonal is inside).
+// The group's projection covers the closed cell with a neighbourhood (see blocks()): each
+// corner lies in one of its triangles, and no side of the polygon's own boundary meets the
+// cell. For a convex polygon the corners alone would do; a concave one can hold all four
+// corners while a notch or a slot narrower than the cell cuts into it, and what is seen
+// through the slot must not be dropped (test solid_cases, "slot narrower than a cell"). A
+// corner on the boundary is a side meeting the cell, so strictness comes with it.
 bool group_blocks(const SolidInput& in, uint32_t start, uint32_t end, const Cell& c) {
   const int64_t xs[4] = {c.x0, c.x1, c.x0, c.x1}, ys[4] = {c.y0, c.y0, c.y1, c.y1};
   for (int k = 0; k < 4; ++k) {
@@ -193,9 +202,9 @@ bool group_blocks(const SolidInput& in, uint32_t start, uint32_t end, const Cell
       const Plane f = plane_of(in, t);
       in_one = f.area != 0 && f.holds(xs[k], ys[k]);
     }
-    if (!in_one || on_group_boundary(in, start, end, xs[k], ys[k])) return false;
+    if (!in_one) return false;
   }
-  return true;
+  return !boundary_meets_cell(in, start, end, c);
 }
 
 struct Cut {

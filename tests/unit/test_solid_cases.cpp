@@ -260,5 +260,33 @@ int main() {
       expect(s, r, w, P(500, 1800, 1000), P(500, 2200, 1000), {{0, 1, 0}});
     });
   }
+  // A concave face with a slot narrower than a grid cell (issue 18): a U-shaped prism in front,
+  //   x in [1000, 3000], y in [1000, 3000], depth 3000..4000, with a slot 20 steps wide,
+  //   x in [1990, 2010], from y = 1200 up to its top; behind it, depth 0..1000, a thin box
+  //   x in [1995, 2005], y in [500, 3500], whose front edges run up through the slot. Seen
+  //   through the slot they are visible; only the bar under the slot, y in [1000, 1200],
+  //   hides them. Franklin's blocking test took the whole polygon holding a cell's four
+  //   corners as covering the cell, so a cell across the slot hid what is seen through it.
+  {
+    Mesh m;
+    prism(&m,
+          {{1000, 1000},
+           {3000, 1000},
+           {3000, 3000},
+           {2010, 3000},
+           {2010, 1200},
+           {1990, 1200},
+           {1990, 3000},
+           {1000, 3000}},
+          3000, 4000);
+    box(&m, 1995, 500, 0, 2005, 3500, 1000);
+    const SolidScene s = plot_scene(m);
+    both(s, "slot narrower than a cell", [&](const SolidRun& r, const std::string& w) {
+      const double bar0 = 500.0 / 3000, bar1 = 700.0 / 3000;  // y = 1000 and 1200
+      for (int32_t x : {1995, 2005})
+        expect(s, r, w, P(x, 500, 1000), P(x, 3500, 1000),
+               {{0, bar0, 0}, {bar0, bar1, 2}, {bar1, 1, 0}});
+    });
+  }
   return check::finish("solid_cases");
 }
