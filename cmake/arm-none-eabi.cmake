@@ -1,4 +1,6 @@
-# Cross toolchain for the STM32F405 plotter controller (Cortex-M4F, Thumb-2).
+# Cross toolchain for the plotter controller boards (arm-none-eabi, Thumb-2). The board
+# (HALOPLOT_BOARD, a folder of firmware/boards/) names its CPU in its own cpu.cmake, which sets
+# HALOPLOT_MCU_FLAGS: a port brings its flags with it and this file does not change.
 set(CMAKE_SYSTEM_NAME Generic)
 set(CMAKE_SYSTEM_PROCESSOR arm)
 set(CMAKE_C_COMPILER arm-none-eabi-gcc)
@@ -12,9 +14,18 @@ set(CMAKE_NM arm-none-eabi-nm)
 # Only compile-test static libraries while CMake probes the compiler: there is no OS to link.
 set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
 
-# The FPU is single precision only: double arithmetic would fall back to software, which the
-# firmware gates reject. The core uses no floating point at all.
-set(HALOPLOT_MCU_FLAGS "-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16")
+if(NOT HALOPLOT_BOARD)
+  set(HALOPLOT_BOARD stm32f405)
+endif()
+set(HALOPLOT_BOARD ${HALOPLOT_BOARD} CACHE STRING "The controller board (a folder of firmware/boards/)")
+# The try-compile projects CMake runs while probing see the same board.
+list(APPEND CMAKE_TRY_COMPILE_PLATFORM_VARIABLES HALOPLOT_BOARD)
+set(board_cpu ${CMAKE_CURRENT_LIST_DIR}/../firmware/boards/${HALOPLOT_BOARD}/cpu.cmake)
+if(NOT EXISTS ${board_cpu})
+  message(FATAL_ERROR "HALOPLOT_BOARD=${HALOPLOT_BOARD}: no ${board_cpu}")
+endif()
+include(${board_cpu})  # HALOPLOT_MCU_FLAGS
+
 set(CMAKE_C_FLAGS_INIT "${HALOPLOT_MCU_FLAGS} -ffunction-sections -fdata-sections")
 set(CMAKE_CXX_FLAGS_INIT "${HALOPLOT_MCU_FLAGS} -ffunction-sections -fdata-sections -ffreestanding -fno-exceptions -fno-rtti")
 set(CMAKE_ASM_FLAGS_INIT "${HALOPLOT_MCU_FLAGS}")

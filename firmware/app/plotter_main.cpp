@@ -1,9 +1,10 @@
-// The plotter controller: boots the chip's drivers, then serves the job protocol on USART1
-// forever (core/protocol/job_server.h), plotting through the step timer (motion_runner.h).
+// The plotter controller, for every board: boots the board (board/board.h, from the board's
+// folder), then serves the job protocol on its serial link forever
+// (core/protocol/job_server.h), plotting through the step timer (motion_runner.h).
 //
-// Memory (SRAM, 128 KB): one arena for the scene and the job buffer, and the small fixed
-// parts (frame buffer, USART ring, step queue, planner window). The stack has 16 KB at the
-// top of SRAM (see linker/stm32f405.ld).
+// Memory: one arena for the scene and the job buffer (HALOPLOT_FW_ARENA_KB, the board's
+// setting), and the small fixed parts (frame buffer, serial ring, step queue, planner window).
+// The stack has 16 KB at the top of RAM (the board's linker script).
 //
 // Test images (HALOPLOT_FW_TEST_HOOKS, booted under QEMU) also stream the step trace over
 // semihosting, answer the test-only request kTestExit with their counters, and exit through
@@ -26,34 +27,29 @@ using namespace haloplot::fw;
 namespace {
 
 constexpr uint8_t kTestExitType = 0x7F;  // test images only: print the counters and exit
-// Test images only: "close" limit switch 0. QEMU models neither the switch's pin nor EXTI's
-// software trigger, so the test sets the EXTI0 interrupt pending in the NVIC: the real
-// handler and stop path run, as on a falling edge of PE0.
+// Test images only: "close" limit switch 0 (Board::test_close_limit: QEMU models no switch
+// pin, so the board sets the switch's interrupt pending and the real handler and stop path run).
 constexpr uint8_t kTestLimitType = 0x7E;
 // Test images only: from the next plot on, sum each step trace to its CRC-32 and length and
 // print those ("fw trace_crc32=", "fw trace_bytes=") instead of the trace: a 45 MB trace over
 // semihosting takes minutes under QEMU, its digest nothing.
 constexpr uint8_t kTestDigestType = 0x7D;
-// Test images run the step clock 8x fast: QEMU needs no real-time pacing, the trace's ticks
-// are the same, and a plot of minutes takes seconds.
-constexpr uint32_t kQemuTimeScale = 8;
-
 #ifndef HALOPLOT_FW_ARENA_KB
-#define HALOPLOT_FW_ARENA_KB 96
+#error "the board's board.cmake sets HALOPLOT_BOARD_ARENA_KB"
 #endif
 alignas(8) uint8_t arena[HALOPLOT_FW_ARENA_KB * 1024];
 uint8_t rx_frame[JobServer::kMaxPayload + kFrameOverhead];
 MotionRunner motion;
 
-// Quiet time that ends a frame in progress, in counter ticks (TIM5). On the board: 2 ms at
-// TIM5's 84 MHz, about 23 byte times at 115200 baud (a sender never pauses that long inside
-// a frame). Under QEMU bytes arrive with no baud pacing, whenever its I/O thread runs, and on
-// a loaded machine that thread can stall for milliseconds of virtual time while the CPU spins:
-// the test image waits 100 ms of virtual time (one count per nanosecond there).
+// Quiet time that ends a frame in progress, in counter ticks (the board's, about 2 ms on the
+// chip: 23 byte times at 115200 baud, a sender never pauses that long inside a frame). Under
+// QEMU bytes arrive with no baud pacing, whenever its I/O thread runs, and on a loaded machine
+// that thread can stall for milliseconds of virtual time while the CPU spins: the test image
+// waits 100 ms of virtual time (Board::kTestFrameIdleTicks).
 #ifdef HALOPLOT_FW_TEST_HOOKS
-constexpr uint64_t kIdleTicks = 100000000;
+constexpr uint64_t kIdleTicks = Board::kTestFrameIdleTicks;
 #else
-constexpr uint64_t kIdleTicks = 168000;
+constexpr uint64_t kIdleTicks = Board::kFrameIdleTicks;
 #endif
 
 #ifdef HALOPLOT_FW_TEST_HOOKS
@@ -66,7 +62,8 @@ bool digesting = false;
 
 }  // namespace
 
-extern "C" void systick_handler() {
+// The step interrupt: the board's vector table puts it on its step clock's interrupt.
+extern "C" void step_timer_irq() {
   if (Board::timer_chunk_pending()) return;  // a long delay (a pen dwell) is still running
   motion.on_timer();
 }
@@ -82,7 +79,9 @@ int main() {
   Board::watchdog_start();
 #ifdef HALOPLOT_FW_TEST_HOOKS
   motion.set_trace(console.sink());
-  motion.set_time_scale(kQemuTimeScale);
+  // The step clock runs Board::kTestTimeScale times fast: QEMU needs no real-time pacing,
+  // the trace's ticks are the same, and a plot of minutes takes seconds.
+  motion.set_time_scale(Board::kTestTimeScale);
   bool exit_requested = false;
   JobServer::Extension ext{&exit_requested, [](void* c, const Frame& f) {
                              if (f.type == kTestLimitType) {

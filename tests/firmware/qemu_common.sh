@@ -12,15 +12,18 @@ trap 'rm -rf "$work"' EXIT
 pass=0 fail=0
 ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAILED: $*" >&2; }
-# netduinoplus2 is QEMU's STM32F405; -icount makes virtual time count instructions.
+# The board's QEMU machine: netduinoplus2 is QEMU's STM32F405 (the default); a test of another
+# board sets HALOPLOT_QEMU_MACHINE (mps2-an385 for boards/mps2_an385). -icount makes virtual
+# time count instructions.
+machine=${HALOPLOT_QEMU_MACHINE:-netduinoplus2}
 qemu() {
-  timeout 600 qemu-system-arm -M netduinoplus2 -nographic -monitor none -serial none \
+  timeout 600 qemu-system-arm -M "$machine" -nographic -monitor none -serial none \
     -semihosting-config enable=on,target=native -icount shift=0,align=off,sleep=off -kernel "$1"
 }
 # The controller image with USART1 on a Unix socket ($work/link.sock), in the background:
 # its semihosting output in $work/fw.out, its pid in qemu_pid. Usage: qemu_linked SECONDS IMAGE
 qemu_linked() {
-  timeout "$1" qemu-system-arm -M netduinoplus2 -nographic -monitor none \
+  timeout "$1" qemu-system-arm -M "$machine" -nographic -monitor none \
     -chardev socket,id=link,path="$work/link.sock",server=on,wait=off -serial chardev:link \
     -semihosting-config enable=on,target=native -icount shift=0,align=off,sleep=off \
     -kernel "$2" > "$work/fw.out" 2> "$work/qemu.err" &

@@ -18,7 +18,8 @@
 #     plots it with the same arena, through damaged frames;
 #   - the image exits 0 through semihosting with no step underrun.
 # Usage: qemu_link_test.sh FIRMWARE_DIR HALOPLOT_TOOL
-source "$(dirname "$0")/qemu_common.sh" firmware_link "$1" "$2" fw_plotter_qemu.elf
+source "$(dirname "$0")/qemu_common.sh" "firmware_link${HALOPLOT_QEMU_MACHINE:+ on $HALOPLOT_QEMU_MACHINE}" "$1" "$2" \
+  fw_plotter_qemu.elf
 
 cd "$work"
 "$tool" demo-scene --cubes 2 -o scene.edges

@@ -19,7 +19,7 @@ void gpio_init() {
   RCC.AHB1ENR |= RCC_AHB1ENR_GPIOAEN | RCC_AHB1ENR_GPIODEN | RCC_AHB1ENR_GPIOEEN;
   step_pins_low();
   drivers_enable(false);
-  for (uint8_t m = 0; m < 2; ++m) {
+  for (uint8_t m = 0; m < hal::kMotors; ++m) {
     set_mode(GPIOD, board::kStepPin[m], GPIO_MODER_OUTPUT);
     set_mode(GPIOD, board::kDirPin[m], GPIO_MODER_OUTPUT);
     set_mode(GPIOE, board::kLimitPin[m], GPIO_MODER_INPUT);

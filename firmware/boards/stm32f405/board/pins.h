@@ -10,12 +10,15 @@
 #pragma once
 #include <stdint.h>
 
+#include "stepper_axis.h"  // hal/: hal::kMotors
+
 namespace haloplot::fw::board {
 
-inline constexpr uint32_t kStepPin[2] = {0, 1}, kDirPin[2] = {2, 3}, kEnablePin = 4;
+inline constexpr uint32_t kStepPin[hal::kMotors] = {0, 1}, kDirPin[hal::kMotors] = {2, 3},
+                          kEnablePin = 4;
 inline constexpr uint32_t kServoPin = 6, kServoAf = 2;
 inline constexpr uint32_t kUsartTxPin = 9, kUsartRxPin = 10, kUsartAf = 7, kUsartBaud = 115200;
-inline constexpr uint32_t kLimitPin[2] = {0, 1};
+inline constexpr uint32_t kLimitPin[hal::kMotors] = {0, 1};
 
 // Servo pulse widths, microseconds: pen up and pen down (a hobby servo's 1-2 ms range).
 inline constexpr uint32_t kServoUpUs = 1200, kServoDownUs = 1800, kServoPeriodUs = 20000;

@@ -6,6 +6,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "platform/nvic.h"
+
 namespace haloplot::fw::chip {
 
 using reg = volatile uint32_t;
@@ -76,22 +78,13 @@ inline IWDG_Regs& IWDG = *reinterpret_cast<IWDG_Regs*>(0x40003000u);
 inline EXTI_Regs& EXTI = *reinterpret_cast<EXTI_Regs*>(0x40013C00u);
 inline SYSCFG_Regs& SYSCFG = *reinterpret_cast<SYSCFG_Regs*>(0x40013800u);
 
-// Interrupt numbers (RM0090 table 61) and the NVIC set/clear-enable registers (ARMv7-M).
+// Interrupt numbers (RM0090 table 61); the NVIC itself is the architecture's (platform/nvic.h).
 enum Irq : uint32_t { kExti0 = 6, kExti1 = 7, kUsart1 = 37 };
-inline void nvic_enable(Irq irq) {
-  reinterpret_cast<reg*>(0xE000E100u)[irq / 32] = 1u << (irq % 32);
-}
-inline void nvic_disable(Irq irq) {
-  reinterpret_cast<reg*>(0xE000E180u)[irq / 32] = 1u << (irq % 32);
-}
-// Set an interrupt pending from software (NVIC_ISPR): it runs as if its line had fired.
-inline void nvic_set_pending(Irq irq) {
-  reinterpret_cast<reg*>(0xE000E200u)[irq / 32] = 1u << (irq % 32);
-}
-// Interrupt priority (8 bits per IRQ, upper 4 implemented): lower is more urgent.
-inline void nvic_priority(Irq irq, uint8_t prio) {
-  reinterpret_cast<volatile uint8_t*>(0xE000E400u)[irq] = uint8_t(prio << 4);
-}
+using armv7m::nvic_disable;
+using armv7m::nvic_enable;
+using armv7m::nvic_priority;
+using armv7m::nvic_set_pending;
+using armv7m::systick_priority;
 
 // SysTick (ARMv7-M B3.3): a 24-bit down-counter on the core clock, the step timer.
 struct SysTick_Regs {
@@ -100,11 +93,6 @@ struct SysTick_Regs {
 inline SysTick_Regs& SYST = *reinterpret_cast<SysTick_Regs*>(0xE000E010u);
 inline constexpr uint32_t SYST_CSR_ENABLE = 1u << 0, SYST_CSR_TICKINT = 1u << 1,
                           SYST_CSR_CLKSOURCE = 1u << 2;
-// System handler priority for SysTick (SHPR3 bits 31:24).
-inline void systick_priority(uint8_t prio) {
-  reinterpret_cast<volatile uint8_t*>(0xE000ED23u)[0] = uint8_t(prio << 4);
-}
-
 // Clocks after the board's clock set-up: HSE 8 MHz, PLL to 168 MHz, APB1 = 42 MHz (timers
 // x2 = 84 MHz), APB2 = 84 MHz (RM0090 6.2). QEMU's model does not emulate the PLL; the
 // constants are what a flashed board runs at.

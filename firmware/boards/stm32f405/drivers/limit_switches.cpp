@@ -12,7 +12,7 @@ void limit_switches_init(void (*on_trigger)(uint8_t motor)) {
   using namespace chip;
   handler = on_trigger;
   RCC.APB2ENR |= RCC_APB2ENR_SYSCFGEN;
-  for (uint8_t m = 0; m < 2; ++m) {
+  for (uint8_t m = 0; m < hal::kMotors; ++m) {
     const uint32_t line = board::kLimitPin[m];
     // EXTICR selects the port for each line: 4 = port E.
     SYSCFG.EXTICR[line / 4] =

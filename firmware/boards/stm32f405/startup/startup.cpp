@@ -10,8 +10,9 @@ extern void (*__init_array_start[])(), (*__init_array_end[])();
 int main();
 [[noreturn]] void reset_handler();
 void default_handler();
-void systick_handler() __attribute__((weak, alias("default_handler")));
-// Peripheral interrupts the drivers use (firmware/drivers/); unused ones stay on the default.
+// The controller's step interrupt (firmware/app): SysTick is the step clock.
+void step_timer_irq() __attribute__((weak, alias("default_handler")));
+// Peripheral interrupts the drivers use (drivers/); unused ones stay on the default.
 void exti0_irq_handler() __attribute__((weak, alias("default_handler")));
 void exti1_irq_handler() __attribute__((weak, alias("default_handler")));
 void usart1_irq_handler() __attribute__((weak, alias("default_handler")));
@@ -68,7 +69,7 @@ __attribute__((section(".vectors"), used)) void (*const vector_table[16])() = {
     default_handler,  // DebugMonitor
     nullptr,
     default_handler,  // PendSV
-    systick_handler,  // SysTick: the step timer (firmware/drivers/step_timer.h)
+    step_timer_irq,   // SysTick: the step timer (drivers/step_timer.h)
 };
 
 // The 82 peripheral interrupts (RM0090 table 61), placed right after the system exceptions

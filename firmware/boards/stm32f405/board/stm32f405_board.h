@@ -1,7 +1,7 @@
-// The STM32F405 board (pins in board/pins.h, drivers in drivers/) as the portable controller
-// sees it: the static functions hal/board_hal.h asks of a board, each a forward to the chip's
-// driver. A port to another board writes its own such type over its own drivers and names it
-// in board/board.h; firmware/app does not change.
+// The STM32F405 board (pins in board/pins.h, drivers in drivers/, all in boards/stm32f405/) as the
+// portable controller sees it: the static functions hal/board_hal.h asks of a board, each a forward
+// to the chip's driver. A port to another board writes its own such type over its own drivers and
+// names it in board/board.h; firmware/app does not change.
 #pragma once
 #include <stdint.h>
 
@@ -46,6 +46,12 @@ struct Stm32f405Board {
   // software trigger, so this sets the EXTI0 interrupt pending in the NVIC: the real handler
   // and stop path run, as on a falling edge of PE0.
   static void test_close_limit(uint8_t) { chip::nvic_set_pending(chip::kExti0); }
+  // The link's frame timeout in instruction-counter ticks (TIM5): 2 ms at its 84 MHz on the
+  // chip; 100 ms of QEMU's 1 GHz virtual time in the test image.
+  static constexpr uint64_t kFrameIdleTicks = 168000, kTestFrameIdleTicks = 100000000;
+  // Test images run the step clock this many times fast (the core's 168 MHz must stay a whole
+  // multiple of tick_hz * scale).
+  static constexpr uint32_t kTestTimeScale = 8;
 };
 
 }  // namespace haloplot::fw
