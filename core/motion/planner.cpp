@@ -78,11 +78,24 @@ void MotionPlanner::replan() {
     b.entry_v2 = min_u64(b.max_entry_v2, reachable);
     exit = b.entry_v2;
   }
-  // Forward: no entry faster than the previous block can accelerate to.
+  forward_pass();
+}
+
+// Forward: no entry faster than the previous block can accelerate to.
+void MotionPlanner::forward_pass() {
   for (uint32_t i = 0; i + 1 < count_; ++i) {
     const uint64_t reachable = at(i).entry_v2 + 2ull * m_.accel * at(i).length_q8;
     if (at(i + 1).entry_v2 > reachable) at(i + 1).entry_v2 = reachable;
   }
+}
+
+void MotionPlanner::limit_next_entry(uint64_t v2) {
+  if (count_ == 0) {
+    if (v2 == 0) have_prev_ = false;  // no junction speed into the next block: from rest
+    return;
+  }
+  if (at(0).entry_v2 > v2) at(0).entry_v2 = v2;
+  forward_pass();
 }
 
 bool MotionPlanner::point_ready() {

@@ -69,6 +69,10 @@ class MotionPlanner {
   bool next(MotionItem* out);
   Status status() const { return feed_status_; }
   bool waiting() const { return waiting_; }  // next() returned false: the feed said kBusy
+  // After a feed hold (step_prep.h): the next move may enter at most this fast (v^2, Q8), as
+  // the motion before it now ends slower than planned; later entries follow (the forward
+  // pass). 0 with no block buffered: the next block starts from rest.
+  void limit_next_entry(uint64_t v2);
   const PlannerCounters& counters() const { return counters_; }
 
  private:
@@ -83,6 +87,7 @@ class MotionPlanner {
   bool home_point();   // the travel home as the last point, when asked for and not yet made
   uint64_t junction_v2(const Block& prev, const Block& next) const;
   void replan();
+  void forward_pass();
   Block& at(uint32_t i) { return ring_[(head_ + i) % capacity_]; }
 
   Machine m_{};

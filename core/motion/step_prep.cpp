@@ -84,8 +84,7 @@ uint64_t StepPrep::block_time_q8(uint32_t j) const {
   // Plot distance of dominant step j in Q16: a Q8 distance is off by up to 1/256 step, which
   // at 3,000 steps/s moves a step by 1.3 ticks and shows as one-step speed jitter; in Q16 the
   // time is off by well under a tick at any speed.
-  const uint64_t jl = uint64_t(j) * item_.length_q8;  // j <= n < 2^32, length < 2^32
-  const uint64_t s = ((jl / n_) << 8) + ((jl % n_) << 8) / n_;
+  const uint64_t s = distance_q16(j);
   const uint64_t hz = m_.tick_hz;
   if (item_.accel == 0) return s * hz / vtop_q8_;
   const uint64_t a = item_.accel;
@@ -95,6 +94,23 @@ uint64_t StepPrep::block_time_q8(uint32_t j) const {
   const uint64_t drop = (2 * a * (s - s_dec) + 128) >> 8;
   const uint64_t v2 = drop < vtop2_ ? vtop2_ - drop : 0;
   return t_dec_q8_ + (vtop_q8_ - speed_q8(v2)) * hz / a;
+}
+
+uint64_t StepPrep::distance_q16(uint32_t j) const {
+  const uint64_t jl = uint64_t(j) * item_.length_q8;  // j <= n < 2^32, length < 2^32
+  return ((jl / n_) << 8) + ((jl % n_) << 8) / n_;
+}
+
+// The same phases as block_time_q8(), as speeds: v^2 = v_in^2 + 2 a s while accelerating, the
+// top speed while cruising, v_top^2 - 2 a (s - s_dec) while braking.
+uint64_t StepPrep::speed2_at(uint32_t j) const {
+  if (item_.accel == 0 || n_ == 0) return vtop2_;
+  const uint64_t s = distance_q16(j), a = item_.accel;
+  const uint64_t s_acc = s_acc_q8_ << 8, s_dec = s_dec_q8_ << 8;
+  if (s <= s_acc) return entry2_ + ((2 * a * s + 128) >> 8);
+  if (s <= s_dec) return vtop2_;
+  const uint64_t drop = (2 * a * (s - s_dec) + 128) >> 8;
+  return drop < vtop2_ ? vtop2_ - drop : 0;
 }
 
 int64_t StepPrep::interval_at(uint32_t j) const {
@@ -162,9 +178,117 @@ void StepPrep::choose_ramp(uint32_t* j1_out, int64_t* first_out, int64_t* add_ou
   *j1_out = j1, *first_out = first, *add_out = add;
 }
 
+void StepPrep::hold() {
+  if (hold_ == Hold::kNone && !done_) hold_ = Hold::kRequested;
+}
+
+void StepPrep::resume() {
+  if (hold_ == Hold::kHeld) hold_ = Hold::kResume;
+}
+
+// Dominant steps (j0, j1] of the current move as a move of its own: the motor steps between
+// the tick's Bresenham positions there (the other motor has made (n/2 + j * minor) / n steps
+// after j events, engine's error starting at n/2), its plot length in proportion.
+MotionItem StepPrep::part(uint32_t j0, uint32_t j1) const {
+  auto minor_at = [&](uint32_t j) { return uint32_t((n_ / 2 + uint64_t(j) * minor_) / n_); };
+  const int32_t major = int32_t(j1 - j0), minor = int32_t(minor_at(j1) - minor_at(j0));
+  MotionItem it = item_;
+  const int32_t d[2] = {dominant_ == 0 ? major : minor, dominant_ == 0 ? minor : major};
+  for (uint8_t mo = 0; mo < 2; ++mo) it.delta[mo] = (dir_bits_ >> mo) & 1u ? -d[mo] : d[mo];
+  const uint64_t len_q16 = distance_q16(j1) - distance_q16(j0);
+  it.length_q8 = uint32_t((len_q16 + 255) >> 8);  // rounded up: never shorter than the braking
+  return it;
+}
+
+// Brake from step j_ at speed^2 v2: the stopping distance v^2 / 2a, rounded up to the next
+// dominant step. Within this move, the move splits there: a braking part from v to rest, and
+// the rest (from rest, to the move's own exit) kept for resume(). Past its end, the whole move
+// brakes and the next one goes on braking from where it ends (brake_exit2_).
+void StepPrep::brake(uint64_t v2) {
+  hold_ = Hold::kBraking;
+  const uint32_t j0 = j_;
+  uint32_t j_stop = j0;
+  if (item_.accel > 0 && v2 > 0) {
+    const uint64_t stop_q16 =
+        distance_q16(j0) + (v2 * 256 + 2 * item_.accel - 1) / (2 * item_.accel);
+    const uint64_t total_q16 = uint64_t{item_.length_q8} << 8;
+    j_stop = stop_q16 >= total_q16 ? n_ : uint32_t((stop_q16 * n_ + total_q16 - 1) / total_q16);
+    if (j_stop < j0) j_stop = j0;
+  }
+  have_rest_ = j_stop < n_;
+  if (have_rest_) {
+    rest_ = part(j_stop, n_);
+    rest_.entry_v2 = 0;
+  }
+  if (j_stop == j0) {
+    // At rest already, or no acceleration modelled: stop here. At the move's very end at
+    // speed: go on braking in the next move.
+    brake_exit2_ = item_.accel > 0 && j0 == n_ ? v2 : 0;
+    in_move_ = false;
+    return;
+  }
+  MotionItem b = part(j0, j_stop);
+  const uint64_t fall = 2ull * b.accel * b.length_q8;
+  b.entry_v2 = b.top_v2 = v2;
+  b.exit_v2 = have_rest_ || fall >= v2 ? 0 : v2 - fall;
+  brake_exit2_ = b.exit_v2;
+  // The braking part has the same directions: no backlash take-up, and begin_move() keeps
+  // the tick's time base.
+  (void)begin_move(b);
+}
+
+void StepPrep::pen_segment(bool down, StepSegment* out) {
+  out->kind = StepSegment::kPen;
+  out->pen_down = down;
+  out->dwell_ticks = fx_.pen_servo ? m_.pen_travel_ticks + m_.pen_settle_ticks : 0;
+  time_q8_ += uint64_t{out->dwell_ticks} * 256;
+  pen_down_ = down;
+  ++counters_.segments;
+}
+
+// Resume after a hold: the pen down where the hold lifted it, then the rest of the split move
+// from rest. Its exit may be more than it can reach from rest: the planner's next entry is
+// lowered to match (and so every later one that needs it).
+void StepPrep::resume_move(MotionPlanner& planner, StepSegment* out, bool* have) {
+  if (lifted_) {
+    lifted_ = false;
+    pen_segment(true, out);
+    *have = true;
+    return;
+  }
+  hold_ = Hold::kNone;
+  if (have_rest_) {
+    have_rest_ = false;
+    const uint64_t reach = 2ull * rest_.accel * rest_.length_q8;
+    if (rest_.exit_v2 > reach) rest_.exit_v2 = reach;
+    planner.limit_next_entry(rest_.exit_v2);
+    (void)begin_move(rest_);
+    in_move_ = true;
+  } else {
+    planner.limit_next_entry(0);
+  }
+}
+
 Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* have) {
   *have = false;
   for (;;) {
+    if (hold_ == Hold::kHeld) return Status::kOk;  // at rest, waiting for resume()
+    if (hold_ == Hold::kResume) {
+      resume_move(planner, out, have);
+      if (*have) return Status::kOk;
+    }
+    if (!in_move_ && (hold_ == Hold::kBraking || hold_ == Hold::kRequested) &&
+        (hold_ == Hold::kBraking ? brake_exit2_ : last_exit2_) == 0) {
+      // At rest: held. Lift the pen first if it is down.
+      hold_ = Hold::kHeld;
+      ++counters_.holds;
+      if (pen_down_) {
+        lifted_ = true;
+        pen_segment(false, out);
+        *have = true;
+      }
+      return Status::kOk;
+    }
     if (!in_move_) {
       if (done_) return Status::kOk;
       MotionItem it;
@@ -178,6 +302,7 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
         out->pen_down = it.pen_down;
         out->dwell_ticks = it.dwell_ticks;
         time_q8_ += uint64_t{it.dwell_ticks} * 256;
+        pen_down_ = it.pen_down;
         ++counters_.segments;
         *have = true;
         return Status::kOk;
@@ -185,6 +310,8 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
       const Status s = begin_move(it);
       if (!ok(s)) return s;
       in_move_ = true;
+      if (hold_ == Hold::kBraking) brake(brake_exit2_);  // a hold that runs on past a move
+      continue;
     }
     for (uint8_t mo = 0; mo < 2; ++mo) {
       if (!takeup_pending_[mo]) continue;
@@ -214,8 +341,15 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
       *have = true;
       return Status::kOk;
     }
+    // A hold starts once the move's take-ups are done (they run from rest): from step j_.
+    if (hold_ == Hold::kRequested) {
+      brake(j_ == 0 ? entry2_ : speed2_at(j_));
+      continue;
+    }
     if (j_ >= n_) {
       in_move_ = false;
+      last_exit2_ = item_.accel > 0 && item_.exit_v2 < vtop2_ ? item_.exit_v2 : vtop2_;
+      if (item_.accel == 0) last_exit2_ = 0;  // no acceleration modelled: a hold stops at once
       continue;
     }
     uint32_t j1 = 0;

@@ -26,6 +26,7 @@ struct PrepCounters {
   uint64_t blocks = 0;
   uint64_t backlash_takeups = 0;  // backlash effect
   uint64_t motor_steps[2] = {0, 0};
+  uint64_t holds = 0;  // feed holds that came to rest
 };
 
 class StepPrep {
@@ -50,10 +51,30 @@ class StepPrep {
   }
   bool done() const { return done_; }
   const PrepCounters& counters() const { return counters_; }
+
+  // Feed hold (pause), grbl's cycle stop. hold(): from the end of the segments already
+  // queued, brake at the machine's acceleration to rest (over as many moves as that takes),
+  // lift the pen if it is down, and push nothing more: held() is then true. resume(): lower
+  // the pen where it was lifted and go on from rest with the rest of the move; the planner's
+  // next entry speed is lowered to what the rest of the move can reach from rest. A move is
+  // split at a motor step (the Bresenham position of the dominant step where the braking
+  // ends), so each part runs its own straight line between exact step positions: the pen
+  // path stays within a step of the unpaused one. Latency: the queued segments run first.
+  void hold();
+  void resume();
+  bool holding() const { return hold_ != Hold::kNone; }  // requested, braking or held
+  bool held() const { return hold_ == Hold::kHeld; }
   uint64_t engine_time_q8() const { return time_q8_; }
 
  private:
+  enum class Hold : uint8_t { kNone, kRequested, kBraking, kHeld, kResume };
   Status next_segment(MotionPlanner& planner, StepSegment* out, bool* have);
+  uint64_t speed2_at(uint32_t j) const;             // the profile's v^2 (Q8) at dominant step j
+  uint64_t distance_q16(uint32_t j) const;          // plot distance of dominant step j, Q16
+  MotionItem part(uint32_t j0, uint32_t j1) const;  // dominant steps (j0, j1] of the move
+  void brake(uint64_t v2);                          // begin braking from step j_ at speed^2 v2
+  void pen_segment(bool down, StepSegment* out);
+  void resume_move(MotionPlanner& planner, StepSegment* out, bool* have);
   Status begin_move(const MotionItem& item);
   uint64_t block_time_q8(uint32_t j) const;  // time of dominant step j from the block start
   void advance_time(uint32_t events, int64_t interval, int64_t add);
@@ -78,6 +99,12 @@ class StepPrep {
   uint64_t vin_q8_ = 0, vtop_q8_ = 0, vtop2_ = 0, entry2_ = 0;
   uint64_t s_acc_q8_ = 0, s_dec_q8_ = 0, t_acc_q8_ = 0, t_dec_q8_ = 0;
   PrepCounters counters_{};
+  // Feed hold: its state, the speed^2 the braking part ends at, the rest of the split move,
+  // and whether the hold lifted the pen.
+  Hold hold_ = Hold::kNone;
+  uint64_t brake_exit2_ = 0, last_exit2_ = 0;  // last_exit2_: where the last move ended
+  MotionItem rest_{};
+  bool have_rest_ = false, lifted_ = false, pen_down_ = false;
 };
 
 }  // namespace haloplot

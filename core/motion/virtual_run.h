@@ -15,15 +15,31 @@
 
 namespace haloplot {
 
+// Feed holds to make during the run (a pause button pressed at these moments): a hold is
+// asked for once the tick has made at_events[k] step events (ascending), and resumed as soon
+// as it is at rest with its pen lifted. The wait itself is wall time on a controller; in
+// virtual time it takes none, so a held plot's trace differs from the unpaused one only by
+// the braking, the pen lift and lowering, and the start from rest.
+struct HoldSchedule {
+  const uint32_t* at_events = nullptr;
+  uint32_t n = 0;
+};
+
 template <typename Hal, typename Queue>
 Status run_virtual(MotionPlanner& planner, StepPrep& prep, Queue& queue, Hal& hal,
-                   StepEngine<Hal, Queue>& engine) {
+                   StepEngine<Hal, Queue>& engine, HoldSchedule holds = {}) {
   static_assert(hal::check_virtual_clock<Hal>(), "run_virtual's HAL (hal/step_clock.h)");
+  uint32_t next_hold = 0;
   Status s = prep.fill(planner, queue);
   if (!ok(s)) return s;
   uint32_t delay = engine.start();
   while (delay != 0 || !queue.empty() || !prep.done()) {
+    if (next_hold < holds.n && engine.events() >= holds.at_events[next_hold] && !prep.holding()) {
+      prep.hold();
+      ++next_hold;
+    }
     if (delay == 0) {  // the queue ran dry between moves: refill and resume
+      if (prep.held() && queue.empty()) prep.resume();  // the hold is at rest: go on
       s = prep.fill(planner, queue);
       if (!ok(s)) return s;
       delay = engine.start();

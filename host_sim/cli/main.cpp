@@ -483,10 +483,23 @@ void warn_if_slow(const JobSpec& spec, const SimReport& r) {
 }
 
 int cmd_sim(int argc, char** argv) {
-  const Options o =
-      parse_options(argc, argv, 2, {"-o", "--gcode", "--hpgl", "--arena"}, {"--stats", "--binary"});
+  const Options o = parse_options(
+      argc, argv, 2, {"-o", "--gcode", "--hpgl", "--arena", "--pause-at"}, {"--stats", "--binary"});
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "sim");
+  // --pause-at E1,E2,...: a feed hold once the plot has made E step events, resumed at rest.
+  std::vector<uint32_t> pause_at;
+  if (!o.get("--pause-at").empty()) {
+    std::stringstream list(o.get("--pause-at"));
+    std::string item;
+    while (std::getline(list, item, ',')) {
+      int64_t v = 0;
+      if (!parse_int(item, 0, UINT32_MAX, &v) || (!pause_at.empty() && v < pause_at.back()))
+        return fail("--pause-at needs ascending step-event counts, comma-separated: '" +
+                    o.get("--pause-at") + "'");
+      pause_at.push_back(uint32_t(v));
+    }
+  }
   const TraceForm form = o.has("--binary") ? TraceForm::kBinary : TraceForm::kText;
   JobFile jf;
   InputError ie = read_job_file(o.positional[0], &jf);
@@ -511,7 +524,7 @@ int cmd_sim(int argc, char** argv) {
   SimReport r;
   Status s = Status::kOk;
   error = write_atomically(o.get("-o"), [&](std::ostream& out) {
-    s = simulate(spec, edges, &out, &r, jf.arena, form);
+    s = simulate(spec, edges, &out, &r, jf.arena, form, pause_at);
     return ok(s);
   });
   if (s == Status::kArenaTooSmall)
@@ -556,6 +569,7 @@ int cmd_sim(int argc, char** argv) {
                  (unsigned long long)r.prep.backlash_takeups, (unsigned long long)r.prep.segments,
                  r.bytes.cut_scratch + r.bytes.cutset, r.bytes.draw_scratch,
                  r.bytes.path + r.bytes.points, r.planner_bytes);
+    if (!pause_at.empty()) std::fprintf(stderr, "holds=%llu\n", (unsigned long long)r.holds);
     if (jf.arena > 0) print_band_stats(r.bands, jf.arena);
   }
   return 0;

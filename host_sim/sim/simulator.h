@@ -24,6 +24,7 @@ struct SimReport {
   uint64_t steps[2] = {0, 0};
   uint64_t min_gap[2] = {UINT64_MAX, UINT64_MAX};  // ticks between steps of one motor
   uint32_t pen_lifts = 0;
+  uint64_t holds = 0;  // feed holds that came to rest
   int retries = 0;
   std::vector<PathPoint> points;  // the planned path (for the exporters)
   std::vector<Segment2> spans;    // what DRAW emitted (for checks)
@@ -37,8 +38,11 @@ struct SimReport {
 // that stopped it. With arena_bytes > 0 the drawing runs in bands in an arena of that size
 // (band/conductor.h), exactly as a controller with that arena runs it; 0: one job buffer sized
 // for the whole scene. The trace is text, or the binary form of the same records.
+// pause_at: feed holds (motion/virtual_run.h HoldSchedule), each asked for once the plot has
+// made that many step events, and resumed at rest; ascending.
 Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostream* trace,
-                SimReport* report, size_t arena_bytes = 0, TraceForm form = TraceForm::kText);
+                SimReport* report, size_t arena_bytes = 0, TraceForm form = TraceForm::kText,
+                const std::vector<uint32_t>& pause_at = {});
 
 // The same with the bands streamed in (band/conductor.h begin_streamed), as a controller that
 // receives them over its link runs it: the stream may make the plot wait (kBusy).

@@ -16,26 +16,12 @@
 #include "io/job_file.h"
 #include "pipeline/scene_input.h"
 #include "sim/simulator.h"
+#include "support/trace_limits.h"
 
 using namespace haloplot;
 using namespace haloplot::host;
 
 namespace {
-
-reference::Limits limits_of(const JobSpec& spec, const std::vector<PathPoint>& points) {
-  const Machine& m = spec.machine;
-  reference::Limits l;
-  l.max_step_rate = m.max_step_rate;
-  l.min_interval = m.min_interval;
-  const bool corexy = m.kinematics == Kinematics::kCoreXY;
-  l.motor_accel = double(m.accel) * m.steps_num / m.steps_den * (corexy ? std::sqrt(2.0) : 1.0);
-  l.window = m.tick_hz / 50;
-  l.path.push_back({spec.start_x, spec.start_y});
-  for (const PathPoint& p : points) l.path.push_back({p.x, p.y});
-  l.plot_accel = m.accel;
-  l.junction_deviation = m.junction_deviation;
-  return l;
-}
 
 // A cartesian trace: motor 0 cruising along x at `interval` ticks, and `jump_at` steps in,
 // either the interval becomes `after` (a straight line), or the path turns 45 degrees to the
@@ -93,7 +79,7 @@ void no_jump(const std::string& label, const JobSpec& spec, const std::vector<Ed
   const Status s = simulate(spec, edges, &out, &r);
   CHECK_MSG(ok(s), label + ": " + status_name(s));
   const auto parsed = reference::parse_trace_independently(out.str());
-  const auto res = reference::check_trace(parsed, limits_of(spec, r.points));
+  const auto res = reference::check_trace(parsed, test::trace_limits(spec, r.points));
   CHECK_MSG(res.step_jumps == 0, label + ": " + res.why);
   CHECK_MSG(res.worst_step_ratio > 0.5, label + ": the check measured the ramps");
   std::printf("%s: %zu steps, worst speed change at one step %.3f of the bound, %llu junctions\n",
