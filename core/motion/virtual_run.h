@@ -34,10 +34,6 @@ Status run_virtual(MotionPlanner& planner, StepPrep& prep, Queue& queue, Hal& ha
   if (!ok(s)) return s;
   uint32_t delay = engine.start();
   while (delay != 0 || !queue.empty() || !prep.done()) {
-    if (next_hold < holds.n && engine.events() >= holds.at_events[next_hold] && !prep.holding()) {
-      prep.hold();
-      ++next_hold;
-    }
     if (delay == 0) {  // the queue ran dry between moves: refill and resume
       if (prep.held() && queue.empty()) prep.resume();  // the hold is at rest: go on
       s = prep.fill(planner, queue);
@@ -49,6 +45,12 @@ Status run_virtual(MotionPlanner& planner, StepPrep& prep, Queue& queue, Hal& ha
     hal.now += delay;
     s = prep.fill(planner, queue);
     if (!ok(s)) return s;
+    // A hold is asked for between a refill and the next tick, as the controller's main loop
+    // asks for one (firmware/app/motion_runner.cpp, pause()): from the end of a full queue.
+    if (next_hold < holds.n && engine.events() >= holds.at_events[next_hold] && !prep.holding()) {
+      prep.hold();
+      ++next_hold;
+    }
     delay = engine.tick();
   }
   return Status::kOk;

@@ -39,6 +39,8 @@ enum class FrameType : uint8_t {
   kReplot = 0x21,  // another halo width: DRAW only, CUT's result is kept
   kQueryStatus = 0x30,
   kStatus = 0x31,  // the reply to kQueryStatus
+  kPause = 0x3D,   // feed hold: brake to rest, lift the pen, wait (state kPaused once at rest)
+  kResume = 0x3E,  // lower the pen where the hold lifted it and go on
   kAbort = 0x3F,
 };
 

@@ -93,6 +93,13 @@ Status JobServer::act(const Frame& f) {
     if (state_ == ServerState::kPlotting) motion_.abort(motion_.ctx);
     return Status::kOk;
   }
+  if (type == FrameType::kPause || type == FrameType::kResume) {
+    if (f.length != 0) return Status::kMalformedRequest;
+    if (motion_.pause == nullptr) return Status::kUnsupported;
+    if (state_ != ServerState::kPlotting) return Status::kNotPlotting;
+    (type == FrameType::kPause ? motion_.pause : motion_.resume)(motion_.ctx);
+    return Status::kOk;
+  }
   // Platform requests decide for themselves what a running plot allows.
   if (f.type >= kPlatformTypeFirst && extension_.handle)
     return extension_.handle(extension_.ctx, f);
@@ -419,6 +426,8 @@ void JobServer::send_status(uint8_t seq) {
   StatusReport r;
   r.seq = seq;
   r.state = state_;
+  if (state_ == ServerState::kPlotting && motion_.paused && motion_.paused(motion_.ctx))
+    r.state = ServerState::kPaused;
   r.last_error = last_error_;
   r.free_bytes = uint32_t(arena_bytes_ - job_offset());
   r.edges = n_edges_;

@@ -46,6 +46,11 @@ struct MotionPort {
   bool (*running)(void* ctx) = nullptr;
   Status (*result)(void* ctx) = nullptr;
   uint32_t (*step_events)(void* ctx) = nullptr;
+  // Feed hold (motion/step_prep.h); null where the platform has none (kPause is then
+  // kUnsupported). paused(): at rest with the pen lifted.
+  void (*pause)(void* ctx) = nullptr;
+  void (*resume)(void* ctx) = nullptr;
+  bool (*paused)(void* ctx) = nullptr;
 };
 
 struct ByteOutput {

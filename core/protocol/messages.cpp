@@ -128,7 +128,7 @@ Status decode_machine(const uint8_t* p, size_t n, JobSpec* spec) {
 }
 
 Status decode_status(const uint8_t* p, size_t n, StatusReport* out) {
-  if (n != kStatusBytes || p[2] > uint8_t(ServerState::kPlotting)) return Status::kMalformedRequest;
+  if (n != kStatusBytes || p[2] > uint8_t(ServerState::kPaused)) return Status::kMalformedRequest;
   out->seq = p[0];
   out->status = Status(p[1]);
   out->state = ServerState(p[2]);

@@ -25,6 +25,7 @@
 //   kBandBegin         i32 y0, i32 y1 (rows [y0, y1)), u32 edges                           12
 //   kBandEdges         u32 scene index, then an Edge3 record                       28 per edge
 //   kStreamEnd         (empty)
+//   kPause, kResume    (empty)
 //   kAck               u8 seq, u8 status                                                2
 //   kNak               u8 expected seq                                                  1
 //   kStatus            u8 seq, u8 status, u8 state, u8 last error, then u32 free bytes,
@@ -63,7 +64,14 @@ struct UploadBegin {
   uint32_t vertices = 0, edges = 0, faces = 0;
 };
 
-enum class ServerState : uint8_t { kIdle = 0, kUploading = 1, kReady = 2, kPlotting = 3 };
+// kPaused: a plot held by kPause, at rest with its pen lifted, until kResume (or kAbort).
+enum class ServerState : uint8_t {
+  kIdle = 0,
+  kUploading = 1,
+  kReady = 2,
+  kPlotting = 3,
+  kPaused = 4
+};
 
 struct StatusReport {
   uint8_t seq = 0;

@@ -68,6 +68,8 @@ const char* status_name(Status s) {
       return "arena too small for a band one step high";
     case Status::kBandCarryLost:
       return "a piece carried across a band border was lost";
+    case Status::kNotPlotting:
+      return "no plot in motion";
   }
   return "unknown status";
 }

@@ -38,6 +38,7 @@ enum class Status : uint8_t {
   kSegmentCapacity,         // more visible segments than the regions buffer holds (see count)
   kArenaTooSmall,           // a band one step high does not fit the arena (see the bytes needed)
   kBandCarryLost,           // a piece carried across a band border found no continuation (a bug)
+  kNotPlotting,             // pause or resume with no plot in motion
 };
 
 // A short, stable, human-readable name, e.g. "crossing capacity exceeded".

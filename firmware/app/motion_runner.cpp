@@ -35,6 +35,9 @@ MotionPort MotionRunner::port() {
   p.running = [](void* c) { return static_cast<MotionRunner*>(c)->active_ == true; };
   p.result = [](void* c) { return static_cast<MotionRunner*>(c)->result_; };
   p.step_events = [](void* c) { return static_cast<MotionRunner*>(c)->events(); };
+  p.pause = [](void* c) { static_cast<MotionRunner*>(c)->pause(); };
+  p.resume = [](void* c) { static_cast<MotionRunner*>(c)->resume(); };
+  p.paused = [](void* c) { return static_cast<MotionRunner*>(c)->paused(); };
   return p;
 }
 
@@ -57,6 +60,7 @@ Status MotionRunner::begin(const JobSpec& spec, const PreparedJob& job) {
   limit_ = 0;
   result_ = Status::kOk;
   underruns_ = 0;
+  resuming_ = false;
   timer_idle_ = true;
   s = prep_.fill(planner_, queue_);
   if (!ok(s)) return s;
@@ -64,6 +68,32 @@ Status MotionRunner::begin(const JobSpec& spec, const PreparedJob& job) {
   active_ = true;
   service();  // starts the timer
   return Status::kOk;
+}
+
+// Feed hold, from the main loop (the job server): the queue is topped up first, so the hold
+// starts where the host simulator's does after the same step events (motion/virtual_run.h):
+// at the end of a full queue. The interrupt then runs the braking out, the pen lifts, the
+// queue runs dry and the timer stops; resume() refills and service() restarts it.
+void MotionRunner::pause() {
+  if (!active_ || prep_.holding()) return;
+  const uint32_t before = events();
+  const Status s = prep_.fill(planner_, queue_);
+  if (!ok(s)) return finish(s);
+  prep_.hold();
+  // Where the hold was asked for, as `haloplot sim --pause-at` takes it: exact unless a step
+  // event came in between (the refill then followed fewer events than the count says).
+  hold_events_ = events();
+  hold_exact_ = hold_events_ == before;
+}
+
+void MotionRunner::resume() {
+  if (!active_ || !paused()) return;
+  prep_.resume();
+  resuming_ = true;  // the restart is not an underrun
+}
+
+bool MotionRunner::paused() const {
+  return active_ && prep_.held() && queue_.empty() && timer_idle_;
 }
 
 void MotionRunner::finish(Status s) {
@@ -90,7 +120,8 @@ void MotionRunner::service() {
     if (queue_.empty() && prep_.done()) finish(Status::kOk);
     return;
   }
-  if (mid_plot) ++underruns_;
+  if (mid_plot && !resuming_ && !prep_.held()) ++underruns_;
+  resuming_ = false;
   delay_ = d;
   timer_idle_ = false;
   Board::timer_start(d);

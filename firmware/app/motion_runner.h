@@ -41,6 +41,12 @@ class MotionRunner {
   void service();                // main loop: refill, restart after a dry queue, notice the end
   void on_timer();               // the step timer's interrupt (SysTick)
   void on_limit(uint8_t motor);  // EXTI interrupt: stop at once
+  void pause();                  // main loop: feed hold (brake to rest, lift the pen, wait)
+  void resume();                 // main loop: after a hold at rest, go on
+  bool paused() const;           // held at rest, the timer stopped
+  // The step events at the last pause(), and whether the count is exact (see pause()).
+  uint32_t hold_events() const { return hold_events_; }
+  bool hold_exact() const { return hold_exact_; }
   void set_trace(CharSink sink) { trace_sink_ = sink, tracing_ = true; }
   void set_time_scale(uint32_t k) { time_scale_ = k; }  // see step_timer.h
   uint32_t underruns() const { return underruns_; }
@@ -66,6 +72,8 @@ class MotionRunner {
   volatile uint8_t limit_ = 0;   // motor + 1 whose switch fired
   volatile uint32_t delay_ = 0;  // ticks of the period now running
   uint32_t underruns_ = 0, time_scale_ = 1;
+  bool resuming_ = false, hold_exact_ = false;
+  uint32_t hold_events_ = 0;
   Status result_ = Status::kOk;
 };
 

@@ -144,6 +144,7 @@ int main() {
       stat("prepare_instructions", ticks_to_instructions(server.prepare_ticks()));
       stat("replot_instructions", ticks_to_instructions(server.redraw_ticks()));
       stat("underruns", motion.underruns());
+      if (motion.hold_exact()) stat("hold_events", motion.hold_events());
       stat("usart_overruns", Board::serial_overruns());
       stat("stack_used_bytes", 16 * 1024 - stack_unused_bytes());
       stat("arena_bytes", sizeof arena);

@@ -57,13 +57,14 @@ void print_status(const char* when, const StatusReport& r) {
 int cmd_send(int argc, char** argv) {
   const Options o = parse_options(argc, argv, 2,
                                   {"--port", "--replot", "--corrupt-every", "--truncate-every",
-                                   "--seed", "--stop-after", "--stop"},
+                                   "--seed", "--stop-after", "--stop", "--pause-after"},
                                   {"--test-exit", "--trace-digest"});
   if (!o.error.empty()) return send_fail(o.error);
   if (o.positional.size() != 1 || o.get("--port").empty())
     return send_fail(
         "usage: haloplot send JOB.job --port PATH [--replot W] [--corrupt-every K] "
-        "[--truncate-every K] [--test-exit] [--trace-digest]");
+        "[--truncate-every K] [--pause-after EVENTS] [--stop-after EVENTS [--stop abort|limit]] "
+        "[--test-exit] [--trace-digest]");
   JobFile jf;
   InputError ie = read_job_file(o.positional[0], &jf);
   if (ie.failed()) return send_fail(ie.message());
@@ -169,6 +170,24 @@ int cmd_send(int argc, char** argv) {
             : client.upload(jf.spec, edges, &s);
     if (int e = link_or_status(sent, "upload")) return e;
     if (int e = link_or_status(client.request(FrameType::kPlot, {}, &s), "plot")) return e;
+  }
+  if (!o.get("--pause-after").empty()) {
+    // Feed hold once the plot has made this many step events: the controller brakes to rest
+    // and lifts the pen (state kPaused); then resume, and the plot goes on to its end.
+    uint32_t after = 0;
+    if (!read_u32(o, "--pause-after", &after, &error)) return send_fail(error);
+    do {
+      if (!client.query(&r)) return send_fail("status: " + client.error());
+    } while (r.state == ServerState::kPlotting && r.step_events < after);
+    if (int e = link_or_status(client.request(FrameType::kPause, {}, &s), "pause")) return e;
+    do {
+      if (!client.query(&r)) return send_fail("status: " + client.error());
+    } while (r.state == ServerState::kPlotting);
+    if (r.state != ServerState::kPaused)
+      return send_fail(std::string("pause: the plot ended instead (") + status_name(r.last_error) +
+                       ")");
+    std::cout << "paused at rest after " << r.step_events << " step events\n";
+    if (int e = link_or_status(client.request(FrameType::kResume, {}, &s), "resume")) return e;
   }
   if (!o.get("--stop-after").empty()) {
     // Stop the plot once it has made this many step events: with an abort request, or (test

@@ -158,7 +158,7 @@ bool JobClient::stream(const JobSpec& spec, const BandPlan& plan, uint32_t arena
       if (*status != Status::kBusy) break;
       StatusReport r;  // the last band is still staged: wait, unless the plot has ended
       if (!query(&r)) return false;
-      if (r.state != ServerState::kPlotting) {
+      if (r.state != ServerState::kPlotting && r.state != ServerState::kPaused) {
         *status = r.last_error == Status::kOk ? Status::kAborted : r.last_error;
         return true;
       }
@@ -220,7 +220,9 @@ bool JobClient::query(StatusReport* report) {
 bool JobClient::wait_idle(StatusReport* report, int poll_ms) {
   for (;;) {
     if (!query(report)) return false;
-    if (report->state != ServerState::kPlotting) return true;
+    // A paused plot has not ended: it waits for kResume (or kAbort).
+    if (report->state != ServerState::kPlotting && report->state != ServerState::kPaused)
+      return true;
     if (poll_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(poll_ms));
   }
 }

@@ -16,10 +16,15 @@
 #   - a scene streamed in bands (the job's `arena`: the controller never holds the scene, the
 #     host sends each band's edges while the plot runs) is plotted exactly as `haloplot sim`
 #     plots it with the same arena, through damaged frames;
+#   - a feed hold over the link (`send --pause-after`) brakes to rest, lifts the pen and, once
+#     resumed, finishes the plot: its trace passes the pause test's checks (pause_check: within
+#     the acceleration bound, the uninterrupted plot's drawing), and when the controller
+#     reports where the hold was asked for exactly, equals `haloplot sim --pause-at` there;
 #   - the image exits 0 through semihosting with no step underrun.
-# Usage: qemu_link_test.sh FIRMWARE_DIR HALOPLOT_TOOL
+# Usage: qemu_link_test.sh FIRMWARE_DIR HALOPLOT_TOOL PAUSE_CHECK
 source "$(dirname "$0")/qemu_common.sh" "firmware_link${HALOPLOT_QEMU_MACHINE:+ on $HALOPLOT_QEMU_MACHINE}" "$1" "$2" \
   fw_plotter_qemu.elf
+pause_check=$3
 
 cd "$work"
 "$tool" demo-scene --cubes 2 -o scene.edges
@@ -74,16 +79,38 @@ if [ "$rc" -eq 0 ] && grep -q "^streamed $(sed -n 's/^bands=//p' stream_sim.txt)
 else
   bad "streamed send ($rc): $(cat stream.out)"
 fi
-# 5. Plot and re-plot with damaged frames on the way (a new connection: `send` reconnects if
+# 5. A feed hold over the link, then resume.
+"$tool" send plot.job --port "$work/link.sock" --pause-after 20000 > pause.out 2>&1
+rc=$?
+if [ "$rc" -eq 0 ] && grep -q "^paused at rest after" pause.out; then
+  ok
+  grep "^paused" pause.out
+else
+  bad "pause and resume ($rc): $(cat pause.out)"
+fi
+# 6. Plot and re-plot with damaged frames on the way (a new connection: `send` reconnects if
 #    QEMU still holds the last one).
 "$tool" send plot.job --port "$work/link.sock" --replot 120 --corrupt-every 5 \
   --truncate-every 11 --seed 7 --test-exit > send.out 2>&1
 end_session $?
 
 awk '/^haloplot-trace 2$/ { k++; on = 1 } on { print > ("fw_" k ".trace") } /^end / { on = 0 }' fw.out
-# Traces 1 and 2 are the stopped plots; 3 the solid; 4 the streamed one; 5 and 6 the plot and
-# the re-plot.
-for pair in "3 host_solid" "4 host_stream" "5 host_plot" "6 host_replot"; do
+# Traces 1 and 2 are the stopped plots; 3 the solid; 4 the streamed one; 5 the paused one; 6
+# and 7 the plot and the re-plot.
+if "$pause_check" plot.job fw_5.trace; then ok; else bad "the paused plot's trace"; fi
+hold=$(sed -n 's/^fw hold_events=//p' fw.out)
+if [ -n "$hold" ]; then
+  "$tool" sim plot.job -o host_pause.trace --pause-at "$hold"
+  if cmp -s fw_5.trace host_pause.trace; then
+    ok
+    echo "paused trace identical to haloplot sim --pause-at $hold: $(wc -c < host_pause.trace) bytes"
+  else
+    bad "the paused trace differs from haloplot sim --pause-at $hold"
+  fi
+else
+  echo "the hold's step count was not exact (a step came in between): compared by pause_check only"
+fi
+for pair in "3 host_solid" "4 host_stream" "6 host_plot" "7 host_replot"; do
   set -- $pair
   if [ -s "fw_$1.trace" ] && cmp -s "fw_$1.trace" "$2.trace"; then
     ok

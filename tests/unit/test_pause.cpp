@@ -22,68 +22,13 @@
 #include "io/job_file.h"
 #include "pipeline/scene_input.h"
 #include "sim/simulator.h"
+#include "support/pen_drawing.h"
 #include "support/trace_limits.h"
 
 using namespace haloplot;
 using namespace haloplot::host;
 
 namespace {
-
-// What the pen drew, from a trace: the positions (in half plot steps, so CoreXY's half steps
-// are whole) after every step made with the pen down, and each motor's pen-down step count.
-struct Drawn {
-  std::set<std::pair<int64_t, int64_t>> at;
-  uint64_t steps[2] = {0, 0};
-};
-
-Drawn drawn(const reference::CheckedTrace& t) {
-  const reference::ReplayedPath path = reference::replay_path(t);
-  std::vector<std::pair<int64_t, int>> ev;  // the replay's own order: (tick, motor), stable
-  for (int m = 0; m < 2; ++m)
-    for (int64_t tick : t.step_tick[m]) ev.push_back({tick, m});
-  std::stable_sort(ev.begin(), ev.end(), [](auto a, auto b) { return a.first < b.first; });
-  Drawn d;
-  size_t p = 0;
-  bool down = false;
-  for (size_t i = 0; i < ev.size(); ++i) {
-    // The pen state before the step's tick: a pen change on a step's own tick follows it.
-    while (p < t.pen.size() && int64_t(t.pen[p].first) < ev[i].first) down = t.pen[p++].second;
-    if (!down) continue;
-    ++d.steps[ev[i].second];
-    d.at.insert({int64_t(std::llround(2 * path.x[i])), int64_t(std::llround(2 * path.y[i]))});
-  }
-  return d;
-}
-
-// Every position of `a` within one plot step (two half steps) of one of `b`'s; the first that
-// is not, in *where.
-bool within_a_step(const Drawn& a, const Drawn& b, std::pair<int64_t, int64_t>* where) {
-  for (const auto& [x, y] : a.at) {
-    bool near = false;
-    for (int64_t dx = -2; dx <= 2 && !near; ++dx)
-      for (int64_t dy = -2; dy <= 2 && !near; ++dy) near = b.at.count({x + dx, y + dy}) > 0;
-    if (!near) {
-      *where = {x, y};
-      return false;
-    }
-  }
-  return true;
-}
-
-bool same_drawing(const Drawn& a, const Drawn& b, std::string* why) {
-  std::pair<int64_t, int64_t> w;
-  if (!within_a_step(a, b, &w) || !within_a_step(b, a, &w)) {
-    *why = "drawn at (" + std::to_string(double(w.first) / 2) + ", " +
-           std::to_string(double(w.second) / 2) + ") in one run only";
-    return false;
-  }
-  if (a.steps[0] != b.steps[0] || a.steps[1] != b.steps[1]) {
-    *why = "pen-down steps " + std::to_string(a.steps[0]) + "/" + std::to_string(a.steps[1]) +
-           " against " + std::to_string(b.steps[0]) + "/" + std::to_string(b.steps[1]);
-    return false;
-  }
-  return true;
-}
 
 struct Run {
   reference::CheckedTrace trace;
@@ -139,7 +84,7 @@ void paused_equals_unpaused(const std::string& label, const JobSpec& spec,
   CHECK_MSG(extra_pen % 2 == 0 && extra_pen > 0 && extra_pen <= 2 * count,
             label + ": " + std::to_string(extra_pen) + " extra pen changes");
   std::string why;
-  const bool same = same_drawing(drawn(paused.trace), drawn(plain.trace), &why);
+  const bool same = test::same_drawing(test::drawn(paused.trace), test::drawn(plain.trace), &why);
   CHECK_MSG(same, label + ": " + why);
   std::printf(
       "%s: %u holds at rest, %zu pen lifts for them, worst speed change at one step %.3f "
@@ -189,8 +134,8 @@ void comparison_sees_a_difference() {
   JobSpec a = demo_spec(), b = demo_spec();
   b.draw.halo = 80;
   std::string why;
-  CHECK_MSG(!same_drawing(drawn(run(a, cube_array(p), {}).trace),
-                          drawn(run(b, cube_array(p), {}).trace), &why),
+  CHECK_MSG(!test::same_drawing(test::drawn(run(a, cube_array(p), {}).trace),
+                                test::drawn(run(b, cube_array(p), {}).trace), &why),
             "halo 50 and halo 80 compare equal");
   std::printf("halo 50 against 80: %s\n", why.c_str());
 }
