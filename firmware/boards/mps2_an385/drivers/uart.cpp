@@ -1,15 +1,12 @@
 #include "drivers/uart.h"
 
 #include "chip/cmsdk.h"
+#include "platform/rx_ring.h"
 
 namespace haloplot::fw {
 namespace {
 
-constexpr uint32_t kRing = 2048;  // two of the largest frames
-static_assert((kRing & (kRing - 1)) == 0, "power of two: free-running indices");
-uint8_t ring[kRing];
-volatile uint32_t head = 0, tail = 0;  // tail written by the interrupt, head by the main loop
-volatile uint32_t overruns = 0;
+RxRing<2048> ring;  // two of the largest frames
 
 }  // namespace
 
@@ -21,12 +18,7 @@ void uart_init(uint32_t baud) {
   nvic_enable(kUart0Rx);
 }
 
-bool uart_read(uint8_t* byte) {
-  if (head == tail) return false;
-  *byte = ring[head % kRing];
-  head = head + 1;
-  return true;
-}
+bool uart_read(uint8_t* byte) { return ring.pop(byte); }
 
 void uart_write(const uint8_t* bytes, uint32_t n) {
   using namespace chip;
@@ -37,7 +29,7 @@ void uart_write(const uint8_t* bytes, uint32_t n) {
   }
 }
 
-uint32_t uart_overruns() { return overruns; }
+uint32_t uart_overruns() { return ring.overruns(); }
 
 }  // namespace haloplot::fw
 
@@ -51,13 +43,8 @@ extern "C" void uart0_rx_irq_handler() {
   if (!(state & UART_STATE_RXFULL)) return;
   const uint8_t b = uint8_t(UART0.DATA);
   if (state & UART_STATE_RXOVERRUN) {
-    overruns = overruns + 1;
+    ring.count_overrun();
     UART0.STATE = UART_STATE_RXOVERRUN;  // write 1 to clear
   }
-  if (tail - head < kRing) {
-    ring[tail % kRing] = b;
-    tail = tail + 1;
-  } else {
-    overruns = overruns + 1;
-  }
+  ring.push(b);
 }

@@ -1,11 +1,10 @@
-// Reset and the vector table for the MPS2 AN385 (Cortex-M3, no FPU, no CCM). No C library
-// start-up code: copy .data, zero .bss, paint the stack (for the high-water mark), call main().
+// Reset and the vector table for the MPS2 AN385 (Cortex-M3, no FPU, no CCM): the portable C
+// runtime start (platform/c_runtime.h), then main().
 #include <stdint.h>
 
+#include "platform/c_runtime.h"
+
 extern "C" {
-extern uint32_t __data_start, __data_end, __data_load, __bss_start, __bss_end, __stack_top,
-    __stack_limit;
-extern void (*__init_array_start[])(), (*__init_array_end[])();
 int main();
 [[noreturn]] void reset_handler();
 void default_handler();
@@ -16,34 +15,17 @@ void gpio0_pin8_irq_handler() __attribute__((weak, alias("default_handler")));
 void gpio0_pin9_irq_handler() __attribute__((weak, alias("default_handler")));
 }
 
-namespace {
-constexpr uint32_t kStackPaint = 0xA5A5A5A5u;
-}
-
 extern "C" void default_handler() {
   for (;;) {
   }
 }
 
 extern "C" void reset_handler() {
-  for (uint32_t *src = &__data_load, *dst = &__data_start; dst < &__data_end;) *dst++ = *src++;
-  for (uint32_t* p = &__bss_start; p < &__bss_end; ++p) *p = 0;
-  // Paint the stack below the current frame (less a margin for this frame).
-  uint32_t sp;
-  __asm__ volatile("mov %0, sp" : "=r"(sp));
-  for (uint32_t* p = &__stack_limit; reinterpret_cast<uint32_t>(p) < sp - 256; ++p)
-    *p = kStackPaint;
-  for (auto f = __init_array_start; f < __init_array_end; ++f) (*f)();
+  haloplot::fw::start_c_runtime();  // .data, .bss, the stack's paint (platform/c_runtime.h)
+  haloplot::fw::run_static_constructors();
   main();
   for (;;) {
   }
-}
-
-// Stack bytes never touched since boot: painted words still intact, from the bottom up.
-extern "C" uint32_t stack_unused_bytes() {
-  uint32_t n = 0;
-  for (const uint32_t* p = &__stack_limit; p < &__stack_top && *p == kStackPaint; ++p) n += 4;
-  return n;
 }
 
 // The first 16 system exceptions. The NMI is the watchdog's first time out: it stays on the

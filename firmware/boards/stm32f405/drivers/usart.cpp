@@ -1,15 +1,12 @@
 #include "drivers/usart.h"
 
 #include "chip/stm32f405.h"
+#include "platform/rx_ring.h"
 
 namespace haloplot::fw {
 namespace {
 
-constexpr uint32_t kRing = 2048;  // two of the largest frames
-static_assert((kRing & (kRing - 1)) == 0, "power of two: free-running indices");
-uint8_t ring[kRing];
-volatile uint32_t head = 0, tail = 0;  // tail written by the interrupt, head by the main loop
-volatile uint32_t overruns = 0;
+RxRing<2048> ring;  // two of the largest frames
 
 }  // namespace
 
@@ -22,12 +19,7 @@ void usart_init(uint32_t baud) {
   nvic_enable(kUsart1);
 }
 
-bool usart_read(uint8_t* byte) {
-  if (head == tail) return false;
-  *byte = ring[head % kRing];
-  head = head + 1;
-  return true;
-}
+bool usart_read(uint8_t* byte) { return ring.pop(byte); }
 
 void usart_write(const uint8_t* bytes, uint32_t n) {
   using namespace chip;
@@ -38,7 +30,7 @@ void usart_write(const uint8_t* bytes, uint32_t n) {
   }
 }
 
-uint32_t usart_overruns() { return overruns; }
+uint32_t usart_overruns() { return ring.overruns(); }
 
 }  // namespace haloplot::fw
 
@@ -48,12 +40,7 @@ extern "C" void usart1_irq_handler() {
   const uint32_t sr = USART1.SR;
   if (sr & (USART_SR_RXNE | USART_SR_ORE)) {
     const uint8_t b = uint8_t(USART1.DR);  // reading DR clears RXNE and ORE
-    if (sr & USART_SR_ORE) overruns = overruns + 1;
-    if (tail - head < kRing) {
-      ring[tail % kRing] = b;
-      tail = tail + 1;
-    } else {
-      overruns = overruns + 1;
-    }
+    if (sr & USART_SR_ORE) ring.count_overrun();
+    ring.push(b);
   }
 }

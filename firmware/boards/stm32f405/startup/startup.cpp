@@ -1,12 +1,12 @@
-// Reset and the vector table for the STM32F405 (Cortex-M4F). No C library start-up code: we
-// copy .data, zero .bss and .ccm, paint the stack (for the high-water mark), enable the FPU
-// (the core needs none, but compiler-generated code for other parts may) and call main().
+// Reset and the vector table for the STM32F405 (Cortex-M4F): the portable C runtime start,
+// then .ccm zeroed and the FPU enabled (the core needs none, but compiler-generated code for
+// other parts may), then main().
 #include <stdint.h>
 
+#include "platform/c_runtime.h"
+
 extern "C" {
-extern uint32_t __data_start, __data_end, __data_load, __bss_start, __bss_end, __ccm_start,
-    __ccm_end, __stack_top, __stack_limit;
-extern void (*__init_array_start[])(), (*__init_array_end[])();
+extern uint32_t __ccm_start, __ccm_end;
 int main();
 [[noreturn]] void reset_handler();
 void default_handler();
@@ -18,38 +18,20 @@ void exti1_irq_handler() __attribute__((weak, alias("default_handler")));
 void usart1_irq_handler() __attribute__((weak, alias("default_handler")));
 }
 
-namespace {
-constexpr uint32_t kStackPaint = 0xA5A5A5A5u;
-}
-
 extern "C" void default_handler() {
   for (;;) {
   }
 }
 
 extern "C" void reset_handler() {
-  for (uint32_t *src = &__data_load, *dst = &__data_start; dst < &__data_end;) *dst++ = *src++;
-  for (uint32_t* p = &__bss_start; p < &__bss_end; ++p) *p = 0;
+  haloplot::fw::start_c_runtime();  // .data, .bss, the stack's paint (platform/c_runtime.h)
   for (uint32_t* p = &__ccm_start; p < &__ccm_end; ++p) *p = 0;
-  // Paint the stack below the current frame so firmware can measure its high-water mark.
-  // The current stack pointer, less a margin for this frame, bounds the painted range.
-  uint32_t sp;
-  __asm__ volatile("mov %0, sp" : "=r"(sp));
-  for (uint32_t* p = &__stack_limit; reinterpret_cast<uint32_t>(p) < sp - 256; ++p)
-    *p = kStackPaint;
   // CPACR: full access to CP10/CP11 (the FPU), as RM0090 / the Cortex-M4 TRM describe.
   *reinterpret_cast<volatile uint32_t*>(0xE000ED88u) |= (0xFu << 20);
-  for (auto f = __init_array_start; f < __init_array_end; ++f) (*f)();
+  haloplot::fw::run_static_constructors();
   main();
   for (;;) {
   }
-}
-
-// Stack bytes never touched since boot: painted words still intact, from the bottom up.
-extern "C" uint32_t stack_unused_bytes() {
-  uint32_t n = 0;
-  for (const uint32_t* p = &__stack_limit; p < &__stack_top && *p == kStackPaint; ++p) n += 4;
-  return n;
 }
 
 // The first 16 system exceptions; peripheral interrupts are added by the drivers that use them.
