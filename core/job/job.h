@@ -75,6 +75,9 @@ struct PreparedJob {
   const Segment2* spans = nullptr;
   CutSet cutset;   // valid when CUT ran: DRAW can rerun from it with another halo width
   PointFeed feed;  // set: the points come band by band from this feed (a streamed plot)
+  // > 0: go on with a plot that stopped after this many step events (an abort, a reset):
+  // motion/virtual_run.h skip_events() before the motion starts.
+  uint32_t resume_after_events = 0;
 };
 
 // The band conductor's settings for an edge drawing of this job (kHaloed, or kAllEdges).

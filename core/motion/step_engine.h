@@ -54,6 +54,8 @@ class StepEngine {
 
   int32_t position(uint8_t motor) const { return position_[motor]; }
   uint32_t events() const { return events_; }
+  // Events of the segment in hand not yet made (the pending one included).
+  uint32_t remaining() const { return left_ + (pending_ ? 1u : 0u); }
 
  private:
   // Time is the running sum of the Q8 intervals; the timer needs only whole ticks between

@@ -243,6 +243,7 @@ void StepPrep::pen_segment(bool down, StepSegment* out) {
   out->dwell_ticks = fx_.pen_servo ? m_.pen_travel_ticks + m_.pen_settle_ticks : 0;
   time_q8_ += uint64_t{out->dwell_ticks} * 256;
   pen_down_ = down;
+  last_takeup_ = false;
   ++counters_.segments;
 }
 
@@ -269,10 +270,61 @@ void StepPrep::resume_move(MotionPlanner& planner, StepSegment* out, bool* have)
   }
 }
 
+// A pen-up travel by `delta` motor steps, at the travel speed, from rest to rest.
+MotionItem StepPrep::travel(const int32_t delta[2]) const {
+  MotionItem t;
+  t.kind = MotionItem::kMove;
+  t.pen_down = false;
+  t.delta[0] = delta[0];
+  t.delta[1] = delta[1];
+  int32_t x = 0, y = 0;
+  plot_position(m_, delta, &x, &y);
+  const uint64_t l2 = uint64_t(int64_t{x} * x + int64_t{y} * y);
+  t.length_q8 = isqrt_u64(l2 << 16);
+  if (t.length_q8 < 256) t.length_q8 = 256;  // below a plot step: still a step's time
+  const uint64_t top = uint64_t{m_.travel_speed} * m_.travel_speed * 256;
+  t.top_v2 = top;
+  t.accel = fx_.acceleration ? m_.accel : 0;
+  t.entry_v2 = t.exit_v2 = fx_.acceleration ? 0 : top;
+  return t;
+}
+
+void StepPrep::restart_at(uint32_t remaining, const int32_t motors[2]) {
+  // The rest of the move the stop was in: from dominant step j_ - remaining (a take-up was run
+  // out first by skip_events(), so it is the move's start then). At a move's end, none.
+  have_rest_ = false;
+  if (in_move_ && remaining <= j_ && j_ - remaining < n_) {
+    rest_ = part(j_ - remaining, n_);
+    rest_.entry_v2 = 0;
+    have_rest_ = true;
+  }
+  in_move_ = false;
+  lifted_ = pen_down_;  // lowered again once there
+  pen_down_ = false;
+  // The travel's target is where the plan had the carriage: the motors less the slack they
+  // took up (a motor that last ran backwards is a slack behind it; the prep adds take-ups to
+  // the planned motion, so the travel, and the rest of the move after it, take up whatever
+  // their own directions need).
+  int32_t target[2] = {motors[0], motors[1]};
+  if (fx_.backlash)
+    for (uint8_t mo = 0; mo < 2; ++mo)
+      if (last_backward_[mo]) target[mo] += int32_t(m_.backlash[mo]);
+  // From a reset: the slack as at any start (taken up for + moves), the pen up.
+  last_backward_[0] = last_backward_[1] = false;
+  takeup_pending_[0] = takeup_pending_[1] = false;
+  last_takeup_ = false;
+  hold_ = Hold::kTravel;
+  if (target[0] != 0 || target[1] != 0) {
+    (void)begin_move(travel(target));
+    in_move_ = true;
+  }
+}
+
 Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* have) {
   *have = false;
   for (;;) {
     if (hold_ == Hold::kHeld) return Status::kOk;  // at rest, waiting for resume()
+    if (hold_ == Hold::kTravel && !in_move_) hold_ = Hold::kResume;  // restart_at()'s travel
     if (hold_ == Hold::kResume) {
       resume_move(planner, out, have);
       if (*have) return Status::kOk;
@@ -303,6 +355,7 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
         out->dwell_ticks = it.dwell_ticks;
         time_q8_ += uint64_t{it.dwell_ticks} * 256;
         pen_down_ = it.pen_down;
+        last_takeup_ = false;
         ++counters_.segments;
         *have = true;
         return Status::kOk;
@@ -338,6 +391,7 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
       ++counters_.backlash_takeups;
       ++counters_.segments;
       block_start_q8_ = time_q8_;
+      last_takeup_ = true;
       *have = true;
       return Status::kOk;
     }
@@ -378,6 +432,7 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
     reg_add_ = add;
     counters_.motor_steps[dominant_] += uint64_t(m);
     ++counters_.segments;
+    last_takeup_ = false;
     j_ = j1;
     if (j_ >= n_) counters_.motor_steps[1 - dominant_] += minor_;
     *have = true;

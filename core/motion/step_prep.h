@@ -49,6 +49,24 @@ class StepPrep {
     }
     return Status::kOk;
   }
+  // Push at most one segment (*pushed says whether one was): skip_events() keeps one segment
+  // in flight, so the prep's last segment is the one the tick is in.
+  template <typename Queue>
+  Status fill_one(MotionPlanner& planner, Queue& queue, bool* pushed) {
+    StepSegment s;
+    *pushed = false;
+    const Status st = next_segment(planner, &s, pushed);
+    if (ok(st) && *pushed) queue.push(s);
+    return st;
+  }
+  // Resume a plot where an earlier run of it stopped (an abort, a reset), after the tick has
+  // made that run's events again with no motor moving (motion/virtual_run.h skip_events):
+  // `remaining` events of the last segment were not made, and the motors were at `motors`.
+  // From the origin, at rest and pen up (a controller after a reset), travel there pen up,
+  // lower the pen if it was down, and go on with the rest of the move from rest, as after a
+  // feed hold.
+  void restart_at(uint32_t remaining, const int32_t motors[2]);
+  bool in_takeup() const { return last_takeup_; }  // the last segment took up backlash
   bool done() const { return done_; }
   const PrepCounters& counters() const { return counters_; }
 
@@ -67,7 +85,8 @@ class StepPrep {
   uint64_t engine_time_q8() const { return time_q8_; }
 
  private:
-  enum class Hold : uint8_t { kNone, kRequested, kBraking, kHeld, kResume };
+  // kTravel: restart_at()'s travel to where the plot stopped; then kResume.
+  enum class Hold : uint8_t { kNone, kRequested, kBraking, kHeld, kResume, kTravel };
   Status next_segment(MotionPlanner& planner, StepSegment* out, bool* have);
   uint64_t speed2_at(uint32_t j) const;             // the profile's v^2 (Q8) at dominant step j
   uint64_t distance_q16(uint32_t j) const;          // plot distance of dominant step j, Q16
@@ -75,6 +94,7 @@ class StepPrep {
   void brake(uint64_t v2);                          // begin braking from step j_ at speed^2 v2
   void pen_segment(bool down, StepSegment* out);
   void resume_move(MotionPlanner& planner, StepSegment* out, bool* have);
+  MotionItem travel(const int32_t delta[2]) const;  // pen up, rest to rest
   Status begin_move(const MotionItem& item);
   uint64_t block_time_q8(uint32_t j) const;  // time of dominant step j from the block start
   void advance_time(uint32_t events, int64_t interval, int64_t add);
@@ -104,7 +124,7 @@ class StepPrep {
   Hold hold_ = Hold::kNone;
   uint64_t brake_exit2_ = 0, last_exit2_ = 0;  // last_exit2_: where the last move ended
   MotionItem rest_{};
-  bool have_rest_ = false, lifted_ = false, pen_down_ = false;
+  bool have_rest_ = false, lifted_ = false, pen_down_ = false, last_takeup_ = false;
 };
 
 }  // namespace haloplot

@@ -25,6 +25,42 @@ struct HoldSchedule {
   uint32_t n = 0;
 };
 
+// Make a plot's first `events` step events again with no motor moving, then restart it from
+// there (StepPrep::restart_at): what a controller does to go on with a plot that stopped after
+// that many events (an abort, a reset), drawing nothing twice. One segment is kept in flight,
+// so the prep's last segment is the one the tick stopped in; a backlash take-up is run out
+// (it moves no carriage). kUnsupported for a plot whose points are still arriving (a streamed
+// one): it cannot be made again without them.
+struct SilentHal {
+  void step(uint8_t) {}
+  void set_direction(uint8_t, bool) {}
+  void pen(bool) {}
+};
+
+inline Status skip_events(MotionPlanner& planner, StepPrep& prep, uint32_t events) {
+  if (events == 0) return Status::kOk;
+  SilentHal hal;
+  SegmentQueue<2> queue;
+  StepEngine<SilentHal, SegmentQueue<2>> engine(hal, queue);
+  while (engine.events() < events || (prep.in_takeup() && engine.remaining() > 0)) {
+    if (engine.remaining() > 0) {
+      (void)engine.tick();
+      continue;
+    }
+    bool pushed = false;
+    const Status s = prep.fill_one(planner, queue, &pushed);
+    if (!ok(s)) return s;
+    if (!pushed) {
+      if (prep.done()) break;  // the plot ended before: nothing left to draw
+      return Status::kUnsupported;
+    }
+    (void)engine.start();
+  }
+  const int32_t motors[2] = {engine.position(0), engine.position(1)};
+  if (!prep.done()) prep.restart_at(engine.remaining(), motors);
+  return Status::kOk;
+}
+
 template <typename Hal, typename Queue>
 Status run_virtual(MotionPlanner& planner, StepPrep& prep, Queue& queue, Hal& hal,
                    StepEngine<Hal, Queue>& engine, HoldSchedule holds = {}) {

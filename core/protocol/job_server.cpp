@@ -156,7 +156,11 @@ Status JobServer::act(const Frame& f) {
     case FrameType::kStreamBegin:
       return stream_begin(f.payload, f.length);
     case FrameType::kPlot:
-      if (f.length != 0) return Status::kMalformedRequest;
+      // Empty, or u32: go on with an earlier plot of this job that stopped after that many
+      // step events (an abort, a reset: motion/virtual_run.h skip_events).
+      if (f.length != 0 && f.length != 4) return Status::kMalformedRequest;
+      resume_events_ = f.length == 4 ? get_u32(f.payload) : 0;
+      if (resume_events_ > 0 && streamed_) return Status::kUnsupported;
       return streamed_ ? plot_streamed() : plot();
     case FrameType::kReplot:
       return replot(f.payload, f.length);
@@ -313,6 +317,8 @@ Status JobServer::replot(const uint8_t* p, uint16_t n) {
 }
 
 Status JobServer::start_motion() {
+  job_.resume_after_events = resume_events_;  // this plot only: a re-plot starts at the start
+  resume_events_ = 0;
   JobSpec run = spec_;
   if (!run.effects.backlash) run.machine.backlash[0] = run.machine.backlash[1] = 0;
   const Status s = motion_.begin(motion_.ctx, run, job_);

@@ -135,6 +135,7 @@ class JobServer {
   PreparedJob job_;
   JobCounters counters_;
   uint32_t cut_runs_ = 0, draw_runs_ = 0;
+  uint32_t resume_events_ = 0;  // the kPlot's resume point, for start_motion()
   Extension extension_;
   uint64_t (*clock_)() = nullptr;
   uint64_t prepare_ticks_ = 0, redraw_ticks_ = 0;

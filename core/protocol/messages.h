@@ -20,6 +20,7 @@
 //   kSetMachine        u8 kinematics, 13 x u32 (steps num, den, tick Hz, min interval,
 //                      max step rate, draw speed, travel speed, accel, junction deviation,
 //                      pen travel, pen settle, backlash 0, 1), 2 x i32 start x, y      61
+//   kPlot              (empty), or u32 step events: resume a plot stopped there          4
 //   kReplot            as kSetHalo                                                      5
 //   kStreamBegin       i32 margin (rows), u32 arena bytes for the bands                     8
 //   kBandBegin         i32 y0, i32 y1 (rows [y0, y1)), u32 edges                           12

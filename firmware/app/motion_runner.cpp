@@ -3,6 +3,7 @@
 #include <new>  // placement construction into static storage: no heap
 
 #include "board/board.h"
+#include "motion/virtual_run.h"
 
 namespace haloplot::fw {
 
@@ -62,6 +63,9 @@ Status MotionRunner::begin(const JobSpec& spec, const PreparedJob& job) {
   underruns_ = 0;
   resuming_ = false;
   timer_idle_ = true;
+  // A resumed plot: its first events made again with no motor moving, then a travel there.
+  s = skip_events(planner_, prep_, job.resume_after_events);
+  if (!ok(s)) return s;
   s = prep_.fill(planner_, queue_);
   if (!ok(s)) return s;
   Board::enable_drivers(true);

@@ -57,13 +57,14 @@ void print_status(const char* when, const StatusReport& r) {
 int cmd_send(int argc, char** argv) {
   const Options o = parse_options(argc, argv, 2,
                                   {"--port", "--replot", "--corrupt-every", "--truncate-every",
-                                   "--seed", "--stop-after", "--stop", "--pause-after"},
+                                   "--seed", "--stop-after", "--stop", "--pause-after", "--resume"},
                                   {"--test-exit", "--trace-digest"});
   if (!o.error.empty()) return send_fail(o.error);
   if (o.positional.size() != 1 || o.get("--port").empty())
     return send_fail(
         "usage: haloplot send JOB.job --port PATH [--replot W] [--corrupt-every K] "
         "[--truncate-every K] [--pause-after EVENTS] [--stop-after EVENTS [--stop abort|limit]] "
+        "[--resume EVENTS] "
         "[--test-exit] [--trace-digest]");
   JobFile jf;
   InputError ie = read_job_file(o.positional[0], &jf);
@@ -169,7 +170,19 @@ int cmd_send(int argc, char** argv) {
         obj ? client.upload_indexed(jf.spec, view, model.vertices, model.edge_pairs, &s, &triangles)
             : client.upload(jf.spec, edges, &s);
     if (int e = link_or_status(sent, "upload")) return e;
-    if (int e = link_or_status(client.request(FrameType::kPlot, {}, &s), "plot")) return e;
+    // --resume E: go on with a plot of this job that stopped after E step events (an abort,
+    // a reset), drawing nothing twice.
+    std::vector<uint8_t> plot_payload;
+    if (!o.get("--resume").empty()) {
+      int64_t events = 0;
+      if (!parse_int(o.get("--resume"), 1, UINT32_MAX, &events))
+        return send_fail("--resume needs the step events the plot stopped after: '" +
+                         o.get("--resume") + "'");
+      plot_payload.resize(4);
+      put_u32(plot_payload.data(), uint32_t(events));
+    }
+    if (int e = link_or_status(client.request(FrameType::kPlot, plot_payload, &s), "plot"))
+      return e;
   }
   if (!o.get("--pause-after").empty()) {
     // Feed hold once the plot has made this many step events: the controller brakes to rest
@@ -207,7 +220,8 @@ int cmd_send(int argc, char** argv) {
       return send_fail(std::string("stop: expected '") + status_name(want) +
                        "', the plot ended with '" + status_name(r.last_error) + "'");
     std::cout << "stopped by " << (limit ? "the limit switch" : "abort") << " after "
-              << r.step_events << " step events\n";
+              << r.step_events << " step events (--resume " << r.step_events
+              << " goes on from there)\n";
   }
   if (!client.wait_idle(&r)) return send_fail("status: " + client.error());
   print_status("plot", r);

@@ -484,7 +484,8 @@ void warn_if_slow(const JobSpec& spec, const SimReport& r) {
 
 int cmd_sim(int argc, char** argv) {
   const Options o = parse_options(
-      argc, argv, 2, {"-o", "--gcode", "--hpgl", "--arena", "--pause-at"}, {"--stats", "--binary"});
+      argc, argv, 2, {"-o", "--gcode", "--hpgl", "--arena", "--pause-at", "--resume-at"},
+      {"--stats", "--binary"});
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "sim");
   // --pause-at E1,E2,...: a feed hold once the plot has made E step events, resumed at rest.
@@ -510,6 +511,10 @@ int cmd_sim(int argc, char** argv) {
       return fail("--arena needs a byte count in [1024, 2^30]");
     jf.arena = uint32_t(v);
   }
+  // --resume-at E: go on from where a plot of this job stopped after E step events.
+  int64_t resume_at = 0;
+  if (!o.get("--resume-at").empty() && !parse_int(o.get("--resume-at"), 0, UINT32_MAX, &resume_at))
+    return fail("--resume-at needs a step-event count: '" + o.get("--resume-at") + "'");
   std::vector<Edge3> edges;
   std::string error;
   if (!load_job_scene(jf, &edges, &error)) return fail(error);
@@ -524,7 +529,7 @@ int cmd_sim(int argc, char** argv) {
   SimReport r;
   Status s = Status::kOk;
   error = write_atomically(o.get("-o"), [&](std::ostream& out) {
-    s = simulate(spec, edges, &out, &r, jf.arena, form, pause_at);
+    s = simulate(spec, edges, &out, &r, jf.arena, form, pause_at, uint32_t(resume_at));
     return ok(s);
   });
   if (s == Status::kArenaTooSmall)

@@ -78,7 +78,8 @@ struct BandFeed {
 
 // The motion of the plot: from r->points, then (with a conductor) from its bands.
 Status run_motion(const JobSpec& spec, BandConductor* conductor, std::ostream* trace, SimReport* r,
-                  TraceForm form = TraceForm::kText, const std::vector<uint32_t>& pause_at = {}) {
+                  TraceForm form = TraceForm::kText, const std::vector<uint32_t>& pause_at = {},
+                  uint32_t resume_at = 0) {
   r->planner_bytes = MotionPlanner::workspace_bytes(spec.effects);
   std::vector<uint64_t> planner_ws(r->planner_bytes / 8 + 1);
   RecordingHal hal;
@@ -103,6 +104,9 @@ Status run_motion(const JobSpec& spec, BandConductor* conductor, std::ostream* t
   TracedQueue<SegmentQueue<64>> queue;
   if (writer) queue.set_encoder(writer->encoder());
   StepEngine<RecordingHal, TracedQueue<SegmentQueue<64>>> engine(hal, queue);
+  job.resume_after_events = resume_at;  // as the controller takes it from kPlot
+  s = skip_events(planner, prep, job.resume_after_events);
+  if (!ok(s)) return s;
   s = run_virtual(planner, prep, queue, hal, engine,
                   HoldSchedule{pause_at.data(), uint32_t(pause_at.size())});
   if (!ok(s)) return s;
@@ -134,7 +138,7 @@ bool edge_drawing(const JobSpec& spec) {
 
 Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostream* trace,
                 SimReport* r, size_t arena_bytes, TraceForm form,
-                const std::vector<uint32_t>& pause_at) {
+                const std::vector<uint32_t>& pause_at, uint32_t resume_at) {
   *r = SimReport{};
   r->arena_bytes = arena_bytes;
   Status s = validate(spec.machine);
@@ -142,14 +146,14 @@ Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostre
   std::vector<uint64_t> buffer;
   if (arena_bytes == 0) {
     s = prepare_whole(spec, edges, &buffer, r);
-    return ok(s) ? run_motion(spec, nullptr, trace, r, form, pause_at) : s;
+    return ok(s) ? run_motion(spec, nullptr, trace, r, form, pause_at, resume_at) : s;
   }
   if (!edge_drawing(spec)) return Status::kBadParameter;
   buffer.assign(arena_bytes / 8, 0);
   BandConductor conductor;
   s = conductor.begin(band_spec(spec), array_edge_source(edges.data(), uint32_t(edges.size())),
                       buffer.data(), buffer.size() * 8);
-  return ok(s) ? run_motion(spec, &conductor, trace, r, form, pause_at) : s;
+  return ok(s) ? run_motion(spec, &conductor, trace, r, form, pause_at, resume_at) : s;
 }
 
 Status simulate_streamed(const JobSpec& spec, BandStream stream, int32_t margin, size_t arena_bytes,

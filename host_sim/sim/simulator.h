@@ -39,10 +39,12 @@ struct SimReport {
 // (band/conductor.h), exactly as a controller with that arena runs it; 0: one job buffer sized
 // for the whole scene. The trace is text, or the binary form of the same records.
 // pause_at: feed holds (motion/virtual_run.h HoldSchedule), each asked for once the plot has
-// made that many step events, and resumed at rest; ascending.
+// made that many step events, and resumed at rest; ascending. resume_at > 0: the plot goes on
+// from where a run of it stopped after that many step events (an abort), as the controller
+// does after `haloplot send --resume` (motion/virtual_run.h skip_events).
 Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostream* trace,
                 SimReport* report, size_t arena_bytes = 0, TraceForm form = TraceForm::kText,
-                const std::vector<uint32_t>& pause_at = {});
+                const std::vector<uint32_t>& pause_at = {}, uint32_t resume_at = 0);
 
 // The same with the bands streamed in (band/conductor.h begin_streamed), as a controller that
 // receives them over its link runs it: the stream may make the plot wait (kBusy).

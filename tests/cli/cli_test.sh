@@ -165,6 +165,18 @@ head -c 200 arena.btrace > cut.btrace
 rc=$?
 expect '[ $rc -ne 0 ] && grep -q "cut.btrace" err.txt && [ ! -e cut.svg ]' "a binary trace cut short is refused by name: $(cat err.txt)"
 
+# Feed holds and resume in the simulator: bad counts are refused by name, good ones run.
+printf 'scene scene.edges\ndrawing all\n' > hold.job
+"$tool" sim hold.job -o bad.trace --pause-at 500,200 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q -- "--pause-at needs ascending" err.txt && [ ! -e bad.trace ]' "descending --pause-at is refused: $(cat err.txt)"
+"$tool" sim hold.job -o bad.trace --resume-at x 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q -- "--resume-at needs" err.txt && [ ! -e bad.trace ]' "a --resume-at that is no count is refused: $(cat err.txt)"
+"$tool" sim hold.job -o held.trace --pause-at 200,900 --stats 2> held.txt && "$tool" sim hold.job -o resumed.trace --resume-at 900 2>> held.txt
+rc=$?
+expect '[ $rc -eq 0 ] && grep -q "^holds=2$" held.txt && [ -s resumed.trace ]' "sim --pause-at makes the holds and --resume-at runs: $(cat held.txt | grep -E "holds|haloplot")"
+
 # finish: home (the default) ends the trace at the origin, stay where the last stroke ended.
 printf 'scene scene.edges\ndrawing all\n' > home.job
 printf 'scene scene.edges\ndrawing all\nfinish stay\n' > stay.job

@@ -16,6 +16,8 @@
 #   - a scene streamed in bands (the job's `arena`: the controller never holds the scene, the
 #     host sends each band's edges while the plot runs) is plotted exactly as `haloplot sim`
 #     plots it with the same arena, through damaged frames;
+#   - the aborted plot, resumed from the step events it stopped after (`send --resume`, as after
+#     a reset), gives the trace of `haloplot sim --resume-at` there;
 #   - a feed hold over the link (`send --pause-after`) brakes to rest, lifts the pen and, once
 #     resumed, finishes the plot: its trace passes the pause test's checks (pause_check: within
 #     the acceleration bound, the uninterrupted plot's drawing), and when the controller
@@ -59,14 +61,20 @@ fi
 for how in abort limit; do
   "$tool" send plot.job --port "$work/link.sock" --stop-after 20000 --stop "$how" > "stop_$how.out" 2>&1
   rc=$?
-  events=$(sed -n 's/^stopped by .* after \([0-9]*\) step events$/\1/p' "stop_$how.out")
+  events=$(sed -n 's/^stopped by .* after \([0-9]*\) step events.*$/\1/p' "stop_$how.out")
   if [ "$rc" -eq 0 ] && [ -n "$events" ] && [ "$events" -lt 20100 ]; then
     ok
     echo "stopped by $how after $events step events"
   else
     bad "stop by $how: $(cat "stop_$how.out")"
   fi
+  [ "$how" = abort ] && aborted_at=$events
 done
+# 2b. Go on with the aborted plot from where it stopped (as after a reset).
+"$tool" send plot.job --port "$work/link.sock" --resume "${aborted_at:-1}" > resume.out 2>&1
+rc=$?
+if [ "$rc" -eq 0 ]; then ok; else bad "resume ($rc): $(cat resume.out)"; fi
+"$tool" sim plot.job -o host_resume.trace --resume-at "${aborted_at:-1}"
 # 3. A solid model, hidden lines worked out on the controller.
 "$tool" send solid.job --port "$work/link.sock" > solid.out 2>&1
 rc=$?
@@ -95,13 +103,13 @@ fi
 end_session $?
 
 awk '/^haloplot-trace 2$/ { k++; on = 1 } on { print > ("fw_" k ".trace") } /^end / { on = 0 }' fw.out
-# Traces 1 and 2 are the stopped plots; 3 the solid; 4 the streamed one; 5 the paused one; 6
-# and 7 the plot and the re-plot.
-if "$pause_check" plot.job fw_5.trace; then ok; else bad "the paused plot's trace"; fi
+# Traces 1 and 2 are the stopped plots; 3 the aborted one resumed; 4 the solid; 5 the
+# streamed one; 6 the paused one; 7 and 8 the plot and the re-plot.
+if "$pause_check" plot.job fw_6.trace; then ok; else bad "the paused plot's trace"; fi
 hold=$(sed -n 's/^fw hold_events=//p' fw.out)
 if [ -n "$hold" ]; then
   "$tool" sim plot.job -o host_pause.trace --pause-at "$hold"
-  if cmp -s fw_5.trace host_pause.trace; then
+  if cmp -s fw_6.trace host_pause.trace; then
     ok
     echo "paused trace identical to haloplot sim --pause-at $hold: $(wc -c < host_pause.trace) bytes"
   else
@@ -110,7 +118,7 @@ if [ -n "$hold" ]; then
 else
   echo "the hold's step count was not exact (a step came in between): compared by pause_check only"
 fi
-for pair in "3 host_solid" "4 host_stream" "6 host_plot" "7 host_replot"; do
+for pair in "3 host_resume" "4 host_solid" "5 host_stream" "7 host_plot" "8 host_replot"; do
   set -- $pair
   if [ -s "fw_$1.trace" ] && cmp -s "fw_$1.trace" "$2.trace"; then
     ok

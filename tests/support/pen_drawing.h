@@ -1,7 +1,8 @@
 // What the pen drew, from a step trace read by the independent reader
 // (tests/reference/trace_checker.h), and whether two traces drew the same: every position
 // drawn in one within a plot step of a position drawn in the other, both ways, and each motor
-// making exactly as many pen-down steps (so nothing was drawn twice or left out). The pause
+// making exactly as many pen-down steps that move the carriage (so nothing was drawn twice or
+// left out). The pause
 // test and its QEMU counterpart (tools/pause_check.cpp) compare a paused plot with the
 // uninterrupted one this way.
 #pragma once
@@ -19,11 +20,18 @@ namespace haloplot::test {
 // What the pen drew, from a trace: the positions (in half plot steps, so CoreXY's half steps
 // are whole) after every step made with the pen down, and each motor's pen-down step count.
 struct Drawn {
+  void add(const Drawn& o) {
+    at.insert(o.at.begin(), o.at.end());
+    steps[0] += o.steps[0];
+    steps[1] += o.steps[1];
+  }
   std::set<std::pair<int64_t, int64_t>> at;
   uint64_t steps[2] = {0, 0};
 };
 
-inline Drawn drawn(const reference::CheckedTrace& t) {
+// max_events: only the first that many step events (a plot aborted there), each event's
+// steps sharing its tick.
+inline Drawn drawn(const reference::CheckedTrace& t, uint64_t max_events = UINT64_MAX) {
   const reference::ReplayedPath path = reference::replay_path(t);
   std::vector<std::pair<int64_t, int>> ev;  // the replay's own order: (tick, motor), stable
   for (int m = 0; m < 2; ++m)
@@ -32,10 +40,15 @@ inline Drawn drawn(const reference::CheckedTrace& t) {
   Drawn d;
   size_t p = 0;
   bool down = false;
+  uint64_t events = 0;
   for (size_t i = 0; i < ev.size(); ++i) {
+    if (i == 0 || ev[i].first != ev[i - 1].first) ++events;
+    if (events > max_events) break;
     // The pen state before the step's tick: a pen change on a step's own tick follows it.
     while (p < t.pen.size() && int64_t(t.pen[p].first) < ev[i].first) down = t.pen[p++].second;
     if (!down) continue;
+    // Steps that move the carriage: a backlash take-up moves the motor alone, and draws nothing.
+    if (i > 0 && path.x[i] == path.x[i - 1] && path.y[i] == path.y[i - 1]) continue;
     ++d.steps[ev[i].second];
     d.at.insert({int64_t(std::llround(2 * path.x[i])), int64_t(std::llround(2 * path.y[i]))});
   }

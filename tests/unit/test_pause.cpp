@@ -10,6 +10,7 @@
 //     pen-down steps (nothing drawn twice, nothing left out);
 //   - the comparison sees a difference: a plot of a different halo width fails it.
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <random>
@@ -22,6 +23,7 @@
 #include "io/job_file.h"
 #include "pipeline/scene_input.h"
 #include "sim/simulator.h"
+#include "support/motion_jobs.h"
 #include "support/pen_drawing.h"
 #include "support/trace_limits.h"
 
@@ -35,10 +37,11 @@ struct Run {
   SimReport report;
 };
 
-Run run(const JobSpec& spec, const std::vector<Edge3>& edges, const std::vector<uint32_t>& holds) {
+Run run(const JobSpec& spec, const std::vector<Edge3>& edges, const std::vector<uint32_t>& holds,
+        uint32_t resume_at = 0) {
   std::ostringstream out;
   Run r;
-  const Status s = simulate(spec, edges, &out, &r.report, 0, TraceForm::kText, holds);
+  const Status s = simulate(spec, edges, &out, &r.report, 0, TraceForm::kText, holds, resume_at);
   CHECK_MSG(ok(s), std::string("simulate: ") + status_name(s));
   r.trace = reference::parse_trace_independently(out.str());
   CHECK_MSG(r.trace.error.empty(), "the paused trace reads: " + r.trace.error);
@@ -96,42 +99,71 @@ void paused_equals_unpaused(const std::string& label, const JobSpec& spec,
       double(plain.report.end_tick) / spec.machine.tick_hz);
 }
 
-JobSpec demo_spec() {
-  JobSpec demo;  // the README's demo machine (scenes/demo.job): the defaults, CoreXY
-  demo.drawing = DrawingEffect::kHaloed;
-  demo.draw.halo = 50;
-  demo.draw.mode = HaloMode::kPaper;
-  demo.machine.kinematics = Kinematics::kCoreXY;
-  return demo;
-}
-
-void demo_paused_100_times() {
+// The demo (Figure 4, 28 x 28 cubes) at 100 moments; `small`: 8 x 8 cubes at 30.
+void demo_paused(bool small) {
   CubeArrayParams p;
-  p.cubes = 28;
-  paused_equals_unpaused("Figure 4", demo_spec(), cube_array(p), 100);
+  p.cubes = small ? 8 : 28;
+  paused_equals_unpaused(small ? "8 x 8 cubes" : "Figure 4", test::demo_job_spec(), cube_array(p),
+                         small ? 30 : 100);
 }
 
-void solid_with_backlash_paused() {
-  const std::string job = "pause_cubes.job";
-  std::ofstream(job) << "scene " HALOPLOT_SOURCE_DIR "/scenes/pair_of_cubes.obj\n"
-                     << "drawing hidden-dashed\noutline on\nkinematics corexy\n"
-                     << "effects acceleration pen-servo backlash\nbacklash 7 3\n";
-  JobFile jf;
-  const InputError e = read_job_file(job, &jf);
-  CHECK_MSG(!e.failed(), e.message());
+void solid_with_backlash_paused(uint32_t holds) {
   std::vector<Edge3> strokes;
-  std::string error;
-  CHECK_MSG(load_job_scene(jf, &strokes, &error), error);
-  JobSpec spec = jf.spec;
-  spec.drawing = DrawingEffect::kAllEdges;  // the strokes, decided on the host, drawn whole
-  paused_equals_unpaused("pair of cubes, hidden-dashed, backlash", spec, strokes, 40);
+  const JobSpec spec = test::cubes_with_backlash_job("pause_cubes.job", &strokes);
+  paused_equals_unpaused("pair of cubes, hidden-dashed, backlash", spec, strokes, holds);
+}
+
+// An abort after E step events (the plot's first E events: an abort just stops), then the
+// plot resumed from E after a reset (from the origin): together they draw the uninterrupted
+// plot, each pen-down step exactly once, and the resumed run keeps the speed bound.
+void resumed_after_abort(const std::string& label, const JobSpec& spec,
+                         const std::vector<Edge3>& edges, uint32_t count) {
+  const Run plain = run(spec, edges, {});
+  std::set<int64_t> ticks(plain.trace.step_tick[0].begin(), plain.trace.step_tick[0].end());
+  ticks.insert(plain.trace.step_tick[1].begin(), plain.trace.step_tick[1].end());
+  const test::Drawn whole = test::drawn(plain.trace);
+  reference::Limits lim = test::trace_limits(spec, plain.report.points);
+  lim.dwell =
+      spec.effects.pen_servo ? spec.machine.pen_travel_ticks + spec.machine.pen_settle_ticks : 0;
+  double worst = 0;
+  uint32_t gaps_seen = 0;
+  for (uint32_t stop : random_holds(ticks.size(), count, 11)) {
+    const Run resumed = run(spec, edges, {}, stop);
+    test::Drawn both = test::drawn(plain.trace, stop);
+    both.add(test::drawn(resumed.trace));
+    std::string why;
+    const bool same = test::same_drawing(both, whole, &why);
+    CHECK_MSG(same, label + ", stopped after " + std::to_string(stop) + " events: " + why);
+    // The check sees a gap: the aborted part cut short by a tenth leaves ink out (when that
+    // tenth drew any).
+    test::Drawn short_by = test::drawn(plain.trace, stop - stop / 10);
+    if (short_by.steps[0] + short_by.steps[1] <
+        test::drawn(plain.trace, stop).steps[0] + test::drawn(plain.trace, stop).steps[1]) {
+      short_by.add(test::drawn(resumed.trace));
+      CHECK_MSG(!test::same_drawing(short_by, whole, &why),
+                label + ": a resume that leaves a gap compares equal");
+      ++gaps_seen;
+    }
+    // A path that starts with the travel from the origin: its vertices for the junctions.
+    reference::Limits lr = lim;
+    lr.path.insert(lr.path.begin(), {0, 0});
+    const auto res = reference::check_trace(resumed.trace, lr);
+    CHECK_MSG(res.step_jumps == 0 && res.dwell_violations == 0,
+              label + ", resumed after " + std::to_string(stop) + ": " + res.why);
+    worst = std::max(worst, res.worst_step_ratio);
+  }
+  std::printf(
+      "%s: %u aborts resumed, the two parts draw the whole plot, worst speed change at "
+      "one step %.3f of the bound (a gap seen %u times)\n",
+      label.c_str(), count, worst, gaps_seen);
+  CHECK_MSG(gaps_seen > 0, label + ": the gap check never ran");
 }
 
 // The comparison is not blind: Figure 4 at another halo width draws differently.
 void comparison_sees_a_difference() {
   CubeArrayParams p;
   p.cubes = 4;
-  JobSpec a = demo_spec(), b = demo_spec();
+  JobSpec a = test::demo_job_spec(), b = test::demo_job_spec();
   b.draw.halo = 80;
   std::string why;
   CHECK_MSG(!test::same_drawing(test::drawn(run(a, cube_array(p), {}).trace),
@@ -142,9 +174,17 @@ void comparison_sees_a_difference() {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  const bool small = argc > 1 && std::string(argv[1]) == "small";
   comparison_sees_a_difference();
-  demo_paused_100_times();
-  solid_with_backlash_paused();
+  demo_paused(small);
+  solid_with_backlash_paused(small ? 12 : 40);
+  CubeArrayParams p;
+  p.cubes = small ? 4 : 6;
+  resumed_after_abort(small ? "4 x 4 cubes" : "6 x 6 cubes", test::demo_job_spec(), cube_array(p),
+                      small ? 6 : 12);
+  std::vector<Edge3> strokes;
+  const JobSpec spec = test::cubes_with_backlash_job("resume_cubes.job", &strokes);
+  resumed_after_abort("pair of cubes, hidden-dashed, backlash", spec, strokes, small ? 3 : 8);
   return check::finish("pause");
 }

@@ -16,6 +16,7 @@
 #include "io/job_file.h"
 #include "pipeline/scene_input.h"
 #include "sim/simulator.h"
+#include "support/motion_jobs.h"
 #include "support/trace_limits.h"
 
 using namespace haloplot;
@@ -88,29 +89,11 @@ void no_jump(const std::string& label, const JobSpec& spec, const std::vector<Ed
 }
 
 void demo_and_solid_have_no_jump() {
-  JobSpec demo;  // the README's demo machine (scenes/demo.job): the defaults, CoreXY
-  demo.drawing = DrawingEffect::kHaloed;
-  demo.draw.halo = 50;
-  demo.draw.mode = HaloMode::kPaper;
-  demo.machine.kinematics = Kinematics::kCoreXY;
   CubeArrayParams p;
   p.cubes = 28;
-  no_jump("Figure 4", demo, cube_array(p));
-
-  // The pair of cubes, hidden-dashed with outlines, with backlash, as a job file gives it.
-  const std::string job = "speed_jumps_cubes.job";
-  std::ofstream(job) << "scene " HALOPLOT_SOURCE_DIR "/scenes/pair_of_cubes.obj\n"
-                     << "drawing hidden-dashed\noutline on\nkinematics corexy\n"
-                     << "effects acceleration pen-servo backlash\nbacklash 7 3\n";
-  JobFile jf;
-  const InputError e = read_job_file(job, &jf);
-  CHECK_MSG(!e.failed(), e.message());
+  no_jump("Figure 4", test::demo_job_spec(), cube_array(p));
   std::vector<Edge3> strokes;
-  std::string error;
-  CHECK_MSG(load_job_scene(jf, &strokes, &error), error);
-  JobSpec spec = jf.spec;
-  spec.drawing = DrawingEffect::kAllEdges;  // the strokes, decided on the host, drawn whole
-  CHECK(spec.effects.backlash && spec.machine.backlash[0] == 7);
+  const JobSpec spec = test::cubes_with_backlash_job("speed_jumps_cubes.job", &strokes);
   no_jump("pair of cubes, hidden-dashed, backlash", spec, strokes);
 }
 
