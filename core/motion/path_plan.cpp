@@ -163,7 +163,8 @@ Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t sta
     ymin = ends[i].y < ymin ? ends[i].y : ymin;
     ymax = ends[i].y > ymax ? ends[i].y : ymax;
   }
-  const uint64_t w = uint64_t(xmax - xmin) + 1, h = uint64_t(ymax - ymin) + 1;
+  // In 64 bits: a caller's start need not lie in the coordinate range the strokes do.
+  const uint64_t w = uint64_t(int64_t{xmax} - xmin) + 1, h = uint64_t(int64_t{ymax} - ymin) + 1;
   // Cell side: about one chain end per cell.
   uint32_t side = isqrt_u64(w * h / (2ull * n_chains + 1)) + 1;
   while ((w / side + 1) * (h / side + 1) > cells_cap(n)) side += side / 8 + 1;

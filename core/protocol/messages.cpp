@@ -1,5 +1,7 @@
 #include "protocol/messages.h"
 
+#include "geometry/contract.h"
+
 namespace haloplot {
 
 void encode_upload_begin(const UploadBegin& b, uint8_t out[kUploadBeginBytes]) {
@@ -121,9 +123,13 @@ Status decode_machine(const uint8_t* p, size_t n, JobSpec* spec) {
   uint32_t* f[13];
   machine_fields(m, f);
   for (int i = 0; i < 13; ++i) *f[i] = get_u32(p + 1 + 4 * i);
+  // The pen's start is a plot position: inside the coordinate range like every vertex (the
+  // path planner spans it together with the strokes).
+  const int32_t x = get_i32(p + 53), y = get_i32(p + 57);
+  if (x < 0 || x >= kCoordLimit || y < 0 || y >= kCoordLimit) return Status::kCoordinateOutOfRange;
   spec->machine = m;
-  spec->start_x = get_i32(p + 53);
-  spec->start_y = get_i32(p + 57);
+  spec->start_x = x;
+  spec->start_y = y;
   return Status::kOk;
 }
 

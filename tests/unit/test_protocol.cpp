@@ -9,6 +9,7 @@
 #include "../support/scenes.h"
 #include "protocol/crc32.h"
 #include "protocol/frame.h"
+#include "protocol/messages.h"
 
 using namespace haloplot;
 
@@ -134,5 +135,23 @@ int main() {
   // A frame that does not fit the caller's buffer is refused by the encoder.
   uint8_t small[8];
   CHECK_EQ(encode_frame(1, 0, nullptr, 0, small, sizeof small), size_t{0});
+  // The machine's pen start is a plot position: one outside the coordinate range is refused
+  // (the fuzzer's INT32_MIN start overflowed the path planner's grid span before).
+  {
+    haloplot::JobSpec spec;
+    uint8_t buf[haloplot::kMachineBytes];
+    haloplot::JobSpec got;
+    for (const int32_t outside : {-1, INT32_MIN, haloplot::kCoordLimit}) {
+      spec.start_x = outside;
+      haloplot::encode_machine(spec, buf);
+      CHECK(haloplot::decode_machine(buf, sizeof buf, &got) ==
+            haloplot::Status::kCoordinateOutOfRange);
+    }
+    spec.start_x = 400;
+    spec.start_y = haloplot::kCoordLimit - 1;
+    haloplot::encode_machine(spec, buf);
+    CHECK(ok(haloplot::decode_machine(buf, sizeof buf, &got)) && got.start_x == 400 &&
+          got.start_y == haloplot::kCoordLimit - 1);
+  }
   return check::finish("protocol");
 }
