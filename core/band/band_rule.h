@@ -6,28 +6,16 @@
 // that reaches past y1 is carried up: the band above draws it whole, from the lower end this
 // band saw, so a piece is never split at a border and the banded plot is the unbanded one.
 //
-// Positions along an edge are DRAW's Q0.32 fractions; y(t) = ya + dy t / 2^32 is compared with
-// a row exactly: ya 2^32 (52 bits) + dy t (53 bits) - y 2^32 (y within 2^21: 53 bits) < 2^55.
+// Positions along an edge are DRAW's Q0.32 fractions, compared with rows exactly
+// (geometry/rows.h).
 #pragma once
 #include <stdint.h>
 
 #include "geometry/contract.h"
 #include "geometry/fraction.h"
+#include "geometry/rows.h"
 
 namespace haloplot {
-
-// Rows within this distance of the coordinate range are all a band ever asks about.
-inline constexpr int64_t kBandRowLimit = int64_t{1} << (kCoordBits + 1);
-static_assert(int64_t{kCoordMax} * kFracOne + int64_t{kCoordMax} * kFracOne +
-                      kBandRowLimit * kFracOne <
-                  (int64_t{1} << 62),
-              "row comparison must fit int64_t");
-
-// Sign of y(t) - y for a position t (Q0.32, 0..2^32) along e and a row y (|y| < kBandRowLimit).
-inline int row_compare(const Edge3& e, int64_t t32, int64_t y) {
-  const int64_t v = (int64_t{e.a.y} - y) * kFracOne + int64_t{e.b.y - e.a.y} * t32;
-  return (v > 0) - (v < 0);
-}
 
 // The rows an edge covers, inclusive.
 inline int32_t edge_row_min(const Edge3& e) { return e.a.y < e.b.y ? e.a.y : e.b.y; }

@@ -1,109 +1,11 @@
 #include "band/conductor.h"
 
+#include "band/band_attempt.h"
 #include "band/band_rule.h"
 #include "memory/carve.h"
 #include "sort/in_place_sort.h"
 
 namespace haloplot {
-namespace {
-
-uint8_t* align_up(uint8_t* p) {
-  return reinterpret_cast<uint8_t*>((reinterpret_cast<uintptr_t>(p) + 7) & ~uintptr_t{7});
-}
-uint8_t* align_down(uint8_t* p) {
-  return reinterpret_cast<uint8_t*>(reinterpret_cast<uintptr_t>(p) & ~uintptr_t{7});
-}
-
-// Statuses that mean "this band is too large for the arena": the conductor halves it.
-bool does_not_fit(Status s) {
-  return s == Status::kWorkspaceTooSmall || s == Status::kCrossingCapacity ||
-         s == Status::kCutsetStorageTooSmall || s == Status::kSinkFull;
-}
-
-// A piece as a band keeps it until the band is committed: its band-local edge, its ends
-// (t0 < 2^32, t1 >= 1) and x0 + x1 of its rounded ends (the path column). 16 bytes, the size of
-// the Segment2 it becomes in place once the band fits.
-struct StoredPiece {
-  uint32_t local, t0, t1_minus_1;
-  int32_t x_sum;
-};
-static_assert(sizeof(StoredPiece) == sizeof(Segment2), "pieces turn into segments in place");
-
-struct RowPoint {
-  int32_t x, y;
-};
-bool point_less(const RowPoint& p, const RowPoint& q) { return p.x != q.x ? p.x < q.x : p.y < q.y; }
-
-bool segment_less(const Segment2& p, const Segment2& q) {
-  if (p.x0 != q.x0) return p.x0 < q.x0;
-  if (p.y0 != q.y0) return p.y0 < q.y0;
-  if (p.x1 != q.x1) return p.x1 < q.x1;
-  return p.y1 < q.y1;
-}
-
-// Is p among the sorted points?
-bool holds(const RowPoint* pts, uint32_t n, int32_t x, int32_t y) {
-  uint32_t lo = 0, hi = n;
-  const RowPoint p{x, y};
-  while (lo < hi) {
-    const uint32_t mid = lo + (hi - lo) / 2;
-    if (point_less(pts[mid], p))
-      lo = mid + 1;
-    else
-      hi = mid;
-  }
-  return lo < n && pts[lo].x == x && pts[lo].y == y;
-}
-
-}  // namespace
-
-// One try at one band: its rows, its edges, and where DRAW's output goes.
-struct BandConductor::Attempt {
-  int64_t y0 = 0, y1 = 0;
-  Gathered g{};
-  CutSet cs;
-  uint8_t* after = nullptr;  // where the CUTSET ends (or the edges, without CUT)
-  const Carry* carry_in = nullptr;
-  uint32_t n_carry_in = 0, carry_cursor = 0, carry_used = 0;
-  Carry* carry_out = nullptr;
-  RowPoint* carry_points = nullptr;  // each carried piece's lower end, rounded (for joining)
-  uint32_t n_carry_out = 0, carry_capacity = 0;
-  StoredPiece* pieces = nullptr;
-  uint32_t n_pieces = 0, piece_capacity = 0;
-  size_t need = 0;  // bytes asked for by the stage that did not fit
-
-  // DRAW's sink: keep what this band owns, carry what runs past its top (band_rule.h).
-  static Status on_span(void* ctx, const Span& s) {
-    Attempt& a = *static_cast<Attempt*>(ctx);
-    const Edge3& e = a.g.edges[s.edge];
-    const uint32_t id = a.g.id(s.edge);
-    const int64_t up = upper_end(e, s.t0, s.t1), low = lower_end(e, s.t0, s.t1);
-    if (row_compare(e, up, a.y0) < 0) return Status::kOk;  // below: an earlier band drew it
-    int64_t lower = low;
-    if (row_compare(e, low, a.y0) < 0) {  // began below this band: continue the carried piece
-      while (a.carry_cursor < a.n_carry_in && a.carry_in[a.carry_cursor].edge < id)
-        ++a.carry_cursor;
-      if (a.carry_cursor == a.n_carry_in || a.carry_in[a.carry_cursor].edge != id)
-        return Status::kBandCarryLost;
-      lower = int64_t{a.carry_in[a.carry_cursor++].lower} + (rising(e) ? 0 : 1);
-      ++a.carry_used;
-    }
-    if (row_compare(e, up, a.y1) >= 0) {                       // runs past the top
-      if (row_compare(e, low, a.y1) >= 0) return Status::kOk;  // wholly above: a later band's
-      if (a.n_carry_out == a.carry_capacity) return Status::kBandCarryLost;  // one per edge
-      span_point(e, lower, &a.carry_points[a.n_carry_out].x, &a.carry_points[a.n_carry_out].y);
-      a.carry_out[a.n_carry_out++] = Carry{id, uint32_t(lower - (rising(e) ? 0 : 1))};
-      return Status::kOk;
-    }
-    if (a.n_pieces == a.piece_capacity) return Status::kSinkFull;
-    const int64_t t0 = rising(e) ? lower : up, t1 = rising(e) ? up : lower;
-    Segment2 g;
-    span_point(e, t0, &g.x0, &g.y0);
-    span_point(e, t1, &g.x1, &g.y1);
-    a.pieces[a.n_pieces++] = StoredPiece{s.edge, uint32_t(t0), uint32_t(t1 - 1), g.x0 + g.x1};
-    return Status::kOk;
-  }
-};
 
 Status BandConductor::begin(const BandSpec& spec, EdgeSource source, void* arena,
                             size_t arena_bytes) {
@@ -423,11 +325,15 @@ Status BandConductor::commit_band(Attempt& a) {
     u[i] = g;
   }
   for (uint32_t j = 0; j < ndi; ++j) u[np + j] = deferred_in[j];
-  const uint32_t n_defer = defer_joined(a, u, nu, pieces_end + size_t{ndi} * sizeof(Segment2));
+  const uint32_t n_defer = defer_joined(a, u, np, nu, pieces_end + size_t{ndi} * sizeof(Segment2));
   // Forward copies: each destination starts below its source (the carry and the segments sit
   // past the band's edges, which are at least as large).
   Carry* carry = reinterpret_cast<Carry*>(arena_);
   for (uint32_t i = 0; i < nco; ++i) carry[i] = a.carry_out[i];
+  if (a.carry_runs_out != nullptr) {
+    CarryRun* runs = carry_runs(arena_, nco);
+    for (uint32_t i = 0; i < nco; ++i) runs[i] = a.carry_runs_out[i];
+  }
   Segment2* dest = reinterpret_cast<Segment2*>(arena_ + carry_bytes(nco));
   for (uint32_t i = 0; i < nu; ++i) {
     const Segment2 g = u[i];
@@ -451,10 +357,14 @@ Status BandConductor::commit_band(Attempt& a) {
 }
 
 // Puts the segments joined to a carried piece's lower end (through shared ends, a few links
-// deep) first, the rest after them in column order, and returns how many are deferred. Its
-// workspace (the ends found so far, sorted, and a mark per segment) comes from `free`; with too
-// little room, or more deferred than a quarter of the arena holds, nothing is deferred.
-uint32_t BandConductor::defer_joined(const Attempt& a, Segment2* u, uint32_t nu, uint8_t* free) {
+// deep) first, the rest after them in column order, and returns how many are deferred. Only the
+// band's own segments (the first n_own of u) are deferred: those deferred to it from below are
+// drawn here, so a piece carried across many bands cannot gather its neighbours band after
+// band (a long hidden edge of a solid would, until the arena is full). Its workspace (the ends
+// found so far, sorted, and a mark per segment) comes from `free`; with too little room, or
+// more deferred than a quarter of the arena holds, nothing is deferred.
+uint32_t BandConductor::defer_joined(const Attempt& a, Segment2* u, uint32_t n_own, uint32_t nu,
+                                     uint8_t* free) {
   const uint32_t nco = a.n_carry_out;
   RowPoint* pts = reinterpret_cast<RowPoint*>(align_up(free));
   const size_t cap = size_t{nco} + 2 * size_t{nu};
@@ -467,7 +377,7 @@ uint32_t BandConductor::defer_joined(const Attempt& a, Segment2* u, uint32_t nu,
     for (int round = 0; round < kJoinDepth; ++round) {
       sort_in_place(pts, n_pts, &point_less);
       const uint32_t sorted = n_pts;
-      for (uint32_t i = 0; i < nu; ++i) {
+      for (uint32_t i = 0; i < n_own; ++i) {
         if (marks[i] ||
             !(holds(pts, sorted, u[i].x0, u[i].y0) || holds(pts, sorted, u[i].x1, u[i].y1)))
           continue;
@@ -567,16 +477,22 @@ Status BandConductor::try_band(int32_t y1, bool* fitted) {
   a.y0 = next_row_;
   a.y1 = y1;
   const int64_t margin = stats_.margin;
-  Status s = gather(a.y0 - margin, a.y1 - 1 + margin, &a.g);
-  if (s == Status::kWorkspaceTooSmall)
-    a.need = front_bytes() + size_t{a.g.n} * (sizeof(Edge3) + sizeof(uint32_t)) + 16;
-  a.after = a.g.free_lo;
-  if (ok(s) && cuts()) {
-    const uint64_t t0 = now();
-    s = cut_band(a.g, &a.cs, &a.after, &a.need);
-    stats_.cut_ticks += now() - t0;
+  Status s;
+  if (solid_.vertex != nullptr) {  // a solid: its faces and edges, then its hidden lines
+    s = gather_solid(a);
+    if (ok(s)) s = hide_band(a);
+  } else {
+    s = gather(a.y0 - margin, a.y1 - 1 + margin, &a.g);
+    if (s == Status::kWorkspaceTooSmall)
+      a.need = front_bytes() + size_t{a.g.n} * (sizeof(Edge3) + sizeof(uint32_t)) + 16;
+    a.after = a.g.free_lo;
+    if (ok(s) && cuts()) {
+      const uint64_t t0 = now();
+      s = cut_band(a.g, &a.cs, &a.after, &a.need);
+      stats_.cut_ticks += now() - t0;
+    }
+    if (ok(s)) s = draw_band(a);
   }
-  if (ok(s)) s = draw_band(a);
   if (ok(s)) s = commit_band(a);
   *fitted = !does_not_fit(s);
   const uint64_t spent = now() - t_start;

@@ -36,9 +36,11 @@
 #include <stdint.h>
 
 #include "band/edge_source.h"
+#include "band/solid_source.h"
 #include "cut/cut.h"
 #include "draw/draw.h"
 #include "motion/path_plan.h"
+#include "solid/modes.h"
 #include "status/status.h"
 
 namespace haloplot {
@@ -54,6 +56,8 @@ struct BandSpec {
   // > 0: at most this many edges in a band (a controller that receives bands over its link
   // stages the next band in a buffer of this many edges); more is a band that does not fit.
   uint32_t max_band_edges = 0;
+  // A solid (begin_solid): the hidden-line strokes of each band in this style (solid/modes.h).
+  StrokeStyle style;
 };
 
 // A band sent from outside: a host ran the same conductor over the whole scene with the same
@@ -116,6 +120,14 @@ struct BandStats {
 
 class BandConductor {
  public:
+  // A solid's hidden lines in bands (spec.style: hidden-removed or hidden-dashed): each band
+  // takes the faces and drawn edges meeting its rows and runs the topology-free method on them
+  // in its rows only (solid/hidden_lines.h, HiddenParams::band): Franklin's test of a piece's
+  // middle asks the faces of its grid cell, all of which meet the band. Pieces are cut at the
+  // band's borders (band_rule.h row_window) and carried up with their q, so the band owning a
+  // piece's upper end strokes it whole, dashes measured from its true start. No margin: a cut
+  // point inside the rows is a crossing with an edge, or a vertex, meeting those rows.
+  Status begin_solid(const BandSpec& spec, SolidSource source, void* arena, size_t arena_bytes);
   // Checks the scene (one read) and the settings; nothing is cut yet.
   Status begin(const BandSpec& spec, EdgeSource source, void* arena, size_t arena_bytes);
   // The same plot from streamed bands, with the margin the host's run measured: no margin
@@ -137,11 +149,25 @@ class BandConductor {
     return static_cast<BandConductor*>(self)->next(points, n);
   }
 
+  // One try at one band (band_attempt.h, internal to core/band).
+  struct Attempt;
+
  private:
   // A piece running past a band's top: its edge and its lower end along it, stored as t0 for
   // a rising edge and t1 - 1 for a falling one, so 32 bits hold it (t0 < 2^32 <= ... t1 > 0).
+  // A solid's piece also keeps its q and whether it is hidden: the band above merges it with
+  // its own first piece of the edge only when both agree, as one unbanded run would.
   struct Carry {
     uint32_t edge, lower;
+  };
+  // A solid's carried piece also keeps its run's q, and `join` (0 < join < 2^32): where the
+  // run ends, coming up (the border, or where a sliver too short to test begins; the band above
+  // tells the sliver's q). A run is hidden exactly when its q is not 0 (the band's fallback
+  // uses no V.C. table; a class decision is kQiUnknown and hidden). Kept beside the carry, in
+  // solid mode only, so an edge plot's carry stays 8 bytes an edge.
+  struct CarryRun {
+    uint32_t join;
+    int32_t q;
   };
   struct Gathered {  // one attempt's edges: Edge3 at the front, source indices at the top
     Edge3* edges;
@@ -151,7 +177,6 @@ class BandConductor {
     uint8_t* free_hi;
     uint32_t id(uint32_t local) const { return ids_end[-1 - int64_t{local}]; }
   };
-  struct Attempt;
 
   Status gather(int64_t lo, int64_t hi, Gathered* g);
   Status cut_band(const Gathered& g, CutSet* cs, uint8_t** after, size_t* need);
@@ -160,10 +185,19 @@ class BandConductor {
   Status try_band(int32_t y1, bool* fitted);
   Status next_streamed_band();
   Status draw_band(Attempt& a);
+  Status gather_solid(Attempt& a);  // solid_band.cpp
+  Status hide_band(Attempt& a);
   Status commit_band(Attempt& a);
-  uint32_t defer_joined(const Attempt& a, Segment2* u, uint32_t nu, uint8_t* free);
+  uint32_t defer_joined(const Attempt& a, Segment2* u, uint32_t n_own, uint32_t nu, uint8_t* free);
   static constexpr int kJoinDepth = 4;  // links followed from a carried piece's lower end
-  static size_t carry_bytes(uint32_t n) { return (size_t{n} * sizeof(Carry) + 7) & ~size_t{7}; }
+  size_t carry_bytes(uint32_t n) const {
+    const size_t runs = solid_.vertex != nullptr ? size_t{n} * sizeof(CarryRun) : 0;
+    return ((size_t{n} * sizeof(Carry) + 7) & ~size_t{7}) + runs;
+  }
+  // The runs stand after the carry entries at the front of the arena.
+  CarryRun* carry_runs(uint8_t* carry, uint32_t n) const {
+    return reinterpret_cast<CarryRun*>(carry + ((size_t{n} * sizeof(Carry) + 7) & ~size_t{7}));
+  }
   // The front of the arena between bands: the carry and the segments deferred to the next band.
   size_t front_bytes() const {
     return carry_bytes(n_carry_) + ((size_t{n_defer_} * sizeof(Segment2) + 7) & ~size_t{7});
@@ -190,6 +224,8 @@ class BandConductor {
   int64_t height_ = 0;               // the next attempt's height
   bool margin_known_ = false;
   bool done_ = true;
+  SolidSource solid_{};                   // solid mode when solid_.vertex is set
+  uint32_t solid_crossings_ = 0;          // the last band's CUT records: the next first guess
   BandStream stream_{};                   // streamed mode when stream_.next is set
   const uint32_t* stream_ids_ = nullptr;  // scene indices of the streamed band's edges
   uint32_t n_carry_ = 0;                  // carry entries at the front of the arena

@@ -3,6 +3,7 @@
 #include "cut/near_miss.h"
 #include "geometry/fraction.h"
 #include "geometry/predicates.h"
+#include "geometry/rows.h"
 #include "memory/carve.h"
 #include "sort/in_place_sort.h"
 
@@ -55,6 +56,8 @@ size_t scratch_for(uint32_t cells, uint32_t cell_pairs, uint32_t n_edges, size_t
 struct Recorder {
   Crossing* out;
   uint32_t capacity;
+  bool rows = false;  // CutParams::rows
+  int32_t row_lo = 0, row_hi = 0;
   uint32_t stored = 0;
   bool overflow = false;
 
@@ -103,11 +106,14 @@ void test_pair(const Grid& g, const CellBox& cb, const Edge3* edges, const Entry
       ++st.equal_depth;
       return;
     }
+    const uint32_t behind = depth < 0 ? ep : eq, front = depth < 0 ? eq : ep;
+    const uint32_t t = frac_q32_small(depth < 0 ? x.tn : x.un, x.den);
+    if (rec.rows && !position_in_rows(edges[behind], t, rec.row_lo, rec.row_hi)) {
+      ++st.outside_rows;
+      return;
+    }
     ++st.crossings;
-    if (depth < 0)
-      rec.add(ep, eq, frac_q32_small(x.tn, x.den));
-    else
-      rec.add(eq, ep, frac_q32_small(x.un, x.den));
+    rec.add(behind, front, t);
     return;
   }
   if (reach <= 0) return;
@@ -226,7 +232,8 @@ Status run_cut(const CutPlan& plan, const Edge3* edges, void* scratch, size_t sc
 
   uint32_t* first = static_cast<uint32_t*>(cutset_storage);
   Crossing* records = reinterpret_cast<Crossing*>(first + n + 1);
-  Recorder rec{records, cutset_capacity(n, cutset_storage_bytes)};
+  Recorder rec{records, cutset_capacity(n, cutset_storage_bytes), plan.params.rows,
+               plan.params.row_lo, plan.params.row_hi};
   if (plan.params.compact_cells)
     fill_and_test<CompactEntry>(plan, edges, scratch, rec, st);
   else

@@ -32,6 +32,11 @@ struct CutParams {
   // jumping through the edge array: faster, at 16 more bytes per pair. Off for tight RAM.
   bool compact_cells = true;
   int32_t reach = 0;  // also record near misses up to this many steps apart (exact halo); 0: off
+  // Record (and count) only the crossings whose position on the behind edge lies in rows
+  // [row_lo, row_hi) (geometry/rows.h): a solid's band needs no cut outside its rows, and a
+  // band one row high would otherwise store every crossing of the faces that meet it.
+  bool rows = false;
+  int32_t row_lo = 0, row_hi = 0;
   ProgressFn progress = nullptr;
   void* progress_context = nullptr;
   PhaseFn phase = nullptr;  // optional
@@ -53,6 +58,7 @@ struct CutStats {
   uint64_t near_misses = 0;   // near-miss records found
   uint64_t rejected = 0;      // crossings seen in a cell that does not own them (C6.3)
   uint64_t equal_depth = 0;   // crossings where both edges have the same depth: not cut
+  uint64_t outside_rows = 0;  // crossings outside CutParams' rows: not recorded, not counted
   uint32_t max_per_edge = 0;  // the largest group, which sizes DRAW's scratch
 };
 

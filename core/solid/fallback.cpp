@@ -1,5 +1,6 @@
 #include "solid/fallback.h"
 
+#include "geometry/rows.h"
 #include "geometry/wide.h"
 #include "memory/carve.h"
 #include "solid/classify.h"
@@ -73,19 +74,29 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
     const Point3 a = topo.vertices[se.v0], b = topo.vertices[se.v1];
     const int64_t dx = b.x - a.x, dy = b.y - a.y;
     if (dx == 0 && dy == 0) continue;  // a point on paper: nothing to draw
+    // The part of the edge this run draws: all of it, or the band's rows.
+    int64_t lo = 0, hi = kOne;
+    if (params.window) {
+      const RowWindow w = row_window(Edge3{a, b}, params.row_lo, params.row_hi);
+      lo = w.lo;
+      hi = w.hi;
+      if (lo >= hi) continue;
+    }
     const bool by_class =
         params.use_classes && (se.cls == EdgeClass::kH1 || se.cls == EdgeClass::kH2);
     const bool vc_edge = params.use_vc && (se.cls == EdgeClass::kH3 || se.cls == EdgeClass::kH4);
-    FallbackPiece pending{e, 0, 0, 0, false};
+    FallbackPiece pending{e, 0, 0, 0, false, true};
     bool have = false;
     Status status = Status::kOk;
     int32_t last_q = 0;
     bool last_hidden = false;
     auto emit = [&](int64_t t0, int64_t t1) {
+      if (t0 < lo) t0 = lo;
+      if (t1 > hi) t1 = hi;
       if (t1 <= t0 || status != Status::kOk) return;
       ++st.pieces;
       int32_t q = kQiUnknown;
-      bool hidden = false;
+      bool hidden = false, tested = true;
       if (by_class) {
         ++st.class_saved;
         hidden = true;
@@ -93,6 +104,7 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
         ++st.short_pieces;
         q = last_q;
         hidden = last_hidden;
+        tested = false;
       } else {
         const uint32_t end_v = t0 == 0 ? se.v0 : (t1 == kOne ? se.v1 : kNoFace);
         if (vc_edge && end_v != kNoFace && (vc[end_v] == kVcVisible || vc[end_v] == kVcHidden)) {
@@ -124,12 +136,13 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
       }
       last_q = q;
       last_hidden = hidden;
-      if (have && pending.q == q && pending.hidden == hidden && pending.t1 == t0) {
+      if (have && !params.window && pending.q == q && pending.hidden == hidden &&
+          pending.t1 == t0) {
         pending.t1 = t1;
         return;
       }
       if (have) status = sink.emit(sink.context, pending);
-      pending = FallbackPiece{e, t0, t1, q, hidden};
+      pending = FallbackPiece{e, t0, t1, q, hidden, tested};
       have = true;
     };
     // Cut points: every crossing behind another edge, every vertex the edge passes through.

@@ -27,6 +27,13 @@ struct FallbackParams {
   bool any_facing = false;  // count back faces too (open or non-manifold surfaces: both sides show)
   bool use_classes = false;  // Kira: skip H1/H2 edges (needs classify())
   bool use_vc = false;       // Kira: the V.C. table (needs classify())
+  // A band's rows [row_lo, row_hi) only (band/band_rule.h): each sloped edge is cut where it
+  // enters and leaves them (row_border) and only the pieces between are tested and emitted; a
+  // level edge is whole in the band that holds its row. Every face that can cover a point of
+  // those pieces meets rows [row_lo, row_hi]: a band's input must hold them all. Pieces are
+  // emitted as cut, not merged (FallbackPiece::tested says which ones were tested).
+  bool window = false;
+  int32_t row_lo = 0, row_hi = 0;
 };
 
 struct FallbackStats {
@@ -45,6 +52,9 @@ struct FallbackPiece {
   int64_t t0, t1;
   int32_t q;    // halves of cover; kQiUnknown when a class or the V.C. decided
   bool hidden;  // q != 0, or the class or V.C. said so
+  // False for a piece too short to hold a test point: it took the q of the piece before it.
+  // A band (window) emits every piece unmerged, so its caller can merge across the borders.
+  bool tested;
 };
 
 struct FallbackSink {

@@ -38,20 +38,20 @@ struct Adapter {
 Status qi_piece(void* ctx, const QiPiece& p) {
   const Adapter* a = static_cast<const Adapter*>(ctx);
   return a->sink.piece(a->sink.context,
-                       HiddenPiece{p.edge, a->edges + p.edge, p.t0, p.t1, p.q, p.q != 0});
+                       HiddenPiece{p.edge, a->edges + p.edge, p.t0, p.t1, p.q, p.q != 0, true});
 }
 
 Status fallback_piece(void* ctx, const FallbackPiece& p) {
   const Adapter* a = static_cast<const Adapter*>(ctx);
   return a->sink.piece(a->sink.context,
-                       HiddenPiece{p.edge, a->edges + p.edge, p.t0, p.t1, p.q, p.hidden});
+                       HiddenPiece{p.edge, a->edges + p.edge, p.t0, p.t1, p.q, p.hidden, p.tested});
 }
 
 Status outline_piece(void* ctx, const OutlineSegment& s) {
   const Adapter* a = static_cast<const Adapter*>(ctx);
   if (a->sink.outline == nullptr) return Status::kOk;
   return a->sink.outline(a->sink.context,
-                         HiddenPiece{s.edge, a->edges + s.edge, s.t0, s.t1, 0, false});
+                         HiddenPiece{s.edge, a->edges + s.edge, s.t0, s.t1, 0, false, true});
 }
 
 Status short_of(const Arena& a, HiddenReport* r) {
@@ -69,12 +69,25 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
   Status s;
 
   // Topology, classes, and every edge as CUT sees it.
-  r.bytes_topology = topology_bytes(in);
-  uint8_t* topo_mem = arena.take(r.bytes_topology);
-  if (topo_mem == nullptr) return *report = r, short_of(arena, report);
+  // The build takes what it needs of the free arena and keeps its first kept_bytes.
   Topology topo;
-  s = build_topology(in, topo_mem, r.bytes_topology, &topo);
+  TopologyOptions to;
+  if (params.band) {  // the band's fallback reads no stars, and no side beyond its rows
+    to.stars = false;
+    to.rows = true;
+    to.row_lo = params.band_y0;
+    to.row_hi = params.band_y1 - 1;
+  }
+  s = build_topology(in, arena.base + arena.used, arena.size - arena.used, &topo, to);
+  if (s == Status::kWorkspaceTooSmall) {
+    arena.need = arena.used + topology_bytes(in);
+    return *report = r, short_of(arena, report);
+  }
   if (s != Status::kOk) return *report = r, s;
+  r.bytes_topology = topo.kept_bytes;
+  arena.take(topo.kept_bytes);
+  const size_t build_high = arena.used + topology_scratch_bytes(in);
+  if (arena.high < build_high && build_high <= arena.size) arena.high = build_high;
   r.check = topo.check;
   r.n_drawn = topo.n_drawn;
   r.n_edges = topo.n_edges;
@@ -112,14 +125,16 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
   r.coincident_vertices = inc.coincident_vertices;
 
   // The method.
-  const bool manifold = topo.check.manifold();
+  const bool manifold = params.band ? params.closed : topo.check.manifold();
   if (params.method == HiddenMethod::kQi && !manifold) return *report = r, Status::kNotManifold;
-  bool use_qi = params.method == HiddenMethod::kQi ||
-                (params.method == HiddenMethod::kAuto && manifold && topo.check.loose_edges == 0);
+  bool use_qi = !params.band &&
+                (params.method == HiddenMethod::kQi ||
+                 (params.method == HiddenMethod::kAuto && manifold && topo.check.loose_edges == 0));
   if (!use_qi)
-    r.reason = params.method == HiddenMethod::kFallback
-                   ? FallbackReason::kAsked
-                   : (manifold ? FallbackReason::kLooseEdges : FallbackReason::kNotManifold);
+    r.reason = params.band                                ? FallbackReason::kBand
+               : params.method == HiddenMethod::kFallback ? FallbackReason::kAsked
+               : manifold                                 ? FallbackReason::kLooseEdges
+                                                          : FallbackReason::kNotManifold;
   Adapter adapter{sink, edges};
   const size_t before_method = arena.used;
   if (use_qi) {
@@ -155,6 +170,12 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
   FallbackParams fp;
   fp.any_facing = !manifold;
   fp.use_classes = fp.use_vc = params.kira && manifold;
+  if (params.band) {
+    fp.use_vc = false;
+    fp.window = true;
+    fp.row_lo = params.band_y0;
+    fp.row_hi = params.band_y1;
+  }
   r.bytes_fallback = fallback_bytes(topo);
   uint8_t* fb_mem = arena.take(r.bytes_fallback);
   if (fb_mem == nullptr) return *report = r, short_of(arena, report);

@@ -31,6 +31,7 @@ enum class FallbackReason : uint8_t {
   kNotManifold,  // MeshCheck says how
   kLooseEdges,   // lines on no face: QI has no faces to carry them
   kConflicts,    // QI met vertices with two values: the mesh pierces itself
+  kBand,         // a band of a banded plot: the faces are local, the propagation is not
 };
 
 struct HiddenParams {
@@ -40,6 +41,13 @@ struct HiddenParams {
   CutParams cut;
   uint32_t crossing_capacity = 0;   // CUTSET records (CUT says the count if short)
   uint32_t incidence_capacity = 0;  // vertex-on-edge incidences
+  // A band of a solid plotted in bands (band/conductor.h): the input holds the faces and edges
+  // meeting rows [band_y0, band_y1) and only those rows are drawn (the fallback's window, no
+  // V.C. table: a vertex outside the rows may miss faces of its star). `closed` is the whole
+  // model's check: a band's part of a closed solid is open at its borders.
+  bool band = false;
+  bool closed = false;
+  int32_t band_y0 = 0, band_y1 = 0;
 };
 
 struct HiddenReport {
@@ -67,6 +75,7 @@ struct HiddenPiece {
   int64_t t0, t1;
   int32_t q;
   bool hidden;
+  bool tested;  // false: too short for a test point (solid/fallback.h); a band merges it
 };
 
 struct HiddenSink {

@@ -33,29 +33,45 @@ uint32_t find_key(const SideKey* keys, uint32_t n, uint64_t key) {
   return lo < n && keys[lo].key == key ? lo : n;
 }
 
+// The arrays the topology keeps, for n edges in all (drawn and diagonals).
 template <typename C>
-void count_arrays(C& c, const SolidInput& in) {
+void count_kept(C& c, const SolidInput& in, size_t n) {
   const size_t sides = size_t{in.n_triangles} * 3;
-  c.template take<SolidEdge>(in.n_edges + sides);  // edges
-  c.template take<uint32_t>(sides);                // side_edge
-  c.template take<uint32_t>(in.n_vertices + 1);    // vertex_edge_first
-  c.template take<uint32_t>(2 * (in.n_edges + sides));
+  c.template take<SolidEdge>(n);                 // edges
+  c.template take<uint32_t>(in.n_vertices + 1);  // vertex_edge_first
+  c.template take<uint32_t>(2 * n);              // vertex_edges
   c.template take<uint32_t>(in.n_vertices + 1);  // vertex_face_first
-  c.template take<uint32_t>(sides);
-  c.template take<SideKey>(in.n_edges);          // drawn keys (dead after the build)
-  c.template take<SideKey>(sides);               // side keys (dead after the build)
+  c.template take<uint32_t>(sides);              // vertex_faces
+}
+
+// The build's scratch, dead once it returns: carved from the top of the buffer so the kept
+// arrays below it end where the caller's next stage may begin.
+template <typename C>
+void count_scratch(C& c, const SolidInput& in) {
+  const size_t sides = size_t{in.n_triangles} * 3;
+  c.template take<SideKey>(in.n_edges);          // drawn keys
+  c.template take<SideKey>(sides);               // side keys
   c.template take<uint8_t>(in.n_edges + sides);  // faces per edge
+  c.template take<uint32_t>(sides);              // the edge of each triangle side
 }
 
 }  // namespace
 
 size_t topology_bytes(const SolidInput& in) {
-  ByteCounter c;
-  count_arrays(c, in);
-  return c.total + 8;
+  ByteCounter kept, scratch;
+  count_kept(kept, in, size_t{in.n_edges} + size_t{in.n_triangles} * 3);  // at most this many
+  count_scratch(scratch, in);
+  return kept.total + scratch.total + 8;
 }
 
-Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology* out) {
+size_t topology_scratch_bytes(const SolidInput& in) {
+  ByteCounter scratch;
+  count_scratch(scratch, in);
+  return scratch.total;
+}
+
+Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology* out,
+                      const TopologyOptions& options) {
   if (in.n_edges > 0x3fffffffu || in.n_triangles > 0x3fffffffu / 3) return Status::kTooManyEdges;
   for (uint32_t i = 0; i < in.n_vertices; ++i)
     if (!in_range(in.vertices[i])) return Status::kCoordinateOutOfRange;
@@ -70,47 +86,76 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
     if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) return Status::kBadParameter;
   }
   const uint32_t sides = in.n_triangles * 3;
-  Carver carve(buffer, bytes);
+  // Scratch from the top of the buffer (8-byte aligned), the kept arrays from the bottom once
+  // the number of edges is known.
+  ByteCounter scratch_size;
+  count_scratch(scratch_size, in);
+  uint8_t* lo =
+      reinterpret_cast<uint8_t*>((reinterpret_cast<uintptr_t>(buffer) + 7) & ~uintptr_t{7});
+  uint8_t* hi = reinterpret_cast<uint8_t*>(
+      (reinterpret_cast<uintptr_t>(static_cast<uint8_t*>(buffer) + bytes)) & ~uintptr_t{7});
+  if (buffer == nullptr || hi < lo || size_t(hi - lo) < scratch_size.total)
+    return Status::kWorkspaceTooSmall;
+  Carver scratch(hi - scratch_size.total, scratch_size.total);
+  SideKey* drawn = scratch.take<SideKey>(in.n_edges);
+  SideKey* side = scratch.take<SideKey>(sides);
+  uint8_t* nfaces = scratch.take<uint8_t>(in.n_edges + size_t{sides});
+  uint32_t* side_edge = scratch.take<uint32_t>(sides);  // triangle t's side k at [3t + k]
   Topology t;
   t.vertices = in.vertices;
   t.n_vertices = in.n_vertices;
   t.triangles = in.triangles;
   t.n_triangles = in.n_triangles;
-  t.edges = carve.take<SolidEdge>(in.n_edges + sides);
-  t.side_edge = carve.take<uint32_t>(sides);
-  t.vertex_edge_first = carve.take<uint32_t>(in.n_vertices + 1);
-  t.vertex_edges = carve.take<uint32_t>(2 * (size_t{in.n_edges} + sides));
-  t.vertex_face_first = carve.take<uint32_t>(in.n_vertices + 1);
-  t.vertex_faces = carve.take<uint32_t>(sides);
-  SideKey* drawn = carve.take<SideKey>(in.n_edges);
-  SideKey* side = carve.take<SideKey>(sides);
-  uint8_t* nfaces = carve.take<uint8_t>(in.n_edges + sides);
-  if (carve.short_) return Status::kWorkspaceTooSmall;
 
   // Drawn edges keep their input order and index; a repeat is an input error.
-  for (uint32_t e = 0; e < in.n_edges; ++e) {
-    const uint32_t a = in.edge_pairs[2 * e], b = in.edge_pairs[2 * e + 1];
-    t.edges[e] = SolidEdge{a, b, {kNoFace, kNoFace}, EdgeClass::kLoose, true, false};
-    drawn[e] = SideKey{key_of(a, b), e};
-  }
+  for (uint32_t e = 0; e < in.n_edges; ++e)
+    drawn[e] = SideKey{key_of(in.edge_pairs[2 * e], in.edge_pairs[2 * e + 1]), e};
   heap_sort(drawn, in.n_edges, key_less);
   for (uint32_t i = 1; i < in.n_edges; ++i)
     if (drawn[i].key == drawn[i - 1].key) return Status::kBadParameter;
 
   // Triangle sides that are not drawn edges become diagonals, numbered in key order so the
-  // result does not depend on the triangle order.
+  // result does not depend on the triangle order. Their keys come first, so the kept arrays
+  // are carved for the exact number of edges.
   uint32_t n_side = 0;
+  auto in_rows = [&](uint32_t a, uint32_t b) {
+    const int32_t ya = in.vertices[a].y, yb = in.vertices[b].y;
+    return !options.rows ||
+           ((ya < yb ? yb : ya) >= options.row_lo && (ya < yb ? ya : yb) <= options.row_hi);
+  };
   for (uint32_t s = 0; s < sides; ++s) {
     const Triangle& tri = in.triangles[s / 3];
     const uint32_t a = tri.v[s % 3], b = tri.v[(s % 3 + 1) % 3];
     const uint64_t k = key_of(a, b);
-    const uint32_t d = find_key(drawn, in.n_edges, k);
-    if (d < in.n_edges)
-      t.side_edge[s] = drawn[d].ref;
-    else
+    if (find_key(drawn, in.n_edges, k) == in.n_edges && in_rows(a, b))
       side[n_side++] = SideKey{k, s};
   }
   heap_sort(side, n_side, key_less);
+  uint32_t n_diagonals = 0;
+  for (uint32_t i = 0; i < n_side; ++i)
+    if (i == 0 || side[i].key != side[i - 1].key) ++n_diagonals;
+  Carver carve(lo, size_t(hi - lo) - scratch_size.total);
+  t.edges = carve.take<SolidEdge>(size_t{in.n_edges} + n_diagonals);
+  if (options.stars) {
+    t.vertex_edge_first = carve.take<uint32_t>(in.n_vertices + 1);
+    t.vertex_edges = carve.take<uint32_t>(2 * (size_t{in.n_edges} + n_diagonals));
+    t.vertex_face_first = carve.take<uint32_t>(in.n_vertices + 1);
+    t.vertex_faces = carve.take<uint32_t>(sides);
+  }
+  if (carve.short_) return Status::kWorkspaceTooSmall;
+  t.kept_bytes = size_t(carve.next - static_cast<uint8_t*>(buffer));
+  for (uint32_t e = 0; e < in.n_edges; ++e)
+    t.edges[e] = SolidEdge{in.edge_pairs[2 * e],
+                           in.edge_pairs[2 * e + 1],
+                           {kNoFace, kNoFace},
+                           EdgeClass::kLoose,
+                           true,
+                           false};
+  for (uint32_t s = 0; s < sides; ++s) {
+    const Triangle& tri = in.triangles[s / 3];
+    const uint32_t d = find_key(drawn, in.n_edges, key_of(tri.v[s % 3], tri.v[(s % 3 + 1) % 3]));
+    side_edge[s] = d < in.n_edges ? drawn[d].ref : kNoFace;  // diagonals below
+  }
   uint32_t n = in.n_edges;
   for (uint32_t i = 0; i < n_side; ++i) {
     if (i == 0 || side[i].key != side[i - 1].key) {
@@ -118,7 +163,7 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
       const uint32_t b = static_cast<uint32_t>(side[i].key & 0xffffffffu);
       t.edges[n++] = SolidEdge{a, b, {kNoFace, kNoFace}, EdgeClass::kLoose, false, false};
     }
-    t.side_edge[side[i].ref] = n - 1;
+    side_edge[side[i].ref] = n - 1;
   }
   t.n_edges = n;
   t.n_drawn = in.n_edges;
@@ -126,11 +171,12 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
   // Attach faces: a side running v0 -> v1 takes slot 0, v1 -> v0 slot 1.
   for (uint32_t e = 0; e < n; ++e) nfaces[e] = 0;
   for (uint32_t s = 0; s < sides; ++s) {
+    if (side_edge[s] == kNoFace) continue;  // a band's side beyond its rows
     const Triangle& tri = in.triangles[s / 3];
     const uint32_t a = tri.v[s % 3];
-    SolidEdge& e = t.edges[t.side_edge[s]];
+    SolidEdge& e = t.edges[side_edge[s]];
     const int slot = a == e.v0 ? 0 : 1;
-    if (nfaces[t.side_edge[s]] < 255) ++nfaces[t.side_edge[s]];
+    if (nfaces[side_edge[s]] < 255) ++nfaces[side_edge[s]];
     if (e.face[slot] == kNoFace)
       e.face[slot] = s / 3;
     else if (e.face[1 - slot] == kNoFace)
@@ -160,6 +206,10 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
     }
   }
 
+  if (!options.stars) {
+    *out = t;
+    return Status::kOk;
+  }
   // Stars, by counting then filling.
   for (uint32_t v = 0; v <= in.n_vertices; ++v) t.vertex_edge_first[v] = t.vertex_face_first[v] = 0;
   for (uint32_t e = 0; e < n; ++e) {

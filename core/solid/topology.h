@@ -32,22 +32,34 @@ struct Topology {
   SolidEdge* edges = nullptr;  // drawn edges first (input order), then diagonals
   uint32_t n_edges = 0;
   uint32_t n_drawn = 0;
-  uint32_t* side_edge = nullptr;  // edge of triangle t's side k (corner k to k+1): [3t + k]
   // Stars: the edges and the faces at vertex v are [first[v], first[v + 1]) of each list.
   uint32_t* vertex_edge_first = nullptr;
   uint32_t* vertex_edges = nullptr;
   uint32_t* vertex_face_first = nullptr;
   uint32_t* vertex_faces = nullptr;
   MeshCheck check;
+  size_t kept_bytes = 0;  // the buffer's first bytes the topology lives in (the rest is free)
 
   Edge3 edge3(uint32_t e) const { return Edge3{vertices[edges[e].v0], vertices[edges[e].v1]}; }
 };
 
-// Bytes build_topology() needs for this input (kept: the Topology lives in them).
+// Bytes build_topology() needs for this input, at most: the arrays it keeps (sized by the
+// number of edges, found by the build) from the buffer's start, and its scratch at the top.
+// Once it returns, the Topology lives in the first kept_bytes and the rest is free again.
 size_t topology_bytes(const SolidInput& in);
+size_t topology_scratch_bytes(const SolidInput& in);  // of those, the scratch at the top
 
 // kBadParameter names an index beyond the vertices, an edge from a vertex to itself, a repeated
 // drawn edge or a triangle with a repeated corner; kWorkspaceTooSmall a short buffer.
-Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology* out);
+struct TopologyOptions {
+  bool stars = true;  // the vertex stars (QI, the V.C. table and outline tracing read them)
+  // A band of a banded plot: a triangle side that is not a drawn edge becomes a diagonal only
+  // when it meets rows [row_lo, row_hi] (inclusive); sides beyond them have no edge
+  // , since nothing in the band's rows can cross them.
+  bool rows = false;
+  int32_t row_lo = 0, row_hi = 0;
+};
+Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology* out,
+                      const TopologyOptions& options = TopologyOptions{});
 
 }  // namespace haloplot

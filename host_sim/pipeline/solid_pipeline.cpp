@@ -54,6 +54,8 @@ std::string reason_text(const HiddenReport& r) {
       return check_text(r.check);
     case FallbackReason::kLooseEdges:
       return std::to_string(r.check.loose_edges) + " loose edges (lines on no face)";
+    case FallbackReason::kBand:
+      return "a band of a banded plot (the topology-free method is local to the band)";
     case FallbackReason::kConflicts:
       return std::to_string(r.qi.conflicts) +
              " vertices reached with two different QIs (does the mesh pierce itself?)";

@@ -1,0 +1,382 @@
+// The band conductor's solid stage: a solid's hidden lines band by band (conductor.h,
+// begin_solid). A band gathers the faces and drawn edges meeting its rows with the vertices
+// they use, runs the topology-free method in its rows only, and keeps the strokes of the
+// pieces it owns; a piece running past the top is carried up with its q.
+#include "band/band_attempt.h"
+#include "band/conductor.h"
+#include "memory/carve.h"
+#include "memory/sized_stage.h"
+#include "solid/hidden_lines.h"
+#include "sort/in_place_sort.h"
+
+namespace haloplot {
+namespace {
+
+bool triangle_meets(const Point3& a, const Point3& b, const Point3& c, int64_t lo, int64_t hi) {
+  const int32_t y_min = a.y < b.y ? (a.y < c.y ? a.y : c.y) : (b.y < c.y ? b.y : c.y);
+  const int32_t y_max = a.y > b.y ? (a.y > c.y ? a.y : c.y) : (b.y > c.y ? b.y : c.y);
+  return y_max >= lo && y_min <= hi;
+}
+
+// The index of global vertex v among the band's sorted vertex ids.
+uint32_t local_vertex(const uint32_t* ids, uint32_t n, uint32_t v) {
+  uint32_t lo = 0, hi = n;
+  while (lo < hi) {
+    const uint32_t mid = lo + (hi - lo) / 2;
+    if (ids[mid] < v)
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return lo;
+}
+
+// A piece of the band's run, as cut (solid/fallback.h emits a band's pieces unmerged).
+struct RawPiece {
+  int64_t t0, t1;
+  int32_t q;
+  uint8_t hidden, tested;
+};
+
+// A run of equal pieces from its lower end (in y) to its upper end, as positions on the edge.
+struct Run {
+  int64_t lower, upper;
+  int32_t q;
+  bool hidden;
+};
+
+// The hidden-line run's sink for one band. Pieces are merged into runs of equal q here, the
+// way one unbanded run merges them, across the band's borders too: an edge's pieces are taken
+// from its lower end up (a falling edge's in reverse), the first continues the run carried
+// from below, the last is carried up. A piece too short to test takes the q of the run below
+// it, as in the unbanded run, except a sliver that the top border cut off a longer piece: its
+// q is the piece's above the border, so the run below it is carried up unfinished and the band
+// above decides where it ends.
+struct SolidSink {
+  BandConductor::Attempt* a;
+  const StrokeStyle* style;
+  RawPiece* raw_top = nullptr;  // the current edge's pieces, stacked down from the tail's end
+  uint32_t n_raw = 0, raw_edge = 0;
+
+  static void begin(void* ctx, uint8_t* tail, size_t bytes);
+  static Status piece(void* ctx, const HiddenPiece& p);
+  Status finish() { return n_raw > 0 ? flush_edge() : Status::kOk; }
+  Status flush_edge();
+  Status emit(uint32_t local, bool up, const Run& r);
+  Status carry_up(uint32_t id, const Edge3& e, bool up, const Run& r, int64_t join);
+  uint8_t* raw_bottom() const { return reinterpret_cast<uint8_t*>(raw_top - n_raw); }
+};
+
+}  // namespace
+
+// The carry and the pieces take the run's free tail, once every stage of it has carved; the
+// current edge's raw pieces stack down from its end.
+void SolidSink::begin(void* ctx, uint8_t* tail, size_t bytes) {
+  SolidSink& self = *static_cast<SolidSink*>(ctx);
+  BandConductor::Attempt& a = *self.a;
+  uint8_t* end = align_down(tail + bytes);
+  uint8_t* carry = align_up(tail);
+  uint8_t* runs = carry + carve_round(size_t{a.carry_capacity} * sizeof(a.carry_out[0]));
+  uint8_t* points = runs + carve_round(size_t{a.carry_capacity} * sizeof(a.carry_runs_out[0]));
+  uint8_t* pieces = points + carve_round(size_t{a.carry_capacity} * sizeof(RowPoint));
+  a.n_pieces = a.n_carry_out = a.carry_cursor = a.carry_used = 0;
+  self.n_raw = 0;
+  if (pieces > end) {  // no room even for the carry: every piece is then a full sink
+    a.carry_capacity = 0;
+    a.pieces = reinterpret_cast<StoredPiece*>(end);
+    self.raw_top = reinterpret_cast<RawPiece*>(end);
+    return;
+  }
+  a.carry_out = reinterpret_cast<decltype(a.carry_out)>(carry);
+  a.carry_runs_out = reinterpret_cast<decltype(a.carry_runs_out)>(runs);
+  a.carry_points = reinterpret_cast<RowPoint*>(points);
+  a.pieces = reinterpret_cast<StoredPiece*>(pieces);
+  self.raw_top = reinterpret_cast<RawPiece*>(end);
+}
+
+Status SolidSink::piece(void* ctx, const HiddenPiece& p) {
+  SolidSink& self = *static_cast<SolidSink*>(ctx);
+  if (p.edge >= self.a->in.n_edges) return Status::kOk;  // a contour diagonal: not drawn in bands
+  if (self.n_raw > 0 && p.edge != self.raw_edge) {
+    const Status s = self.flush_edge();
+    if (!ok(s)) return s;
+  }
+  self.raw_edge = p.edge;
+  if (self.raw_bottom() - sizeof(RawPiece) <
+      reinterpret_cast<uint8_t*>(self.a->pieces + self.a->n_pieces))
+    return Status::kSinkFull;
+  self.raw_top[-1 - int64_t{self.n_raw++}] =
+      RawPiece{p.t0, p.t1, p.q, uint8_t(p.hidden ? 1 : 0), uint8_t(p.tested ? 1 : 0)};
+  return Status::kOk;
+}
+
+// The strokes of a finished run (solid/modes.h), as pieces the band owns.
+Status SolidSink::emit(uint32_t local, bool up, const Run& r) {
+  const int64_t t0 = up ? r.lower : r.upper, t1 = up ? r.upper : r.lower;
+  if (t1 <= t0) return Status::kOk;  // an empty run before a sliver
+  const Edge3& e = a->g.edges[local];
+  return piece_strokes(e, local, false, t0, t1, r.hidden, *style, [this, local](const Span& s) {
+    if (reinterpret_cast<uint8_t*>(a->pieces + a->n_pieces + 1) > raw_bottom())
+      return Status::kSinkFull;
+    a->pieces[a->n_pieces++] = StoredPiece{local, uint32_t(s.t0), uint32_t(s.t1 - 1), s.x0 + s.x1};
+    return Status::kOk;
+  });
+}
+
+Status SolidSink::carry_up(uint32_t id, const Edge3& e, bool up, const Run& r, int64_t join) {
+  if (a->n_carry_out == a->carry_capacity) return Status::kSinkFull;
+  span_point(e, r.lower, &a->carry_points[a->n_carry_out].x, &a->carry_points[a->n_carry_out].y);
+  a->carry_runs_out[a->n_carry_out] = {uint32_t(join), r.q};
+  a->carry_out[a->n_carry_out++] = {id, uint32_t(r.lower - (up ? 0 : 1))};
+  return Status::kOk;
+}
+
+// One edge's pieces in this band, from its lower end up.
+Status SolidSink::flush_edge() {
+  const uint32_t local = raw_edge, n = n_raw;
+  const Edge3& e = a->g.edges[local];
+  const uint32_t id = a->g.id(local);
+  const RowWindow w = row_window(e, a->y0, a->y1);
+  const bool up = rising(e);
+  Run cur{0, 0, 0, false};
+  bool have = false;
+  Status s = Status::kOk;
+  for (uint32_t k = 0; k < n && ok(s); ++k) {
+    RawPiece p = raw_top[-1 - int64_t{up ? k : n - 1 - k}];  // the k-th from below
+    int64_t lower = up ? p.t0 : p.t1;
+    const int64_t upper = up ? p.t1 : p.t0;
+    const bool at_bottom =
+        k == 0 && (up ? (p.t0 == w.lo && w.lo > 0) : (p.t1 == w.hi && w.hi < kFracOne));
+    const bool at_top =
+        k + 1 == n && (up ? (p.t1 == w.hi && w.hi < kFracOne) : (p.t0 == w.lo && w.lo > 0));
+    if (at_bottom) {  // the run carried from below goes on here, up to its join
+      while (a->carry_cursor < a->n_carry_in && a->carry_in[a->carry_cursor].edge < id)
+        ++a->carry_cursor;
+      if (a->carry_cursor == a->n_carry_in || a->carry_in[a->carry_cursor].edge != id)
+        return Status::kBandCarryLost;
+      const auto& c = a->carry_in[a->carry_cursor];
+      const auto& run = a->carry_runs_in[a->carry_cursor++];
+      ++a->carry_used;
+      cur = Run{int64_t{c.lower} + (up ? 0 : 1), int64_t{run.join}, run.q, run.q != 0};
+      have = true;
+      lower = run.join;  // this piece takes the sliver below the border, if any
+      if (!p.tested) {   // the rest of a piece the border cut: the q below it
+        p.q = cur.q;
+        p.hidden = cur.hidden;
+        p.tested = 1;
+      }
+    }
+    if (!p.tested && at_top) {  // cut off by the border: the band above tells its q
+      if (!have) cur = Run{lower, lower, 0, false};
+      s = carry_up(id, e, up, cur, lower);
+      have = false;
+      break;
+    }
+    if (!p.tested) {  // too short to test: the q of the run below, as unbanded
+      p.q = have ? cur.q : 0;
+      p.hidden = have ? cur.hidden : 0;
+    }
+    if (have && cur.q == p.q && cur.hidden == (p.hidden != 0)) {
+      cur.upper = upper;
+    } else {
+      if (have) s = emit(local, up, cur);
+      cur = Run{lower, upper, p.q, p.hidden != 0};
+      have = true;
+    }
+    if (at_top && ok(s)) {
+      s = carry_up(id, e, up, cur, upper);
+      have = false;
+    }
+  }
+  if (have && ok(s)) s = emit(local, up, cur);
+  n_raw = 0;
+  return s;
+}
+
+Status BandConductor::begin_solid(const BandSpec& spec, SolidSource source, void* arena,
+                                  size_t arena_bytes) {
+  if (source.vertex == nullptr || source.edge == nullptr || source.triangle == nullptr)
+    return Status::kBadParameter;
+  if (spec.style.dash < 1 || spec.style.gap < 1 || spec.style.dash > kCoordMax ||
+      spec.style.gap > kCoordMax)
+    return Status::kBadParameter;
+  if (source.n_edges > kMaxEdges || source.n_triangles > kMaxEdges) return Status::kTooManyEdges;
+  Status s = begin(spec, EdgeSource{}, arena, arena_bytes);
+  if (!ok(s)) return s;
+  // One read of the vertices: every coordinate in range, and the scene's rows.
+  int32_t lo = kCoordLimit, hi = -1;
+  for (uint32_t v = 0; v < source.n_vertices; ++v) {
+    Point3 p;
+    s = source.vertex(source.ctx, v, &p);
+    if (!ok(s)) return s;
+    if (!in_range(Edge3{p, p})) return Status::kCoordinateOutOfRange;
+    if (p.y < lo) lo = p.y;
+    if (p.y > hi) hi = p.y;
+  }
+  solid_ = source;
+  if (source.n_edges == 0 || source.n_vertices == 0) return Status::kOk;  // nothing to draw
+  row_lo_ = lo;
+  row_hi_ = hi;
+  next_row_ = lo;
+  height_ = int64_t{hi} - lo + 1;
+  margin_known_ = true;  // a solid band needs no margin
+  done_ = false;
+  return Status::kOk;
+}
+
+// The band's faces and drawn edges (those meeting its rows) and the vertices they use, with
+// local vertex indices: one read of the model to count, one to fill, then the vertices.
+//   [front | edges (Edge3) | pairs | triangles | vertex ids | vertices | free ... | edge ids]
+Status BandConductor::gather_solid(Attempt& a) {
+  const SolidSource& src = solid_;
+  const int64_t lo = a.y0, hi = a.y1 - 1;
+  auto read_vertex = [&](uint32_t v, Point3* p) {
+    return v < src.n_vertices ? src.vertex(src.ctx, v, p) : Status::kBadParameter;
+  };
+  uint32_t m = 0, nt = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    uint32_t* pairs = reinterpret_cast<uint32_t*>(a.g.free_lo);
+    Triangle* tris = reinterpret_cast<Triangle*>(reinterpret_cast<uint8_t*>(pairs) +
+                                                 carve_round(size_t{m} * 2 * sizeof(uint32_t)));
+    uint32_t k = 0;
+    for (uint32_t i = 0; i < src.n_edges; ++i) {
+      uint32_t v0, v1;
+      Point3 p0, p1;
+      Status s = src.edge(src.ctx, i, &v0, &v1);
+      if (ok(s)) s = read_vertex(v0, &p0);
+      if (ok(s)) s = read_vertex(v1, &p1);
+      if (!ok(s)) return s;
+      if (!edge_meets_rows(Edge3{p0, p1}, lo, hi)) continue;
+      if (pass == 1) {
+        a.g.edges[k] = Edge3{p0, p1};
+        a.g.ids_end[-1 - int64_t{k}] = i;
+        pairs[2 * k] = v0;
+        pairs[2 * k + 1] = v1;
+      }
+      ++k;
+    }
+    if (pass == 0) m = k;
+    k = 0;
+    for (uint32_t i = 0; i < src.n_triangles; ++i) {
+      Triangle t;
+      Point3 p[3];
+      Status s = src.triangle(src.ctx, i, &t);
+      for (int c = 0; c < 3 && ok(s); ++c) s = read_vertex(t.v[c], &p[c]);
+      if (!ok(s)) return s;
+      if (!triangle_meets(p[0], p[1], p[2], lo, hi)) continue;
+      if (pass == 1) tris[k] = t;
+      ++k;
+    }
+    if (pass == 0) nt = k;
+    stats_.edge_reads += src.n_edges;
+    if (pass == 1) break;
+    // The layout, now that the counts are known.
+    uint8_t* base = arena_ + front_bytes();
+    uint8_t* top = arena_ + arena_bytes_;
+    const size_t ids = size_t{2} * m + size_t{3} * nt;
+    const size_t front = carve_round(size_t{m} * sizeof(Edge3)) +
+                         carve_round(size_t{m} * 2 * sizeof(uint32_t)) +
+                         carve_round(size_t{nt} * sizeof(Triangle)) +
+                         carve_round(ids * sizeof(uint32_t)) + carve_round(ids * sizeof(Point3));
+    const size_t back = carve_round(size_t{m} * sizeof(uint32_t));
+    if (top < base || front + back + 64 > size_t(top - base)) {
+      a.need = front_bytes() + front + back + 64;
+      a.g.n = m;
+      return Status::kWorkspaceTooSmall;
+    }
+    a.g.edges = reinterpret_cast<Edge3*>(base);
+    a.g.ids_end = reinterpret_cast<uint32_t*>(top);
+    a.g.n = m;
+    a.g.free_lo = base + carve_round(size_t{m} * sizeof(Edge3));
+    a.g.free_hi = top - back;
+  }
+  // The vertices they use, sorted and once each; then local indices.
+  uint32_t* pairs = reinterpret_cast<uint32_t*>(a.g.free_lo);
+  Triangle* tris = reinterpret_cast<Triangle*>(reinterpret_cast<uint8_t*>(pairs) +
+                                               carve_round(size_t{m} * 2 * sizeof(uint32_t)));
+  uint32_t* vids = reinterpret_cast<uint32_t*>(reinterpret_cast<uint8_t*>(tris) +
+                                               carve_round(size_t{nt} * sizeof(Triangle)));
+  uint32_t nv = 0;
+  for (uint32_t k = 0; k < 2 * m; ++k) vids[nv++] = pairs[k];
+  for (uint32_t k = 0; k < nt; ++k)
+    for (int c = 0; c < 3; ++c) vids[nv++] = tris[k].v[c];
+  sort_in_place(vids, nv, [](uint32_t x, uint32_t y) { return x < y; });
+  uint32_t unique = 0;
+  for (uint32_t k = 0; k < nv; ++k)
+    if (unique == 0 || vids[unique - 1] != vids[k]) vids[unique++] = vids[k];
+  // The vertices right after the unique ids: they only overwrite ids past those.
+  Point3* verts = reinterpret_cast<Point3*>(reinterpret_cast<uint8_t*>(vids) +
+                                            carve_round(size_t{unique} * sizeof(uint32_t)));
+  for (uint32_t k = 0; k < unique; ++k) {
+    const Status s = src.vertex(src.ctx, vids[k], &verts[k]);
+    if (!ok(s)) return s;
+  }
+  for (uint32_t k = 0; k < 2 * m; ++k) pairs[k] = local_vertex(vids, unique, pairs[k]);
+  for (uint32_t k = 0; k < nt; ++k)
+    for (int c = 0; c < 3; ++c) tris[k].v[c] = local_vertex(vids, unique, tris[k].v[c]);
+  a.in.vertices = verts;
+  a.in.n_vertices = unique;
+  a.in.edge_pairs = pairs;
+  a.in.n_edges = m;
+  a.in.triangles = tris;
+  a.in.n_triangles = nt;
+  a.after = align_up(reinterpret_cast<uint8_t*>(verts + unique));
+  return Status::kOk;
+}
+
+// The band's hidden lines, as a sized stage in the free middle of the arena: a run short of
+// records or incidences is run again with the counts it reported; one short of bytes means the
+// band does not fit.
+Status BandConductor::hide_band(Attempt& a) {
+  for (uint32_t k = 0; k < a.g.n; ++k)
+    if (edge_row_min(a.g.edges[k]) < a.y1 && edge_row_max(a.g.edges[k]) >= a.y1) ++a.carry_capacity;
+  a.carry_in = reinterpret_cast<const Carry*>(arena_);
+  a.carry_runs_in = carry_runs(arena_, n_carry_);
+  a.n_carry_in = n_carry_;
+  SolidSink sink{&a, &spec_.style};
+  HiddenReport report;
+  HiddenLinesStage stage{&a.in, HiddenParams{},
+                         HiddenSink{&SolidSink::begin, &SolidSink::piece, nullptr, &sink}, &report,
+                         0};
+  stage.params.method = HiddenMethod::kFallback;
+  stage.params.cut = spec_.cut;
+  stage.params.cut.rows = true;  // cuts outside the band's rows would only be clipped away
+  stage.params.cut.row_lo = int32_t(a.y0);
+  stage.params.cut.row_hi = int32_t(a.y1);
+  stage.params.band = true;
+  stage.params.closed = solid_.closed;
+  stage.params.band_y0 = int32_t(a.y0);
+  stage.params.band_y1 = int32_t(a.y1);
+  const uint32_t capacity = a.carry_capacity;
+  auto fresh = restarting(&stage, [&a, &sink, capacity] {
+    a.n_pieces = a.n_carry_out = a.carry_cursor = a.carry_used = 0;
+    a.carry_capacity = capacity;
+    sink.n_raw = 0;
+  });
+  StageNeeds needs;
+  // The first guess: the last band's records and a quarter more (a short guess costs a run).
+  needs.crossings = solid_crossings_ + solid_crossings_ / 4 + 16;
+  needs.incidences = 16;
+  uint8_t* space = a.after;
+  const size_t fixed = size_t(space - arena_) + size_t(arena_ + arena_bytes_ - a.g.free_hi);
+  FixedMemory memory{space, size_t(a.g.free_hi - space)};
+  const uint64_t t0 = now();
+  ++stats_.draw_runs;
+  Status s = run_sized(fresh, memory.memory(), &needs);
+  if (ok(s)) s = sink.finish();
+  stats_.draw_ticks += now() - t0;
+  if (s == Status::kWorkspaceTooSmall || s == Status::kSinkFull) {
+    const size_t more = memory.bytes + memory.bytes / 2;
+    a.need = fixed + (needs.bytes > more ? needs.bytes : more);
+    return Status::kWorkspaceTooSmall;
+  }
+  if (!ok(s)) return s;
+  if (a.carry_used != n_carry_) return Status::kBandCarryLost;
+  solid_crossings_ = need_count(report.cut.crossings + report.cut.near_misses);
+  stats_.records += report.cut.crossings;
+  note_used(size_t(reinterpret_cast<uint8_t*>(a.pieces + a.n_pieces) - arena_) +
+            size_t(arena_ + arena_bytes_ - a.g.free_hi));
+  return Status::kOk;
+}
+
+}  // namespace haloplot

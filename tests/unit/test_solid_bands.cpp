@@ -1,0 +1,187 @@
+// Solids in bands: the banded drawing is the unbanded drawing.
+//
+// Each scene is plotted by the band conductor's solid stage (core/band/solid_band.cpp) in small
+// arenas (many bands) and in one band, and every stroke (edge, Q0.32 ends) must be the same,
+// hidden-dashed included: a piece cut at a border and carried up must be stroked whole, its
+// dashes measured from its true start, by exactly one band. Independently, the visible runs of
+// every drawn edge must equal the whole-model QI propagation's (solid/qi.h: Appel and Heger's
+// method, which shares only CUT and the cover predicate with the bands' Franklin tests).
+// A checker must see the defect it guards: a band source that loses one face, and one that
+// calls the model open (back faces then count), must both change the strokes.
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "band/conductor.h"
+#include "check.h"
+#include "pipeline/solid_pipeline.h"
+#include "support/solid_scenes.h"
+
+using namespace haloplot;
+using namespace haloplot::host;
+using namespace solid_scenes;
+
+namespace {
+
+using Stroke = std::tuple<uint32_t, int64_t, int64_t>;  // edge, t0, t1
+
+struct Banded {
+  Status status = Status::kOk;
+  std::vector<Stroke> strokes;
+  BandStats stats;
+};
+
+Banded run_bands(const StrokeStyle& style, size_t arena_bytes, SolidSource source) {
+  Banded r;
+  BandSpec spec;
+  spec.style = style;
+  spec.cut.compact_cells = false;
+  std::vector<uint64_t> arena(arena_bytes / 8);
+  BandConductor bc;
+  bc.set_observer(PieceObserver{[](void* ctx, const BandPiece& p) {
+                                  static_cast<Banded*>(ctx)->strokes.emplace_back(p.edge, p.t0,
+                                                                                  p.t1);
+                                },
+                                &r});
+  r.status = bc.begin_solid(spec, source, arena.data(), arena.size() * 8);
+  if (ok(r.status)) r.status = run_all_bands(bc);
+  r.stats = bc.stats();
+  std::sort(r.strokes.begin(), r.strokes.end());
+  return r;
+}
+
+// Adjacent runs of one edge joined: the canonical form of a set of visible intervals.
+std::vector<Stroke> joined(std::vector<Stroke> v) {
+  std::sort(v.begin(), v.end());
+  std::vector<Stroke> out;
+  for (const Stroke& s : v) {
+    if (!out.empty() && std::get<0>(out.back()) == std::get<0>(s) &&
+        std::get<2>(out.back()) == std::get<1>(s))
+      std::get<2>(out.back()) = std::get<2>(s);
+    else
+      out.push_back(s);
+  }
+  return out;
+}
+
+size_t first_difference(const std::vector<Stroke>& a, const std::vector<Stroke>& b) {
+  size_t i = 0;
+  while (i < a.size() && i < b.size() && a[i] == b[i]) ++i;
+  return i;
+}
+
+struct Scene {
+  std::string name;
+  SolidScene scene;
+  std::vector<size_t> arenas;  // each must plot it, in as many bands as it takes
+};
+
+void check_scene(const Scene& sc) {
+  const SolidInput in = solid_input(sc.scene);
+  SolidRun qi;
+  const Status qs = run_hidden_lines(sc.scene, HiddenMethod::kAuto, FallbackParams{}, &qi);
+  CHECK_MSG(ok(qs) && qi.used_qi, sc.name + ": the whole-model QI run");
+  const bool closed = qi.check.manifold();
+  CHECK_MSG(closed, sc.name + ": a closed solid");
+  std::vector<Stroke> qi_visible;
+  for (const SolidPiece& p : qi.pieces)
+    if (!p.hidden) qi_visible.emplace_back(p.edge, p.t0, p.t1);
+  qi_visible = joined(qi_visible);
+
+  const SolidSource source = array_solid_source(&in, closed);
+  for (SolidMode mode : {SolidMode::kHiddenRemoved, SolidMode::kHiddenDashed}) {
+    const StrokeStyle style{mode, 160, 80};
+    const char* mode_name = mode == SolidMode::kHiddenRemoved ? "hidden-removed" : "hidden-dashed";
+    const Banded one = run_bands(style, size_t{256} << 20, source);
+    CHECK_MSG(ok(one.status) && one.stats.bands == 1,
+              sc.name + " " + mode_name + ": one band (" + status_name(one.status) + ", " +
+                  std::to_string(one.stats.bands) + " bands)");
+    if (mode == SolidMode::kHiddenRemoved) {
+      const std::vector<Stroke> vis = joined(one.strokes);
+      CHECK_MSG(vis == qi_visible,
+                sc.name + ": one band's visible runs equal QI's (" + std::to_string(vis.size()) +
+                    " vs " + std::to_string(qi_visible.size()) + ", first difference at " +
+                    std::to_string(first_difference(vis, qi_visible)) + ")");
+    }
+    for (size_t arena : sc.arenas) {
+      const Banded b = run_bands(style, arena, source);
+      const std::string what = sc.name + " " + mode_name + " in " + std::to_string(arena >> 10) +
+                               " KB (" + std::to_string(b.stats.bands) + " bands)";
+      if (!ok(b.status)) {
+        CHECK_MSG(false, what + ": " + status_name(b.status));
+        continue;
+      }
+      CHECK_MSG(b.stats.peak_bytes <= arena, what + ": within the arena");
+      CHECK_MSG(b.strokes == one.strokes,
+                what + ": strokes equal the one-band run's (" + std::to_string(b.strokes.size()) +
+                    " vs " + std::to_string(one.strokes.size()) + ", first difference at " +
+                    std::to_string(first_difference(b.strokes, one.strokes)) + ")");
+      std::printf("%s: peak %zu bytes, %zu strokes, %llu band edges\n", what.c_str(),
+                  b.stats.peak_bytes, b.strokes.size(), (unsigned long long)b.stats.band_edges);
+    }
+  }
+}
+
+Mesh cube_array_mesh(int n) {
+  Mesh m;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      box(&m, i * 3000, j * 3000, 0, i * 3000 + 2000, j * 3000 + 2000, 2000);
+  return m;
+}
+
+Scene make(const std::string& name, const Mesh& m, int32_t az, int32_t el,
+           std::vector<size_t> arenas_kb) {
+  Scene s{name, {}, {}};
+  for (size_t kb : arenas_kb) s.arenas.push_back(kb << 10);
+  CHECK_MSG(project(m, view(az, el), &s.scene), name + ": projects");
+  return s;
+}
+
+// The checker sees what it guards: a source that drops one face, and one that reports the
+// model open (back faces then count), must change the strokes.
+void check_the_check(const Scene& sc) {
+  const SolidInput in = solid_input(sc.scene);
+  const StrokeStyle style{SolidMode::kHiddenDashed, 160, 80};
+  const Banded one = run_bands(style, size_t{256} << 20, array_solid_source(&in, true));
+  SolidInput lost = in;
+  std::vector<Triangle> tris(sc.scene.triangles);
+  tris.erase(tris.begin() + long(tris.size() / 2));
+  lost.triangles = tris.data();
+  lost.n_triangles = uint32_t(tris.size());
+  const Banded a = run_bands(style, size_t{64} << 10, array_solid_source(&lost, true));
+  CHECK_MSG(ok(a.status) && a.strokes != one.strokes, sc.name + ": a lost face is seen");
+  const Banded b = run_bands(style, size_t{64} << 10, array_solid_source(&in, false));
+  CHECK_MSG(ok(b.status) && b.strokes != one.strokes, sc.name + ": back faces counted are seen");
+}
+
+}  // namespace
+
+int main() {
+  std::vector<Scene> scenes;
+  scenes.push_back(make("3 x 3 cubes at 30,25", cube_array_mesh(3), 30000, 25000, {16, 24}));
+  scenes.push_back(make("10 x 10 cubes at 30,25", cube_array_mesh(10), 30000, 25000, {48, 64}));
+  scenes.push_back(make("10 x 10 cubes at 200,-40", cube_array_mesh(10), 200000, -40000, {48, 64}));
+  {
+    Mesh m;
+    sphere(&m, 0, 0, 0, 5000, 24, 48);
+    scenes.push_back(make("sphere 24 x 48 at 30,25", m, 30000, 25000, {32, 64}));
+  }
+  {
+    Mesh m;
+    torus(&m, 0, 0, 0, 6000, 2000, 48, 24, true);
+    scenes.push_back(make("upright torus 48 x 24 at 30,25", m, 30000, 25000, {32, 64}));
+  }
+  {
+    Mesh m;
+    frame(&m, 0, 0, 6000, 3000, 0, 2000);
+    box(&m, 1500, 1500, -4000, 4500, 4500, -2000);
+    scenes.push_back(make("frame before a box at 20,10", m, 20000, 10000, {8, 16}));
+  }
+  for (const Scene& s : scenes) check_scene(s);
+  check_the_check(scenes[1]);
+  return check::finish("solid_bands");
+}
