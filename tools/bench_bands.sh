@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake --preset host >/dev/null
-cmake --build --preset host -j "$(nproc)" --target band_bench >/dev/null
+cmake --build --preset host -j "$(nproc)" --target band_bench solid_band_bench >/dev/null
 cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
 {
   echo "# Bands: any scene in one fixed arena, measured"
@@ -29,5 +29,17 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
   echo "## In 96 KB (the controller's whole job arena today)"
   echo
   build/host/tests/bench/band_bench 98304 | sed -n '1,/^$/p'
+  echo
+  echo "## Solids in bands"
+  echo
+  echo "Solid cube arrays (N x N cubes, the plot area the same, so the cubes shrink as N grows; view"
+  echo "30,25, hidden-dashed) plotted by the band conductor's solid stage (core/band/solid_band.cpp)."
+  echo "*strokes equal one band* compares every stroke (edge, Q0.32 ends, dashes included) with the"
+  echo "same conductor given room for one band; *visible equal QI* compares the one-band run's"
+  echo "visible runs with the whole-model QI propagation's. The time peer is that whole-model run"
+  echo "(core/solid/hidden_lines.h, one buffer for the whole model), which the controller can only"
+  echo "make for models that fit its arena whole (3 x 3 cubes in 64 KB)."
+  echo
+  build/host/tests/bench/solid_band_bench 65536 98304
 } > docs/bands.md
 echo "wrote docs/bands.md"

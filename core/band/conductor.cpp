@@ -76,6 +76,8 @@ Status BandConductor::next_streamed_band() {
     return n_carry_ != 0 || n_defer_ != 0 ? Status::kBandCarryLost : Status::kOk;
   }
   if (band.y0 != next_row_ && stats_.bands > 0) return Status::kMalformedRequest;
+  if (solid_mode_ && band.solid == nullptr) return Status::kMalformedRequest;
+  if (solid_mode_) solid_ = band.solid->source(closed_);
   source_ = array_edge_source(band.edges, band.n);
   stream_ids_ = band.ids;
   next_row_ = band.y0;
@@ -83,6 +85,7 @@ Status BandConductor::next_streamed_band() {
   s = try_band(band.y1, &fitted);
   stream_ids_ = nullptr;
   source_ = EdgeSource{};
+  if (solid_mode_) solid_ = SolidSource{};
   if (stream_.release != nullptr) stream_.release(stream_.ctx);
   if (!ok(s)) return s;
   if (!fitted) return Status::kArenaTooSmall;
@@ -478,7 +481,7 @@ Status BandConductor::try_band(int32_t y1, bool* fitted) {
   a.y1 = y1;
   const int64_t margin = stats_.margin;
   Status s;
-  if (solid_.vertex != nullptr) {  // a solid: its faces and edges, then its hidden lines
+  if (solid_mode_) {  // a solid: its faces and edges, then its hidden lines
     s = gather_solid(a);
     if (ok(s)) s = hide_band(a);
   } else {

@@ -56,8 +56,10 @@ struct BandSpec {
   // > 0: at most this many edges in a band (a controller that receives bands over its link
   // stages the next band in a buffer of this many edges); more is a band that does not fit.
   uint32_t max_band_edges = 0;
-  // A solid (begin_solid): the hidden-line strokes of each band in this style (solid/modes.h).
+  // A solid (begin_solid): the hidden-line strokes of each band in this style (solid/modes.h),
+  // and Kira's outlines, asked part by part in each band (solid/fallback.h).
   StrokeStyle style;
+  bool outline = false;
 };
 
 // A band sent from outside: a host ran the same conductor over the whole scene with the same
@@ -66,8 +68,9 @@ struct BandSpec {
 struct StreamedBand {
   int32_t y0 = 0, y1 = 0;  // rows [y0, y1)
   const Edge3* edges = nullptr;
-  const uint32_t* ids = nullptr;
+  const uint32_t* ids = nullptr;  // scene indices of the edges (a solid's: of its drawn edges)
   uint32_t n = 0;
+  const StagedSolidBand* solid = nullptr;  // a solid's band (begin_streamed_solid): its model part
 };
 struct BandStream {
   void* ctx = nullptr;
@@ -128,6 +131,10 @@ class BandConductor {
   // piece's upper end strokes it whole, dashes measured from its true start. No margin: a cut
   // point inside the rows is a crossing with an edge, or a vertex, meeting those rows.
   Status begin_solid(const BandSpec& spec, SolidSource source, void* arena, size_t arena_bytes);
+  // The same solid plot from streamed bands (StreamedBand::solid), as the host's dry run with
+  // this arena cut them; `closed` is the whole model's check, which no band can make.
+  Status begin_streamed_solid(const BandSpec& spec, bool closed, BandStream stream, void* arena,
+                              size_t arena_bytes);
   // Checks the scene (one read) and the settings; nothing is cut yet.
   Status begin(const BandSpec& spec, EdgeSource source, void* arena, size_t arena_bytes);
   // The same plot from streamed bands, with the margin the host's run measured: no margin
@@ -191,7 +198,7 @@ class BandConductor {
   uint32_t defer_joined(const Attempt& a, Segment2* u, uint32_t n_own, uint32_t nu, uint8_t* free);
   static constexpr int kJoinDepth = 4;  // links followed from a carried piece's lower end
   size_t carry_bytes(uint32_t n) const {
-    const size_t runs = solid_.vertex != nullptr ? size_t{n} * sizeof(CarryRun) : 0;
+    const size_t runs = solid_mode_ ? size_t{n} * sizeof(CarryRun) : 0;
     return ((size_t{n} * sizeof(Carry) + 7) & ~size_t{7}) + runs;
   }
   // The runs stand after the carry entries at the front of the arena.
@@ -224,7 +231,9 @@ class BandConductor {
   int64_t height_ = 0;               // the next attempt's height
   bool margin_known_ = false;
   bool done_ = true;
-  SolidSource solid_{};                   // solid mode when solid_.vertex is set
+  bool solid_mode_ = false;               // begin_solid or begin_streamed_solid
+  bool closed_ = false;                   // a solid's model is closed (SolidSource::closed)
+  SolidSource solid_{};                   // a solid's model, or (streamed) the band's part
   uint32_t solid_crossings_ = 0;          // the last band's CUT records: the next first guess
   BandStream stream_{};                   // streamed mode when stream_.next is set
   const uint32_t* stream_ids_ = nullptr;  // scene indices of the streamed band's edges

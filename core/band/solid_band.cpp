@@ -60,6 +60,7 @@ struct SolidSink {
 
   static void begin(void* ctx, uint8_t* tail, size_t bytes);
   static Status piece(void* ctx, const HiddenPiece& p);
+  static Status outline(void* ctx, const HiddenPiece& p);
   Status finish() { return n_raw > 0 ? flush_edge() : Status::kOk; }
   Status flush_edge();
   Status emit(uint32_t local, bool up, const Run& r);
@@ -107,6 +108,19 @@ Status SolidSink::piece(void* ctx, const HiddenPiece& p) {
     return Status::kSinkFull;
   self.raw_top[-1 - int64_t{self.n_raw++}] =
       RawPiece{p.t0, p.t1, p.q, uint8_t(p.hidden ? 1 : 0), uint8_t(p.tested ? 1 : 0)};
+  return Status::kOk;
+}
+
+// An outline run inside the band's rows (the fallback asks Kira's condition part by part): a
+// stroke of this band, cut at its borders, so the runs of two bands meet end to end.
+Status SolidSink::outline(void* ctx, const HiddenPiece& p) {
+  SolidSink& self = *static_cast<SolidSink*>(ctx);
+  BandConductor::Attempt& a = *self.a;
+  if (p.edge >= a.in.n_edges || p.t1 <= p.t0) return Status::kOk;
+  if (reinterpret_cast<uint8_t*>(a.pieces + a.n_pieces + 1) > self.raw_bottom())
+    return Status::kSinkFull;
+  const Span s = make_stroke(a.g.edges[p.edge], p.edge, p.t0, p.t1);
+  a.pieces[a.n_pieces++] = StoredPiece{p.edge, uint32_t(s.t0), uint32_t(s.t1 - 1), s.x0 + s.x1};
   return Status::kOk;
 }
 
@@ -214,6 +228,8 @@ Status BandConductor::begin_solid(const BandSpec& spec, SolidSource source, void
     if (p.y > hi) hi = p.y;
   }
   solid_ = source;
+  solid_mode_ = true;
+  closed_ = source.closed;
   if (source.n_edges == 0 || source.n_vertices == 0) return Status::kOk;  // nothing to draw
   row_lo_ = lo;
   row_hi_ = hi;
@@ -224,15 +240,30 @@ Status BandConductor::begin_solid(const BandSpec& spec, SolidSource source, void
   return Status::kOk;
 }
 
-// The band's faces and drawn edges (those meeting its rows) and the vertices they use, with
+Status BandConductor::begin_streamed_solid(const BandSpec& spec, bool closed, BandStream stream,
+                                           void* arena, size_t arena_bytes) {
+  if (stream.next == nullptr) return Status::kBadParameter;
+  if (spec.style.dash < 1 || spec.style.gap < 1 || spec.style.dash > kCoordMax ||
+      spec.style.gap > kCoordMax)
+    return Status::kBadParameter;
+  const Status s = begin(spec, EdgeSource{}, arena, arena_bytes);
+  if (!ok(s)) return s;
+  stream_ = stream;
+  solid_mode_ = true;
+  closed_ = closed;
+  margin_known_ = true;
+  done_ = false;
+  return Status::kOk;
+}
+
+// The band's drawn edges (those meeting its rows), its faces (meeting its rows or the row
+// above: the outline pass asks just beyond each border) and the vertices they use, with
 // local vertex indices: one read of the model to count, one to fill, then the vertices.
 //   [front | edges (Edge3) | pairs | triangles | vertex ids | vertices | free ... | edge ids]
 Status BandConductor::gather_solid(Attempt& a) {
   const SolidSource& src = solid_;
   const int64_t lo = a.y0, hi = a.y1 - 1;
-  auto read_vertex = [&](uint32_t v, Point3* p) {
-    return v < src.n_vertices ? src.vertex(src.ctx, v, p) : Status::kBadParameter;
-  };
+  auto read_vertex = [&](uint32_t v, Point3* p) { return src.vertex(src.ctx, v, p); };
   uint32_t m = 0, nt = 0;
   for (int pass = 0; pass < 2; ++pass) {
     uint32_t* pairs = reinterpret_cast<uint32_t*>(a.g.free_lo);
@@ -249,7 +280,7 @@ Status BandConductor::gather_solid(Attempt& a) {
       if (!edge_meets_rows(Edge3{p0, p1}, lo, hi)) continue;
       if (pass == 1) {
         a.g.edges[k] = Edge3{p0, p1};
-        a.g.ids_end[-1 - int64_t{k}] = i;
+        a.g.ids_end[-1 - int64_t{k}] = stream_ids_ != nullptr ? stream_ids_[i] : i;
         pairs[2 * k] = v0;
         pairs[2 * k + 1] = v1;
       }
@@ -263,7 +294,7 @@ Status BandConductor::gather_solid(Attempt& a) {
       Status s = src.triangle(src.ctx, i, &t);
       for (int c = 0; c < 3 && ok(s); ++c) s = read_vertex(t.v[c], &p[c]);
       if (!ok(s)) return s;
-      if (!triangle_meets(p[0], p[1], p[2], lo, hi)) continue;
+      if (!triangle_meets(p[0], p[1], p[2], lo, hi + 1)) continue;  // and the row above it
       if (pass == 1) tris[k] = t;
       ++k;
     }
@@ -335,16 +366,17 @@ Status BandConductor::hide_band(Attempt& a) {
   a.n_carry_in = n_carry_;
   SolidSink sink{&a, &spec_.style};
   HiddenReport report;
-  HiddenLinesStage stage{&a.in, HiddenParams{},
-                         HiddenSink{&SolidSink::begin, &SolidSink::piece, nullptr, &sink}, &report,
-                         0};
+  HiddenLinesStage stage{
+      &a.in, HiddenParams{},
+      HiddenSink{&SolidSink::begin, &SolidSink::piece, &SolidSink::outline, &sink}, &report, 0};
   stage.params.method = HiddenMethod::kFallback;
   stage.params.cut = spec_.cut;
   stage.params.cut.rows = true;  // cuts outside the band's rows would only be clipped away
   stage.params.cut.row_lo = int32_t(a.y0);
   stage.params.cut.row_hi = int32_t(a.y1);
   stage.params.band = true;
-  stage.params.closed = solid_.closed;
+  stage.params.outline = spec_.outline;
+  stage.params.closed = closed_;
   stage.params.band_y0 = int32_t(a.y0);
   stage.params.band_y1 = int32_t(a.y1);
   const uint32_t capacity = a.carry_capacity;
@@ -365,7 +397,7 @@ Status BandConductor::hide_band(Attempt& a) {
   Status s = run_sized(fresh, memory.memory(), &needs);
   if (ok(s)) s = sink.finish();
   stats_.draw_ticks += now() - t0;
-  if (s == Status::kWorkspaceTooSmall || s == Status::kSinkFull) {
+  if (is_shortfall(s) || does_not_fit(s)) {  // records, incidences, bytes or strokes: too big
     const size_t more = memory.bytes + memory.bytes / 2;
     a.need = fixed + (needs.bytes > more ? needs.bytes : more);
     return Status::kWorkspaceTooSmall;

@@ -33,7 +33,9 @@ inline SolidSource array_solid_source(const SolidInput* in, bool closed) {
   s.n_triangles = in->n_triangles;
   s.closed = closed;
   s.vertex = [](void* ctx, uint32_t i, Point3* out) {
-    *out = static_cast<const SolidInput*>(ctx)->vertices[i];
+    const SolidInput* model = static_cast<const SolidInput*>(ctx);
+    if (i >= model->n_vertices) return Status::kBadParameter;
+    *out = model->vertices[i];
     return Status::kOk;
   };
   s.edge = [](void* ctx, uint32_t i, uint32_t* v0, uint32_t* v1) {
@@ -48,5 +50,53 @@ inline SolidSource array_solid_source(const SolidInput* in, bool closed) {
   };
   return s;
 }
+
+// One band of a solid as a host sends it (a streamed plot): the vertices the band uses, by
+// ascending scene index, and its drawn edges (scene vertex indices; their scene edge indices
+// travel beside them in StreamedBand::ids) and triangles, in scene order. Its source answers
+// for the scene's vertex indices, so the band gathers from it what it gathered on the host.
+struct StagedSolidBand {
+  const uint32_t* vertex_ids = nullptr;  // ascending
+  const Point3* vertices = nullptr;
+  uint32_t n_vertices = 0;
+  const uint32_t* pairs = nullptr;  // 2 per edge
+  uint32_t n_edges = 0;
+  const Triangle* triangles = nullptr;
+  uint32_t n_triangles = 0;
+
+  SolidSource source(bool closed) const {
+    SolidSource s;
+    s.ctx = const_cast<StagedSolidBand*>(this);
+    s.n_vertices = n_vertices;
+    s.n_edges = n_edges;
+    s.n_triangles = n_triangles;
+    s.closed = closed;
+    s.vertex = [](void* ctx, uint32_t v, Point3* out) {
+      const StagedSolidBand* b = static_cast<const StagedSolidBand*>(ctx);
+      uint32_t lo = 0, hi = b->n_vertices;
+      while (lo < hi) {
+        const uint32_t mid = lo + (hi - lo) / 2;
+        if (b->vertex_ids[mid] < v)
+          lo = mid + 1;
+        else
+          hi = mid;
+      }
+      if (lo == b->n_vertices || b->vertex_ids[lo] != v) return Status::kUploadMismatch;
+      *out = b->vertices[lo];
+      return Status::kOk;
+    };
+    s.edge = [](void* ctx, uint32_t i, uint32_t* v0, uint32_t* v1) {
+      const StagedSolidBand* b = static_cast<const StagedSolidBand*>(ctx);
+      *v0 = b->pairs[2 * size_t{i}];
+      *v1 = b->pairs[2 * size_t{i} + 1];
+      return Status::kOk;
+    };
+    s.triangle = [](void* ctx, uint32_t i, Triangle* out) {
+      *out = static_cast<const StagedSolidBand*>(ctx)->triangles[i];
+      return Status::kOk;
+    };
+    return s;
+  }
+};
 
 }  // namespace haloplot

@@ -50,6 +50,10 @@ BandSpec band_spec(const JobSpec& spec) {
   bs.cut = spec.cut;
   bs.start_x = spec.start_x;
   bs.start_y = spec.start_y;
+  bs.style = StrokeStyle{spec.drawing == DrawingEffect::kHiddenDashed ? SolidMode::kHiddenDashed
+                                                                      : SolidMode::kHiddenRemoved,
+                         spec.hidden.dash, spec.hidden.gap};
+  bs.outline = spec.hidden.outline;
   return bs;
 }
 

@@ -80,7 +80,8 @@ struct PreparedJob {
   uint32_t resume_after_events = 0;
 };
 
-// The band conductor's settings for an edge drawing of this job (kHaloed, or kAllEdges).
+// The band conductor's settings for this job: an edge drawing (kHaloed, or kAllEdges), or the
+// strokes of a hidden-line drawing in bands (kHiddenRemoved, kHiddenDashed: begin_solid).
 BandSpec band_spec(const JobSpec& spec);
 
 // Bytes the job needs for these edges when CUT may store up to `crossing_capacity` records.

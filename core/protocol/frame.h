@@ -35,6 +35,10 @@ enum class FrameType : uint8_t {
   kBandBegin = 0x1A,    // one band's rows and edge count; accepted while plotting
   kBandEdges = 0x1B,    // the band's edges with their scene indices; accepted while plotting
   kStreamEnd = 0x1C,    // no band follows
+  // A solid's band (kStreamBegin flag kStreamSolid): its vertices, drawn edges and triangles.
+  kBandVertices = 0x1D,
+  kBandSolidEdges = 0x1E,
+  kBandTriangles = 0x1F,
   kPlot = 0x20,
   kReplot = 0x21,  // another halo width: DRAW only, CUT's result is kept
   kQueryStatus = 0x30,

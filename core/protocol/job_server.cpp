@@ -106,6 +106,9 @@ Status JobServer::act(const Frame& f) {
   // The bands of a streamed plot arrive while it plots.
   if (type == FrameType::kBandBegin) return band_begin(f.payload, f.length);
   if (type == FrameType::kBandEdges) return band_edges(f.payload, f.length);
+  if (type == FrameType::kBandVertices || type == FrameType::kBandSolidEdges ||
+      type == FrameType::kBandTriangles)
+    return band_solid(type, f.payload, f.length);
   if (type == FrameType::kStreamEnd) {
     if (!streamed_ || f.length != 0 || staging_ == Staging::kReceiving)
       return Status::kUploadMismatch;
@@ -357,6 +360,8 @@ Status JobServer::stream_begin(const uint8_t* p, uint16_t n) {
   staging_capacity_ = uint32_t((arena_bytes_ - arena) / (sizeof(Edge3) + sizeof(uint32_t)));
   staged_edges_ = reinterpret_cast<Edge3*>(arena_ + arena);
   staged_ids_ = reinterpret_cast<uint32_t*>(staged_edges_ + staging_capacity_);
+  stage_base_ = arena_ + arena;
+  stage_bytes_ = arena_bytes_ - arena;
   scene_ = UploadBegin{};
   n_edges_ = 0;
   forget_cut();
@@ -370,15 +375,83 @@ Status JobServer::band_begin(const uint8_t* p, uint16_t n) {
   BandBegin b;
   const Status s = decode_band_begin(p, n, &b);
   if (!ok(s)) return s;
-  if (b.edges > staging_capacity_) return Status::kSceneTooLarge;
+  staged_vertices_ = staged_triangles_ = 0;
+  if (!solid_stream()) {
+    if (b.vertices != 0 || b.triangles != 0) return Status::kMalformedRequest;
+    if (b.edges > staging_capacity_) return Status::kSceneTooLarge;
+  } else {
+    // [vertex ids | vertices | edge ids | vertex pairs | triangles], each 8-byte aligned.
+    const uint64_t need = carve_round(uint64_t{b.vertices} * 4) +
+                          carve_round(uint64_t{b.vertices} * sizeof(Point3)) +
+                          carve_round(uint64_t{b.edges} * 4) + carve_round(uint64_t{b.edges} * 8) +
+                          uint64_t{b.triangles} * sizeof(Triangle);
+    if (need > stage_bytes_) return Status::kSceneTooLarge;
+    Carver c(stage_base_, stage_bytes_);
+    staged_vertex_ids_ = c.take<uint32_t>(b.vertices);
+    staged_points_ = c.take<Point3>(b.vertices);
+    staged_ids_ = c.take<uint32_t>(b.edges);
+    staged_pairs_ = c.take<uint32_t>(size_t{b.edges} * 2);
+    staged_faces_ = c.take<Triangle>(b.triangles);
+  }
   staged_ = b;
   staged_received_ = 0;
-  staging_ = b.edges == 0 ? Staging::kReady : Staging::kReceiving;
+  staging_ = Staging::kReceiving;
+  check_staged();
+  return Status::kOk;
+}
+
+// The staged band is whole once every record it announced has come.
+void JobServer::check_staged() {
+  if (staged_received_ == staged_.edges && staged_vertices_ == staged_.vertices &&
+      staged_triangles_ == staged_.triangles)
+    staging_ = Staging::kReady;
+}
+
+// A solid's band records, in their order: vertices (ascending scene indices), edges, triangles.
+Status JobServer::band_solid(FrameType type, const uint8_t* p, uint16_t n) {
+  if (!streamed_ || !solid_stream() || staging_ != Staging::kReceiving)
+    return Status::kUploadMismatch;
+  if (type == FrameType::kBandVertices) {
+    if (n % kBandVertexRecordBytes || staged_received_ > 0 || staged_triangles_ > 0)
+      return Status::kUploadMismatch;
+    const uint32_t k = uint32_t(n / kBandVertexRecordBytes);
+    if (k > staged_.vertices - staged_vertices_) return Status::kUploadMismatch;
+    for (uint32_t i = 0; i < k; ++i, ++staged_vertices_) {
+      const uint8_t* r = p + size_t{i} * kBandVertexRecordBytes;
+      const uint32_t id = get_u32(r);
+      if (staged_vertices_ > 0 && id <= staged_vertex_ids_[staged_vertices_ - 1])
+        return Status::kMalformedRequest;
+      staged_vertex_ids_[staged_vertices_] = id;
+      staged_points_[staged_vertices_] = decode_vertex(r + 4);
+      if (!in_range(staged_points_[staged_vertices_])) return Status::kCoordinateOutOfRange;
+    }
+  } else if (type == FrameType::kBandSolidEdges) {
+    if (n % kBandSolidEdgeRecordBytes || staged_vertices_ != staged_.vertices ||
+        staged_triangles_ > 0)
+      return Status::kUploadMismatch;
+    const uint32_t k = uint32_t(n / kBandSolidEdgeRecordBytes);
+    if (k > staged_.edges - staged_received_) return Status::kUploadMismatch;
+    for (uint32_t i = 0; i < k; ++i, ++staged_received_) {
+      const uint8_t* r = p + size_t{i} * kBandSolidEdgeRecordBytes;
+      staged_ids_[staged_received_] = get_u32(r);
+      staged_pairs_[2 * staged_received_] = get_u32(r + 4);
+      staged_pairs_[2 * staged_received_ + 1] = get_u32(r + 8);
+    }
+  } else {
+    if (n % kBandTriangleRecordBytes || staged_vertices_ != staged_.vertices ||
+        staged_received_ != staged_.edges)
+      return Status::kUploadMismatch;
+    const uint32_t k = uint32_t(n / kBandTriangleRecordBytes);
+    if (k > staged_.triangles - staged_triangles_) return Status::kUploadMismatch;
+    for (uint32_t i = 0; i < k; ++i, ++staged_triangles_)
+      staged_faces_[staged_triangles_] = decode_face(p + size_t{i} * kBandTriangleRecordBytes);
+  }
+  check_staged();
   return Status::kOk;
 }
 
 Status JobServer::band_edges(const uint8_t* p, uint16_t n) {
-  if (!streamed_ || staging_ != Staging::kReceiving || n % kBandEdgeRecordBytes)
+  if (!streamed_ || solid_stream() || staging_ != Staging::kReceiving || n % kBandEdgeRecordBytes)
     return Status::kUploadMismatch;
   const uint32_t k = uint32_t(n / kBandEdgeRecordBytes);
   if (k > staged_.edges - staged_received_) return Status::kUploadMismatch;
@@ -406,6 +479,13 @@ Status JobServer::next_band(void* ctx, StreamedBand* band, bool* end) {
   band->edges = self->staged_edges_;
   band->ids = self->staged_ids_;
   band->n = self->staged_.edges;
+  if (self->solid_stream()) {
+    self->staged_solid_ = StagedSolidBand{
+        self->staged_vertex_ids_, self->staged_points_, self->staged_.vertices, self->staged_pairs_,
+        self->staged_.edges,      self->staged_faces_,  self->staged_.triangles};
+    band->edges = nullptr;
+    band->solid = &self->staged_solid_;
+  }
   return Status::kOk;
 }
 
@@ -414,14 +494,23 @@ void JobServer::release_band(void* ctx) {
 }
 
 Status JobServer::plot_streamed() {
-  if (spec_.drawing != DrawingEffect::kHaloed && spec_.drawing != DrawingEffect::kAllEdges)
+  const bool edges =
+      spec_.drawing == DrawingEffect::kHaloed || spec_.drawing == DrawingEffect::kAllEdges;
+  const bool lines = spec_.drawing == DrawingEffect::kHiddenRemoved ||
+                     spec_.drawing == DrawingEffect::kHiddenDashed;
+  // Hatching is not drawn in bands.
+  if (!(edges && !solid_stream()) && !(lines && solid_stream() && !spec_.hidden.hatch))
     return Status::kUnsupported;
   BandStream stream;
   stream.ctx = this;
   stream.next = &JobServer::next_band;
   stream.release = &JobServer::release_band;
-  const Status s = conductor_.begin_streamed(band_spec(spec_), stream_.margin, stream, arena_,
-                                             stream_.arena_bytes & ~uint32_t{7});
+  const uint32_t bytes = stream_.arena_bytes & ~uint32_t{7};
+  const Status s =
+      solid_stream()
+          ? conductor_.begin_streamed_solid(band_spec(spec_), (stream_.flags & kStreamClosed) != 0,
+                                            stream, arena_, bytes)
+          : conductor_.begin_streamed(band_spec(spec_), stream_.margin, stream, arena_, bytes);
   if (!ok(s)) return s;
   job_ = PreparedJob{};
   job_.feed = PointFeed{&BandConductor::feed, &conductor_};

@@ -104,6 +104,9 @@ class JobServer {
   Status stream_begin(const uint8_t* p, uint16_t n);
   Status band_begin(const uint8_t* p, uint16_t n);
   Status band_edges(const uint8_t* p, uint16_t n);
+  Status band_solid(FrameType type, const uint8_t* p, uint16_t n);
+  bool solid_stream() const { return (stream_.flags & kStreamSolid) != 0; }
+  void check_staged();
   Status plot_streamed();
   static Status next_band(void* ctx, StreamedBand* band, bool* end);
   static void release_band(void* ctx);
@@ -150,6 +153,15 @@ class JobServer {
   uint32_t staged_received_ = 0, staging_capacity_ = 0;
   Edge3* staged_edges_ = nullptr;
   uint32_t* staged_ids_ = nullptr;
+  // A solid's band: carved from the same staging bytes, vertices, then edges, then triangles.
+  uint8_t* stage_base_ = nullptr;
+  size_t stage_bytes_ = 0;
+  uint32_t staged_vertices_ = 0, staged_triangles_ = 0;  // received so far
+  uint32_t* staged_vertex_ids_ = nullptr;
+  Point3* staged_points_ = nullptr;
+  uint32_t* staged_pairs_ = nullptr;
+  Triangle* staged_faces_ = nullptr;
+  StagedSolidBand staged_solid_{};
 };
 
 }  // namespace haloplot

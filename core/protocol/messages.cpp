@@ -190,13 +190,17 @@ Status decode_hidden(const uint8_t* p, size_t n, HiddenJob* out) {
 void encode_stream_begin(const StreamBegin& b, uint8_t out[kStreamBeginBytes]) {
   put_i32(out, b.margin);
   put_u32(out + 4, b.arena_bytes);
+  out[8] = b.flags;
 }
 
 Status decode_stream_begin(const uint8_t* p, size_t n, StreamBegin* out) {
-  if (n != kStreamBeginBytes || get_i32(p) < 0 || get_i32(p) > 2 * kCoordLimit)
+  if (n != kStreamBeginBytes || get_i32(p) < 0 || get_i32(p) > 2 * kCoordLimit ||
+      (p[8] & ~(kStreamSolid | kStreamClosed)) != 0 ||
+      ((p[8] & kStreamClosed) != 0 && (p[8] & kStreamSolid) == 0))
     return Status::kMalformedRequest;
   out->margin = get_i32(p);
   out->arena_bytes = get_u32(p + 4);
+  out->flags = p[8];
   return Status::kOk;
 }
 
@@ -204,6 +208,8 @@ void encode_band_begin(const BandBegin& b, uint8_t out[kBandBeginBytes]) {
   put_i32(out, b.y0);
   put_i32(out + 4, b.y1);
   put_u32(out + 8, b.edges);
+  put_u32(out + 12, b.vertices);
+  put_u32(out + 16, b.triangles);
 }
 
 Status decode_band_begin(const uint8_t* p, size_t n, BandBegin* out) {
@@ -213,6 +219,8 @@ Status decode_band_begin(const uint8_t* p, size_t n, BandBegin* out) {
   out->y0 = y0;
   out->y1 = y1;
   out->edges = get_u32(p + 8);
+  out->vertices = get_u32(p + 12);
+  out->triangles = get_u32(p + 16);
   return Status::kOk;
 }
 

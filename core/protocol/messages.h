@@ -22,9 +22,14 @@
 //                      pen travel, pen settle, backlash 0, 1), 2 x i32 start x, y      61
 //   kPlot              (empty), or u32 step events: resume a plot stopped there          4
 //   kReplot            as kSetHalo                                                      5
-//   kStreamBegin       i32 margin (rows), u32 arena bytes for the bands                     8
-//   kBandBegin         i32 y0, i32 y1 (rows [y0, y1)), u32 edges                           12
+//   kStreamBegin       i32 margin (rows), u32 arena bytes for the bands, u8 flags (1 a
+//                      solid's bands, 2 its model is closed)                               9
+//   kBandBegin         i32 y0, i32 y1 (rows [y0, y1)), u32 edges, u32 vertices,
+//                      u32 triangles (a solid's; 0 for edges)                              20
 //   kBandEdges         u32 scene index, then an Edge3 record                       28 per edge
+//   kBandVertices      u32 scene index (ascending), projected Point3             16 per vertex
+//   kBandSolidEdges    u32 scene index, u32 v0, u32 v1 (scene vertex indices)   12 per edge
+//   kBandTriangles     as kUploadFaces, scene vertex indices                  16 per triangle
 //   kStreamEnd         (empty)
 //   kPause, kResume    (empty)
 //   kAck               u8 seq, u8 status                                                2
@@ -44,18 +49,22 @@ namespace haloplot {
 inline constexpr size_t kUploadBeginBytes = 13, kEdgeRecordBytes = 24, kVertexRecordBytes = 12,
                         kIndexRecordBytes = 8, kViewBytes = 24, kHaloBytes = 5, kEffectsBytes = 2,
                         kMachineBytes = 61, kStatusBytes = 32, kFaceRecordBytes = 16,
-                        kHiddenBytes = 22, kStreamBeginBytes = 8, kBandBeginBytes = 12,
-                        kBandEdgeRecordBytes = 4 + kEdgeRecordBytes;
+                        kHiddenBytes = 22, kStreamBeginBytes = 9, kBandBeginBytes = 20,
+                        kBandEdgeRecordBytes = 4 + kEdgeRecordBytes, kBandVertexRecordBytes = 16,
+                        kBandSolidEdgeRecordBytes = 12, kBandTriangleRecordBytes = 16;
 
 // A streamed plot (band/conductor.h begin_streamed): the host's margin and the arena its bands
 // were sized for; then each band's rows and edge count.
+inline constexpr uint8_t kStreamSolid = 1, kStreamClosed = 2;
 struct StreamBegin {
   int32_t margin = 0;
   uint32_t arena_bytes = 0;
+  uint8_t flags = 0;  // kStreamSolid (begin_streamed_solid), kStreamClosed (the model's check)
 };
 struct BandBegin {
   int32_t y0 = 0, y1 = 0;
   uint32_t edges = 0;
+  uint32_t vertices = 0, triangles = 0;  // a solid's band
 };
 
 enum class SceneFormat : uint8_t { kEdges = 0, kIndexed = 1 };

@@ -1,5 +1,7 @@
 #include "solid/fallback.h"
 
+#include "geometry/fraction.h"
+#include "geometry/predicates.h"
 #include "geometry/rows.h"
 #include "geometry/wide.h"
 #include "memory/carve.h"
@@ -7,6 +9,7 @@
 #include "solid/cover.h"
 #include "solid/face_grid.h"
 #include "solid/qi.h"
+#include "sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {
@@ -15,6 +18,155 @@ constexpr int64_t kOne = int64_t{1} << 32;
 
 enum Vc : uint8_t { kVcUnknown = 0, kVcVisible = 1, kVcHidden = 2, kVcUnusable = 3 };
 
+// Does the outline pass ask about drawn edge e: a contour, or an edge with one face?
+bool outline_candidate(const SolidEdge& e) {
+  return e.cls == EdgeClass::kH3 || ((e.face[0] == kNoFace) != (e.face[1] == kNoFace));
+}
+
+// The outline pass's table: for each drawn candidate edge, the sorted positions along it where
+// it passes in front of another edge (CUT records those on the edge behind).
+template <typename C>
+void count_outline(C& c, const Topology& topo, size_t fronts) {
+  c.template take<uint32_t>(size_t{topo.n_drawn} + 1);
+  c.template take<uint32_t>(fronts);
+}
+
+size_t count_fronts(const Topology& topo, const CutSet& cs) {
+  size_t n = 0;
+  for (uint32_t i = 0; i < cs.n_crossings; ++i) {
+    const Crossing& r = cs.crossings[i];
+    const uint32_t f = r.front_edge();
+    if (!r.near_miss() && f < topo.n_drawn && outline_candidate(topo.edges[f])) ++n;
+  }
+  return n;
+}
+
+// Kira's condition at position m of edge e, away from its face(s): no face at all there.
+bool outside_empty(const Topology& topo, const FaceGrid& fg, const SolidEdge& se, int64_t m,
+                   int32_t dir_x, int32_t dir_y) {
+  const Point3 a = topo.vertices[se.v0], b = topo.vertices[se.v1];
+  CoverPoint p;
+  p.d = kOne;
+  p.x = int64_t{a.x} * kOne + int64_t{b.x - a.x} * m;
+  p.y = int64_t{a.y} * kOne + int64_t{b.y - a.y} * m;
+  p.dir_x = dir_x;
+  p.dir_y = dir_y;
+  const int32_t cx = cell_x(p), cy = cell_y(p);
+  for (const uint32_t* k = fg.begin(cx, cy); k != fg.end(cx, cy); ++k) {
+    const uint32_t* v = topo.triangles[*k].v;
+    if (projection_cover_halves(topo.vertices[v[0]], topo.vertices[v[1]], topo.vertices[v[2]], p) !=
+        0)
+      return false;
+  }
+  return true;
+}
+
+// The direction away from edge e's face(s) in projection, or (0, 0) when the face is edge-on.
+// (A contour's two faces lie on the same side of it on paper; the first that is not edge-on
+// says which.)
+void outward(const Topology& topo, const SolidEdge& se, int32_t* dx, int32_t* dy) {
+  const Point3 a = topo.vertices[se.v0], b = topo.vertices[se.v1];
+  const int64_t ex = int64_t{b.x} - a.x, ey = int64_t{b.y} - a.y;
+  int64_t side = 0;
+  for (int k = 0; k < 2 && side == 0; ++k) {
+    if (se.face[k] == kNoFace) continue;
+    const uint32_t* v = topo.triangles[se.face[k]].v;
+    const uint32_t c =
+        v[0] != se.v0 && v[0] != se.v1 ? v[0] : (v[1] != se.v0 && v[1] != se.v1 ? v[1] : v[2]);
+    const Point3 p = topo.vertices[c];
+    side = ex * (int64_t{p.y} - a.y) - ey * (int64_t{p.x} - a.x);
+  }
+  // The face on the left of a -> b: outside is to the right, (ey, -ex); and the other way.
+  *dx = side == 0 ? 0 : int32_t(side > 0 ? ey : -ey);
+  *dy = side == 0 ? 0 : int32_t(side > 0 ? -ex : ex);
+}
+
+// The outline runs of one edge, from its visible pieces in order: each piece is cut wherever
+// the edge crosses another (either way) or meets a vertex, each part asked the condition, and
+// the parts that pass are joined into runs.
+struct OutlineRuns {
+  const Topology& topo;
+  const FaceGrid& fg;
+  const CutSet& cs;
+  const Incidences& inc;
+  const uint32_t* front_first;
+  const uint32_t* front_t;
+  FallbackSink sink;
+  uint32_t e = 0;
+  int32_t dir_x = 0, dir_y = 0;
+  bool on = false, have = false, last_pass = false;
+  int64_t run_t0 = 0, run_t1 = 0;
+  uint64_t tests = 0;
+
+  void start(uint32_t edge) {
+    e = edge;
+    have = last_pass = false;
+    on = outline_candidate(topo.edges[e]);
+    if (on) outward(topo, topo.edges[e], &dir_x, &dir_y);
+    on = on && (dir_x != 0 || dir_y != 0);
+  }
+  Status finish() {
+    Status s = Status::kOk;
+    if (have && sink.outline != nullptr)
+      s = sink.outline(sink.context, FallbackPiece{e, run_t0, run_t1, 0, false, true});
+    have = false;
+    return s;
+  }
+  // A band's window [lo, hi) of the edge (solid/fallback.h): a part too short to test that a
+  // border cut off a longer one is asked just beyond the border, inside that longer part (the
+  // band holds the faces of the row beyond each border: band/solid_band.cpp).
+  bool window = false;
+  int64_t lo = 0, hi = kOne;
+  Status part(int64_t u0, int64_t u1) {
+    if (u1 <= u0) return Status::kOk;
+    int64_t m = u0 + (u1 - u0) / 2;
+    if (u1 - u0 < 2)
+      m = window && u0 == lo && lo > 0 ? lo - 1 : (window && u1 == hi && hi < kOne ? hi : -1);
+    const bool pass =
+        m < 0 ? last_pass : (++tests, outside_empty(topo, fg, topo.edges[e], m, dir_x, dir_y));
+    last_pass = pass;
+    if (pass && have && run_t1 == u0) {
+      run_t1 = u1;
+      return Status::kOk;
+    }
+    const Status s = finish();
+    if (pass) {
+      run_t0 = u0;
+      run_t1 = u1;
+      have = true;
+    }
+    return s;
+  }
+  // A visible piece [t0, t1) of the edge.
+  Status visible(int64_t t0, int64_t t1) {
+    if (!on) return Status::kOk;
+    const Crossing* cx = cs.begin(e);
+    const uint32_t ncx = cs.count(e);
+    const Incidence* ix = inc.by_edge + inc.edge_first[e];
+    const uint32_t nix = inc.edge_first[e + 1] - inc.edge_first[e];
+    const uint32_t* fx = front_t + front_first[e];
+    const uint32_t nfx = front_first[e + 1] - front_first[e];
+    uint32_t i = 0, j = 0, k = 0;
+    int64_t at = t0;
+    for (;;) {  // the next cut of the three sorted lists
+      int64_t t = kOne + 1;
+      if (i < ncx && cx[i].t < t) t = cx[i].t;
+      if (j < nix && ix[j].t < t) t = ix[j].t;
+      if (k < nfx && fx[k] < t) t = fx[k];
+      if (t > kOne) break;
+      if (i < ncx && cx[i].t == t) ++i;
+      if (j < nix && ix[j].t == t) ++j;
+      if (k < nfx && fx[k] == t) ++k;
+      if (t <= at) continue;
+      if (t >= t1) break;
+      const Status s = part(at, t);
+      if (!ok(s)) return s;
+      at = t;
+    }
+    return part(at, t1);
+  }
+};
+
 }  // namespace
 
 size_t fallback_bytes(const Topology& topo) {
@@ -22,6 +174,12 @@ size_t fallback_bytes(const Topology& topo) {
   c.take<uint8_t>(face_grid_bytes(topo));
   c.take<uint8_t>(topo.n_vertices);
   return c.total + 8;
+}
+
+size_t fallback_outline_bytes(const Topology& topo, const CutSet& cutset) {
+  ByteCounter c;
+  count_outline(c, topo, count_fronts(topo, cutset));
+  return c.total;
 }
 
 Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cutset,
@@ -35,9 +193,38 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
   uint8_t* grid_buffer = carve.take<uint8_t>(grid_bytes);
   uint8_t* vc = carve.take<uint8_t>(topo.n_vertices);
   if (carve.short_) return Status::kWorkspaceTooSmall;
+  uint32_t* front_first = nullptr;
+  uint32_t* front_t = nullptr;
+  if (params.outline) {
+    front_first = carve.take<uint32_t>(size_t{topo.n_drawn} + 1);
+    front_t = carve.take<uint32_t>(count_fronts(topo, cutset));
+    if (carve.short_) return Status::kWorkspaceTooSmall;
+  }
   FaceGrid fg;
   const Status gs = build_face_grid(topo, grid_buffer, grid_bytes, &fg);
   if (gs != Status::kOk) return gs;
+  if (params.outline) {  // positions where a candidate edge passes in front: count, place, sort
+    for (uint32_t e = 0; e <= topo.n_drawn; ++e) front_first[e] = 0;
+    for (uint32_t i = 0; i < cutset.n_crossings; ++i) {
+      const Crossing& r = cutset.crossings[i];
+      const uint32_t f = r.front_edge();
+      if (!r.near_miss() && f < topo.n_drawn && outline_candidate(topo.edges[f]))
+        ++front_first[f + 1];
+    }
+    for (uint32_t e = 0; e < topo.n_drawn; ++e) front_first[e + 1] += front_first[e];
+    for (uint32_t e = 0; e < topo.n_edges; ++e)  // every record, by the edge behind
+      for (const Crossing* r = cutset.begin(e); r != cutset.begin(e) + cutset.count(e); ++r) {
+        const uint32_t f = r->front_edge();
+        if (r->near_miss() || f >= topo.n_drawn || !outline_candidate(topo.edges[f])) continue;
+        const CrossingTest x = test_crossing(topo.edge3(f), topo.edge3(e));
+        front_t[front_first[f]++] = frac_q32_small(x.tn, x.den);
+      }
+    for (uint32_t e = topo.n_drawn; e > 0; --e) front_first[e] = front_first[e - 1];
+    front_first[0] = 0;
+    for (uint32_t e = 0; e < topo.n_drawn; ++e)
+      sort_in_place(front_t + front_first[e], front_first[e + 1] - front_first[e],
+                    [](uint32_t a, uint32_t b) { return a < b; });
+  }
   FallbackStats st;
   st.grid_cells = fg.grid.cells();
   st.cell_faces = fg.pairs;
@@ -68,6 +255,7 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
     }
   }
 
+  OutlineRuns runs{topo, fg, cutset, inc, front_first, front_t, sink};
   const bool use_front = !params.any_facing;
   for (uint32_t e = 0; e < topo.n_drawn; ++e) {
     const SolidEdge& se = topo.edges[e];
@@ -88,6 +276,17 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
     FallbackPiece pending{e, 0, 0, 0, false, true};
     bool have = false;
     Status status = Status::kOk;
+    if (params.outline) {
+      runs.start(e);
+      runs.window = params.window;
+      runs.lo = lo;
+      runs.hi = hi;
+    }
+    auto flush = [&] {  // the pending piece to the sink, and its outline runs
+      status = sink.emit(sink.context, pending);
+      if (ok(status) && params.outline && !pending.hidden)
+        status = runs.visible(pending.t0, pending.t1);
+    };
     int32_t last_q = 0;
     bool last_hidden = false;
     auto emit = [&](int64_t t0, int64_t t1) {
@@ -141,7 +340,7 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
         pending.t1 = t1;
         return;
       }
-      if (have) status = sink.emit(sink.context, pending);
+      if (have) flush();
       pending = FallbackPiece{e, t0, t1, q, hidden, tested};
       have = true;
     };
@@ -164,9 +363,11 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
       at = t;
     }
     emit(at, kOne);
-    if (have && status == Status::kOk) status = sink.emit(sink.context, pending);
+    if (have && status == Status::kOk) flush();
+    if (status == Status::kOk && params.outline) status = runs.finish();
     if (status != Status::kOk) return status;
   }
+  st.outline_tests = runs.tests;
   if (stats != nullptr) *stats = st;
   return Status::kOk;
 }

@@ -34,6 +34,11 @@ struct FallbackParams {
   // emitted as cut, not merged (FallbackPiece::tested says which ones were tested).
   bool window = false;
   int32_t row_lo = 0, row_hi = 0;
+  // Kira's outlines without the QI: every visible piece of a contour edge (H3), or of an edge
+  // with one face (an open surface's rim), is cut wherever it crosses another edge either way
+  // or meets a vertex, and each part is asked Kira's condition (solid/outline.h: no face at all
+  // just outside it, away from its faces). The runs that pass go to FallbackSink::outline.
+  bool outline = false;
 };
 
 struct FallbackStats {
@@ -43,6 +48,7 @@ struct FallbackStats {
   uint64_t vc_saved = 0;     // tests the V.C. table answered
   uint64_t class_saved = 0;  // pieces of H1/H2 edges, hidden by class
   uint64_t short_pieces = 0;
+  uint64_t outline_tests = 0;  // Kira's condition asked by the outline pass
   uint32_t peculiar_a = 0, peculiar_b = 0;
   uint32_t grid_cells = 0, cell_faces = 0;
 };
@@ -60,10 +66,13 @@ struct FallbackPiece {
 struct FallbackSink {
   Status (*emit)(void* context, const FallbackPiece& piece);
   void* context;
+  Status (*outline)(void* context, const FallbackPiece& run);  // may be null
 };
 
-// Scratch bytes for the face grid and the tables (walks the faces once to count cell pairs).
+// Scratch bytes for the face grid and the tables (walks the faces once to count cell pairs),
+// and, with outlines, the positions where contour edges pass in front of others.
 size_t fallback_bytes(const Topology& topo);
+size_t fallback_outline_bytes(const Topology& topo, const CutSet& cutset);
 
 // `cutset` is CUT over topo's edges in topo's order; `front` may be null unless classes or
 // V.C. are asked for (then classify() must have run).

@@ -47,6 +47,13 @@ Status fallback_piece(void* ctx, const FallbackPiece& p) {
                        HiddenPiece{p.edge, a->edges + p.edge, p.t0, p.t1, p.q, p.hidden, p.tested});
 }
 
+Status fallback_outline(void* ctx, const FallbackPiece& p) {
+  const Adapter* a = static_cast<const Adapter*>(ctx);
+  if (a->sink.outline == nullptr) return Status::kOk;
+  return a->sink.outline(a->sink.context,
+                         HiddenPiece{p.edge, a->edges + p.edge, p.t0, p.t1, 0, false, true});
+}
+
 Status outline_piece(void* ctx, const OutlineSegment& s) {
   const Adapter* a = static_cast<const Adapter*>(ctx);
   if (a->sink.outline == nullptr) return Status::kOk;
@@ -176,13 +183,16 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
     fp.row_lo = params.band_y0;
     fp.row_hi = params.band_y1;
   }
-  r.bytes_fallback = fallback_bytes(topo);
+  // Outlines from the fallback: Kira's condition on every visible contour part (no QI to
+  // trace circuits with).
+  fp.outline = params.outline;
+  r.bytes_fallback = fallback_bytes(topo) + (fp.outline ? fallback_outline_bytes(topo, cutset) : 0);
   uint8_t* fb_mem = arena.take(r.bytes_fallback);
   if (fb_mem == nullptr) return *report = r, short_of(arena, report);
   if (sink.begin != nullptr)
     sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);
   s = run_fallback(topo, front, cutset, inc, fp, fb_mem, r.bytes_fallback,
-                   FallbackSink{&fallback_piece, &adapter}, &r.fallback);
+                   FallbackSink{&fallback_piece, &adapter, &fallback_outline}, &r.fallback);
   r.bytes_used = arena.high;
   *report = r;
   return s;

@@ -1,7 +1,8 @@
 // Hidden lines of a solid model in one call, for the host tool and the controller alike:
 // topology and checks, classes, CUT over every edge, incidences, then Appel/Heger QI (with
-// Kira's outlines when asked) on a closed oriented manifold, or the topology-free fallback
-// (with Kira's V.C. table and classes when the mesh allows) otherwise.
+// Kira's outlines traced when asked) on a closed oriented manifold, or the topology-free
+// fallback (with Kira's V.C. table and classes when the mesh allows, and Kira's outline
+// condition asked part by part when outlines are asked) otherwise.
 //
 // Memory: one caller buffer, carved stage by stage; CUT's scratch is given back before the
 // incidences are found. Before the first piece is emitted every stage has carved what it
@@ -36,7 +37,7 @@ enum class FallbackReason : uint8_t {
 
 struct HiddenParams {
   HiddenMethod method = HiddenMethod::kAuto;
-  bool outline = false;  // Kira's outlines (QI only)
+  bool outline = false;  // Kira's outlines (traced from the QI; asked part by part otherwise)
   bool kira = true;      // the fallback's V.C. table and class shortcuts, on manifold meshes
   CutParams cut;
   uint32_t crossing_capacity = 0;   // CUTSET records (CUT says the count if short)

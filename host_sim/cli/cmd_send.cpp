@@ -91,14 +91,7 @@ int cmd_send(int argc, char** argv) {
       if (!parse_up(up_option, &up, &up_error)) return send_fail(o.positional[0] + ": " + up_error);
       make_z_up(&model, up);
     }
-    jf.spec.hidden = HiddenJob{so.method,
-                               so.spec.outline,
-                               so.spec.dash_steps,
-                               so.spec.gap_steps,
-                               so.hatch,
-                               so.hatch_params.spacing,
-                               so.hatch_params.angle_mdeg,
-                               so.hatch_params.mdeg_per_depth};
+    jf.spec.hidden = hidden_job(so);
     if (jf.spec.drawing == DrawingEffect::kHiddenRemoved ||
         jf.spec.drawing == DrawingEffect::kHiddenDashed) {
       TriangulateStats ts;
@@ -113,8 +106,24 @@ int cmd_send(int argc, char** argv) {
   // exactly as `sim` with the same arena does, and send each band's edges as the plot needs them.
   BandPlan plan;
   if (jf.arena > 0) {
-    if (obj) return send_fail(o.positional[0] + ": 'arena' streams .edges scenes only");
-    const Status ps = plan_streamed_bands(edges, band_spec(jf.spec), jf.arena, &plan);
+    const bool lines = jf.spec.drawing == DrawingEffect::kHiddenRemoved ||
+                       jf.spec.drawing == DrawingEffect::kHiddenDashed;
+    if (obj && !lines)
+      return send_fail(o.positional[0] +
+                       ": 'arena' streams .edges scenes and hidden-line drawings of .obj models");
+    if (obj && jf.spec.hidden.hatch)
+      return send_fail(o.positional[0] + ": 'arena': " + kNotInBands);
+    Status ps = Status::kOk;
+    if (obj) {  // the model projected here with the core's view, as `sim` does
+      SolidScene solid;
+      HiddenJob hidden;
+      std::string why;
+      if (!load_solid_job_scene(jf, &solid, &hidden, &why)) return send_fail(why);
+      ps = plan_streamed_solid(solid_input(solid), model_closed(solid), band_spec(jf.spec),
+                               jf.arena, &plan);
+    } else {
+      ps = plan_streamed_bands(edges, band_spec(jf.spec), jf.arena, &plan);
+    }
     if (!ok(ps))
       return send_fail(
           o.positional[0] + ": planning the bands: " + status_name(ps) +

@@ -517,19 +517,33 @@ int cmd_sim(int argc, char** argv) {
     return fail("--resume-at needs a step-event count: '" + o.get("--resume-at") + "'");
   std::vector<Edge3> edges;
   std::string error;
-  if (!load_job_scene(jf, &edges, &error)) return fail(error);
+  // A hidden-line drawing with an arena is worked out in bands, as the controller does; without
+  // one the host decides it whole and plots the chosen strokes.
+  const bool solid_bands = jf.arena > 0 && (jf.spec.drawing == DrawingEffect::kHiddenRemoved ||
+                                            jf.spec.drawing == DrawingEffect::kHiddenDashed);
+  SolidScene solid;
+  if (solid_bands) {
+    if (!load_solid_job_scene(jf, &solid, &jf.spec.hidden, &error)) return fail(error);
+    if (jf.spec.hidden.hatch) return fail(o.positional[0] + ": 'arena': " + kNotInBands);
+  } else if (!load_job_scene(jf, &edges, &error)) {
+    return fail(error);
+  }
   if (isatty(2)) jf.spec.cut.progress = &progress;
   JobSpec spec = jf.spec;
   // Hidden-line drawings are decided on the host; the controller's job then draws the chosen
   // strokes whole (their z no longer matters).
-  if (spec.drawing == DrawingEffect::kHiddenRemoved || spec.drawing == DrawingEffect::kHiddenDashed)
+  if (!solid_bands && (spec.drawing == DrawingEffect::kHiddenRemoved ||
+                       spec.drawing == DrawingEffect::kHiddenDashed))
     spec.drawing = DrawingEffect::kAllEdges;
   if (!spec.effects.backlash)
     spec.machine.backlash[0] = spec.machine.backlash[1] = 0;  // not simulated
   SimReport r;
   Status s = Status::kOk;
   error = write_atomically(o.get("-o"), [&](std::ostream& out) {
-    s = simulate(spec, edges, &out, &r, jf.arena, form, pause_at, uint32_t(resume_at));
+    s = solid_bands
+            ? simulate_solid(spec, solid_input(solid), model_closed(solid), &out, &r, jf.arena,
+                             form, pause_at, uint32_t(resume_at))
+            : simulate(spec, edges, &out, &r, jf.arena, form, pause_at, uint32_t(resume_at));
     return ok(s);
   });
   if (s == Status::kArenaTooSmall)

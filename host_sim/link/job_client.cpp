@@ -145,14 +145,20 @@ bool JobClient::stream(const JobSpec& spec, const BandPlan& plan, uint32_t arena
   if (!settings(spec, status)) return false;
   if (!ok(*status)) return true;
   std::vector<uint8_t> begin(kStreamBeginBytes);
-  encode_stream_begin(StreamBegin{plan.margin, arena_bytes}, begin.data());
+  const uint8_t flags =
+      plan.solid ? uint8_t(kStreamSolid | (plan.closed ? kStreamClosed : 0)) : uint8_t{0};
+  encode_stream_begin(StreamBegin{plan.margin, arena_bytes, flags}, begin.data());
   if (!request(FrameType::kStreamBegin, begin, status)) return false;
   if (!ok(*status)) return true;
   if (!request(FrameType::kPlot, {}, status)) return false;
   if (!ok(*status)) return true;
   for (const PlannedBand& band : plan.bands) {
     std::vector<uint8_t> head(kBandBeginBytes);
-    encode_band_begin(BandBegin{band.y0, band.y1, uint32_t(band.edges.size())}, head.data());
+    encode_band_begin(
+        plan.solid ? BandBegin{band.y0, band.y1, uint32_t(band.ids.size()),
+                               uint32_t(band.vertices.size()), uint32_t(band.triangles.size())}
+                   : BandBegin{band.y0, band.y1, uint32_t(band.edges.size())},
+        head.data());
     for (;;) {
       if (!request(FrameType::kBandBegin, head, status)) return false;
       if (*status != Status::kBusy) break;
@@ -165,6 +171,11 @@ bool JobClient::stream(const JobSpec& spec, const BandPlan& plan, uint32_t arena
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
     if (!ok(*status)) return true;
+    if (plan.solid) {
+      if (!solid_band(band, status)) return false;
+      if (!ok(*status)) return true;
+      continue;
+    }
     std::vector<uint8_t> records(band.edges.size() * kBandEdgeRecordBytes);
     for (size_t i = 0; i < band.edges.size(); ++i) {
       put_u32(&records[i * kBandEdgeRecordBytes], band.ids[i]);
@@ -174,6 +185,29 @@ bool JobClient::stream(const JobSpec& spec, const BandPlan& plan, uint32_t arena
     if (!ok(*status)) return true;
   }
   return request(FrameType::kStreamEnd, {}, status);  // the last band is whole: no more
+}
+
+// A solid's band: its vertices, drawn edges and triangles, in that order.
+bool JobClient::solid_band(const PlannedBand& band, Status* status) {
+  std::vector<uint8_t> records(band.vertices.size() * kBandVertexRecordBytes);
+  for (size_t i = 0; i < band.vertices.size(); ++i) {
+    put_u32(&records[i * kBandVertexRecordBytes], band.vertex_ids[i]);
+    encode_vertex(band.vertices[i], &records[i * kBandVertexRecordBytes + 4]);
+  }
+  if (!chunks(FrameType::kBandVertices, records, kBandVertexRecordBytes, status)) return false;
+  if (!ok(*status)) return true;
+  records.assign(band.ids.size() * kBandSolidEdgeRecordBytes, 0);
+  for (size_t i = 0; i < band.ids.size(); ++i) {
+    put_u32(&records[i * kBandSolidEdgeRecordBytes], band.ids[i]);
+    put_u32(&records[i * kBandSolidEdgeRecordBytes + 4], band.pairs[2 * i]);
+    put_u32(&records[i * kBandSolidEdgeRecordBytes + 8], band.pairs[2 * i + 1]);
+  }
+  if (!chunks(FrameType::kBandSolidEdges, records, kBandSolidEdgeRecordBytes, status)) return false;
+  if (!ok(*status)) return true;
+  records.assign(band.triangles.size() * kBandTriangleRecordBytes, 0);
+  for (size_t i = 0; i < band.triangles.size(); ++i)
+    encode_face(band.triangles[i], &records[i * kBandTriangleRecordBytes]);
+  return chunks(FrameType::kBandTriangles, records, kBandTriangleRecordBytes, status);
 }
 
 bool JobClient::upload_indexed(const JobSpec& spec, const View& view,

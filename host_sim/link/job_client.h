@@ -59,6 +59,7 @@ class JobClient {
   // still stages the last one it answers kBusy, and the band is offered again), then the end.
   // *status is the first refusal; a plot that ends early stops the stream.
   bool stream(const JobSpec& spec, const BandPlan& plan, uint32_t arena_bytes, Status* status);
+  bool solid_band(const PlannedBand& band, Status* status);
   bool query(StatusReport* report);
   // Polls status until the plot ends; false on a link failure.
   bool wait_idle(StatusReport* report, int poll_ms = 20);

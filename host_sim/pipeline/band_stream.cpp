@@ -1,14 +1,14 @@
 #include "pipeline/band_stream.h"
 
+#include <algorithm>
+
 #include "band/band_rule.h"
 
 namespace haloplot::host {
 
-Status plan_streamed_bands(const std::vector<Edge3>& edges, const BandSpec& spec,
-                           size_t arena_bytes, BandPlan* out) {
-  *out = BandPlan{};
-  std::vector<uint64_t> arena(arena_bytes / 8);
-  BandConductor conductor;
+namespace {
+
+PieceObserver band_noter(BandPlan* out) {
   PieceObserver observer;
   observer.ctx = out;
   observer.band = [](void* ctx, int32_t y0, int32_t y1) {
@@ -17,7 +17,21 @@ Status plan_streamed_bands(const std::vector<Edge3>& edges, const BandSpec& spec
     b.y1 = y1;
     static_cast<BandPlan*>(ctx)->bands.push_back(std::move(b));
   };
-  conductor.set_observer(observer);
+  return observer;
+}
+
+bool rows_meet(int32_t a, int32_t b, int32_t c, int64_t lo, int64_t hi) {
+  return std::max({a, b, c}) >= lo && std::min({a, b, c}) <= hi;
+}
+
+}  // namespace
+
+Status plan_streamed_bands(const std::vector<Edge3>& edges, const BandSpec& spec,
+                           size_t arena_bytes, BandPlan* out) {
+  *out = BandPlan{};
+  std::vector<uint64_t> arena(arena_bytes / 8);
+  BandConductor conductor;
+  conductor.set_observer(band_noter(out));
   Status s = conductor.begin(spec, array_edge_source(edges.data(), uint32_t(edges.size())),
                              arena.data(), arena.size() * 8);
   if (ok(s)) s = run_all_bands(conductor);
@@ -32,6 +46,43 @@ Status plan_streamed_bands(const std::vector<Edge3>& edges, const BandSpec& spec
         b.edges.push_back(edges[i]);
         b.ids.push_back(i);
       }
+  }
+  return Status::kOk;
+}
+
+Status plan_streamed_solid(const SolidInput& in, bool closed, const BandSpec& spec,
+                           size_t arena_bytes, BandPlan* out) {
+  *out = BandPlan{};
+  out->solid = true;
+  out->closed = closed;
+  std::vector<uint64_t> arena(arena_bytes / 8);
+  BandConductor conductor;
+  conductor.set_observer(band_noter(out));
+  Status s =
+      conductor.begin_solid(spec, array_solid_source(&in, closed), arena.data(), arena.size() * 8);
+  if (ok(s)) s = run_all_bands(conductor);
+  out->stats = conductor.stats();
+  if (!ok(s)) return s;
+  // What each band gathers: the conductor's own rule (solid_band.cpp), in scene order.
+  for (PlannedBand& b : out->bands) {
+    const int64_t lo = b.y0, hi = int64_t{b.y1} - 1;
+    for (uint32_t i = 0; i < in.n_edges; ++i) {
+      const uint32_t v0 = in.edge_pairs[2 * i], v1 = in.edge_pairs[2 * i + 1];
+      if (!edge_meets_rows(Edge3{in.vertices[v0], in.vertices[v1]}, lo, hi)) continue;
+      b.ids.push_back(i);
+      b.pairs.insert(b.pairs.end(), {v0, v1});
+      b.vertex_ids.insert(b.vertex_ids.end(), {v0, v1});
+    }
+    for (uint32_t t = 0; t < in.n_triangles; ++t) {
+      const uint32_t* v = in.triangles[t].v;
+      if (!rows_meet(in.vertices[v[0]].y, in.vertices[v[1]].y, in.vertices[v[2]].y, lo, hi + 1))
+        continue;
+      b.triangles.push_back(in.triangles[t]);
+      b.vertex_ids.insert(b.vertex_ids.end(), {v[0], v[1], v[2]});
+    }
+    std::sort(b.vertex_ids.begin(), b.vertex_ids.end());
+    b.vertex_ids.erase(std::unique(b.vertex_ids.begin(), b.vertex_ids.end()), b.vertex_ids.end());
+    for (uint32_t v : b.vertex_ids) b.vertices.push_back(in.vertices[v]);
   }
   return Status::kOk;
 }
@@ -55,6 +106,12 @@ BandStream PlanStream::stream() {
     band->edges = b.edges.data();
     band->ids = b.ids.data();
     band->n = uint32_t(b.edges.size());
+    if (self->plan->solid) {
+      self->staged = StagedSolidBand{
+          b.vertex_ids.data(),    b.vertices.data(),  uint32_t(b.vertices.size()), b.pairs.data(),
+          uint32_t(b.ids.size()), b.triangles.data(), uint32_t(b.triangles.size())};
+      band->solid = &self->staged;
+    }
     return Status::kOk;
   };
   return s;

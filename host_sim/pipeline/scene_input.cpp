@@ -202,6 +202,26 @@ bool job_solid_settings(const JobFile& jf, SolidOptions* so, View* view, std::st
   return parse_solid_options(o, so, error) && parse_view(o, view, error);
 }
 
+HiddenJob hidden_job(const SolidOptions& so) {
+  return HiddenJob{so.method,
+                   so.spec.outline,
+                   so.spec.dash_steps,
+                   so.spec.gap_steps,
+                   so.hatch,
+                   so.hatch_params.spacing,
+                   so.hatch_params.angle_mdeg,
+                   so.hatch_params.mdeg_per_depth};
+}
+
+bool load_solid_job_scene(const JobFile& jf, SolidScene* scene, HiddenJob* hidden,
+                          std::string* error) {
+  const Options o = job_options(jf);
+  SolidOptions so;
+  if (!parse_solid_options(o, &so, error)) return false;
+  *hidden = hidden_job(so);
+  return load_solid_scene(o, jf.scene_path, scene, nullptr, error);
+}
+
 bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* error) {
   const Options o = job_options(jf);
   if (jf.spec.drawing != DrawingEffect::kHiddenRemoved &&

@@ -7,6 +7,7 @@
 #include "cli/options.h"
 #include "geometry/contract.h"
 #include "io/obj_file.h"
+#include "job/job.h"
 #include "pipeline/solid_pipeline.h"
 #include "pipeline/triangulate.h"
 #include "view/projection.h"
@@ -39,6 +40,15 @@ bool job_solid_settings(const JobFile& jf, SolidOptions* so, View* view, std::st
 // model projected with the job's view; for the hidden-line drawings, the strokes of that mode
 // (visible pieces, dashes, and the outline pass redrawn last), decided on the host.
 bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* error);
+// Why a banded hidden-line job cannot have hatching (sim and send say it alike).
+inline constexpr const char* kNotInBands =
+    "hatching is not drawn in bands yet: drop 'arena', or 'hatch'";
+
+// The hidden-line settings of a job's solid options (method, outline, dash, hatching).
+HiddenJob hidden_job(const SolidOptions& so);
+// A hidden-line job's model itself (its view applied) and its settings, for a plot in bands.
+bool load_solid_job_scene(const JobFile& jf, SolidScene* scene, HiddenJob* hidden,
+                          std::string* error);
 
 struct ObjModel;
 // The refusal of a face whose boundary crosses itself (TriangulateStats::first_not_simple):

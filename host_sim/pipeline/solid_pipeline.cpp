@@ -65,6 +65,14 @@ std::string reason_text(const HiddenReport& r) {
 
 }  // namespace
 
+bool model_closed(const SolidScene& scene) {
+  const SolidInput in = solid_input(scene);
+  std::vector<uint64_t> buffer(topology_bytes(in) / 8 + 1);
+  Topology topo;
+  if (!ok(build_topology(in, buffer.data(), buffer.size() * 8, &topo))) return false;
+  return topo.check.manifold();
+}
+
 SolidInput solid_input(const SolidScene& scene) {
   SolidInput in;
   in.vertices = scene.vertices.data();

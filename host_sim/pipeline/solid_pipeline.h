@@ -55,6 +55,10 @@ struct SolidRun {
   size_t bytes_outline = 0;
 };
 
+// The whole model's faces make a closed, consistently oriented 2-manifold (its topology's
+// MeshCheck; loose `l` lines allowed): what a plot in bands is told, since no band can see it.
+bool model_closed(const SolidScene& scene);
+
 // kAuto: QI on a closed oriented manifold, the fallback otherwise. `kira` chooses the
 // fallback's shortcuts (classes, V.C.); they are only used on manifold meshes.
 Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackParams kira,

@@ -153,19 +153,41 @@ Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostre
   BandConductor conductor;
   s = conductor.begin(band_spec(spec), array_edge_source(edges.data(), uint32_t(edges.size())),
                       buffer.data(), buffer.size() * 8);
-  return ok(s) ? run_motion(spec, &conductor, trace, r, form, pause_at, resume_at) : s;
+  if (ok(s)) s = run_motion(spec, &conductor, trace, r, form, pause_at, resume_at);
+  r->bands = conductor.stats();  // a band that did not fit says what it asked for
+  return s;
 }
 
-Status simulate_streamed(const JobSpec& spec, BandStream stream, int32_t margin, size_t arena_bytes,
-                         std::ostream* trace, SimReport* r) {
+Status simulate_solid(const JobSpec& spec, const SolidInput& in, bool closed, std::ostream* trace,
+                      SimReport* r, size_t arena_bytes, TraceForm form,
+                      const std::vector<uint32_t>& pause_at, uint32_t resume_at) {
   *r = SimReport{};
   r->arena_bytes = arena_bytes;
   Status s = validate(spec.machine);
   if (!ok(s)) return s;
-  if (!edge_drawing(spec)) return Status::kBadParameter;
+  if (edge_drawing(spec) || arena_bytes == 0) return Status::kBadParameter;
   std::vector<uint64_t> buffer(arena_bytes / 8);
   BandConductor conductor;
-  s = conductor.begin_streamed(band_spec(spec), margin, stream, buffer.data(), buffer.size() * 8);
+  s = conductor.begin_solid(band_spec(spec), array_solid_source(&in, closed), buffer.data(),
+                            buffer.size() * 8);
+  if (ok(s)) s = run_motion(spec, &conductor, trace, r, form, pause_at, resume_at);
+  r->bands = conductor.stats();  // a band that did not fit says what it asked for
+  return s;
+}
+
+Status simulate_streamed(const JobSpec& spec, BandStream stream, int32_t margin, size_t arena_bytes,
+                         std::ostream* trace, SimReport* r, const BandPlan* solid) {
+  *r = SimReport{};
+  r->arena_bytes = arena_bytes;
+  Status s = validate(spec.machine);
+  if (!ok(s)) return s;
+  if (edge_drawing(spec) == (solid != nullptr)) return Status::kBadParameter;
+  std::vector<uint64_t> buffer(arena_bytes / 8);
+  BandConductor conductor;
+  s = solid != nullptr ? conductor.begin_streamed_solid(band_spec(spec), solid->closed, stream,
+                                                        buffer.data(), buffer.size() * 8)
+                       : conductor.begin_streamed(band_spec(spec), margin, stream, buffer.data(),
+                                                  buffer.size() * 8);
   return ok(s) ? run_motion(spec, &conductor, trace, r) : s;
 }
 

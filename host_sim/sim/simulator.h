@@ -10,6 +10,7 @@
 #include "job/job.h"
 #include "motion/planner.h"
 #include "motion/step_prep.h"
+#include "pipeline/band_stream.h"
 #include "trace/trace_encoder.h"
 
 namespace haloplot::host {
@@ -48,7 +49,17 @@ Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostre
 
 // The same with the bands streamed in (band/conductor.h begin_streamed), as a controller that
 // receives them over its link runs it: the stream may make the plot wait (kBusy).
+// A solid's hidden-line drawing (spec.drawing kHiddenRemoved or kHiddenDashed) in bands, as a
+// controller with that arena plots it (band/conductor.h begin_solid); `closed` is the model's
+// check (solid_pipeline.h model_closed).
+Status simulate_solid(const JobSpec& spec, const SolidInput& in, bool closed, std::ostream* trace,
+                      SimReport* report, size_t arena_bytes, TraceForm form = TraceForm::kText,
+                      const std::vector<uint32_t>& pause_at = {}, uint32_t resume_at = 0);
+
+// The same with the bands streamed in (band/conductor.h begin_streamed), as a controller that
+// receives them over its link runs it: the stream may make the plot wait (kBusy). `solid`: the
+// plan of a solid's bands (plan_streamed_solid), whose closedness the controller is told.
 Status simulate_streamed(const JobSpec& spec, BandStream stream, int32_t margin, size_t arena_bytes,
-                         std::ostream* trace, SimReport* report);
+                         std::ostream* trace, SimReport* report, const BandPlan* solid = nullptr);
 
 }  // namespace haloplot::host

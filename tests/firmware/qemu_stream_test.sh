@@ -1,16 +1,31 @@
 #!/usr/bin/env bash
-# The README's demo plotted by the controller image from `haloplot send`: Figure 4 (9408 edges,
-# halo 50, the demo machine) streamed in bands into a 64 KB band arena, the controller never
-# holding the scene. Checks that the controller's step trace equals `haloplot sim` of the same
-# job with `arena 65536`, byte for byte (the image sums its 45 MB trace to a CRC-32 and a
-# length, a test hook; gzip's trailer gives the host's), that it took more than one band, and
-# that the image exits 0. The plot may wait for a band (an underrun): the trace must not show it.
-# Slow under QEMU (4 million step interrupts: several minutes), so the sanitizer build skips it.
-# Usage: qemu_stream_test.sh FIRMWARE_DIR HALOPLOT_TOOL
-source "$(dirname "$0")/qemu_common.sh" firmware_stream "$1" "$2" fw_plotter_qemu.elf
+# A scene the controller never holds, plotted by the controller image from `haloplot send` in
+# bands into a 64 KB band arena. JOB is
+#   demo   the README's demo: Figure 4 (9408 edges, halo 50, the demo machine), its edges
+#          streamed band by band;
+#   solid  a 10 x 10 solid cube array (800 vertices, 1200 edges, 1200 triangles) hidden-dashed
+#          with outlines, each band's vertices, edges and triangles streamed, its hidden lines
+#          and outlines worked out on the controller band by band.
+# Checks that the controller's step trace equals `haloplot sim` of the same job with
+# `arena 65536`, byte for byte (the image sums its trace to a CRC-32 and a length, a test hook;
+# gzip's trailer gives the host's), that it took more than one band, and that the image exits 0.
+# The plot may wait for a band (an underrun): the trace must not show it. Slow under QEMU
+# (millions of step interrupts: minutes), so the sanitizer build skips it.
+# Usage: qemu_stream_test.sh FIRMWARE_DIR HALOPLOT_TOOL [demo|solid]
+kind=${3:-demo}
+source "$(dirname "$0")/qemu_common.sh" "firmware_stream ($kind)" "$1" "$2" fw_plotter_qemu.elf
 
 cd "$work"
-host=$(demo_job_digest 65536)
+if [ "$kind" = solid ]; then
+  "$tool" demo-scene --cubes 10 -o cubes10.obj
+  printf 'scene cubes10.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nkinematics corexy\narena 65536\n' \
+    > demo.job
+  "$tool" sim demo.job -o host.trace --stats 2> host.stats
+  host=$(trace_digest host.trace)
+  rm -f host.trace
+else
+  host=$(demo_job_digest 65536)
+fi
 
 qemu_linked 1500 "$fw/fw_plotter_qemu.elf"
 start=$SECONDS
@@ -25,6 +40,7 @@ fi
 bands=$(sed -n 's/^bands=//p' host.stats)
 if [ "${bands:-0}" -gt 1 ] && grep -q "^streamed $bands bands" send.out; then
   ok
+  echo "$bands bands, peak $(sed -n 's/^band_peak_bytes=//p' host.stats) bytes of the 64 KB arena"
 else
   bad "bands: sim $bands, send: $(grep '^streamed' send.out)"
 fi

@@ -10,6 +10,7 @@
 // calls the model open (back faces then count), must both change the strokes.
 #include <algorithm>
 #include <cstdio>
+#include <iterator>
 #include <map>
 #include <string>
 #include <tuple>
@@ -18,6 +19,7 @@
 #include "band/conductor.h"
 #include "check.h"
 #include "pipeline/solid_pipeline.h"
+#include "solid/cover.h"
 #include "support/solid_scenes.h"
 
 using namespace haloplot;
@@ -34,10 +36,12 @@ struct Banded {
   BandStats stats;
 };
 
-Banded run_bands(const StrokeStyle& style, size_t arena_bytes, SolidSource source) {
+Banded run_bands(const StrokeStyle& style, size_t arena_bytes, SolidSource source,
+                 bool outline = false) {
   Banded r;
   BandSpec spec;
   spec.style = style;
+  spec.outline = outline;
   spec.cut.compact_cells = false;
   std::vector<uint64_t> arena(arena_bytes / 8);
   BandConductor bc;
@@ -158,6 +162,86 @@ void check_the_check(const Scene& sc) {
   CHECK_MSG(ok(b.status) && b.strokes != one.strokes, sc.name + ": back faces counted are seen");
 }
 
+// Strokes of `with` that `without` lacks (a multiset difference of sorted lists).
+std::vector<Stroke> minus(const std::vector<Stroke>& with, const std::vector<Stroke>& without) {
+  std::vector<Stroke> out;
+  std::set_difference(with.begin(), with.end(), without.begin(), without.end(),
+                      std::back_inserter(out));
+  return out;
+}
+
+// Outline runs of drawn edges, joined (QI also outlines contour diagonals, triangle sides inside
+// one polygon, which the fallback never draws: docs/firmware.md).
+std::vector<Stroke> outline_runs(const std::vector<OutlineSegment>& v, uint32_t n_drawn) {
+  std::vector<Stroke> out;
+  for (const OutlineSegment& o : v)
+    if (o.edge < n_drawn) out.emplace_back(o.edge, o.t0, o.t1);
+  return joined(out);
+}
+
+// Kira's outlines without the QI: the fallback asks the condition of every visible contour
+// part; joined into runs they must equal the QI method's traced circuits on a closed solid. In
+// bands each band draws the runs inside its rows: joined across the borders, the same again.
+void check_outlines(const Scene& sc) {
+  SolidRun qi, fb;
+  CHECK(ok(run_hidden_lines(sc.scene, HiddenMethod::kAuto, FallbackParams{}, &qi, true)));
+  CHECK(ok(run_hidden_lines(sc.scene, HiddenMethod::kFallback, FallbackParams{}, &fb, true)));
+  const uint32_t n_drawn = uint32_t(sc.scene.edge_pairs.size() / 2);
+  const std::vector<Stroke> traced = outline_runs(qi.outline, n_drawn),
+                            asked = outline_runs(fb.outline, n_drawn);
+  CHECK_MSG(qi.used_qi && !traced.empty() && asked == traced,
+            sc.name + ": the fallback's outlines equal QI's (" + std::to_string(asked.size()) +
+                " runs vs " + std::to_string(traced.size()) + ")");
+  const SolidInput in = solid_input(sc.scene);
+  const SolidSource source = array_solid_source(&in, true);
+  const StrokeStyle removed{SolidMode::kHiddenRemoved, 160, 80};
+  const Banded plain = run_bands(removed, size_t{256} << 20, source);
+  for (size_t arena : {size_t{256} << 20, sc.arenas.front()}) {
+    const Banded with = run_bands(removed, arena, source, true);
+    const std::vector<Stroke> drawn = joined(minus(with.strokes, plain.strokes));
+    CHECK_MSG(ok(with.status) && drawn == traced,
+              sc.name + ": outlines in " + std::to_string(with.stats.bands) +
+                  " bands, joined, equal QI's (" + std::to_string(drawn.size()) + " runs vs " +
+                  std::to_string(traced.size()) + ")");
+  }
+}
+
+// An open surface (a box without its lid) falls back from QI, and now gets outlines too: every
+// run lies on the boundary of what the picture covers (brute force over all faces, both sides).
+void check_open_outlines() {
+  Mesh m;
+  box(&m, 0, 0, 0, 4000, 3000, 2000);
+  m.faces.erase(m.faces.begin() + 1);  // the lid (+z) is the box's second face
+  Scene sc = make("open box at 30,25", m, 30000, 25000, {16});
+  SolidRun fb;
+  CHECK(ok(run_hidden_lines(sc.scene, HiddenMethod::kAuto, FallbackParams{}, &fb, true)));
+  CHECK_MSG(!fb.used_qi && !fb.outline.empty(),
+            "open box: the fallback draws outlines (" + std::to_string(fb.outline.size()) + ")");
+  size_t on = 0;
+  for (const OutlineSegment& o : fb.outline) {
+    const uint32_t v0 = sc.scene.edge_pairs[2 * o.edge], v1 = sc.scene.edge_pairs[2 * o.edge + 1];
+    const Edge3 e{sc.scene.vertices[v0], sc.scene.vertices[v1]};
+    const int64_t mid = o.t0 + (o.t1 - o.t0) / 2;
+    const int64_t dx = e.b.x - e.a.x, dy = e.b.y - e.a.y;
+    CoverPoint p;
+    p.d = int64_t{1} << 32;
+    p.x = int64_t{e.a.x} * p.d + dx * mid;
+    p.y = int64_t{e.a.y} * p.d + dy * mid;
+    int side[2] = {0, 0};
+    for (int k = 0; k < 2; ++k) {
+      p.dir_x = int32_t(k ? dy : -dy);
+      p.dir_y = int32_t(k ? -dx : dx);
+      for (const Triangle& t : sc.scene.triangles)
+        side[k] += projection_cover_halves(sc.scene.vertices[t.v[0]], sc.scene.vertices[t.v[1]],
+                                           sc.scene.vertices[t.v[2]], p);
+    }
+    if ((side[0] == 0) != (side[1] == 0)) ++on;
+  }
+  CHECK_MSG(on == fb.outline.size(), "open box: every outline run on the picture's boundary (" +
+                                         std::to_string(on) + " of " +
+                                         std::to_string(fb.outline.size()) + ")");
+}
+
 }  // namespace
 
 int main() {
@@ -182,6 +266,8 @@ int main() {
     scenes.push_back(make("frame before a box at 20,10", m, 20000, 10000, {8, 16}));
   }
   for (const Scene& s : scenes) check_scene(s);
+  for (const Scene& s : scenes) check_outlines(s);
+  check_open_outlines();
   check_the_check(scenes[1]);
   return check::finish("solid_bands");
 }

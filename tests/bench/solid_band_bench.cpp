@@ -1,0 +1,123 @@
+// Solid band benchmark: a solid's hidden lines in a fixed arena. Solid cube arrays (N x N
+// cubes drawn as the demo draws them, view 30,25, hidden-dashed) are plotted by the band
+// conductor's solid stage in each arena given, and in one band; the peer for time is the
+// whole-model run (core/solid/hidden_lines.h: QI on the whole model in one buffer, the way the
+// controller works a solid that fits). Reports, per scene and arena: the bands, the arena's
+// peak, whether every stroke equals the one-band run's and the visible runs equal the QI run's,
+// the host time against the whole-model run, and the pen-up travel against one band.
+// Usage: solid_band_bench ARENA_BYTES... > table.md
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "band/conductor.h"
+#include "perf_common.h"
+#include "pipeline/solid_pipeline.h"
+#include "support/solid_scenes.h"
+
+using namespace haloplot;
+using namespace haloplot::host;
+
+namespace {
+
+using Stroke = std::tuple<uint32_t, int64_t, int64_t>;
+
+struct Run {
+  Status status = Status::kOk;
+  std::vector<Stroke> strokes;
+  BandStats stats;
+  double ms = 0;
+};
+
+Run banded(const SolidInput& in, bool closed, size_t arena_bytes,
+           SolidMode mode = SolidMode::kHiddenDashed) {
+  Run r;
+  BandSpec spec;
+  spec.haloed = false;
+  spec.style = StrokeStyle{mode, 160, 80};
+  spec.cut.compact_cells = false;
+  std::vector<uint64_t> arena(arena_bytes / 8);
+  BandConductor bc;
+  bc.set_observer(PieceObserver{[](void* ctx, const BandPiece& p) {
+                                  static_cast<Run*>(ctx)->strokes.emplace_back(p.edge, p.t0, p.t1);
+                                },
+                                &r});
+  const double t0 = bench::now_ms();
+  r.status = bc.begin_solid(spec, array_solid_source(&in, closed), arena.data(), arena.size() * 8);
+  if (ok(r.status)) r.status = run_all_bands(bc);
+  r.ms = bench::now_ms() - t0;
+  r.stats = bc.stats();
+  std::sort(r.strokes.begin(), r.strokes.end());
+  return r;
+}
+
+std::vector<Stroke> visible_runs(std::vector<Stroke> v) {
+  std::sort(v.begin(), v.end());
+  std::vector<Stroke> out;
+  for (const Stroke& s : v)
+    if (!out.empty() && std::get<0>(out.back()) == std::get<0>(s) &&
+        std::get<2>(out.back()) == std::get<1>(s))
+      std::get<2>(out.back()) = std::get<2>(s);
+    else
+      out.push_back(s);
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<size_t> arenas;
+  for (int i = 1; i < argc; ++i) arenas.push_back(size_t(std::atol(argv[i])));
+  if (arenas.empty()) arenas = {64 * 1024, 96 * 1024};
+  std::printf(
+      "| cubes | vertices / edges / triangles | arena | bands | peak bytes | strokes equal one "
+      "band | visible equal QI | time banded / whole-model QI | pen-up banded / one band |\n");
+  std::printf("|---|---:|---:|---:|---:|---|---|---:|---:|\n");
+  for (int n : {3, 10, 14, 20, 28}) {
+    solid_scenes::Mesh m;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        solid_scenes::box(&m, i * 3000, j * 3000, 0, i * 3000 + 2000, j * 3000 + 2000, 2000);
+    SolidScene scene;
+    if (!solid_scenes::project(m, solid_scenes::view(30000, 25000), &scene)) return 1;
+    const SolidInput in = solid_input(scene);
+    const bool closed = model_closed(scene);
+    SolidRun qi;
+    const double q0 = bench::now_ms();
+    const Status qs = run_hidden_lines(scene, HiddenMethod::kAuto, FallbackParams{}, &qi);
+    const double qi_ms = bench::now_ms() - q0;
+    std::vector<Stroke> qi_visible;
+    for (const SolidPiece& p : qi.pieces)
+      if (!p.hidden) qi_visible.emplace_back(p.edge, p.t0, p.t1);
+    qi_visible = visible_runs(qi_visible);
+    const Run one = banded(in, closed, size_t{1} << 30);
+    // The visible runs of one band (hidden-removed: the strokes are the visible pieces).
+    const Run removed = banded(in, closed, size_t{1} << 30, SolidMode::kHiddenRemoved);
+    const std::string vis =
+        ok(qs) && ok(removed.status) && visible_runs(removed.strokes) == qi_visible ? "yes" : "NO";
+    for (size_t arena : arenas) {
+      const Run b = banded(in, closed, arena);
+      std::string bands = std::to_string(b.stats.bands), peak = std::to_string(b.stats.peak_bytes);
+      std::string equal = "-", time = "-", pen = "-";
+      if (ok(b.status)) {
+        equal = b.strokes == one.strokes ? "yes" : "NO";
+        time = bench::fmt(b.ms / std::max(qi_ms, 1e-3), 2);
+        pen = bench::fmt(double(b.stats.path.pen_up_length) /
+                             double(std::max<uint64_t>(one.stats.path.pen_up_length, 1)),
+                         2);
+      } else {
+        bands = std::string(status_name(b.status)) + " (a band one row high needs " +
+                std::to_string(b.stats.need_bytes) + " bytes)";
+        peak = "-";
+      }
+      std::printf("| %d x %d | %u / %u / %u | %zu KB | %s | %s | %s | %s | %s | %s |\n", n, n,
+                  in.n_vertices, in.n_edges, in.n_triangles, arena >> 10, bands.c_str(),
+                  peak.c_str(), equal.c_str(), vis.c_str(), time.c_str(), pen.c_str());
+      std::fflush(stdout);
+    }
+  }
+  return 0;
+}
