@@ -16,6 +16,7 @@
 #include "band/conductor.h"
 #include "perf_common.h"
 #include "pipeline/solid_pipeline.h"
+#include "support/solid_refs.h"
 #include "support/solid_scenes.h"
 
 using namespace haloplot;
@@ -23,7 +24,7 @@ using namespace haloplot::host;
 
 namespace {
 
-using Stroke = std::tuple<uint32_t, int64_t, int64_t>;
+using solid_refs::Stroke;
 
 struct Run {
   Status status = Status::kOk;
@@ -54,18 +55,6 @@ Run banded(const SolidInput& in, bool closed, size_t arena_bytes,
   return r;
 }
 
-std::vector<Stroke> visible_runs(std::vector<Stroke> v) {
-  std::sort(v.begin(), v.end());
-  std::vector<Stroke> out;
-  for (const Stroke& s : v)
-    if (!out.empty() && std::get<0>(out.back()) == std::get<0>(s) &&
-        std::get<2>(out.back()) == std::get<1>(s))
-      std::get<2>(out.back()) = std::get<2>(s);
-    else
-      out.push_back(s);
-  return out;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -92,12 +81,13 @@ int main(int argc, char** argv) {
     std::vector<Stroke> qi_visible;
     for (const SolidPiece& p : qi.pieces)
       if (!p.hidden) qi_visible.emplace_back(p.edge, p.t0, p.t1);
-    qi_visible = visible_runs(qi_visible);
+    qi_visible = solid_refs::joined(qi_visible);
     const Run one = banded(in, closed, size_t{1} << 30);
     // The visible runs of one band (hidden-removed: the strokes are the visible pieces).
     const Run removed = banded(in, closed, size_t{1} << 30, SolidMode::kHiddenRemoved);
     const std::string vis =
-        ok(qs) && ok(removed.status) && visible_runs(removed.strokes) == qi_visible ? "yes" : "NO";
+        ok(qs) && ok(removed.status) && solid_refs::joined(removed.strokes) == qi_visible ? "yes"
+                                                                                          : "NO";
     for (size_t arena : arenas) {
       const Run b = banded(in, closed, arena);
       std::string bands = std::to_string(b.stats.bands), peak = std::to_string(b.stats.peak_bytes);

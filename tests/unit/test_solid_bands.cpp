@@ -19,7 +19,7 @@
 #include "band/conductor.h"
 #include "check.h"
 #include "pipeline/solid_pipeline.h"
-#include "solid/cover.h"
+#include "support/solid_refs.h"
 #include "support/solid_scenes.h"
 
 using namespace haloplot;
@@ -28,7 +28,8 @@ using namespace solid_scenes;
 
 namespace {
 
-using Stroke = std::tuple<uint32_t, int64_t, int64_t>;  // edge, t0, t1
+using solid_refs::joined;
+using solid_refs::Stroke;
 
 struct Banded {
   Status status = Status::kOk;
@@ -55,20 +56,6 @@ Banded run_bands(const StrokeStyle& style, size_t arena_bytes, SolidSource sourc
   r.stats = bc.stats();
   std::sort(r.strokes.begin(), r.strokes.end());
   return r;
-}
-
-// Adjacent runs of one edge joined: the canonical form of a set of visible intervals.
-std::vector<Stroke> joined(std::vector<Stroke> v) {
-  std::sort(v.begin(), v.end());
-  std::vector<Stroke> out;
-  for (const Stroke& s : v) {
-    if (!out.empty() && std::get<0>(out.back()) == std::get<0>(s) &&
-        std::get<2>(out.back()) == std::get<1>(s))
-      std::get<2>(out.back()) = std::get<2>(s);
-    else
-      out.push_back(s);
-  }
-  return out;
 }
 
 size_t first_difference(const std::vector<Stroke>& a, const std::vector<Stroke>& b) {
@@ -221,21 +208,7 @@ void check_open_outlines() {
   for (const OutlineSegment& o : fb.outline) {
     const uint32_t v0 = sc.scene.edge_pairs[2 * o.edge], v1 = sc.scene.edge_pairs[2 * o.edge + 1];
     const Edge3 e{sc.scene.vertices[v0], sc.scene.vertices[v1]};
-    const int64_t mid = o.t0 + (o.t1 - o.t0) / 2;
-    const int64_t dx = e.b.x - e.a.x, dy = e.b.y - e.a.y;
-    CoverPoint p;
-    p.d = int64_t{1} << 32;
-    p.x = int64_t{e.a.x} * p.d + dx * mid;
-    p.y = int64_t{e.a.y} * p.d + dy * mid;
-    int side[2] = {0, 0};
-    for (int k = 0; k < 2; ++k) {
-      p.dir_x = int32_t(k ? dy : -dy);
-      p.dir_y = int32_t(k ? -dx : dx);
-      for (const Triangle& t : sc.scene.triangles)
-        side[k] += projection_cover_halves(sc.scene.vertices[t.v[0]], sc.scene.vertices[t.v[1]],
-                                           sc.scene.vertices[t.v[2]], p);
-    }
-    if ((side[0] == 0) != (side[1] == 0)) ++on;
+    if (solid_refs::on_boundary(sc.scene, e, o.t0 + (o.t1 - o.t0) / 2)) ++on;
   }
   CHECK_MSG(on == fb.outline.size(), "open box: every outline run on the picture's boundary (" +
                                          std::to_string(on) + " of " +

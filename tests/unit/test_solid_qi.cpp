@@ -15,6 +15,7 @@
 #include "check.h"
 #include "pipeline/surface_pipeline.h"
 #include "solid/cover.h"
+#include "support/solid_refs.h"
 #include "support/solid_scenes.h"
 
 using namespace haloplot;
@@ -61,22 +62,7 @@ double visible_length(const std::vector<SolidPiece>& p, const std::vector<size_t
 // Every face is asked on both sides of: the middle of every traced outline segment (none may
 // be wrong), and 4 points of every edge (each on the boundary must lie on a traced segment,
 // of whichever edge: collinear edges share one outline).
-bool on_boundary(const SolidScene& scene, const Edge3& ed, int64_t m) {
-  const int64_t dx = ed.b.x - ed.a.x, dy = ed.b.y - ed.a.y;
-  CoverPoint p;
-  p.d = int64_t{1} << 32;
-  p.x = int64_t{ed.a.x} * p.d + dx * m;
-  p.y = int64_t{ed.a.y} * p.d + dy * m;
-  int side[2] = {0, 0};
-  for (int sgn = 0; sgn < 2; ++sgn) {
-    p.dir_x = int32_t(sgn ? dy : -dy);
-    p.dir_y = int32_t(sgn ? -dx : dx);
-    for (const Triangle& t : scene.triangles)
-      side[sgn] += projection_cover_halves(scene.vertices[t.v[0]], scene.vertices[t.v[1]],
-                                           scene.vertices[t.v[2]], p);
-  }
-  return (side[0] == 0) != (side[1] == 0);
-}
+using solid_refs::on_boundary;
 
 void check_outlines(const SolidScene& scene, const SolidRun& qi, const std::string& label) {
   int wrong = 0;
