@@ -10,6 +10,7 @@
 
 #include "../check.h"
 #include "pipeline/host_pipeline.h"
+#include "support/solid_scenes.h"
 #include "view/projection.h"
 
 using namespace haloplot;
@@ -121,6 +122,38 @@ int main() {
     }
     const Checked c = check_scene(v, w);
     total.records += c.records, total.skipped += c.skipped, total.wrong += c.wrong;
+  }
+  // Haloed wire frames of the cube array and linked tori (their polygon sides), the eye at 3
+  // and 1.5 times the model's size from its centre.
+  {
+    using namespace solid_scenes;
+    Mesh cubes, tori;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        box(&cubes, i * 100000 - 180000, j * 100000 - 180000, -30000, i * 100000 - 120000,
+            j * 100000 - 120000, 30000);
+    torus(&tori, -60000, 0, 0, 120000, 42000, 24, 12);
+    torus(&tori, 60000, 0, 0, 120000, 42000, 24, 12, true);
+    const std::pair<const Mesh*, int32_t> models[] = {{&cubes, 360000}, {&tori, 444000}};
+    Checked meshes;
+    for (const auto& [mesh, size] : models)
+      for (const int32_t az : {30000, -50000, 200000})
+        for (const int tenths : {30, 15}) {
+          View v;
+          v.azimuth_mdeg = az;
+          v.elevation_mdeg = az == 200000 ? -15000 : 25000;
+          v.perspective = size * tenths / 10;
+          std::vector<Point3> w;
+          const std::vector<uint32_t> pairs = polygon_edges(*mesh);
+          for (uint32_t id : pairs) w.push_back(mesh->v[id]);
+          const Checked c = check_scene(v, w);
+          meshes.records += c.records, meshes.skipped += c.skipped, meshes.wrong += c.wrong;
+        }
+    std::printf("perspective wire frames: %zu crossings, %zu too close to call, %zu wrong\n",
+                meshes.records, meshes.skipped, meshes.wrong);
+    CHECK(meshes.records > 1000);
+    CHECK(meshes.skipped * 20 < meshes.records);
+    CHECK_EQ(meshes.wrong, size_t{0});
   }
   std::printf(
       "perspective: %zu crossings, %zu too close to call, %zu with the wrong edge in front\n",
