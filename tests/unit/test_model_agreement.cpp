@@ -1,0 +1,107 @@
+// Real meshes against their unrounded model (issue 18): assimp's WusonOBJ.obj (an open mesh,
+// so the topology-free fallback draws it) and spider.obj, plotted hidden-line, every drawn
+// edge's visible length compared with a double-precision ray cast of the model itself
+// (tests/reference/ray_cast.h: the OBJ's integer world vertices, before the view rounds them
+// to steps). An edge agrees when the two lengths differ by at most 3 steps + 1 % of its length.
+//
+// spider.obj repeats vertex positions under other ids: the reference skips only the faces
+// that hold both of an edge's vertex ids, so a face that touches an edge through repeated
+// positions counts as any other face does (it hides only where the segment to the eye passes
+// through its inside).
+//
+// A second cast of the core's own rounded scene (on paper) tells where a difference comes
+// from. Measured: on WusonOBJ at 30,25 as many edges (51) disagree with the rounded scene as
+// with the model, and in those looked at both casts agree with each other and change
+// visibility where the core made no cut, as where an edge passes through a face (the mesh's
+// parts interpenetrate; nothing cuts an edge where it pierces a face yet). At 200,-40 others
+// lie on or within rounding of another part's surface, where both casts flicker.
+//
+// The issue's goal is 99.5 % on WusonOBJ. The plot falls short of it today (the figures are
+// printed); the test holds the line where it stands, so that any change to the projection or
+// the fallback that draws further from the model fails here.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "../check.h"
+#include "cli/options.h"
+#include "io/obj_file.h"
+#include "pipeline/scene_input.h"
+#include "pipeline/solid_pipeline.h"
+#include "reference/ray_cast.h"
+
+using namespace haloplot;
+using namespace haloplot::host;
+
+namespace {
+
+struct Agreement {
+  size_t edges = 0, agree = 0, paper_agree = 0;
+  double worst = 0;
+};
+
+Agreement measure(const std::string& path, const std::string& view_text) {
+  Agreement a;
+  Options o;
+  o.values["--view"] = view_text;
+  o.values["--up"] = "y";
+  SolidScene scene;
+  TriangulateStats ts;
+  std::string error;
+  if (!load_solid_scene(o, path, &scene, &ts, &error)) {
+    CHECK_MSG(false, path + ": " + error);
+    return a;
+  }
+  ObjModel model;
+  CHECK_MSG(!read_obj_file(path, &model).failed(), path + ": unreadable");
+  make_z_up(&model, UpAxis::kY);
+  SolidRun run;
+  CHECK_MSG(run_hidden_lines(scene, HiddenMethod::kAuto, FallbackParams{}, &run) == Status::kOk,
+            path + ": hidden lines failed");
+  std::vector<double> share(scene.edge_pairs.size() / 2, 0.0);
+  for (const SolidPiece& p : run.pieces)
+    if (!p.hidden && p.edge < share.size()) share[p.edge] += double(p.t1 - p.t0) / 4294967296.0;
+  View v;
+  const size_t comma = view_text.find(',');
+  v.azimuth_mdeg = int32_t(std::lround(std::stod(view_text.substr(0, comma)) * 1000));
+  v.elevation_mdeg = int32_t(std::lround(std::stod(view_text.substr(comma + 1)) * 1000));
+  const ray_cast::Scene truth(ray_cast::camera(v, model.vertices), model.vertices, scene.triangles);
+  const ray_cast::Scene paper(ray_cast::on_paper(), scene.vertices, scene.triangles);
+  for (uint32_t e = 0; e < share.size(); ++e) {
+    const uint32_t i = scene.edge_pairs[2 * e], j = scene.edge_pairs[2 * e + 1];
+    double length = 0, paper_length = 0;
+    const double theirs = truth.visible_length(i, j, &length);
+    const double on_paper = paper.visible_length(i, j, &paper_length);
+    const double diff = std::fabs(share[e] * length - theirs);
+    ++a.edges;
+    if (diff <= 3 + 0.01 * length) ++a.agree;
+    if (std::fabs(share[e] * paper_length - on_paper) <= 3 + 0.01 * paper_length) ++a.paper_agree;
+    a.worst = std::max(a.worst, diff);
+  }
+  std::printf(
+      "%s at %s (%s): %zu of %zu edges agree with the model (%.2f %%), worst %.1f steps; with "
+      "the rounded scene: %zu\n",
+      path.c_str(), view_text.c_str(), run.used_qi ? "QI" : "fallback", a.agree, a.edges,
+      100.0 * double(a.agree) / double(std::max<size_t>(a.edges, 1)), a.worst, a.paper_agree);
+  return a;
+}
+
+}  // namespace
+
+int main() {
+  const std::string dir = "/usr/share/assimp/models/OBJ/";
+  const Agreement w1 = measure(dir + "WusonOBJ.obj", "30,25");
+  const Agreement w2 = measure(dir + "WusonOBJ.obj", "200,-40");
+  const Agreement sp = measure(dir + "spider.obj", "30,25");
+  CHECK(w1.edges > 5000 && w2.edges > 5000 && sp.edges > 2000);
+  // Where the plot stands with whole-step coordinates (measured 99.12 %, 98.78 %, 96.95 %);
+  // the goal for WusonOBJ is 99.5 % at both views.
+  auto share = [](const Agreement& a) {
+    return double(a.agree) / double(std::max<size_t>(a.edges, 1));
+  };
+  CHECK_MSG(share(w1) >= 0.990, "WusonOBJ at 30,25 draws further from the model than before");
+  CHECK_MSG(share(w2) >= 0.985, "WusonOBJ at 200,-40 draws further from the model than before");
+  CHECK_MSG(share(sp) >= 0.965, "spider at 30,25 draws further from the model than before");
+  return check::finish("model_agreement");
+}
