@@ -8,6 +8,7 @@
 #include "solid/classify.h"
 #include "solid/cover.h"
 #include "solid/face_grid.h"
+#include "solid/pierce.h"
 #include "solid/qi.h"
 #include "sort/in_place_sort.h"
 
@@ -257,6 +258,7 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
 
   OutlineRuns runs{topo, fg, cutset, inc, front_first, front_t, sink};
   const bool use_front = !params.any_facing;
+  const uint8_t* pierce_front = use_front ? front : nullptr;
   for (uint32_t e = 0; e < topo.n_drawn; ++e) {
     const SolidEdge& se = topo.edges[e];
     const Point3 a = topo.vertices[se.v0], b = topo.vertices[se.v1];
@@ -344,19 +346,29 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
       pending = FallbackPiece{e, t0, t1, q, hidden, tested};
       have = true;
     };
-    // Cut points: every crossing behind another edge, every vertex the edge passes through.
+    // Cut points: every crossing behind another edge, every vertex the edge passes through,
+    // every face it passes through (solid/pierce.h; found one at a time, in order, so an edge
+    // that pierces nothing costs one look along its cells). An edge hidden by class needs none.
     const Crossing* cx = cutset.begin(e);
     const uint32_t ncx = cutset.count(e);
     const Incidence* ix = inc.by_edge + inc.edge_first[e];
     const uint32_t nix = inc.edge_first[e + 1] - inc.edge_first[e];
     int64_t at = 0;
     uint32_t i = 0, j = 0;
-    while (i < ncx || j < nix) {
-      int64_t t;
-      if (j >= nix || (i < ncx && cx[i].t <= ix[j].t))
-        t = cx[i++].t;
-      else
-        t = ix[j++].t;
+    int64_t pierce =
+        by_class ? kNoPierce : next_pierce(topo, fg, pierce_front, e, -1, &st.pierce_tests);
+    while (i < ncx || j < nix || pierce != kNoPierce) {
+      int64_t t = pierce;
+      if (i < ncx && cx[i].t <= t) t = cx[i].t;
+      if (j < nix && ix[j].t <= t) t = ix[j].t;
+      if (i < ncx && cx[i].t == t) {
+        ++i;
+      } else if (j < nix && ix[j].t == t) {
+        ++j;
+      } else {
+        ++st.pierces;
+        pierce = next_pierce(topo, fg, pierce_front, e, t, &st.pierce_tests);
+      }
       // A cut at floor(t * 2^32): the true point lies in [t, t + 1). The middle of [at, t) is
       // at least at + 1 and at most t - 1, so strictly between the true cut points.
       emit(at, t);

@@ -1,7 +1,8 @@
 // The topology-free method (Franklin 1980's step 10): cut every drawn edge wherever it passes
-// behind another edge or through a vertex, and test the middle of each piece against the faces
-// in the grid cell that holds it. It needs no edge-face links, so it is what non-manifold and
-// misoriented meshes get, and it is the independent cross-check of the QI propagation.
+// behind another edge, through a vertex or through a face (solid/pierce.h), and test the middle of
+// each piece against the faces in the grid cell that holds it. It needs no edge-face links, so it
+// is what non-manifold and misoriented meshes get, and it is the independent cross-check of the QI
+// propagation.
 //
 // Kira's savings, when the mesh is manifold and classified (use_classes):
 //   - H1 and H2 edges are hidden whole without a test (they cannot be seen on a closed solid);
@@ -49,6 +50,8 @@ struct FallbackStats {
   uint64_t class_saved = 0;  // pieces of H1/H2 edges, hidden by class
   uint64_t short_pieces = 0;
   uint64_t outline_tests = 0;  // Kira's condition asked by the outline pass
+  uint64_t pierces = 0;        // cuts where an edge passes through a face (solid/pierce.h)
+  uint64_t pierce_tests = 0;   // exact edge-through-face tests made to find them
   uint32_t peculiar_a = 0, peculiar_b = 0;
   uint32_t grid_cells = 0, cell_faces = 0;
 };

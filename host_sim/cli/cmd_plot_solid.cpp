@@ -48,10 +48,12 @@ void print_solid_stats(const SolidRun& r, const TriangulateStats& tri) {
   else
     std::fprintf(stderr,
                  "fallback_pieces=%llu\nfallback_tests=%llu\nfallback_face_tests=%llu\n"
-                 "vc_saved=%llu\nclass_saved=%llu\npeculiar_a=%u\npeculiar_b=%u\n",
+                 "vc_saved=%llu\nclass_saved=%llu\npeculiar_a=%u\npeculiar_b=%u\n"
+                 "pierces=%llu\npierce_tests=%llu\n",
                  (unsigned long long)f.pieces, (unsigned long long)f.tests,
                  (unsigned long long)f.face_tests, (unsigned long long)f.vc_saved,
-                 (unsigned long long)f.class_saved, f.peculiar_a, f.peculiar_b);
+                 (unsigned long long)f.class_saved, f.peculiar_a, f.peculiar_b,
+                 (unsigned long long)f.pierces, (unsigned long long)f.pierce_tests);
   if (o.contour_edges > 0)
     std::fprintf(stderr,
                  "outline_contour_segments=%u\noutline_circuits=%u\noutline_potential=%u\n"
