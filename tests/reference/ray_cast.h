@@ -128,8 +128,11 @@ class Scene {
   }
 
   // The visible length, in plot steps on the exact screen image, of the segment between
-  // vertices a and b; *length gets the image's whole length.
-  LD visible_length(uint32_t a, uint32_t b, LD* length = nullptr) const {
+  // vertices a and b; *length gets the image's whole length, *changes how often visibility
+  // changed between samples (many: the edge runs along a face's side on paper, where a cast
+  // ray grazes and the answer flickers).
+  LD visible_length(uint32_t a, uint32_t b, LD* length = nullptr,
+                    int64_t* changes = nullptr) const {
     const V3 A = vp_[a], B = vp_[b];
     const LD L = std::hypot(sx_[b] - sx_[a], sy_[b] - sy_[a]);
     if (length) *length = L;
@@ -145,6 +148,7 @@ class Scene {
     const int64_t n = std::max<int64_t>(4, int64_t(std::ceil(L / 0.5)));
     auto sample = [&](int64_t i) { return (LD(i) + 0.5) / LD(n); };
     bool prev = visible(sample(0));
+    if (changes) *changes = 0;
     LD seen = 0, run_start = 0;
     for (int64_t i = 1; i < n; ++i) {
       const bool v = visible(sample(i));
@@ -154,6 +158,7 @@ class Scene {
         const LD mid = (lo + hi) / 2;
         (visible(mid) == prev ? lo : hi) = mid;
       }
+      if (changes) ++*changes;
       if (prev) seen += (lo + hi) / 2 - run_start;
       run_start = (lo + hi) / 2;
       prev = v;

@@ -10,15 +10,16 @@
 // through its inside).
 //
 // A second cast of the core's own rounded scene (on paper) tells where a difference comes
-// from. Measured: on WusonOBJ at 30,25 as many edges (51) disagree with the rounded scene as
-// with the model, and in those looked at both casts agree with each other and change
-// visibility where the core made no cut, as where an edge passes through a face (the mesh's
-// parts interpenetrate; nothing cuts an edge where it pierces a face yet). At 200,-40 others
-// lie on or within rounding of another part's surface, where both casts flicker.
+// from. Before the fallback cut edges where they pass through faces (solid/pierce.h), 51 edges
+// of WusonOBJ at 30,25 disagreed with the model (99.12 %) and as many with the rounded scene:
+// the mesh's parts interpenetrate, and visibility changed where the core made no cut. With
+// those cuts: 99.78 % at 30,25, 99.26 % at 200,-40 (99.54 % against the rounded scene: the
+// rest lie on or within rounding of another part's surface, where both casts flicker) and
+// 99.81 % for spider.obj (96.95 % before).
 //
-// The goal is 99.5 % on WusonOBJ. The plot falls short of it today (the figures are
-// printed); the test holds the line where it stands, so that any change to the projection or
-// the fallback that draws further from the model fails here.
+// The goal is 99.5 % on WusonOBJ at both views: met at 30,25, short at 200,-40. The
+// test asserts the goal where it is met and today's level where it is not, so that any change
+// to the projection or the fallback that draws further from the model fails here.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -95,13 +96,11 @@ int main() {
   const Agreement w2 = measure(dir + "WusonOBJ.obj", "200,-40");
   const Agreement sp = measure(dir + "spider.obj", "30,25");
   CHECK(w1.edges > 5000 && w2.edges > 5000 && sp.edges > 2000);
-  // Where the plot stands with whole-step coordinates (measured 99.12 %, 98.78 %, 96.95 %);
-  // the goal for WusonOBJ is 99.5 % at both views.
   auto share = [](const Agreement& a) {
     return double(a.agree) / double(std::max<size_t>(a.edges, 1));
   };
-  CHECK_MSG(share(w1) >= 0.990, "WusonOBJ at 30,25 draws further from the model than before");
-  CHECK_MSG(share(w2) >= 0.985, "WusonOBJ at 200,-40 draws further from the model than before");
-  CHECK_MSG(share(sp) >= 0.965, "spider at 30,25 draws further from the model than before");
+  CHECK_MSG(share(w1) >= 0.995, "WusonOBJ at 30,25: under the goal of 99.5 %");
+  CHECK_MSG(share(w2) >= 0.992, "WusonOBJ at 200,-40 draws further from the model than before");
+  CHECK_MSG(share(sp) >= 0.995, "spider at 30,25 draws further from the model than before");
   return check::finish("model_agreement");
 }
