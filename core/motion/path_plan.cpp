@@ -47,6 +47,7 @@ uint32_t walk(const uint32_t* link, uint32_t start, Visit visit) {
 struct Workspace {
   uint32_t* link;
   Chain* chains;
+  uint32_t* order;  // the tour: 2 * chain + (1 when walked from its last end)
   uint8_t* done;
   EndKey* ends;
   uint32_t* cell_start;
@@ -55,11 +56,64 @@ struct Workspace {
 
 uint32_t cells_cap(uint32_t n) { return n + 1; }
 
+// 2-opt on the greedy tour: reversing a run of the tour (each chain in it then walked the
+// other way) keeps every pen-up move inside the run and changes only the two at its ends, so a
+// reversal is taken when those two get shorter. Greedy nearest neighbour leaves stragglers
+// behind and crosses the region again to fetch them; a reversal removes such a crossing. Runs
+// of up to kTwoOptWindow chains are tried, a few passes, so the cost stays linear in the tour.
+constexpr uint32_t kTwoOptWindow = 48;
+constexpr int kTwoOptPasses = 4;
+
+void improve_tour(const Segment2* spans, const Chain* chains, uint32_t* order, uint32_t n,
+                  int32_t start_x, int32_t start_y) {
+  auto point = [&](uint32_t item, bool entry, int32_t* x, int32_t* y) {
+    const Chain& c = chains[item >> 1];
+    const bool from_last = (item & 1) != 0;
+    end_point(spans, entry != from_last ? c.first_end : c.last_end, x, y);
+  };
+  auto dist = [](int32_t ax, int32_t ay, int32_t bx, int32_t by) {
+    return int64_t{length_floor(int64_t{bx} - ax, int64_t{by} - ay)};
+  };
+  for (int pass = 0; pass < kTwoOptPasses; ++pass) {
+    bool changed = false;
+    for (uint32_t i = 0; i < n; ++i) {
+      int32_t px = start_x, py = start_y;  // where the pen is before position i
+      if (i > 0) point(order[i - 1], false, &px, &py);
+      int32_t ix, iy;
+      point(order[i], true, &ix, &iy);
+      const int64_t before_i = dist(px, py, ix, iy);
+      const uint32_t last = n - 1 < i + kTwoOptWindow ? n - 1 : i + kTwoOptWindow;
+      for (uint32_t j = i + 1; j <= last; ++j) {
+        int32_t jx, jy;  // where the run [i, j] is left now, and entered once reversed
+        point(order[j], false, &jx, &jy);
+        int64_t old_cost = before_i, new_cost = dist(px, py, jx, jy);
+        if (j + 1 < n) {
+          int32_t nx, ny;
+          point(order[j + 1], true, &nx, &ny);
+          old_cost += dist(jx, jy, nx, ny);
+          new_cost += dist(ix, iy, nx, ny);
+        }
+        if (new_cost >= old_cost) continue;
+        for (uint32_t a = i, b = j; a < b; ++a, --b) {
+          const uint32_t t = order[a];
+          order[a] = order[b] ^ 1u;
+          order[b] = t ^ 1u;
+        }
+        if (((j - i) & 1u) == 0) order[i + (j - i) / 2] ^= 1u;  // the middle one turns too
+        changed = true;
+        break;
+      }
+    }
+    if (!changed) break;
+  }
+}
+
 template <typename C>
 Workspace carve_workspace(C* front, C* grid, uint32_t n) {
   Workspace w;
   w.link = front->template take<uint32_t>(size_t{2} * n);
   w.chains = front->template take<Chain>(n);
+  w.order = front->template take<uint32_t>(n);
   w.done = front->template take<uint8_t>(n);
   *grid = *front;
   w.ends = front->template take<EndKey>(size_t{2} * n);
@@ -195,7 +249,7 @@ Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t sta
   cell_start[cells] = 2 * n_chains;
   for (uint32_t c = 0; c < n_chains; ++c) done[c] = 0;
 
-  uint32_t count = 0;
+  uint32_t* order = ws.order;
   int32_t px = start_x, py = start_y;
   for (uint32_t taken = 0; taken < n_chains; ++taken) {
     const int64_t pcx = (px - xmin) / int64_t(side), pcy = (py - ymin) / int64_t(side);
@@ -228,8 +282,18 @@ Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t sta
       if (best_item != kNone && best <= reach * reach) break;
       if (r > int64_t(gx) + int64_t(gy)) break;
     }
-    const Chain& ch = chains[best_item >> 1];
     done[best_item >> 1] = 1;
+    order[taken] = best_item;
+    // The pen leaves the chain by its other end.
+    chain_end(best_item ^ 1u, &px, &py);
+  }
+  improve_tour(spans, chains, order, n_chains, start_x, start_y);
+
+  uint32_t count = 0;
+  px = start_x, py = start_y;
+  for (uint32_t taken = 0; taken < n_chains; ++taken) {
+    const uint32_t best_item = order[taken];
+    const Chain& ch = chains[best_item >> 1];
     // Walk from the end we arrived at; a chain entered at its last end is walked backwards.
     const bool backwards = (best_item & 1) != 0;
     const uint32_t entry = backwards ? ch.last_end : ch.first_end;
