@@ -245,6 +245,7 @@ class BandConductor {
   uint32_t n_segs_ = 0, next_seg_ = 0;
   int64_t column_side_ = kMinColumn;
   bool leftward_ = false;
+  int64_t band_y0_ = 0, band_y1_ = 0;  // the committed band's rows
   int32_t pen_x_ = 0, pen_y_ = 0;
   PieceObserver observer_{};
   uint64_t (*clock_)() = nullptr;

@@ -65,7 +65,7 @@ constexpr uint32_t kTwoOptWindow = 48;
 constexpr int kTwoOptPasses = 4;
 
 void improve_tour(const Segment2* spans, const Chain* chains, uint32_t* order, uint32_t n,
-                  int32_t start_x, int32_t start_y) {
+                  int32_t start_x, int32_t start_y, PathEnd end) {
   auto point = [&](uint32_t item, bool entry, int32_t* x, int32_t* y) {
     const Chain& c = chains[item >> 1];
     const bool from_last = (item & 1) != 0;
@@ -87,9 +87,9 @@ void improve_tour(const Segment2* spans, const Chain* chains, uint32_t* order, u
         int32_t jx, jy;  // where the run [i, j] is left now, and entered once reversed
         point(order[j], false, &jx, &jy);
         int64_t old_cost = before_i, new_cost = dist(px, py, jx, jy);
-        if (j + 1 < n) {
-          int32_t nx, ny;
-          point(order[j + 1], true, &nx, &ny);
+        if (j + 1 < n || end.known) {
+          int32_t nx = end.x, ny = end.y;
+          if (j + 1 < n) point(order[j + 1], true, &nx, &ny);
           old_cost += dist(jx, jy, nx, ny);
           new_cost += dist(ix, iy, nx, ny);
         }
@@ -136,7 +136,7 @@ size_t path_plan_bytes(uint32_t n_spans) {
 
 Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t start_y,
                  void* workspace, size_t workspace_bytes, PathPoint* out, uint32_t out_capacity,
-                 uint32_t* out_count, PathStats* stats) {
+                 uint32_t* out_count, PathStats* stats, PathEnd end) {
   Carver front(workspace, workspace_bytes), grid = front;
   const Workspace ws = carve_workspace(&front, &grid, n);
   if (front.short_ || grid.short_) return Status::kWorkspaceTooSmall;
@@ -287,7 +287,7 @@ Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t sta
     // The pen leaves the chain by its other end.
     chain_end(best_item ^ 1u, &px, &py);
   }
-  improve_tour(spans, chains, order, n_chains, start_x, start_y);
+  improve_tour(spans, chains, order, n_chains, start_x, start_y, end);
 
   uint32_t count = 0;
   px = start_x, py = start_y;

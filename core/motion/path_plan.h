@@ -34,10 +34,17 @@ struct PathStats {
 size_t path_plan_bytes(uint32_t n_spans);
 inline uint32_t path_points_max(uint32_t n_spans) { return 2 * n_spans; }
 
+// Where the pen goes after this plan, when the caller knows (the next column of a band): the
+// 2-opt then also counts the move from the tour's last end to there.
+struct PathEnd {
+  bool known = false;
+  int32_t x = 0, y = 0;
+};
+
 // Plan from pen position (start_x, start_y). `out` must hold path_points_max(n) points.
 Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t start_y,
                  void* workspace, size_t workspace_bytes, PathPoint* out, uint32_t out_capacity,
-                 uint32_t* out_count, PathStats* stats);
+                 uint32_t* out_count, PathStats* stats, PathEnd end = PathEnd{});
 
 // Length of (dx, dy) rounded down to whole plot steps.
 uint32_t length_floor(int64_t dx, int64_t dy);
