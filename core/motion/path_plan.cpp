@@ -61,45 +61,103 @@ uint32_t cells_cap(uint32_t n) { return n + 1; }
 // reversal is taken when those two get shorter. Greedy nearest neighbour leaves stragglers
 // behind and crosses the region again to fetch them; a reversal removes such a crossing. Runs
 // of up to kTwoOptWindow chains are tried, a few passes, so the cost stays linear in the tour.
+// The moves' lengths are kept in `gap` (gap[k]: from position k to k + 1, or to the end),
+// and a candidate is first bounded below by its moves' Chebyshev lengths, so most candidates
+// cost no square root.
 constexpr uint32_t kTwoOptWindow = 48;
 constexpr int kTwoOptPasses = 4;
 
-void improve_tour(const Segment2* spans, const Chain* chains, uint32_t* order, uint32_t n,
-                  int32_t start_x, int32_t start_y, PathEnd end) {
-  auto point = [&](uint32_t item, bool entry, int32_t* x, int32_t* y) {
-    const Chain& c = chains[item >> 1];
-    const bool from_last = (item & 1) != 0;
+struct Tour {
+  const Segment2* spans;
+  const Chain* chains;
+  uint32_t* order;  // 2 * chain + (1 when walked from its last end)
+  uint32_t* gap;
+  uint32_t n;
+  int32_t start_x, start_y;
+  PathEnd end;
+
+  void point(uint32_t k, bool entry, int32_t* x, int32_t* y) const {
+    const Chain& c = chains[order[k] >> 1];
+    const bool from_last = (order[k] & 1) != 0;
     end_point(spans, entry != from_last ? c.first_end : c.last_end, x, y);
-  };
-  auto dist = [](int32_t ax, int32_t ay, int32_t bx, int32_t by) {
-    return int64_t{length_floor(int64_t{bx} - ax, int64_t{by} - ay)};
-  };
+  }
+  // Where the pen is before position k, and where it goes after position k (false: nowhere).
+  void before(uint32_t k, int32_t* x, int32_t* y) const {
+    if (k == 0) {
+      *x = start_x, *y = start_y;
+    } else {
+      point(k - 1, false, x, y);
+    }
+  }
+  bool after(uint32_t k, int32_t* x, int32_t* y) const {
+    if (k + 1 < n) return point(k + 1, true, x, y), true;
+    *x = end.x, *y = end.y;
+    return end.known;
+  }
+  static uint32_t chebyshev(int32_t ax, int32_t ay, int32_t bx, int32_t by) {
+    const int64_t dx = int64_t{bx} - ax, dy = int64_t{by} - ay;
+    const int64_t ux = dx < 0 ? -dx : dx, uy = dy < 0 ? -dy : dy;
+    return uint32_t(ux > uy ? ux : uy);
+  }
+  static uint32_t dist(int32_t ax, int32_t ay, int32_t bx, int32_t by) {
+    return length_floor(int64_t{bx} - ax, int64_t{by} - ay);
+  }
+  uint32_t gap_after(uint32_t k) const {
+    int32_t x, y, nx, ny;
+    point(k, false, &x, &y);
+    return after(k, &nx, &ny) ? dist(x, y, nx, ny) : 0;
+  }
+  // The run [i, j] reversed, each chain in it turned; the moves inside keep their lengths in
+  // reverse order, the two at its ends are given.
+  void reverse(uint32_t i, uint32_t j, uint32_t into, uint32_t out_of, uint32_t* first) {
+    for (uint32_t a = i, b = j; a < b; ++a, --b) {
+      const uint32_t t = order[a];
+      order[a] = order[b] ^ 1u;
+      order[b] = t ^ 1u;
+    }
+    if (((j - i) & 1u) == 0) order[i + (j - i) / 2] ^= 1u;  // the middle one turns too
+    for (uint32_t a = i, b = j - 1; a < b && b != ~0u; ++a, --b) {
+      const uint32_t t = gap[a];
+      gap[a] = gap[b];
+      gap[b] = t;
+    }
+    if (i == 0)
+      *first = into;
+    else
+      gap[i - 1] = into;
+    gap[j] = out_of;
+  }
+};
+
+void improve_tour(Tour& t) {
+  if (t.n < 2) return;
+  for (uint32_t k = 0; k < t.n; ++k) t.gap[k] = t.gap_after(k);
+  uint32_t first = 0;  // from the start to position 0
+  {
+    int32_t x, y;
+    t.point(0, true, &x, &y);
+    first = Tour::dist(t.start_x, t.start_y, x, y);
+  }
   for (int pass = 0; pass < kTwoOptPasses; ++pass) {
     bool changed = false;
-    for (uint32_t i = 0; i < n; ++i) {
-      int32_t px = start_x, py = start_y;  // where the pen is before position i
-      if (i > 0) point(order[i - 1], false, &px, &py);
-      int32_t ix, iy;
-      point(order[i], true, &ix, &iy);
-      const int64_t before_i = dist(px, py, ix, iy);
-      const uint32_t last = n - 1 < i + kTwoOptWindow ? n - 1 : i + kTwoOptWindow;
+    for (uint32_t i = 0; i < t.n; ++i) {
+      int32_t px, py, ix, iy;
+      t.before(i, &px, &py);
+      t.point(i, true, &ix, &iy);
+      const uint64_t into_i = i == 0 ? first : t.gap[i - 1];
+      const uint32_t last = t.n - 1 < i + kTwoOptWindow ? t.n - 1 : i + kTwoOptWindow;
       for (uint32_t j = i + 1; j <= last; ++j) {
-        int32_t jx, jy;  // where the run [i, j] is left now, and entered once reversed
-        point(order[j], false, &jx, &jy);
-        int64_t old_cost = before_i, new_cost = dist(px, py, jx, jy);
-        if (j + 1 < n || end.known) {
-          int32_t nx = end.x, ny = end.y;
-          if (j + 1 < n) point(order[j + 1], true, &nx, &ny);
-          old_cost += dist(jx, jy, nx, ny);
-          new_cost += dist(ix, iy, nx, ny);
-        }
-        if (new_cost >= old_cost) continue;
-        for (uint32_t a = i, b = j; a < b; ++a, --b) {
-          const uint32_t t = order[a];
-          order[a] = order[b] ^ 1u;
-          order[b] = t ^ 1u;
-        }
-        if (((j - i) & 1u) == 0) order[i + (j - i) / 2] ^= 1u;  // the middle one turns too
+        int32_t jx, jy, nx, ny;  // where the run [i, j] is left now, and what comes after it
+        t.point(j, false, &jx, &jy);
+        const bool has_next = t.after(j, &nx, &ny);
+        const uint64_t old_cost = into_i + t.gap[j];
+        uint64_t bound = Tour::chebyshev(px, py, jx, jy);
+        if (has_next) bound += Tour::chebyshev(ix, iy, nx, ny);
+        if (bound >= old_cost) continue;
+        const uint32_t into = Tour::dist(px, py, jx, jy);
+        const uint32_t out_of = has_next ? Tour::dist(ix, iy, nx, ny) : 0;
+        if (uint64_t{into} + out_of >= old_cost) continue;
+        t.reverse(i, j, into, out_of, &first);
         changed = true;
         break;
       }
@@ -287,7 +345,8 @@ Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t sta
     // The pen leaves the chain by its other end.
     chain_end(best_item ^ 1u, &px, &py);
   }
-  improve_tour(spans, chains, order, n_chains, start_x, start_y, end);
+  Tour tour{spans, chains, order, items, n_chains, start_x, start_y, end};
+  improve_tour(tour);  // the grid's items are dead now: they hold the moves' lengths
 
   uint32_t count = 0;
   px = start_x, py = start_y;
