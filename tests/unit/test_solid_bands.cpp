@@ -68,13 +68,15 @@ struct Scene {
   std::string name;
   SolidScene scene;
   std::vector<size_t> arenas;  // each must plot it, in as many bands as it takes
+  bool pierced = false;        // solids through each other: the whole-model run falls back from QI
 };
 
 void check_scene(const Scene& sc) {
   const SolidInput in = solid_input(sc.scene);
   SolidRun qi;
   const Status qs = run_hidden_lines(sc.scene, HiddenMethod::kAuto, FallbackParams{}, &qi);
-  CHECK_MSG(ok(qs) && qi.used_qi, sc.name + ": the whole-model QI run");
+  CHECK_MSG(ok(qs) && qi.used_qi == !sc.pierced,
+            sc.name + (sc.pierced ? ": the whole-model fallback run" : ": the whole-model QI run"));
   const bool closed = qi.check.manifold();
   CHECK_MSG(closed, sc.name + ": a closed solid");
   std::vector<Stroke> qi_visible;
@@ -238,7 +240,24 @@ int main() {
     box(&m, 1500, 1500, -4000, 4500, 4500, -2000);
     scenes.push_back(make("frame before a box at 20,10", m, 20000, 10000, {8, 16}));
   }
+  // Solids through each other (edges cut where they pierce faces, core/solid/pierce.h): the
+  // bands against one band, and one band against the whole-model fallback.
+  std::vector<Scene> pierced;
+  {
+    Mesh m;
+    box(&m, 0, 0, 0, 4000, 4000, 4000);
+    box(&m, 2000, 1500, 1000, 6000, 5500, 5000);
+    pierced.push_back(make("overlapping boxes at 30,25", m, 30000, 25000, {6, 8}));
+  }
+  {
+    Mesh m;
+    torus(&m, 0, 0, 0, 6000, 2000, 32, 12);
+    sphere(&m, 6000, 0, 800, 3200, 12, 24);
+    pierced.push_back(make("sphere through a torus at 30,25", m, 30000, 25000, {32, 48}));
+  }
+  for (Scene& s : pierced) s.pierced = true;
   for (const Scene& s : scenes) check_scene(s);
+  for (const Scene& s : pierced) check_scene(s);
   for (const Scene& s : scenes) check_outlines(s);
   check_open_outlines();
   check_the_check(scenes[1]);
