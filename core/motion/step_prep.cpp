@@ -47,7 +47,6 @@ Status StepPrep::begin_move(const MotionItem& it) {
   dir_bits_ = uint8_t((it.delta[0] < 0 ? 1 : 0) | (it.delta[1] < 0 ? 2 : 0));
   j_ = 0;
   first_segment_ = true;
-  block_start_q8_ = time_q8_;
   ++counters_.blocks;
   // Backlash: a motor that reverses first takes up its slack (the planner stopped there).
   for (uint8_t mo = 0; mo < 2; ++mo) {
@@ -56,35 +55,48 @@ Status StepPrep::begin_move(const MotionItem& it) {
         fx_.backlash && moves && backward != last_backward_[mo] && m_.backlash[mo] > 0;
     if (moves) last_backward_[mo] = backward;
   }
-  // The trapezoid. With acceleration off the move runs at its top speed throughout.
-  const uint64_t l = it.length_q8;
-  entry2_ = it.entry_v2;
-  vtop2_ = it.top_v2;
-  if (it.accel > 0) {
-    const uint64_t two_a_l = 2ull * it.accel * l;
-    const uint64_t peak2 = (two_a_l + it.entry_v2 + it.exit_v2) / 2;
+  set_profile(it.entry_v2, it.top_v2, it.exit_v2, 0, n_);
+  return Status::kOk;
+}
+
+// The speed profile over dominant steps [j0, j_end] of the move, timed from the tick's clock
+// now: a trapezoid from entry to exit over that stretch's plot length (all of the move, or the
+// braking stretch of a feed hold). With acceleration off it runs at its top speed throughout.
+void StepPrep::set_profile(uint64_t entry_v2, uint64_t top_v2, uint64_t exit_v2, uint32_t j0,
+                           uint32_t j_end) {
+  prof_j0_ = j0;
+  end_j_ = j_end;
+  prof_s0_q16_ = distance_q16(j0);
+  prof_exit2_ = exit_v2;
+  block_start_q8_ = time_q8_;
+  const uint64_t l = (distance_q16(j_end) - prof_s0_q16_ + 255) >> 8;  // Q8, rounded up
+  const uint64_t a = item_.accel;
+  entry2_ = entry_v2;
+  vtop2_ = top_v2;
+  if (a > 0) {
+    const uint64_t two_a_l = 2ull * a * l;
+    const uint64_t peak2 = (two_a_l + entry_v2 + exit_v2) / 2;
     if (peak2 < vtop2_) vtop2_ = peak2;
     if (vtop2_ < entry2_) vtop2_ = entry2_;
     vin_q8_ = speed_q8(entry2_);
     vtop_q8_ = speed_q8(vtop2_);
-    s_acc_q8_ = (vtop2_ - entry2_) / (2ull * it.accel);
-    const uint64_t exit2 = it.exit_v2 < vtop2_ ? it.exit_v2 : vtop2_;
-    const uint64_t brake = (vtop2_ - exit2) / (2ull * it.accel);
+    s_acc_q8_ = (vtop2_ - entry2_) / (2ull * a);
+    const uint64_t exit2 = exit_v2 < vtop2_ ? exit_v2 : vtop2_;
+    const uint64_t brake = (vtop2_ - exit2) / (2ull * a);
     s_dec_q8_ = brake < l ? l - brake : 0;
     if (s_acc_q8_ > s_dec_q8_) s_acc_q8_ = s_dec_q8_;
-    t_acc_q8_ = (vtop_q8_ - vin_q8_) * m_.tick_hz / it.accel;
+    t_acc_q8_ = (vtop_q8_ - vin_q8_) * m_.tick_hz / a;
     t_dec_q8_ = t_acc_q8_ + (s_dec_q8_ - s_acc_q8_) * m_.tick_hz * 256 / vtop_q8_;
   } else {
     vtop_q8_ = speed_q8(vtop2_);
   }
-  return Status::kOk;
 }
 
 uint64_t StepPrep::block_time_q8(uint32_t j) const {
   // Plot distance of dominant step j in Q16: a Q8 distance is off by up to 1/256 step, which
   // at 3,000 steps/s moves a step by 1.3 ticks and shows as one-step speed jitter; in Q16 the
   // time is off by well under a tick at any speed.
-  const uint64_t s = distance_q16(j);
+  const uint64_t s = distance_q16(j) - prof_s0_q16_;
   const uint64_t hz = m_.tick_hz;
   if (item_.accel == 0) return s * hz / vtop_q8_;
   const uint64_t a = item_.accel;
@@ -105,7 +117,7 @@ uint64_t StepPrep::distance_q16(uint32_t j) const {
 // top speed while cruising, v_top^2 - 2 a (s - s_dec) while braking.
 uint64_t StepPrep::speed2_at(uint32_t j) const {
   if (item_.accel == 0 || n_ == 0) return vtop2_;
-  const uint64_t s = distance_q16(j), a = item_.accel;
+  const uint64_t s = distance_q16(j) - prof_s0_q16_, a = item_.accel;
   const uint64_t s_acc = s_acc_q8_ << 8, s_dec = s_dec_q8_ << 8;
   if (s <= s_acc) return entry2_ + ((2 * a * s + 128) >> 8);
   if (s <= s_dec) return vtop2_;
@@ -114,7 +126,7 @@ uint64_t StepPrep::speed2_at(uint32_t j) const {
 }
 
 int64_t StepPrep::interval_at(uint32_t j) const {
-  return int64_t(block_time_q8(j) - (j > 1 ? block_time_q8(j - 1) : 0));
+  return int64_t(block_time_q8(j) - (j > prof_j0_ + 1 ? block_time_q8(j - 1) : 0));
 }
 
 // Does the ramp (first, add) from where the tick is to step j1 stay as close to the exact
@@ -146,7 +158,7 @@ bool StepPrep::fits(uint32_t j1, int64_t first, int64_t add) const {
 // interval keeps the time within 1/8 tick of the exact one (50 to 100 events), instead of a
 // segment re-aimed at every boundary (67, 68, 67, ...), and a trace writes it as one line.
 void StepPrep::choose_ramp(uint32_t* j1_out, int64_t* first_out, int64_t* add_out) const {
-  uint32_t j1 = j_ + kSegmentSteps < n_ ? j_ + kSegmentSteps : n_;
+  uint32_t j1 = j_ + kSegmentSteps < end_j_ ? j_ + kSegmentSteps : end_j_;
   *j1_out = j1;
   if (!first_segment_ && fits(j1, reg_q8_, reg_add_)) {
     *first_out = reg_q8_, *add_out = reg_add_;
@@ -189,8 +201,11 @@ void StepPrep::resume() {
 // Dominant steps (j0, j1] of the current move as a move of its own: the motor steps between
 // the tick's Bresenham positions there (the other motor has made (n/2 + j * minor) / n steps
 // after j events, engine's error starting at n/2), its plot length in proportion.
+uint32_t StepPrep::minor_at(uint32_t j) const {
+  return n_ == 0 ? 0 : uint32_t((n_ / 2 + uint64_t(j) * minor_) / n_);
+}
+
 MotionItem StepPrep::part(uint32_t j0, uint32_t j1) const {
-  auto minor_at = [&](uint32_t j) { return uint32_t((n_ / 2 + uint64_t(j) * minor_) / n_); };
   const int32_t major = int32_t(j1 - j0), minor = int32_t(minor_at(j1) - minor_at(j0));
   MotionItem it = item_;
   const int32_t d[2] = {dominant_ == 0 ? major : minor, dominant_ == 0 ? minor : major};
@@ -201,9 +216,12 @@ MotionItem StepPrep::part(uint32_t j0, uint32_t j1) const {
 }
 
 // Brake from step j_ at speed^2 v2: the stopping distance v^2 / 2a, rounded up to the next
-// dominant step. Within this move, the move splits there: a braking part from v to rest, and
+// dominant step. Within this move, the move splits there: a braking stretch from v to rest, and
 // the rest (from rest, to the move's own exit) kept for resume(). Past its end, the whole move
-// brakes and the next one goes on braking from where it ends (brake_exit2_).
+// brakes and the next one goes on braking from where it ends (brake_exit2_). The braking
+// stretch stays in the move's block, only its speed profile changes: the engine's Bresenham
+// goes on, so the other motor keeps its rhythm (a block of its own would restart it at half a
+// step and move that motor's next step by up to a step's time: a speed jump at one step).
 void StepPrep::brake(uint64_t v2) {
   hold_ = Hold::kBraking;
   const uint32_t j0 = j_;
@@ -224,17 +242,14 @@ void StepPrep::brake(uint64_t v2) {
     // At rest already, or no acceleration modelled: stop here. At the move's very end at
     // speed: go on braking in the next move.
     brake_exit2_ = item_.accel > 0 && j0 == n_ ? v2 : 0;
+    if (j0 < n_) counters_.motor_steps[1 - dominant_] += minor_at(j0);
     in_move_ = false;
     return;
   }
-  MotionItem b = part(j0, j_stop);
-  const uint64_t fall = 2ull * b.accel * b.length_q8;
-  b.entry_v2 = b.top_v2 = v2;
-  b.exit_v2 = have_rest_ || fall >= v2 ? 0 : v2 - fall;
-  brake_exit2_ = b.exit_v2;
-  // The braking part has the same directions: no backlash take-up, and begin_move() keeps
-  // the tick's time base.
-  (void)begin_move(b);
+  const uint64_t len_q8 = (distance_q16(j_stop) - distance_q16(j0) + 255) >> 8;
+  const uint64_t fall = 2ull * item_.accel * len_q8;
+  brake_exit2_ = have_rest_ || fall >= v2 ? 0 : v2 - fall;
+  set_profile(v2, v2, brake_exit2_, j0, j_stop);
 }
 
 void StepPrep::pen_segment(bool down, StepSegment* out) {
@@ -400,9 +415,9 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
       brake(j_ == 0 ? entry2_ : speed2_at(j_));
       continue;
     }
-    if (j_ >= n_) {
+    if (j_ >= end_j_) {
       in_move_ = false;
-      last_exit2_ = item_.accel > 0 && item_.exit_v2 < vtop2_ ? item_.exit_v2 : vtop2_;
+      last_exit2_ = item_.accel > 0 && prof_exit2_ < vtop2_ ? prof_exit2_ : vtop2_;
       if (item_.accel == 0) last_exit2_ = 0;  // no acceleration modelled: a hold stops at once
       continue;
     }
@@ -434,7 +449,7 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
     ++counters_.segments;
     last_takeup_ = false;
     j_ = j1;
-    if (j_ >= n_) counters_.motor_steps[1 - dominant_] += minor_;
+    if (j_ >= end_j_) counters_.motor_steps[1 - dominant_] += minor_at(end_j_);
     *have = true;
     return Status::kOk;
   }

@@ -76,8 +76,9 @@ class StepPrep {
   // the pen where it was lifted and go on from rest with the rest of the move; the planner's
   // next entry speed is lowered to what the rest of the move can reach from rest. A move is
   // split at a motor step (the Bresenham position of the dominant step where the braking
-  // ends), so each part runs its own straight line between exact step positions: the pen
-  // path stays within a step of the unpaused one. Latency: the queued segments run first.
+  // ends); the braking stretch keeps the move's block and Bresenham rhythm, the rest runs its
+  // own straight line from rest between exact step positions: the pen path stays within a
+  // step of the unpaused one. Latency: the queued segments run first.
   void hold();
   void resume();
   bool holding() const { return hold_ != Hold::kNone; }  // requested, braking or held
@@ -96,6 +97,9 @@ class StepPrep {
   void resume_move(MotionPlanner& planner, StepSegment* out, bool* have);
   MotionItem travel(const int32_t delta[2]) const;  // pen up, rest to rest
   Status begin_move(const MotionItem& item);
+  void set_profile(uint64_t entry_v2, uint64_t top_v2, uint64_t exit_v2, uint32_t j0,
+                   uint32_t j_end);
+  uint32_t minor_at(uint32_t j) const;       // the other motor's steps after dominant step j
   uint64_t block_time_q8(uint32_t j) const;  // time of dominant step j from the block start
   void advance_time(uint32_t events, int64_t interval, int64_t add);
   int64_t interval_at(uint32_t j) const;  // the exact interval before dominant step j (1-based)
@@ -112,7 +116,11 @@ class StepPrep {
   uint8_t dominant_ = 0, dir_bits_ = 0;
   uint32_t minor_ = 0;
 
-  uint64_t block_start_q8_ = 0;       // tick time (Q8) the move starts at
+  uint64_t block_start_q8_ = 0;  // tick time (Q8) the speed profile starts at
+  // The speed profile runs over dominant steps [prof_j0_, end_j_] (all of the move, or a feed
+  // hold's braking stretch), from plot distance prof_s0_q16_, and ends at prof_exit2_.
+  uint32_t prof_j0_ = 0, end_j_ = 0;
+  uint64_t prof_s0_q16_ = 0, prof_exit2_ = 0;
   uint64_t time_q8_ = 0;              // where the tick's clock will be after the pushed segments
   int64_t reg_q8_ = 0, reg_add_ = 0;  // the tick's interval and add after the last segment
   // Trapezoid of the current move, in plot-path units (see planner.h).

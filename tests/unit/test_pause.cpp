@@ -113,6 +113,17 @@ void solid_with_backlash_paused(uint32_t holds) {
   paused_equals_unpaused("pair of cubes, hidden-dashed, backlash", spec, strokes, holds);
 }
 
+// Long lines whose other CoreXY motor runs slowly (dx 1000 : dy 900 makes motor B a tenth of
+// motor A), held at 24 moments mid-line: a braking stretch that restarted the move's
+// Bresenham moved motor B's next step by up to a step's time (a speed jump at one step of
+// 1.6-3.4x the bound before the stretch kept the move's block).
+void slow_minor_motor_paused() {
+  std::vector<Edge3> lines;
+  for (int32_t k = 0; k < 6; ++k)
+    lines.push_back(Edge3{{400 + 500 * k, 400, 0}, {10400 + 500 * k, 9400, 0}});
+  paused_equals_unpaused("six lines with a slow motor", test::demo_job_spec(), lines, 24);
+}
+
 // An abort after E step events (the plot's first E events: an abort just stops), then the
 // plot resumed from E after a reset (from the origin): together they draw the uninterrupted
 // plot, each pen-down step exactly once, and the resumed run keeps the speed bound.
@@ -179,6 +190,7 @@ int main(int argc, char** argv) {
   comparison_sees_a_difference();
   demo_paused(small);
   solid_with_backlash_paused(small ? 12 : 40);
+  slow_minor_motor_paused();
   CubeArrayParams p;
   p.cubes = small ? 4 : 6;
   resumed_after_abort(small ? "4 x 4 cubes" : "6 x 6 cubes", test::demo_job_spec(), cube_array(p),
