@@ -116,7 +116,7 @@ struct Tour {
       order[b] = t ^ 1u;
     }
     if (((j - i) & 1u) == 0) order[i + (j - i) / 2] ^= 1u;  // the middle one turns too
-    for (uint32_t a = i, b = j - 1; a < b && b != ~0u; ++a, --b) {
+    for (uint32_t a = i, b = j - 1; a < b; ++a, --b) {      // j > i: b never wraps
       const uint32_t t = gap[a];
       gap[a] = gap[b];
       gap[b] = t;
