@@ -15,6 +15,7 @@ Status BandConductor::begin(const BandSpec& spec, EdgeSource source, void* arena
   observer_ = observer;
   clock_ = clock;
   if (source.n > 0 && source.read == nullptr) return Status::kBadParameter;
+  if (spec.substep_bits < 0 || spec.substep_bits > kMaxSubstepBits) return Status::kBadParameter;
   if (spec.haloed && (spec.draw.halo < 0 || spec.draw.halo > kCoordMax || spec.cut.reach < 0 ||
                       spec.cut.reach > kCoordMax))
     return Status::kBadParameter;
@@ -281,7 +282,8 @@ int64_t BandConductor::column_of(int64_t x_sum) const {
 // only once the band is sure to fit.
 Status BandConductor::commit_band(Attempt& a) {
   const uint32_t np = a.n_pieces, nco = a.n_carry_out, ndi = n_defer_;
-  column_side_ = 3 * (a.y1 - a.y0 > kMinColumn ? a.y1 - a.y0 : kMinColumn);
+  const int64_t min_column = kMinColumn << spec_.substep_bits;
+  column_side_ = 3 * (a.y1 - a.y0 > min_column ? a.y1 - a.y0 : min_column);
   leftward_ = (stats_.bands & 1) != 0;
   sort_in_place(a.pieces, np, [this](const StoredPiece& p, const StoredPiece& q) {
     const int64_t cp = column_of(p.x_sum), cq = column_of(q.x_sum);
@@ -439,8 +441,10 @@ Status BandConductor::plan_column(const PathPoint** points, uint32_t* n) {
   const int64_t c = column_of(x_sum(next_seg_));
   PathEnd end;
   end.known = true;
-  end.x = int32_t(leftward_ ? -c * column_side_ : (c + 1) * column_side_);
-  end.y = int32_t(last == n_segs_ ? band_y1_ : band_y0_ + (band_y1_ - band_y0_) / 2);
+  const int sub = spec_.substep_bits;
+  end.x = int32_t((leftward_ ? -c * column_side_ : (c + 1) * column_side_) >> sub);
+  end.y = int32_t((last == n_segs_ ? band_y1_ : band_y0_ + (band_y1_ - band_y0_) / 2) >> sub);
+  round_to_steps(segs_ + next_seg_, k, sub);  // the column's strokes to steps, after its choice
   const Status s = plan_path(segs_ + next_seg_, k, pen_x_, pen_y_, ws, ws_size, pts,
                              path_points_max(k), n, &ps, end);
   stats_.other_ticks += now() - t0;

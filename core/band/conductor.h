@@ -60,6 +60,10 @@ struct BandSpec {
   // and Kira's outlines, asked part by part in each band (solid/fallback.h).
   StrokeStyle style;
   bool outline = false;
+  // The scene's units are 2^-substep_bits steps: the lengths above are in units already
+  // (band_spec() converts a job's), and each column's strokes are rounded to steps before its
+  // path is planned (geometry/units.h).
+  int32_t substep_bits = 0;
 };
 
 // A band sent from outside: a host ran the same conductor over the whole scene with the same

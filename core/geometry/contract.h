@@ -1,7 +1,8 @@
 // The numeric contract every stage relies on. Read this before touching a predicate.
 //
-// Projected edges carry integer x, y in [0, 2^20) plotter steps and an integer depth z in
-// [0, 2^20). The viewer sits at z = +infinity: a larger z is nearer.
+// Projected edges carry integer x, y in [0, 2^20) units (plotter steps, or 2^-s steps: see
+// kMaxSubstepBits) and an integer depth z in [0, 2^20). The viewer sits at z = +infinity: a
+// larger z is nearer.
 //
 // Bit budget (all signed, two's complement):
 //   coordinate               20 bits unsigned   [0, 2^20)
@@ -19,6 +20,11 @@
 namespace haloplot {
 
 inline constexpr int kCoordBits = 20;
+// Units: a projected scene may be fitted in units of 2^-s plot steps (View::substep_bits), the
+// plot area times 2^s still inside [0, 2^20): the budget above is the same in any unit, and the
+// unused high bits of a plot area far smaller than 2^20 steps become sub-step resolution.
+// Emitted positions are rounded to whole steps once, at the path (geometry/units.h).
+inline constexpr int kMaxSubstepBits = 8;
 inline constexpr int32_t kCoordLimit = int32_t{1} << kCoordBits;  // exclusive upper bound
 inline constexpr int32_t kCoordMax = kCoordLimit - 1;
 

@@ -1,5 +1,6 @@
 #include "job/job.h"
 
+#include "geometry/units.h"
 #include "memory/carve.h"
 #include "solid/modes.h"
 #include "surface/hidden_surface.h"
@@ -26,6 +27,22 @@ struct SpanCollector {
   }
 };
 
+// The job's lengths in the scene's units (JobSpec::substep_bits); everything else as given.
+JobSpec in_units(const JobSpec& spec) {
+  const int s = spec.substep_bits;
+  JobSpec u = spec;
+  u.draw.halo = steps_to_units(spec.draw.halo, s);
+  u.cut.reach = steps_to_units(spec.cut.reach, s);
+  u.hidden.dash = steps_to_units(spec.hidden.dash, s);
+  u.hidden.gap = steps_to_units(spec.hidden.gap, s);
+  u.hidden.hatch_spacing = steps_to_units(spec.hidden.hatch_spacing, s);
+  return u;
+}
+
+bool units_ok(const JobSpec& spec) {
+  return spec.substep_bits >= 0 && spec.substep_bits <= kMaxSubstepBits;
+}
+
 // The peak of the three stages (see job.h).
 size_t peak_of(const JobBytes& b) {
   size_t peak = b.cut_scratch;
@@ -43,8 +60,10 @@ void size_path_stages(uint64_t spans, JobBytes* b) {
 
 }  // namespace
 
-BandSpec band_spec(const JobSpec& spec) {
+BandSpec band_spec(const JobSpec& steps) {
+  const JobSpec spec = in_units(steps);
   BandSpec bs;
+  bs.substep_bits = spec.substep_bits;
   bs.haloed = spec.drawing == DrawingEffect::kHaloed;
   bs.draw = spec.draw;
   bs.cut = spec.cut;
@@ -57,9 +76,10 @@ BandSpec band_spec(const JobSpec& spec) {
   return bs;
 }
 
-Status job_bytes(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
+Status job_bytes(const JobSpec& steps, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
                  JobBytes* bytes) {
-  if (needs_faces(spec.drawing)) return Status::kBadParameter;
+  if (needs_faces(steps.drawing) || !units_ok(steps)) return Status::kBadParameter;
+  const JobSpec spec = in_units(steps);
   JobBytes b;
   uint64_t max_spans = n;
   if (spec.drawing == DrawingEffect::kHaloed) {
@@ -94,6 +114,8 @@ Status plan_stage(const JobSpec& spec, uint8_t* base, size_t spans_offset, size_
   if (buffer_bytes < spans_offset + spans_size + stage.points + stage.path)
     return Status::kWorkspaceTooSmall;
   ++c->path_runs;
+  // The spans to whole steps: the one rounding between the scene's units and the pen.
+  round_to_steps(collect.out, collect.count, spec.substep_bits);
   uint32_t n_points = 0;
   const Status s =
       plan_path(collect.out, collect.count, spec.start_x, spec.start_y, points_mem + stage.points,
@@ -125,10 +147,11 @@ Status draw_stage(const JobSpec& spec, uint32_t n, size_t cutset_size, uint8_t* 
 
 }  // namespace
 
-Status job_prepare(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
+Status job_prepare(const JobSpec& steps, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
                    void* buffer, size_t buffer_bytes, PreparedJob* out, JobCounters* counters) {
   JobCounters c;
-  if (needs_faces(spec.drawing)) return Status::kBadParameter;
+  if (needs_faces(steps.drawing) || !units_ok(steps)) return Status::kBadParameter;
+  const JobSpec spec = in_units(steps);
   Status s = validate(spec.machine);
   if (!ok(s)) return s;
   uint8_t* base = static_cast<uint8_t*>(buffer);
@@ -161,10 +184,11 @@ Status job_prepare(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t
   return Status::kOk;
 }
 
-Status job_redraw(const JobSpec& spec, uint32_t n, uint32_t crossing_capacity, void* buffer,
+Status job_redraw(const JobSpec& steps, uint32_t n, uint32_t crossing_capacity, void* buffer,
                   size_t buffer_bytes, PreparedJob* job, JobCounters* counters) {
-  if (spec.drawing != DrawingEffect::kHaloed || job->cutset.edges == nullptr)
+  if (steps.drawing != DrawingEffect::kHaloed || job->cutset.edges == nullptr || !units_ok(steps))
     return Status::kBadParameter;
+  const JobSpec spec = in_units(steps);
   Status s = validate(spec.machine);
   if (!ok(s)) return s;
   JobCounters c;
@@ -269,10 +293,11 @@ Status add_hatching(const HiddenJob& h, const SolidInput& in, uint32_t crossings
 
 }  // namespace
 
-Status job_prepare_solid(const JobSpec& spec, const SolidInput& in, uint32_t crossing_capacity,
+Status job_prepare_solid(const JobSpec& steps, const SolidInput& in, uint32_t crossing_capacity,
                          uint32_t incidence_capacity, void* buffer, size_t buffer_bytes,
                          PreparedJob* out, JobCounters* counters, HiddenReport* report) {
-  if (!hidden_line_drawing(spec.drawing)) return Status::kBadParameter;
+  if (!hidden_line_drawing(steps.drawing) || !units_ok(steps)) return Status::kBadParameter;
+  const JobSpec spec = in_units(steps);
   if (spec.hidden.dash < 1 || spec.hidden.gap < 1 || spec.hidden.dash > kCoordMax ||
       spec.hidden.gap > kCoordMax)
     return Status::kBadParameter;

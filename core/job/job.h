@@ -46,6 +46,10 @@ struct JobSpec {
   PlotterEffects effects;
   int32_t start_x = 0, start_y = 0;  // where the pen is before the job
   bool finish_home = true;           // end pen up at the origin (job key `finish home|stay`)
+  // The scene's units are 2^-substep_bits steps (the View that projected it). The lengths
+  // above stay in steps (the halo, dashes, hatch spacing, CUT's reach, the pen's start); the
+  // job turns them into units and rounds what it emits to steps (geometry/units.h).
+  int32_t substep_bits = 0;
 };
 
 // Bytes each stage takes from the job buffer (0: the stage does not run), and the peak the

@@ -1,5 +1,6 @@
 #include "motion/path_plan.h"
 
+#include "geometry/units.h"
 #include "geometry/wide.h"
 #include "memory/carve.h"
 #include "sort/in_place_sort.h"
@@ -181,6 +182,15 @@ Workspace carve_workspace(C* front, C* grid, uint32_t n) {
 }
 
 }  // namespace
+
+void round_to_steps(Segment2* spans, uint32_t n, int substep_bits) {
+  if (substep_bits == 0) return;
+  for (uint32_t i = 0; i < n; ++i) {
+    Segment2& g = spans[i];
+    g = Segment2{units_to_steps(g.x0, substep_bits), units_to_steps(g.y0, substep_bits),
+                 units_to_steps(g.x1, substep_bits), units_to_steps(g.y1, substep_bits)};
+  }
+}
 
 uint32_t length_floor(int64_t dx, int64_t dy) {
   return isqrt_u64(static_cast<uint64_t>(dx * dx + dy * dy));

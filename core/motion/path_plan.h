@@ -46,6 +46,10 @@ Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t sta
                  void* workspace, size_t workspace_bytes, PathPoint* out, uint32_t out_capacity,
                  uint32_t* out_count, PathStats* stats, PathEnd end = PathEnd{});
 
+// Spans in units of 2^-s steps (geometry/units.h) to whole steps, in place: the one rounding
+// between a scene fitted finer than the pen moves and the path.
+void round_to_steps(Segment2* spans, uint32_t n, int substep_bits);
+
 // Length of (dx, dy) rounded down to whole plot steps.
 uint32_t length_floor(int64_t dx, int64_t dy);
 

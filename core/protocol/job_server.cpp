@@ -1,5 +1,6 @@
 #include "protocol/job_server.h"
 
+#include "geometry/units.h"
 #include "memory/carve.h"
 
 namespace haloplot {
@@ -245,8 +246,10 @@ Status JobServer::plot() {
     // Project into the (still free) job buffer, then expand the pairs into edges.
     if (size_t{scene_.vertices} * sizeof(Point3) > job_bytes) return Status::kWorkspaceTooSmall;
     Point3* screen = reinterpret_cast<Point3*>(job_mem);
+    View view = view_;
+    view.substep_bits = spec_.substep_bits;  // the job's units (kSetEffects)
     Status s =
-        project_points(view_, reinterpret_cast<const Point3*>(arena_), scene_.vertices, screen);
+        project_points(view, reinterpret_cast<const Point3*>(arena_), scene_.vertices, screen);
     if (ok(s))
       s = edges_from_indices(screen, scene_.vertices,
                              reinterpret_cast<const uint32_t*>(arena_ + world_bytes(scene_)),
@@ -306,7 +309,9 @@ Status JobServer::replot(const uint8_t* p, uint16_t n) {
   Status s = decode_halo(p, n, &d);
   if (!ok(s)) return s;
   if (!has_cut_ || spec_.drawing != DrawingEffect::kHaloed) return Status::kNoCutset;
-  if (d.mode == HaloMode::kExact && d.halo > job_.cutset.reach) return Status::kNoCutset;
+  if (d.mode == HaloMode::kExact &&
+      steps_to_units(d.halo, spec_.substep_bits) > job_.cutset.reach)  // the CUTSET's units
+    return Status::kNoCutset;
   JobSpec next = spec_;
   next.draw = d;
   const uint64_t t0 = clock_ ? clock_() : 0;

@@ -38,6 +38,7 @@ void encode_effects(const JobSpec& spec, uint8_t out[kEffectsBytes]) {
   out[0] = uint8_t(spec.drawing);
   out[1] = uint8_t((e.acceleration ? 1 : 0) | (e.pen_servo ? 2 : 0) | (e.backlash ? 4 : 0) |
                    (spec.finish_home ? 0 : 8));
+  out[2] = uint8_t(spec.substep_bits);
 }
 
 namespace {
@@ -106,8 +107,10 @@ Status decode_halo(const uint8_t* p, size_t n, DrawParams* out) {
 }
 
 Status decode_effects(const uint8_t* p, size_t n, JobSpec* spec) {
-  if (n != kEffectsBytes || p[0] > uint8_t(DrawingEffect::kHatch) || (p[1] & ~15u))
+  if (n != kEffectsBytes || p[0] > uint8_t(DrawingEffect::kHatch) || (p[1] & ~15u) ||
+      p[2] > kMaxSubstepBits)
     return Status::kMalformedRequest;
+  spec->substep_bits = p[2];
   spec->drawing = DrawingEffect(p[0]);
   spec->effects.acceleration = p[1] & 1;
   spec->effects.pen_servo = p[1] & 2;

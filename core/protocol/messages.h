@@ -11,7 +11,7 @@
 //                      perspective distance (0: orthographic)                         24
 //   kSetHalo           u32 width (steps), u8 mode (0 paper, 1 exact)                   5
 //   kSetEffects        u8 drawing (DrawingEffect), u8 flags (1 acceleration, 2 pen servo,
-//                      4 backlash)                                                      2
+//                      4 backlash, 8 stay), u8 sub-step bits (the scene's units)       3
 //   kUploadFaces       4 x u32: three vertex indices (counter-clockwise from outside) and
 //                      the polygon id (sides shared inside a polygon are not drawn) 16 per face
 //   kSetHidden         u8 method (0 auto, 1 QI, 2 fallback), u8 flags (1 outline, 2 hatch),
@@ -47,7 +47,7 @@
 namespace haloplot {
 
 inline constexpr size_t kUploadBeginBytes = 13, kEdgeRecordBytes = 24, kVertexRecordBytes = 12,
-                        kIndexRecordBytes = 8, kViewBytes = 24, kHaloBytes = 5, kEffectsBytes = 2,
+                        kIndexRecordBytes = 8, kViewBytes = 24, kHaloBytes = 5, kEffectsBytes = 3,
                         kMachineBytes = 61, kStatusBytes = 32, kFaceRecordBytes = 16,
                         kHiddenBytes = 22, kStreamBeginBytes = 9, kBandBeginBytes = 20,
                         kBandEdgeRecordBytes = 4 + kEdgeRecordBytes, kBandVertexRecordBytes = 16,

@@ -92,8 +92,11 @@ struct AxisFit {
 }  // namespace
 
 Status validate(const View& v) {
-  if (v.width < 1 || v.height < 1 || v.margin < 0 || int64_t{v.margin} + v.width > kCoordMax ||
-      int64_t{v.margin} + v.height > kCoordMax || v.perspective < 0 ||
+  if (v.substep_bits < 0 || v.substep_bits > kMaxSubstepBits) return Status::kBadParameter;
+  const int s = v.substep_bits;
+  if (v.width < 1 || v.height < 1 || v.margin < 0 ||
+      (int64_t{v.margin} + v.width) << s > kCoordMax ||
+      (int64_t{v.margin} + v.height) << s > kCoordMax || v.perspective < 0 ||
       v.perspective > 2 * kWorldLimit)
     return Status::kBadParameter;
   return Status::kOk;
@@ -152,8 +155,11 @@ Status project_points_with(const View& view, const Point3* world, uint32_t n, Po
   const int len = bit_length(xr > yr ? xr : yr), sh = len > 40 ? len - 40 : 0;
   const bool x_limits = int64_t(xr >> sh) * view.height >= int64_t(yr >> sh) * view.width;
   const uint64_t range = x_limits ? xr : yr;
-  const int64_t side = x_limits ? view.width : view.height;
-  const AxisFit fx(bx.lo, range, view.margin, side), fy(by.lo, range, view.margin, side),
+  // In units of 2^-s steps: the same fit, 2^s times finer.
+  const int sub = view.substep_bits;
+  const int64_t side = int64_t{x_limits ? view.width : view.height} << sub;
+  const int64_t margin = int64_t{view.margin} << sub;
+  const AxisFit fx(bx.lo, range, margin, side), fy(by.lo, range, margin, side),
       fd(bd.lo, uint64_t(bd.hi - bd.lo), 0, kCoordMax);
   for (uint32_t i = 0; i < n; ++i) {
     Rotated r;

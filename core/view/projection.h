@@ -34,13 +34,18 @@ struct View {
   // Perspective: the eye on the view axis at this depth (world units, in front of the world
   // origin); 0 is orthographic. A point at depth d maps to (x', y', d) * D / (D - d).
   int32_t perspective = 0;
+  // Sub-step bits s: the projected scene is fitted in units of 2^-s steps (the plot area times
+  // 2^s, which must stay inside the coordinate range), so every topological decision is made
+  // on the model 2^s times finer than the pen moves; only emitted positions are rounded to
+  // steps (geometry/units.h). 0: whole steps.
+  int32_t substep_bits = 0;
 };
 
 // Points nearer the eye plane than this (world units) are refused: the perspective divisor
 // would magnify them beyond the format (kCoordinateOutOfRange).
 inline constexpr int32_t kEyeClearance = 1;
 
-// Validates the view (plot area inside the coordinate range).
+// Validates the view (plot area, times 2^substep_bits, inside the coordinate range).
 Status validate(const View& v);
 
 // Projects n world points into plot steps. `out` may be `world` itself (two passes: the

@@ -85,10 +85,13 @@ inline Camera camera(const haloplot::View& v, const std::vector<haloplot::Point3
 // ray casting them orthographically decides the visibility of the rounded scene exactly as
 // the core sees it, so the two references split a difference into the core's own error and
 // what rounding the vertices to steps changed.
-inline Camera on_paper() {
+// substep_bits: the points are in units of 2^-s steps (View::substep_bits); lengths come out in
+// steps.
+inline Camera on_paper(int substep_bits = 0) {
   Camera c;
   c.identity = true;
   c.view.margin = 0;
+  c.scale = std::ldexp(1.0, -substep_bits);
   return c;
 }
 

@@ -3,6 +3,8 @@
 // in host memory. Every visible piece must come out once, with the same edge and the same
 // Q0.32 ends, whatever the arena: no gap, no overlap, no piece lost or split at a border.
 // The check is shown to see a lost gap: a margin forced below the measured one must fail it.
+// A scene in sub-step units (BandSpec::substep_bits) bands the same, and its path draws each
+// piece's segment rounded to whole steps (geometry/units.h), the rounding written out here.
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -99,6 +101,22 @@ std::string difference(const std::vector<Piece>& want, const std::vector<Piece>&
   return buf;
 }
 
+// A coordinate in units of 2^-s steps to the nearest step, ties upward, by division (not the
+// core's shift).
+int32_t to_steps(int32_t u, int s) {
+  const int64_t k = int64_t{1} << s;
+  return int32_t((2 * int64_t{u} + k) / (2 * k));
+}
+
+std::vector<Ink> in_steps(const std::vector<Ink>& ink, int s) {
+  std::vector<Ink> out;
+  for (const Ink& i : ink)
+    out.push_back(unordered(to_steps(std::get<0>(i), s), to_steps(std::get<1>(i), s),
+                            to_steps(std::get<2>(i), s), to_steps(std::get<3>(i), s)));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 std::vector<Ink> drawn(const std::vector<PathPoint>& pts) {
   std::vector<Ink> out;
   for (size_t i = 1; i < pts.size(); ++i)
@@ -121,7 +139,7 @@ void expect_same(const char* name, const std::vector<Edge3>& edges, const BandSp
   CHECK_MSG(got.stats.peak_bytes <= arena, std::string(name) + ": peak beyond the arena");
   // The path draws every piece's segment exactly once (zero-length ones too), whichever band
   // drew it: pieces deferred to join a polyline above are not lost or drawn twice.
-  CHECK_MSG(drawn(got.points) == got.ink,
+  CHECK_MSG(drawn(got.points) == in_steps(got.ink, spec.substep_bits),
             std::string(name) + ": the path draws " + std::to_string(drawn(got.points).size()) +
                 " segments, not the " + std::to_string(got.ink.size()) + " pieces' segments");
   std::printf(
@@ -190,6 +208,21 @@ int main() {
   whole.haloed = false;
   expect_same("figure4_all_edges", fig4, whole, 16 * 1024, 10);
   expect_same("figure4_halo_0", fig4, haloed(0), 16 * 1024, 10);
+  // Figure 4 fitted 8 times finer (3 sub-step bits): the halo in units, the path in steps.
+  {
+    std::vector<Edge3> fine = fig4;
+    for (Edge3& e : fine) e.a.x *= 8, e.a.y *= 8, e.b.x *= 8, e.b.y *= 8;
+    BandSpec units = haloed(50 * 8);
+    units.substep_bits = 3;
+    expect_same("figure4_substep_3", fine, units, 64 * 1024, 10);
+    // The conductor's path is in steps: none of its points lies beyond the scene in steps.
+    const Banded b = banded(fine, units, 64 * 1024);
+    int32_t most = 0;
+    for (const PathPoint& p : b.points) most = std::max(most, std::max(p.x, p.y));
+    int32_t scene_most = 0;
+    for (const Edge3& e : fig4) scene_most = std::max({scene_most, e.a.x, e.a.y, e.b.x, e.b.y});
+    CHECK_MSG(most <= scene_most, "a band's path point lies beyond the scene in steps");
+  }
   // One band when the scene fits: no margin pass.
   {
     const Banded one = banded(levels, haloed(64), 1 << 20);

@@ -42,10 +42,11 @@ struct Agreement {
   double worst = 0;
 };
 
-Agreement measure(const std::string& path, const std::string& view_text) {
+Agreement measure(const std::string& path, const std::string& view_text, int substep) {
   Agreement a;
   Options o;
   o.values["--view"] = view_text;
+  o.values["--substep"] = std::to_string(substep);
   o.values["--up"] = "y";
   SolidScene scene;
   TriangulateStats ts;
@@ -68,7 +69,7 @@ Agreement measure(const std::string& path, const std::string& view_text) {
   v.azimuth_mdeg = int32_t(std::lround(std::stod(view_text.substr(0, comma)) * 1000));
   v.elevation_mdeg = int32_t(std::lround(std::stod(view_text.substr(comma + 1)) * 1000));
   const ray_cast::Scene truth(ray_cast::camera(v, model.vertices), model.vertices, scene.triangles);
-  const ray_cast::Scene paper(ray_cast::on_paper(), scene.vertices, scene.triangles);
+  const ray_cast::Scene paper(ray_cast::on_paper(substep), scene.vertices, scene.triangles);
   for (uint32_t e = 0; e < share.size(); ++e) {
     const uint32_t i = scene.edge_pairs[2 * e], j = scene.edge_pairs[2 * e + 1];
     double length = 0, paper_length = 0;
@@ -81,9 +82,10 @@ Agreement measure(const std::string& path, const std::string& view_text) {
     a.worst = std::max(a.worst, diff);
   }
   std::printf(
-      "%s at %s (%s): %zu of %zu edges agree with the model (%.2f %%), worst %.1f steps; with "
+      "%s at %s, %d sub-step bits (%s): %zu of %zu edges agree with the model (%.2f %%), worst "
+      "%.1f steps; with "
       "the rounded scene: %zu\n",
-      path.c_str(), view_text.c_str(), run.used_qi ? "QI" : "fallback", a.agree, a.edges,
+      path.c_str(), view_text.c_str(), substep, run.used_qi ? "QI" : "fallback", a.agree, a.edges,
       100.0 * double(a.agree) / double(std::max<size_t>(a.edges, 1)), a.worst, a.paper_agree);
   return a;
 }
@@ -92,9 +94,16 @@ Agreement measure(const std::string& path, const std::string& view_text) {
 
 int main() {
   const std::string dir = "/usr/share/assimp/models/OBJ/";
-  const Agreement w1 = measure(dir + "WusonOBJ.obj", "30,25");
-  const Agreement w2 = measure(dir + "WusonOBJ.obj", "200,-40");
-  const Agreement sp = measure(dir + "spider.obj", "30,25");
+  if (getenv("SUBSTEP_SWEEP")) {
+    for (int sb = 0; sb <= 5; ++sb) {
+      measure(dir + "WusonOBJ.obj", "30,25", sb);
+      measure(dir + "WusonOBJ.obj", "200,-40", sb);
+      measure(dir + "spider.obj", "30,25", sb);
+    }
+  }
+  const Agreement w1 = measure(dir + "WusonOBJ.obj", "30,25", 0);
+  const Agreement w2 = measure(dir + "WusonOBJ.obj", "200,-40", 0);
+  const Agreement sp = measure(dir + "spider.obj", "30,25", 0);
   CHECK(w1.edges > 5000 && w2.edges > 5000 && sp.edges > 2000);
   auto share = [](const Agreement& a) {
     return double(a.agree) / double(std::max<size_t>(a.edges, 1));
