@@ -6,12 +6,14 @@
 
 #include "cli/options.h"
 #include "cli/solid_options.h"
+#include "geometry/units.h"
 #include "io/atomic_file.h"
 #include "io/line_reader.h"
 #include "io/spans_file.h"
 #include "pipeline/drawing_modes.h"
 #include "pipeline/scene_input.h"
 #include "pipeline/surface_pipeline.h"
+#include "pipeline/units.h"
 #include "render/svg.h"
 
 namespace haloplot::host {
@@ -84,14 +86,19 @@ int cmd_plot_solid(const Options& o) {
   if (!run.fallback_reason.empty() && so.method == HiddenMethod::kAuto)
     std::cerr << "haloplot: " << o.positional[0] << ": " << run.fallback_reason
               << ": hidden lines by the topology-free fallback\n";
-  ModeDrawing d = make_mode_drawing(run, so.spec);
+  // Decided in the scene's units (dashes and hatch spacing converted), drawn in steps.
+  const int32_t units = scene.substep_bits;
+  ModeDrawing d = make_mode_drawing(run, mode_in_units(so.spec, units));
   HatchRun hatch;
   if (so.hatch) {
-    const Status hs = run_hatch(scene, so.hatch_params, &hatch);
+    HatchParams hp = so.hatch_params;
+    hp.spacing = steps_to_units(hp.spacing, units);
+    const Status hs = run_hatch(scene, hp, &hatch);
     if (!ok(hs)) return fail(o.positional[0] + ": hatching failed: " + status_name(hs));
     for (const HatchStroke& h : hatch.strokes)
       d.hatch.push_back(Span{h.polygon, 0, 0, h.line.a.x, h.line.a.y, h.line.b.x, h.line.b.y});
   }
+  drawing_to_steps(&d, units);
   SvgStyle style;
   style.second_pen = &d.outline;
   style.steps_per_mm = so.steps_per_mm;

@@ -81,6 +81,7 @@ int cmd_send(int argc, char** argv) {
     SolidOptions so;
     std::string why;
     if (!job_solid_settings(jf, &so, &view, &why)) return send_fail(o.positional[0] + ": " + why);
+    jf.spec.substep_bits = view.substep_bits;  // the controller projects in these units
     ie = read_obj_file(jf.scene_path, &model);
     if (ie.failed()) return send_fail(ie.message());
     {  // the world the controller projects is Z-up, as the host's (scene_input.h)
@@ -99,7 +100,7 @@ int cmd_send(int argc, char** argv) {
       if (ts.first_not_simple >= 0) return send_fail(not_simple_message(jf.scene_path, model, ts));
     }
   } else {
-    ie = read_edges_file(jf.scene_path, &edges);
+    ie = read_edges_file(jf.scene_path, &edges, &jf.spec.substep_bits);
     if (ie.failed()) return send_fail(ie.message());
   }
   // A job with an arena streams its scene in bands: plan them here with the controller's arena,

@@ -20,8 +20,10 @@
 #include "io/job_file.h"
 #include "io/line_reader.h"
 #include "io/spans_file.h"
+#include "io/substep_header.h"
 #include "pipeline/host_pipeline.h"
 #include "pipeline/scene_input.h"
+#include "pipeline/units.h"
 #include "render/svg.h"
 #include "sim/replay.h"
 #include "sim/simulator.h"
@@ -47,11 +49,12 @@ const char* kUsage =
     "  haloplot plot SCENE.edges|MODEL.obj --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans]\n"
     "               [--cut OUT.cut] [cut options] [--arena BYTES] [--steps-per-mm N] [--stats]\n"
     "               [--view AZ,EL] [--perspective D] [--up y|z] [--dump-edges OUT.edges]\n"
-    "               (for .obj; --up: the file's up axis, default y as most OBJ files)\n"
+    "               [--substep S]   (for .obj; --up: the file's up axis, default y as most\n"
+    "               OBJ files; --substep: decide in units of 2^-S steps)\n"
     "  haloplot plot MODEL.obj --mode all|hidden-removed|hidden-dashed -o OUT.svg [--outline]\n"
     "               [--dash LEN,GAP (mm)] [--steps-per-mm N] [--method auto|qi|fallback]\n"
     "               [--hatch SPACING[,ANGLE[,TURN]]] [--spans OUT.spans] [--view AZ,EL]\n"
-    "               [--perspective D] [--stats]\n"
+    "               [--perspective D] [--substep S] [--stats]\n"
     "  haloplot sim JOB.job -o OUT.trace [--gcode OUT.gcode] [--hpgl OUT.hpgl] [--arena BYTES]\n"
     "               [--binary] [--stats]   (--binary: the compact binary trace)\n"
     "  haloplot replay IN.trace -o OUT.svg [--stats]\n"
@@ -338,12 +341,13 @@ int cmd_cut(int argc, char** argv) {
   std::string error;
   if (!cut_params(o, &cp, &error)) return fail(error);
   std::vector<Edge3> edges;
-  if (!load_scene(o, o.positional[0], &edges, &error)) return fail(error);
+  int32_t units = 0;
+  if (!load_scene(o, o.positional[0], &edges, &error, &units)) return fail(error);
   HostCut c;
-  const Status s = host_cut(std::move(edges), cp, &c);
+  const Status s = host_cut(std::move(edges), cut_in_units(cp, units), &c);
   if (!ok(s)) return fail_status("CUT", s);
   error = write_atomically(o.get("-o"), [&](std::ostream& out) {
-    write_cut(out, c.set, cut_header(c));
+    write_cut(out, c.set, cut_header(c) + substep_header(units));
     return true;
   });
   if (!error.empty()) return fail(error);
@@ -363,9 +367,10 @@ int cmd_draw(int argc, char** argv) {
   const InputError ie = read_cut_file(o.positional[0], &lc);
   if (ie.failed()) return fail(ie.message());
   HostDraw d;
-  const Status s = host_draw(lc.set, dp, &d);
+  const Status s = host_draw(lc.set, draw_in_units(dp, lc.substep_bits), &d);
   if (!ok(s)) return fail_status("DRAW", s);
-  warn_reach(d, dp.halo, lc.set.reach);
+  warn_reach(d, dp.halo, lc.set.reach >> lc.substep_bits);
+  spans_to_steps(&d.spans, lc.substep_bits);
   if (const int rc = write_drawing(o, d)) return rc;
   if (o.has("--stats")) {
     std::fprintf(stderr, "edges=%u\ncrossings=%u\ncut_ran=0\ncut_ms=0\n", lc.set.n_edges,
@@ -379,7 +384,7 @@ void print_band_stats(const BandStats& b, size_t arena);
 
 // plot --arena BYTES: the banded run a controller with that arena makes; the same pieces.
 int plot_in_bands(const Options& o, const std::vector<Edge3>& edges, const CutParams& cp,
-                  const DrawParams& dp) {
+                  const DrawParams& dp, int32_t units) {
   if (!o.get("--cut").empty())
     return fail("--cut writes the whole CUTSET, which a banded run never holds: drop --arena");
   int64_t arena = 0;
@@ -387,11 +392,13 @@ int plot_in_bands(const Options& o, const std::vector<Edge3>& edges, const CutPa
     return fail("--arena needs a byte count in [1024, 2^30]");
   HostDraw d;
   BandStats bands;
-  const Status s = host_banded_draw(edges, cp, dp, size_t(arena), &d, &bands);
+  const Status s = host_banded_draw(edges, cut_in_units(cp, units), draw_in_units(dp, units),
+                                    size_t(arena), &d, &bands, units);
   if (s == Status::kArenaTooSmall)
     return fail("plot: arena of " + std::to_string(arena) + " bytes too small: a band one row " +
                 "high needs " + std::to_string(bands.need_bytes));
   if (!ok(s)) return fail_status("bands", s);
+  spans_to_steps(&d.spans, units);
   if (const int rc = write_drawing(o, d)) return rc;
   if (o.has("--stats")) {
     std::fprintf(stderr, "edges=%zu\nspans=%zu\nband_ms=%.3f\n", edges.size(), d.spans.size(),
@@ -425,22 +432,24 @@ int cmd_plot(int argc, char** argv) {
   // In one process the halo width is known before CUT: let the exact halo see near misses.
   if (dp.mode == HaloMode::kExact && o.get("--reach").empty()) cp.reach = dp.halo;
   std::vector<Edge3> edges;
-  if (!load_scene(o, o.positional[0], &edges, &error)) return fail(error);
-  if (!o.get("--arena").empty()) return plot_in_bands(o, edges, cp, dp);
+  int32_t units = 0;
+  if (!load_scene(o, o.positional[0], &edges, &error, &units)) return fail(error);
+  if (!o.get("--arena").empty()) return plot_in_bands(o, edges, cp, dp, units);
   HostCut c;
-  Status s = host_cut(std::move(edges), cp, &c);
+  Status s = host_cut(std::move(edges), cut_in_units(cp, units), &c);
   if (!ok(s)) return fail_status("CUT", s);
   HostDraw d;
-  s = host_draw(c.set, dp, &d);
+  s = host_draw(c.set, draw_in_units(dp, units), &d);
   if (!ok(s)) return fail_status("DRAW", s);
-  warn_reach(d, dp.halo, c.set.reach);
+  warn_reach(d, dp.halo, c.set.reach >> units);
   if (!o.get("--cut").empty()) {
     error = write_atomically(o.get("--cut"), [&](std::ostream& out) {
-      write_cut(out, c.set, cut_header(c));
+      write_cut(out, c.set, cut_header(c) + substep_header(units));
       return true;
     });
     if (!error.empty()) return fail(error);
   }
+  spans_to_steps(&d.spans, units);
   if (const int rc = write_drawing(o, d)) return rc;
   if (o.has("--stats")) {
     print_cut_stats(c);
@@ -525,7 +534,8 @@ int cmd_sim(int argc, char** argv) {
   if (solid_bands) {
     if (!load_solid_job_scene(jf, &solid, &jf.spec.hidden, &error)) return fail(error);
     if (jf.spec.hidden.hatch) return fail(o.positional[0] + ": 'arena': " + kNotInBands);
-  } else if (!load_job_scene(jf, &edges, &error)) {
+    jf.spec.substep_bits = solid.substep_bits;
+  } else if (!load_job_scene(jf, &edges, &error, &jf.spec.substep_bits)) {
     return fail(error);
   }
   if (isatty(2)) jf.spec.cut.progress = &progress;

@@ -4,6 +4,7 @@
 #include <ostream>
 
 #include "io/line_reader.h"
+#include "io/substep_header.h"
 
 namespace haloplot::host {
 
@@ -164,6 +165,8 @@ InputError read_cut(std::istream& in, const std::string& name, LoadedCut* out) {
             "'near' records with reach 0: near misses are only found within a reach "
             "(the '# reach R' header)"};
   out->set.reach = int32_t(reach);
+  std::string why;
+  if (!read_substep_header(comments, &out->substep_bits, &why)) return {name, 0, why};
   out->first.assign(out->edges.size() + 1, 0);
   for (const Crossing& c : out->crossings) ++out->first[c.behind + 1];
   for (size_t e = 0; e < out->edges.size(); ++e) out->first[e + 1] += out->first[e];

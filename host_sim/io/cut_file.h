@@ -2,12 +2,13 @@
 // halo widths without CUT.
 //
 //   # haloplot cutset v1          header lines start with '#'
-//   # reach R                      near misses were recorded up to R steps (0: none)
+//   # reach R                      near misses were recorded up to R units (0: none)
+//   # substep S                    optional: units are 2^-S steps (without it, steps)
 //   e I x1 y1 z1 x2 y2 z2          one per edge, I = 0, 1, 2, ... in order
 //   c BEHIND FRONT X Y T KIND      one per record, grouped by BEHIND ascending and ordered
 //                                  along that edge by (T, FRONT)
 //
-// X Y: the crossing point in steps, 3 decimals. T: the exact stored position along BEHIND,
+// X Y: the crossing point in units, 3 decimals. T: the exact stored position along BEHIND,
 // floor(t * 2^32); DRAW reads T, so a CUTSET read back draws exactly like the one in memory.
 // KIND: "cross" (a proper crossing) or "near" (a near miss within reach).
 #pragma once

@@ -4,14 +4,17 @@
 #include <ostream>
 
 #include "io/line_reader.h"
+#include "io/substep_header.h"
 
 namespace haloplot::host {
 
-InputError read_edges(std::istream& in, const std::string& name, std::vector<Edge3>* edges) {
+InputError read_edges(std::istream& in, const std::string& name, std::vector<Edge3>* edges,
+                      int32_t* substep_bits) {
   edges->clear();
   LineReader reader(in);
   std::vector<std::string> f;
-  while (reader.next(&f)) {
+  std::string comments;
+  while (reader.next(&f, &comments)) {
     if (f.size() != 6)
       return {
           name, reader.line(),
@@ -27,13 +30,18 @@ InputError read_edges(std::istream& in, const std::string& name, std::vector<Edg
   }
   if (!reader.error().empty()) return {name, reader.line(), reader.error()};
   if (in.bad()) return {name, 0, "read error"};
+  int32_t units = 0;
+  std::string why;
+  if (!read_substep_header(comments, &units, &why)) return {name, 0, why};
+  if (substep_bits != nullptr) *substep_bits = units;
   return {};
 }
 
-InputError read_edges_file(const std::string& path, std::vector<Edge3>* edges) {
+InputError read_edges_file(const std::string& path, std::vector<Edge3>* edges,
+                           int32_t* substep_bits) {
   std::ifstream in(path);
   if (!in) return {path, 0, "cannot open"};
-  return read_edges(in, path, edges);
+  return read_edges(in, path, edges, substep_bits);
 }
 
 void write_edges(std::ostream& out, const std::vector<Edge3>& edges, const std::string& header) {

@@ -20,6 +20,7 @@ const std::map<std::string, std::string> kKeys = {
     {"hatch", "SPACING ANGLE TURN (mm, degrees)"},
     {"view", "AZ,EL (degrees)"},
     {"perspective", "D (world units)"},
+    {"substep", "S (sub-step bits for an .obj scene)"},
     {"up", "y | z (the OBJ file's up axis)"},
     {"method", "auto | qi | fallback"},
     {"dash", "DASH GAP (mm)"},
@@ -147,7 +148,7 @@ InputError read_job_file(const std::string& path, JobFile* out) {
       std::string error;
       if (!parse_solid_options(o, &so, &error)) return bad(error);
     } else if ((key == "view" || key == "perspective" || key == "method" || key == "dash" ||
-                key == "up") &&
+                key == "up" || key == "substep") &&
                f.size() == (key == "dash" ? 3u : 2u)) {
       out->solid_options["--" + key] = key == "dash" ? f[1] + "," + f[2] : f[1];
       // Checked here, so a bad value is reported with its line.

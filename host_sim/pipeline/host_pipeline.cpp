@@ -60,10 +60,11 @@ Status host_draw(const CutSet& set, const DrawParams& params, HostDraw* out) {
 }
 
 Status host_banded_draw(const std::vector<Edge3>& edges, const CutParams& cut,
-                        const DrawParams& draw, size_t arena_bytes, HostDraw* out,
-                        BandStats* bands) {
+                        const DrawParams& draw, size_t arena_bytes, HostDraw* out, BandStats* bands,
+                        int32_t substep_bits) {
   out->spans.clear();
   BandSpec spec;
+  spec.substep_bits = substep_bits;
   spec.draw = draw;
   spec.cut = cut;
   std::vector<uint64_t> arena(arena_bytes / 8);

@@ -29,7 +29,8 @@ struct LoadedCut {
   std::vector<uint32_t> first;
   std::vector<Crossing> crossings;
   CutSet set;
-  void bind();  // point `set` at the vectors
+  int32_t substep_bits = 0;  // the file's units: 2^-S steps (its '# substep S' header)
+  void bind();               // point `set` at the vectors
 };
 
 struct HostDraw {
@@ -43,9 +44,10 @@ Status host_draw(const CutSet& set, const DrawParams& params, HostDraw* out);
 
 // CUT and DRAW in bands in an arena of `arena_bytes`, as a controller with that arena runs
 // them (band/conductor.h): the same visible pieces as host_cut + host_draw, in the same order
-// (by edge, then along it). draw_ms covers the whole banded run.
+// (by edge, then along it). draw_ms covers the whole banded run. `cut` and `draw` in the
+// edges' units, 2^-substep_bits steps; the spans' segments come out in units too.
 Status host_banded_draw(const std::vector<Edge3>& edges, const CutParams& cut,
-                        const DrawParams& draw, size_t arena_bytes, HostDraw* out,
-                        BandStats* bands);
+                        const DrawParams& draw, size_t arena_bytes, HostDraw* out, BandStats* bands,
+                        int32_t substep_bits = 0);
 
 }  // namespace haloplot::host

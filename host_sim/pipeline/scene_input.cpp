@@ -1,17 +1,21 @@
 #include "pipeline/scene_input.h"
 
 #include "cli/solid_options.h"
+#include "geometry/units.h"
 #include "io/atomic_file.h"
 #include "io/edges_file.h"
 #include "io/job_file.h"
 #include "io/line_reader.h"
 #include "io/obj_file.h"
+#include "io/substep_header.h"
 #include "pipeline/surface_pipeline.h"
+#include "pipeline/units.h"
 #include "view/projection.h"
 
 namespace haloplot::host {
 
-const char* const kSceneOptions[4] = {"--view", "--perspective", "--dump-edges", "--up"};
+const char* const kSceneOptions[5] = {"--view", "--perspective", "--dump-edges", "--up",
+                                      "--substep"};
 
 namespace {
 
@@ -46,9 +50,10 @@ namespace {
 
 // Reads and projects an OBJ model; on failure *error is complete.
 bool project_obj(const Options& o, const std::string& path, ObjModel* model,
-                 std::vector<Point3>* screen, std::string* error) {
+                 std::vector<Point3>* screen, int32_t* substep_bits, std::string* error) {
   View view;
   if (!parse_view(o, &view, error)) return false;
+  *substep_bits = view.substep_bits;
   UpAxis up;
   if (!parse_up(o, &up, error)) return false;
   const InputError ie = read_obj_file(path, model);
@@ -74,11 +79,12 @@ bool project_obj(const Options& o, const std::string& path, ObjModel* model,
 }
 
 bool dump_edges(const Options& o, const std::string& path, const std::vector<Edge3>& edges,
-                std::string* error) {
+                int32_t substep_bits, std::string* error) {
   if (o.get("--dump-edges").empty()) return true;
   *error = write_atomically(o.get("--dump-edges"), [&](std::ostream& out) {
     write_edges(out, edges,
-                "# projected from " + path + " with --view " + o.get("--view", "30,40") + "\n");
+                "# projected from " + path + " with --view " + o.get("--view", "30,40") + "\n" +
+                    substep_header(substep_bits));
     return true;
   });
   return error->empty();
@@ -102,6 +108,24 @@ bool parse_view(const Options& o, View* out, std::string* error) {
       return false;
     }
     view.perspective = int32_t(d);
+  }
+  // Without --substep, the default where the plot area leaves room for it, else the most that
+  // fits (a plot area near 2^20 steps has no bits to spare).
+  view.substep_bits = kDefaultSubstepBits;
+  while (view.substep_bits > 0 && !ok(validate(view))) --view.substep_bits;
+  if (!o.get("--substep").empty()) {
+    int64_t bits = 0;
+    if (!parse_int(o.get("--substep"), 0, kMaxSubstepBits, &bits)) {
+      *error = "--substep '" + o.get("--substep") + "' must be an integer in [0, " +
+               std::to_string(kMaxSubstepBits) + "]";
+      return false;
+    }
+    view.substep_bits = int32_t(bits);
+    if (!ok(validate(view))) {
+      *error = "--substep " + o.get("--substep") + ": the plot area times 2^" + o.get("--substep") +
+               " leaves the coordinate range [0, 2^20)";
+      return false;
+    }
   }
   *out = view;
   return true;
@@ -127,15 +151,25 @@ bool something_to_draw(const std::string& path, const std::vector<Edge3>& edges,
 }  // namespace
 
 bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* edges,
-                std::string* error) {
+                std::string* error, int32_t* substep_bits) {
+  int32_t units = 0;
+  if (substep_bits != nullptr) *substep_bits = 0;
   if (!ends_with(path, ".obj")) {
-    const InputError ie = read_edges_file(path, edges);
+    if (!o.get("--substep").empty()) {
+      *error =
+          "--substep is for .obj models: an .edges file is in steps, or says its units in "
+          "a '# substep S' header";
+      return false;
+    }
+    const InputError ie = read_edges_file(path, edges, &units);
     if (ie.failed()) *error = ie.message();
+    if (substep_bits != nullptr) *substep_bits = units;
     return !ie.failed() && something_to_draw(path, *edges, error);
   }
   ObjModel model;
   std::vector<Point3> screen;
-  if (!project_obj(o, path, &model, &screen, error)) return false;
+  if (!project_obj(o, path, &model, &screen, &units, error)) return false;
+  if (substep_bits != nullptr) *substep_bits = units;
   Status s = Status::kOk;
   edges->resize(model.edge_pairs.size() / 2);
   if (ok(s))
@@ -145,7 +179,7 @@ bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* e
     *error = path + ": projection failed: " + status_name(s);
     return false;
   }
-  return something_to_draw(path, *edges, error) && dump_edges(o, path, *edges, error);
+  return something_to_draw(path, *edges, error) && dump_edges(o, path, *edges, units, error);
 }
 
 std::string not_simple_message(const std::string& path, const ObjModel& model,
@@ -165,7 +199,7 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
     return false;
   }
   ObjModel model;
-  if (!project_obj(o, path, &model, &scene->vertices, error)) return false;
+  if (!project_obj(o, path, &model, &scene->vertices, &scene->substep_bits, error)) return false;
   scene->edge_pairs = model.edge_pairs;
   TriangulateStats ts;
   scene->triangles = triangulate(model.vertices, model.faces, &ts);
@@ -182,7 +216,8 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
     *error = path + ": " + status_name(s);
     return false;
   }
-  return something_to_draw(path, edges, error) && dump_edges(o, path, edges, error);
+  return something_to_draw(path, edges, error) &&
+         dump_edges(o, path, edges, scene->substep_bits, error);
 }
 
 namespace {
@@ -222,11 +257,13 @@ bool load_solid_job_scene(const JobFile& jf, SolidScene* scene, HiddenJob* hidde
   return load_solid_scene(o, jf.scene_path, scene, nullptr, error);
 }
 
-bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* error) {
+bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* error,
+                    int32_t* substep_bits) {
   const Options o = job_options(jf);
+  if (substep_bits != nullptr) *substep_bits = 0;
   if (jf.spec.drawing != DrawingEffect::kHiddenRemoved &&
       jf.spec.drawing != DrawingEffect::kHiddenDashed)
-    return load_scene(o, jf.scene_path, edges, error);
+    return load_scene(o, jf.scene_path, edges, error, substep_bits);
   SolidOptions so;
   if (!parse_solid_options(o, &so, error)) return false;
   SolidScene scene;
@@ -237,19 +274,24 @@ bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* e
     *error = jf.scene_path + ": hidden lines failed: " + status_name(s);
     return false;
   }
-  const ModeDrawing d = make_mode_drawing(run, so.spec);
-  edges->clear();
-  for (const Span& x : d.spans) edges->push_back(Edge3{{x.x0, x.y0, 0}, {x.x1, x.y1, 0}});
+  // Decided in the scene's units, drawn in steps: the strokes come out rounded (units 0).
+  ModeDrawing d = make_mode_drawing(run, mode_in_units(so.spec, scene.substep_bits));
   if (so.hatch) {
     HatchRun hatch;
-    const Status hs = run_hatch(scene, so.hatch_params, &hatch);
+    HatchParams hp = so.hatch_params;
+    hp.spacing = steps_to_units(hp.spacing, scene.substep_bits);
+    const Status hs = run_hatch(scene, hp, &hatch);
     if (!ok(hs)) {
       *error = jf.scene_path + ": hatching failed: " + status_name(hs);
       return false;
     }
-    for (const HatchStroke& h : hatch.strokes) edges->push_back(Edge3{h.line.a, h.line.b});
+    for (const HatchStroke& h : hatch.strokes)
+      d.hatch.push_back(Span{h.polygon, 0, 0, h.line.a.x, h.line.a.y, h.line.b.x, h.line.b.y});
   }
-  for (const Span& x : d.outline) edges->push_back(Edge3{{x.x0, x.y0, 0}, {x.x1, x.y1, 0}});
+  drawing_to_steps(&d, scene.substep_bits);
+  edges->clear();
+  for (const std::vector<Span>* part : {&d.spans, &d.hatch, &d.outline})
+    for (const Span& x : *part) edges->push_back(Edge3{{x.x0, x.y0, 0}, {x.x1, x.y1, 0}});
   return true;
 }
 

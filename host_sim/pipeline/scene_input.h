@@ -17,8 +17,13 @@ namespace haloplot::host {
 // The options every scene-taking command accepts (valued): --view AZ,EL (degrees, up to three
 // decimals; default 30,40), --perspective D (world units after the OBJ's scaling to 2^19;
 // default orthographic), --dump-edges FILE (the projected scene, in the order all outputs use).
-// --up y|z: the OBJ file's up axis (default y, what most OBJ files use).
-extern const char* const kSceneOptions[4];
+// --up y|z: the OBJ file's up axis (default y, what most OBJ files use). --substep S: fit the
+// projected scene in units of 2^-S steps (core/view/projection.h).
+extern const char* const kSceneOptions[5];
+
+// The sub-step bits an OBJ model is fitted with when --substep is not given (where the plot
+// area leaves room): the resolution axis in docs/accuracy.md chose it.
+inline constexpr int32_t kDefaultSubstepBits = 0;
 
 // --up from the options (default y); false with *error naming the value.
 bool parse_up(const Options& o, UpAxis* up, std::string* error);
@@ -28,8 +33,10 @@ bool parse_up(const Options& o, UpAxis* up, std::string* error);
 // --view and --perspective into a View; false with *error saying what is wrong.
 bool parse_view(const Options& o, View* out, std::string* error);
 
+// *substep_bits (may be null): the edges' units, 2^-S steps (an OBJ's view; an .edges file's
+// '# substep S' header).
 bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* edges,
-                std::string* error);
+                std::string* error, int32_t* substep_bits = nullptr);
 
 struct JobFile;
 struct SolidOptions;
@@ -38,8 +45,10 @@ bool job_solid_settings(const JobFile& jf, SolidOptions* so, View* view, std::st
 
 // The scene a .job file names, as the edges its job draws: an .edges file as it is; an .obj
 // model projected with the job's view; for the hidden-line drawings, the strokes of that mode
-// (visible pieces, dashes, and the outline pass redrawn last), decided on the host.
-bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* error);
+// (visible pieces, dashes, and the outline pass redrawn last), decided on the host and rounded
+// to steps. *substep_bits (may be null): the edges' units (0 for the strokes).
+bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* error,
+                    int32_t* substep_bits = nullptr);
 // Why a banded hidden-line job cannot have hatching (sim and send say it alike).
 inline constexpr const char* kNotInBands =
     "hatching is not drawn in bands yet: drop 'arena', or 'hatch'";

@@ -20,6 +20,7 @@ struct SolidScene {
   std::vector<Point3> vertices;      // projected
   std::vector<uint32_t> edge_pairs;  // drawn edges, output order
   std::vector<Triangle> triangles;
+  int32_t substep_bits = 0;  // the vertices' units: 2^-S steps (View::substep_bits)
 };
 
 // The core's view of a scene (pointers into it: the scene must outlive the input).

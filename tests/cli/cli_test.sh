@@ -80,6 +80,29 @@ expect '[ $rc -ne 0 ] && grep -q "eye plane" err.txt && [ ! -e objp.svg ]' "an e
 "$tool" plot cube.obj --view 30,forty --halo 40 -o objv.svg 2> err.txt
 rc=$?
 expect '[ $rc -ne 0 ] && grep -q -- "--view" err.txt' "a bad --view is named: $(cat err.txt)"
+# Sub-step units: decided 16 times finer, drawn in steps. The dump and the CUTSET say their
+# units ('# substep 4'), so plotting the dump and drawing the CUTSET give the same spans, and
+# the spans are in steps (inside the 20,400-step plot area, not 16 times beyond it).
+"$tool" plot cube.obj --substep 4 --halo 40 -o u.svg --spans u.spans --dump-edges u.edges --cut u.cut
+rc=$?
+expect '[ $rc -eq 0 ] && grep -q "^# substep 4$" u.edges && grep -q "^# substep 4$" u.cut' "sub-step files say their units"
+"$tool" plot u.edges --halo 40 -o u2.svg --spans u2.spans && "$tool" draw u.cut --halo 40 -o u3.svg --spans u3.spans
+expect 'cmp -s u.spans u2.spans && cmp -s u.spans u3.spans' "the dump and the CUTSET in units draw the same spans"
+expect '[ "$(awk '"'"'$1 == "s" && ($3 > 20400 || $4 > 20400 || $5 > 20400 || $6 > 20400)'"'"' u.spans | wc -l)" = 0 ] && grep -q "^s " u.spans' "sub-step spans are in steps"
+"$tool" plot cube.obj --substep 6 --halo 40 -o u4.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "substep 6: the plot area times 2^6" err.txt && [ ! -e u4.svg ]' "too many sub-step bits for the plot area are named: $(cat err.txt)"
+"$tool" plot u.edges --substep 2 --halo 40 -o u5.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "substep is for .obj" err.txt' "--substep on an .edges file is refused: $(cat err.txt)"
+{ echo "# substep nine"; grep -v "^#" u.edges; } > badunits.edges
+"$tool" plot badunits.edges --halo 40 -o u6.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "badunits.edges.*substep" err.txt' "a bad units header is named: $(cat err.txt)"
+printf 'scene cube.obj\ndrawing haloed\nhalo 40\nsubstep 9\n' > badunits.job
+"$tool" sim badunits.job -o u7.trace 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "badunits.job:4" err.txt && [ ! -e u7.trace ]' "a bad substep in a job is named with its line: $(cat err.txt)"
 
 # Hidden-line modes from a solid model (the cube above has its bottom face wound the wrong way:
 # the checks must say so and fall back; the fixed cube runs the QI method).
