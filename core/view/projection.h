@@ -41,6 +41,12 @@ struct View {
   int32_t substep_bits = 0;
 };
 
+// The sub-step bits the host tool and job files fit an .obj scene with unless told otherwise
+// (where the plot area leaves room), chosen on the resolution axis of docs/accuracy.md: the
+// drawing follows the model there at a cost within a few per cent of whole steps. View{}
+// itself stays in whole steps: a caller of the core asks for units explicitly.
+inline constexpr int32_t kDefaultSubstepBits = 5;
+
 // Points nearer the eye plane than this (world units) are refused: the perspective divisor
 // would magnify them beyond the format (kCoordinateOutOfRange).
 inline constexpr int32_t kEyeClearance = 1;

@@ -21,10 +21,6 @@ namespace haloplot::host {
 // projected scene in units of 2^-S steps (core/view/projection.h).
 extern const char* const kSceneOptions[5];
 
-// The sub-step bits an OBJ model is fitted with when --substep is not given (where the plot
-// area leaves room): the resolution axis in docs/accuracy.md chose it.
-inline constexpr int32_t kDefaultSubstepBits = 0;
-
 // --up from the options (default y); false with *error naming the value.
 bool parse_up(const Options& o, UpAxis* up, std::string* error);
 

@@ -155,6 +155,7 @@ inline bool project(const Mesh& m, const haloplot::View& view, haloplot::host::S
     return false;
   out->edge_pairs = polygon_edges(m);
   out->triangles = haloplot::host::triangulate(m.v, m.faces, nullptr);
+  out->substep_bits = view.substep_bits;
   return true;
 }
 

@@ -17,9 +17,11 @@
 // rest lie on or within rounding of another part's surface, where both casts flicker) and
 // 99.81 % for spider.obj (96.95 % before).
 //
-// The goal is 99.5 % on WusonOBJ at both views: met at 30,25, short at 200,-40. The
-// test asserts the goal where it is met and today's level where it is not, so that any change
-// to the projection or the fallback that draws further from the model fails here.
+// In whole steps the rest of 200,-40 is rounding: with the scene fitted in units of 2^-5 steps
+// (View::substep_bits, the tool's default) the same views agree on 100 %, 99.62 % and 100 %
+// (the 22 edges left at 200,-40 lie on or within a hair of another part's surface, where the
+// casts flicker). The test asserts the goal, 99.5 % on every view, at the default
+// units, and that whole steps fall short at 200,-40, so the check is seen to see rounding.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -31,6 +33,7 @@
 #include "pipeline/scene_input.h"
 #include "pipeline/solid_pipeline.h"
 #include "reference/ray_cast.h"
+#include "view/projection.h"
 
 using namespace haloplot;
 using namespace haloplot::host;
@@ -94,22 +97,20 @@ Agreement measure(const std::string& path, const std::string& view_text, int sub
 
 int main() {
   const std::string dir = "/usr/share/assimp/models/OBJ/";
-  if (getenv("SUBSTEP_SWEEP")) {
-    for (int sb = 0; sb <= 5; ++sb) {
-      measure(dir + "WusonOBJ.obj", "30,25", sb);
-      measure(dir + "WusonOBJ.obj", "200,-40", sb);
-      measure(dir + "spider.obj", "30,25", sb);
-    }
-  }
-  const Agreement w1 = measure(dir + "WusonOBJ.obj", "30,25", 0);
-  const Agreement w2 = measure(dir + "WusonOBJ.obj", "200,-40", 0);
-  const Agreement sp = measure(dir + "spider.obj", "30,25", 0);
+  const int units = kDefaultSubstepBits;  // what `plot` and the job files use
+  const Agreement w1 = measure(dir + "WusonOBJ.obj", "30,25", units);
+  const Agreement w2 = measure(dir + "WusonOBJ.obj", "200,-40", units);
+  const Agreement sp = measure(dir + "spider.obj", "30,25", units);
+  // Whole steps, for the difference sub-step units make (docs/accuracy.md, the resolution axis).
+  const Agreement w2_whole = measure(dir + "WusonOBJ.obj", "200,-40", 0);
   CHECK(w1.edges > 5000 && w2.edges > 5000 && sp.edges > 2000);
   auto share = [](const Agreement& a) {
     return double(a.agree) / double(std::max<size_t>(a.edges, 1));
   };
   CHECK_MSG(share(w1) >= 0.995, "WusonOBJ at 30,25: under the goal of 99.5 %");
-  CHECK_MSG(share(w2) >= 0.992, "WusonOBJ at 200,-40 draws further from the model than before");
-  CHECK_MSG(share(sp) >= 0.995, "spider at 30,25 draws further from the model than before");
+  CHECK_MSG(share(w2) >= 0.995, "WusonOBJ at 200,-40: under the goal of 99.5 %");
+  CHECK_MSG(share(sp) >= 0.995, "spider at 30,25: under 99.5 %");
+  // The check sees rounding to whole steps: there the same view falls short of the goal.
+  CHECK_MSG(share(w2_whole) < 0.995, "whole steps reach the goal at 200,-40: the check is blind");
   return check::finish("model_agreement");
 }
