@@ -171,6 +171,8 @@ class Scene {
   }
 
   const V3& vertex(uint32_t i) const { return vp_[i]; }
+  // Vertex i on the exact screen, in steps.
+  void screen_of(uint32_t i, LD* x, LD* y) const { *x = sx_[i], *y = sy_[i]; }
 
  private:
   // Does triangle t cross the open segment from p to the eye (Moller-Trumbore)? Points of the
