@@ -40,6 +40,21 @@ job huge.job huge.edges 50
 cp "$(dirname "$0")/../../scenes/pair_of_cubes.obj" cubes.obj
 printf 'scene cubes.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\nkinematics corexy\n' > solid.job
 "$tool" sim solid.job -o host_solid.trace
+# Two boxes that pass through each other: the QI finds conflicts and the fallback cuts three
+# edges where they pierce a face, on the controller, in the default sub-step units.
+box() {  # x0 x1 y0 y1 z0 z1 first-vertex: 8 vertices and 6 faces, counter-clockwise outside
+  local x0=$1 x1=$2 y0=$3 y1=$4 z0=$5 z1=$6 b=$7
+  for y in $y0 $y1; do for z in $z0 $z1; do for x in $x0 $x1; do echo "v $x $y $z"; done; done; done
+  echo "f $b $((b + 2)) $((b + 3)) $((b + 1))"
+  echo "f $((b + 4)) $((b + 5)) $((b + 7)) $((b + 6))"
+  echo "f $b $((b + 1)) $((b + 5)) $((b + 4))"
+  echo "f $((b + 2)) $((b + 6)) $((b + 7)) $((b + 3))"
+  echo "f $b $((b + 4)) $((b + 6)) $((b + 2))"
+  echo "f $((b + 1)) $((b + 3)) $((b + 7)) $((b + 5))"
+}
+{ box 0 2 0 2 0 -2 1; box 0.7 2.6 0.4 2.5 -0.6 -2.7 9; } > pierced.obj
+printf 'scene pierced.obj\ndrawing hidden-removed\nview 30,25\nkinematics corexy\n' > pierced.job
+"$tool" sim pierced.job -o host_pierced.trace
 "$tool" sim plot.job -o host_plot.trace
 "$tool" sim replot.job -o host_replot.trace
 # Streamed: 2 x 2 cubes in a 2 KB band arena take 8 bands.
@@ -79,6 +94,10 @@ if [ "$rc" -eq 0 ]; then ok; else bad "resume ($rc): $(cat resume.out)"; fi
 "$tool" send solid.job --port "$work/link.sock" > solid.out 2>&1
 rc=$?
 if [ "$rc" -eq 0 ]; then ok; else bad "solid send failed ($rc): $(cat solid.out)"; fi
+# 3b. Solids that pass through each other.
+"$tool" send pierced.job --port "$work/link.sock" > pierced.out 2>&1
+rc=$?
+if [ "$rc" -eq 0 ]; then ok; else bad "pierced send failed ($rc): $(cat pierced.out)"; fi
 # 4. A streamed plot, with damaged frames on the way.
 "$tool" send stream.job --port "$work/link.sock" --corrupt-every 7 --seed 3 > stream.out 2>&1
 rc=$?
@@ -103,13 +122,13 @@ fi
 end_session $?
 
 awk '/^haloplot-trace 2$/ { k++; on = 1 } on { print > ("fw_" k ".trace") } /^end / { on = 0 }' fw.out
-# Traces 1 and 2 are the stopped plots; 3 the aborted one resumed; 4 the solid; 5 the
-# streamed one; 6 the paused one; 7 and 8 the plot and the re-plot.
-if "$pause_check" plot.job fw_6.trace; then ok; else bad "the paused plot's trace"; fi
+# Traces 1 and 2 are the stopped plots; 3 the aborted one resumed; 4 the solid; 5 the pierced
+# boxes; 6 the streamed one; 7 the paused one; 8 and 9 the plot and the re-plot.
+if "$pause_check" plot.job fw_7.trace; then ok; else bad "the paused plot's trace"; fi
 hold=$(sed -n 's/^fw hold_events=//p' fw.out)
 if [ -n "$hold" ]; then
   "$tool" sim plot.job -o host_pause.trace --pause-at "$hold"
-  if cmp -s fw_6.trace host_pause.trace; then
+  if cmp -s fw_7.trace host_pause.trace; then
     ok
     echo "paused trace identical to haloplot sim --pause-at $hold: $(wc -c < host_pause.trace) bytes"
   else
@@ -118,7 +137,8 @@ if [ -n "$hold" ]; then
 else
   echo "the hold's step count was not exact (a step came in between): compared by pause_check only"
 fi
-for pair in "3 host_resume" "4 host_solid" "5 host_stream" "7 host_plot" "8 host_replot"; do
+for pair in "3 host_resume" "4 host_solid" "5 host_pierced" "6 host_stream" "8 host_plot" \
+  "9 host_replot"; do
   set -- $pair
   if [ -s "fw_$1.trace" ] && cmp -s "fw_$1.trace" "$2.trace"; then
     ok
