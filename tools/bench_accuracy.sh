@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake --preset host >/dev/null
-cmake --build --preset host -j "$(nproc)" --target accuracy_bench >/dev/null
+cmake --build --preset host -j "$(nproc)" --target accuracy_bench resolution_bench >/dev/null
 out=docs
 mkdir -p "$out"
 build/host/tests/bench/accuracy_bench "$out"
@@ -79,6 +79,41 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
   else
     echo "(Cortex-M4 counts: build the firmware preset and install qemu-system-arm, then rerun.)"
   fi
+  # 4. The resolution axis: the projected scene in whole steps and in sub-step units.
+  echo
+  echo "## 4. The resolution axis: sub-step units"
+  echo
+  echo "A projected scene is fitted in units of 2^-s steps (\`View::substep_bits\`, \`--substep S\`):"
+  echo "every decision (crossings, facing, which face hides a point) is made on those units, and"
+  echo "only the spans are rounded to steps, once, before the path. The plot area (20,400 steps)"
+  echo "leaves room for s = 5 in the 20-bit coordinate range. Each scene is plotted hidden-line at"
+  echo "each resolution and compared per drawn edge with a double-precision ray cast of the"
+  echo "unrounded model (tests/reference/ray_cast.h): edges agreeing within 3 steps + 1 % of their"
+  echo "length, ink off the model (the sum over edges of the visible-length difference), and the"
+  echo "triangulation diagonals drawn as contour lines (those the model itself does not have as"
+  echo "contours, and the model's own). Time: median of 3 whole hidden-line runs, with the ratio"
+  echo "to whole steps in the same run."
+  echo
+  build/host/tests/bench/resolution_bench "$out" 2>/dev/null
+  cat "$out/resolution.body.md"
+  rm -f "$out/resolution.body.md"
+  echo
+  if [ -n "${fw:-}" ]; then
+    whole=$(val hidden_lines_instructions_whole_steps)
+    fine=$(val hidden_lines_instructions)
+    echo "On the Cortex-M4 (QEMU \`-icount\`), the self-test's hidden-line run of 3 x 3 solid cubes"
+    echo "takes ${whole} instructions in whole steps and ${fine} in the default units: $(awk -v a="$fine" -v b="$whole" 'BEGIN { printf "%.2f", a / b }')x."
+    echo
+  fi
+  echo "**Default: s = 5** (\`kDefaultSubstepBits\`; \`View{}\` in the core stays in whole steps), the"
+  echo "most the default plot area leaves room for; a larger plot area gets the most that fits. The"
+  echo "chart's cost column is flat: the predicates run the same instructions whatever part of the"
+  echo "20 bits a scene uses (the cube array, built from small integers here, is even faster in"
+  echo "units; through the tool, scaled to 2^19 world units, it takes the same time in both). Every"
+  echo "scene agrees with its model better at s = 5 than in whole steps; the goals it does not"
+  echo "reach, read from the same rows: the 200k sphere still draws some diagonals as contour"
+  echo "(slivers flatter than 2^-5 step), and WusonOBJ at 200,-40 keeps 22 edges off, most lying"
+  echo "on or within a hair of another part's surface, where the ray casts flicker too."
 } > "$out/accuracy.md"
 rm -f "$out/accuracy.body.md"
 if command -v rsvg-convert >/dev/null 2>&1; then

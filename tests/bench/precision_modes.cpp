@@ -368,8 +368,10 @@ void precision_modes_section(const std::string& dir, int runs, std::ostringstrea
      << "| exact halo discriminant b^2 - a c | 65 | 85 | no: 128-bit limbs |\n\n"
      << "Every CUT predicate already fits int64 at 20 bits, so a 15-bit mode would run the "
         "same instructions; the one product that needs more than 64 bits, the exact halo's "
-        "discriminant, still does at 15 bits. The resolution axis is therefore the plot "
-        "area itself (steps per unit), not a separate arithmetic mode.\n\n";
+        "discriminant, still does at 15 bits. The same instructions therefore run whatever "
+        "part of the 20 bits a scene uses, and the plot area (about 2^14.3 steps) leaves five "
+        "of them idle: section 4 spends them as sub-step units, which is the resolution axis "
+        "that changes the drawing.\n\n";
 }
 
 size_t draw_once_in_mode(int k) {

@@ -25,6 +25,7 @@
 #include "reference/contour_diagonals.h"
 #include "reference/ray_cast.h"
 #include "support/solid_scenes.h"
+#include "view/projection.h"
 
 using namespace haloplot;
 using namespace haloplot::host;
@@ -207,11 +208,12 @@ int main(int argc, char** argv) {
       const Cell c = measure(m, truth, s);
       if (s == 0) whole_ms = c.ms;
       char line[512];
-      std::snprintf(line, sizeof line,
-                    "| %s | %s | %d | %.2f %% | %.0f | %.0f (%.0f; %.0f) | %.1f | %.0f | %.2f× |\n",
-                    m.name.c_str(), c.qi ? "QI" : "fallback", s, c.agree, c.ink_diff, c.diagonals,
-                    c.spurious, truth.model_contour_diagonals, c.ms, c.ns_per_edge,
-                    whole_ms > 0 ? c.ms / whole_ms : 0.0);
+      std::snprintf(
+          line, sizeof line,
+          "| %s | %s | %d%s | %.2f %% | %.0f | %.0f (%.0f; %.0f) | %.1f | %.0f | %.2f× |\n",
+          m.name.c_str(), c.qi ? "QI" : "fallback", s, s == kDefaultSubstepBits ? " (default)" : "",
+          c.agree, c.ink_diff, c.diagonals, c.spurious, truth.model_contour_diagonals, c.ms,
+          c.ns_per_edge, whole_ms > 0 ? c.ms / whole_ms : 0.0);
       body << line;
       std::fprintf(stderr, "%s", line);
     }
