@@ -74,7 +74,7 @@ std::vector<std::array<F, 3>> rotate(const View& v, const std::vector<Point3>& w
   for (const Point3& p : w) {
     const F x = F(p.x), y = F(p.y), z = F(p.z);
     const F y1 = x * sa + y * ca;
-    r.push_back({x * ca - y * sa, z * ce - y1 * se, z * se - y1 * ce});
+    r.push_back({x * ca - y * sa, z * ce + y1 * se, z * se - y1 * ce});  // core/view convention
   }
   return r;
 }
