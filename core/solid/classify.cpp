@@ -38,12 +38,13 @@ int front_face_side(const Topology& topo, const uint8_t* front, uint32_t edge) {
   return s > 0 ? 1 : -1;
 }
 
-ClassCounts classify(Topology* topo, uint8_t* front) {
+ClassCounts classify(Topology* topo, uint8_t* front, const uint8_t* facing) {
   ClassCounts k;
   for (uint32_t t = 0; t < topo->n_triangles; ++t) {
     const uint32_t* v = topo->triangles[t].v;
-    const bool f =
-        projected_area2(topo->vertices[v[0]], topo->vertices[v[1]], topo->vertices[v[2]]) > 0;
+    const bool f = facing != nullptr ? facing[t] != 0
+                                     : projected_area2(topo->vertices[v[0]], topo->vertices[v[1]],
+                                                       topo->vertices[v[2]]) > 0;
     front[t] = f ? 1 : 0;
     ++(f ? k.front_faces : k.back_faces);
   }

@@ -14,7 +14,8 @@ struct ClassCounts {
 };
 
 // Writes front[t] (1 front, 0 back) and every edge's class; returns the counts.
-ClassCounts classify(Topology* topo, uint8_t* front);
+// `facing` (may be null): the model's facing per triangle, used instead of the projected area.
+ClassCounts classify(Topology* topo, uint8_t* front, const uint8_t* facing = nullptr);
 
 // True when the edge between faces f0 and f1 (f0 runs v0 -> v1) is convex: f1's far corner
 // lies behind f0's plane, seen from outside. Exact (a 3-D orientation in 128 bits).

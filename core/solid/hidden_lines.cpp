@@ -101,7 +101,7 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
   uint8_t* front = arena.take(topo.n_triangles);
   Edge3* edges = reinterpret_cast<Edge3*>(arena.take(size_t{topo.n_edges} * sizeof(Edge3)));
   if (front == nullptr || edges == nullptr) return *report = r, short_of(arena, report);
-  r.classes = classify(&topo, front);
+  r.classes = classify(&topo, front, in.facing);
   for (uint32_t e = 0; e < topo.n_edges; ++e) edges[e] = topo.edge3(e);
 
   // CUT; its scratch is given back afterwards.

@@ -31,6 +31,9 @@ struct SolidInput {
   uint32_t n_edges = 0;
   const Triangle* triangles = nullptr;
   uint32_t n_triangles = 0;
+  // Optional: each triangle's facing as the model decides it (1 front, 0 back), for slivers
+  // whose projected area rounding could flip (view/facing.h); null: the projected area.
+  const uint8_t* facing = nullptr;
 };
 
 // Loutrel's edge classes (as Kira uses them), from the two faces of an edge:

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "../check.h"
+#include "view/facing.h"
 #include "view/projection.h"
 #include "view/trig.h"
 
@@ -195,6 +196,90 @@ void check_errors() {
 
 }  // namespace
 
+// view/facing.h: each triangle's facing from its world normal, against long double (the exact
+// sine and cosine; where the long-double dot product is within its own error of zero the
+// case is skipped), orthographic and in perspective; and against the sign of the projected
+// area on triangles large enough that rounding their corners cannot flip it.
+void check_model_facing() {
+  std::mt19937_64 rng(20261202);
+  std::uniform_int_distribution<int32_t> coord(-kWorldLimit, kWorldLimit), small(-3000, 3000);
+  std::uniform_int_distribution<int32_t> angle(-360000, 360000);
+  size_t compared = 0, wrong = 0, projected = 0, projected_wrong = 0;
+  for (int round = 0; round < 200; ++round) {
+    View v;
+    v.azimuth_mdeg = angle(rng);
+    v.elevation_mdeg = angle(rng) / 4;
+    v.perspective = round % 2 ? 0 : 2 * kWorldLimit - int32_t(rng() % 1000);
+    std::vector<Point3> world;
+    std::vector<Triangle> tris;
+    for (uint32_t t = 0; t < 100; ++t) {
+      const Point3 a{coord(rng) / 2, coord(rng) / 2, coord(rng) / 2};
+      // Half of them thin: two corners near a line through the first.
+      const bool thin = t % 2 == 0;
+      const Point3 b{a.x + coord(rng) / 2, a.y + coord(rng) / 2, a.z + coord(rng) / 2};
+      const Point3 c =
+          thin ? Point3{a.x + (b.x - a.x) / 2 + small(rng), a.y + (b.y - a.y) / 2 + small(rng),
+                        a.z + (b.z - a.z) / 2 + small(rng)}
+               : Point3{a.x + coord(rng) / 2, a.y + coord(rng) / 2, a.z + coord(rng) / 2};
+      world.insert(world.end(), {a, b, c});
+      tris.push_back(Triangle{{3 * t, 3 * t + 1, 3 * t + 2}, t});
+    }
+    std::vector<uint8_t> facing(tris.size());
+    CHECK(ok(model_facing(v, world.data(), uint32_t(world.size()), tris.data(),
+                          uint32_t(tris.size()), facing.data())));
+    const long double pi = 3.14159265358979323846264338327950288L;
+    const long double az = v.azimuth_mdeg * pi / 180000, el = v.elevation_mdeg * pi / 180000;
+    const long double w[3] = {-std::sin(az) * std::cos(el), -std::cos(az) * std::cos(el),
+                              std::sin(el)};
+    std::vector<Point3> screen(world.size());
+    CHECK(ok(project_points(v, world.data(), uint32_t(world.size()), screen.data())));
+    for (size_t t = 0; t < tris.size(); ++t) {
+      const Point3 &a = world[3 * t], &b = world[3 * t + 1], &c = world[3 * t + 2];
+      const long double u[3] = {(long double)b.x - a.x, (long double)b.y - a.y,
+                                (long double)b.z - a.z};
+      const long double q[3] = {(long double)c.x - a.x, (long double)c.y - a.y,
+                                (long double)c.z - a.z};
+      const long double n[3] = {u[1] * q[2] - u[2] * q[1], u[2] * q[0] - u[0] * q[2],
+                                u[0] * q[1] - u[1] * q[0]};
+      const long double p[3] = {(long double)a.x, (long double)a.y, (long double)a.z};
+      long double dot = 0, scale = 0;
+      for (int k = 0; k < 3; ++k) {
+        const long double to = v.perspective > 0 ? v.perspective * w[k] - p[k] : w[k];
+        dot += n[k] * to;
+        scale += std::fabs(n[k]) * (v.perspective > 0 ? 4.0L * kWorldLimit : 1.0L);
+      }
+      // The core rounds w to Q2.30: a relative 2^-29 of the terms, and long double's own 2^-60.
+      if (std::fabs(dot) > scale * std::ldexp(1.0L, -28)) {
+        ++compared;
+        if ((dot > 0) != (facing[t] != 0)) ++wrong;
+      }
+      const Point3 &sa = screen[3 * t], &sb = screen[3 * t + 1], &sc = screen[3 * t + 2];
+      const int64_t area =
+          int64_t{sb.x - sa.x} * (sc.y - sa.y) - int64_t{sb.y - sa.y} * (sc.x - sa.x);
+      // Rounding each corner by half a step moves the doubled area by at most about the sum of
+      // the two edges' lengths in x and y (under 4 x 20,400 steps here): twice that decides.
+      if (std::llabs(area) > 8 * 20400) {
+        ++projected;
+        if ((area > 0) != (facing[t] != 0)) ++projected_wrong;
+      }
+    }
+  }
+  std::printf(
+      "model facing: %zu decided cases, %zu wrong; %zu against the projected area, %zu "
+      "differ\n",
+      compared, wrong, projected, projected_wrong);
+  CHECK(compared > 15000 && wrong == 0);
+  CHECK(projected > 5000 && projected_wrong == 0);
+  // A corner outside the world, and an index beyond the vertices, are refused by name.
+  View v;
+  const Point3 far[3] = {{0, 0, 0}, {kWorldLimit + 1, 0, 0}, {0, 1, 0}};
+  const Triangle t{{0, 1, 2}, 0};
+  uint8_t f = 0;
+  CHECK(model_facing(v, far, 3, &t, 1, &f) == Status::kCoordinateOutOfRange);
+  const Triangle beyond{{0, 1, 3}, 0};
+  CHECK(model_facing(v, far, 3, &beyond, 1, &f) == Status::kBadParameter);
+}
+
 int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "near_eye_plane") {  // the stability family alone
     check_near_eye_plane();
@@ -204,5 +289,6 @@ int main(int argc, char** argv) {
   check_projection();
   check_near_eye_plane();
   check_errors();
+  check_model_facing();
   return check::finish("view");
 }
