@@ -2,6 +2,7 @@
 
 #include "geometry/units.h"
 #include "memory/carve.h"
+#include "view/facing.h"
 
 namespace haloplot {
 namespace {
@@ -277,10 +278,12 @@ Status JobServer::plot() {
 
 Status JobServer::plot_hidden(uint8_t* job_mem, size_t job_bytes) {
   if (scene_.format != SceneFormat::kIndexed || scene_.faces == 0) return Status::kNoFaces;
-  // The projected vertices stay at the front of the job buffer (plot() put them there); the
+  // The projected vertices stay at the front of the job buffer (plot() put them there), then
+  // in sub-step units each face's facing from the model (view/facing.h, as the host does); the
   // hidden-line run and its strokes take the rest.
   const size_t screen_bytes = carve_round(size_t{scene_.vertices} * sizeof(Point3));
-  if (screen_bytes > job_bytes) return Status::kWorkspaceTooSmall;
+  const size_t facing_bytes = spec_.substep_bits > 0 ? carve_round(scene_.faces) : 0;
+  if (screen_bytes + facing_bytes > job_bytes) return Status::kWorkspaceTooSmall;
   SolidInput in;
   in.vertices = reinterpret_cast<const Point3*>(job_mem);
   in.n_vertices = scene_.vertices;
@@ -289,6 +292,13 @@ Status JobServer::plot_hidden(uint8_t* job_mem, size_t job_bytes) {
   in.triangles =
       reinterpret_cast<const Triangle*>(arena_ + world_bytes(scene_) + pair_bytes(scene_));
   in.n_triangles = scene_.faces;
+  if (facing_bytes > 0) {
+    uint8_t* facing = job_mem + screen_bytes;
+    const Status fs = model_facing(view_, reinterpret_cast<const Point3*>(arena_), scene_.vertices,
+                                   in.triangles, in.n_triangles, facing);
+    if (!ok(fs)) return fs;
+    in.facing = facing;
+  }
   // Capacities are unknown before the run: guess, then run again with the counts it reports.
   StageNeeds needs;
   needs.crossings = n_edges_ + 3 * scene_.faces + 64;
@@ -296,7 +306,8 @@ Status JobServer::plot_hidden(uint8_t* job_mem, size_t job_bytes) {
   const uint64_t t0 = clock_ ? clock_() : 0;
   HiddenReport report;
   SolidJobStage stage{&spec_, &in, &job_, &counters_, &report};
-  FixedMemory memory{job_mem + screen_bytes, job_bytes - screen_bytes};
+  FixedMemory memory{job_mem + screen_bytes + facing_bytes,
+                     job_bytes - screen_bytes - facing_bytes};
   const Status s = run_sized(stage, memory.memory(), &needs);
   cut_runs_ += stage.cut_runs;
   if (clock_) prepare_ticks_ = clock_() - t0;

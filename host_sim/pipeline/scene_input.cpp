@@ -10,6 +10,7 @@
 #include "io/substep_header.h"
 #include "pipeline/surface_pipeline.h"
 #include "pipeline/units.h"
+#include "view/facing.h"
 #include "view/projection.h"
 
 namespace haloplot::host {
@@ -50,10 +51,10 @@ namespace {
 
 // Reads and projects an OBJ model; on failure *error is complete.
 bool project_obj(const Options& o, const std::string& path, ObjModel* model,
-                 std::vector<Point3>* screen, int32_t* substep_bits, std::string* error) {
+                 std::vector<Point3>* screen, View* view_out, std::string* error) {
   View view;
   if (!parse_view(o, &view, error)) return false;
-  *substep_bits = view.substep_bits;
+  *view_out = view;
   UpAxis up;
   if (!parse_up(o, &up, error)) return false;
   const InputError ie = read_obj_file(path, model);
@@ -168,7 +169,9 @@ bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* e
   }
   ObjModel model;
   std::vector<Point3> screen;
-  if (!project_obj(o, path, &model, &screen, &units, error)) return false;
+  View view;
+  if (!project_obj(o, path, &model, &screen, &view, error)) return false;
+  units = view.substep_bits;
   if (substep_bits != nullptr) *substep_bits = units;
   Status s = Status::kOk;
   edges->resize(model.edge_pairs.size() / 2);
@@ -199,7 +202,9 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
     return false;
   }
   ObjModel model;
-  if (!project_obj(o, path, &model, &scene->vertices, &scene->substep_bits, error)) return false;
+  View view;
+  if (!project_obj(o, path, &model, &scene->vertices, &view, error)) return false;
+  scene->substep_bits = view.substep_bits;
   scene->edge_pairs = model.edge_pairs;
   TriangulateStats ts;
   scene->triangles = triangulate(model.vertices, model.faces, &ts);
@@ -208,6 +213,7 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
     *error = not_simple_message(path, model, ts);
     return false;
   }
+  if (!model_facing_of(view, model.vertices, scene, error)) return false;
   std::vector<Edge3> edges(model.edge_pairs.size() / 2);
   const Status s =
       edges_from_indices(scene->vertices.data(), uint32_t(scene->vertices.size()),
@@ -218,6 +224,17 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
   }
   return something_to_draw(path, edges, error) &&
          dump_edges(o, path, edges, scene->substep_bits, error);
+}
+
+bool model_facing_of(const View& view, const std::vector<Point3>& world, SolidScene* scene,
+                     std::string* error) {
+  scene->facing.clear();
+  if (view.substep_bits == 0) return true;  // whole steps: the facing the geometry shows
+  scene->facing.resize(scene->triangles.size());
+  const Status s = model_facing(view, world.data(), uint32_t(world.size()), scene->triangles.data(),
+                                uint32_t(scene->triangles.size()), scene->facing.data());
+  if (!ok(s)) *error = "facing from the model failed: " + std::string(status_name(s));
+  return ok(s);
 }
 
 namespace {

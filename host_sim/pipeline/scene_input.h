@@ -34,6 +34,12 @@ bool parse_view(const Options& o, View* out, std::string* error);
 bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* edges,
                 std::string* error, int32_t* substep_bits = nullptr);
 
+// The model's facing of each triangle (view/facing.h) into scene->facing when the scene is in
+// sub-step units; in whole steps the projected geometry is too coarse to agree with it (the
+// QI would find conflicts on fine meshes), so the facing stays the projected area's (empty).
+bool model_facing_of(const View& view, const std::vector<Point3>& world, SolidScene* scene,
+                     std::string* error);
+
 struct JobFile;
 struct SolidOptions;
 // A job's hidden-line settings (its view, dash in mm at its steps-per-mm, method, outline).

@@ -81,6 +81,8 @@ SolidInput solid_input(const SolidScene& scene) {
   in.n_edges = uint32_t(scene.edge_pairs.size() / 2);
   in.triangles = scene.triangles.data();
   in.n_triangles = uint32_t(scene.triangles.size());
+  if (scene.facing.size() == scene.triangles.size() && !scene.facing.empty())
+    in.facing = scene.facing.data();
   return in;
 }
 

@@ -20,7 +20,8 @@ struct SolidScene {
   std::vector<Point3> vertices;      // projected
   std::vector<uint32_t> edge_pairs;  // drawn edges, output order
   std::vector<Triangle> triangles;
-  int32_t substep_bits = 0;  // the vertices' units: 2^-S steps (View::substep_bits)
+  int32_t substep_bits = 0;     // the vertices' units: 2^-S steps (View::substep_bits)
+  std::vector<uint8_t> facing;  // per triangle from the model (empty: the projected area)
 };
 
 // The core's view of a scene (pointers into it: the scene must outlive the input).

@@ -76,8 +76,10 @@ bool load(const Model& m, int s, SolidScene* scene) {
     scene->edge_pairs = m.pairs;
     scene->triangles = m.triangles;
     scene->substep_bits = s;
+    std::string error;
     return project_points(v, m.world.data(), uint32_t(m.world.size()), scene->vertices.data()) ==
-           Status::kOk;
+               Status::kOk &&
+           model_facing_of(v, m.world, scene, &error);
   }
   Options o;
   o.values["--view"] = m.obj_view;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "pipeline/scene_input.h"
 #include "pipeline/solid_pipeline.h"
 #include "pipeline/triangulate.h"
 #include "view/projection.h"
@@ -156,7 +157,8 @@ inline bool project(const Mesh& m, const haloplot::View& view, haloplot::host::S
   out->edge_pairs = polygon_edges(m);
   out->triangles = haloplot::host::triangulate(m.v, m.faces, nullptr);
   out->substep_bits = view.substep_bits;
-  return true;
+  std::string error;
+  return haloplot::host::model_facing_of(view, m.v, out, &error);
 }
 
 inline haloplot::View view(int32_t az_mdeg, int32_t el_mdeg) {
