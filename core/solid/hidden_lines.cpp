@@ -151,6 +151,16 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
     QiState state;
     s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi);
     if (s != Status::kOk) return *report = r, s;
+    // Where a sliver folds over on paper, the model's facing disagrees with the geometry the
+    // QI walks and it finds conflicts: once more with the facing the geometry shows, before
+    // giving up the QI (a diagonal may then be drawn as contour; the picture stays right).
+    if (params.method == HiddenMethod::kAuto && r.qi.conflicts > 0 && in.facing != nullptr) {
+      r.projected_facing = true;
+      r.classes = classify(&topo, front, nullptr);
+      r.qi = QiStats{};
+      s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi);
+      if (s != Status::kOk) return *report = r, s;
+    }
     if (params.method == HiddenMethod::kAuto && r.qi.conflicts > 0) {
       use_qi = false;  // the mesh pierces itself: ask the faces directly
       r.reason = FallbackReason::kConflicts;

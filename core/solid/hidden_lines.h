@@ -61,6 +61,9 @@ struct HiddenReport {
   uint32_t incidences = 0, incidences_needed = 0, coincident_vertices = 0;
   uint32_t n_drawn = 0, n_edges = 0;
   bool used_qi = false;
+  // The model's facing (SolidInput::facing) gave the QI conflicts, so it ran again on the
+  // facing of the projected area (what the rounded geometry shows) before any fallback.
+  bool projected_facing = false;
   FallbackReason reason = FallbackReason::kNone;
   size_t bytes_topology = 0, bytes_cut = 0, bytes_incidence = 0, bytes_qi = 0, bytes_fallback = 0,
          bytes_outline = 0;
