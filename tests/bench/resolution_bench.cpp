@@ -5,8 +5,8 @@
 // (tests/reference/ray_cast.h; per drawn edge, |visible length drawn - visible length cast|,
 // summed), how many edges agree within 3 steps + 1 %, the triangulation diagonals drawn as
 // contour (QI: H3 diagonals, visible length) against those the model itself has, and the time
-// (median of 3 whole runs, ns per drawn edge). Writes the markdown table body
-// DIR/resolution.body.md. Usage: resolution_bench DIR [--quick]
+// (median of 5 whole runs, the resolutions interleaved; ns per drawn edge). Writes the markdown
+// table body DIR/resolution.body.md. Usage: resolution_bench DIR [--quick]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -89,19 +89,33 @@ bool load(const Model& m, int s, SolidScene* scene) {
   return load_solid_scene(o, m.obj_path, scene, nullptr, &error);
 }
 
-Cell measure(const Model& m, const Truth& t, int s) {
+// Every resolution's scene, timed in turn: five rounds over all of them, so a slow spell of the
+// machine falls on every resolution alike; the median of each.
+std::vector<double> time_resolutions(const Model& m) {
+  const size_t k = sizeof kResolutions / sizeof kResolutions[0];
+  std::vector<SolidScene> scenes(k);
+  std::vector<std::vector<double>> ms(k);
+  for (size_t i = 0; i < k; ++i)
+    if (!load(m, kResolutions[i], &scenes[i])) return std::vector<double>(k, 0.0);
+  for (int round = 0; round < 5; ++round)
+    for (size_t i = 0; i < k; ++i) {
+      SolidRun run;
+      const double t0 = bench::now_ms();
+      run_hidden_lines(scenes[i], HiddenMethod::kAuto, FallbackParams{}, &run);
+      ms[i].push_back(bench::now_ms() - t0);
+    }
+  std::vector<double> out;
+  for (const auto& v : ms) out.push_back(bench::median(v));
+  return out;
+}
+
+Cell measure(const Model& m, const Truth& t, int s, double ms) {
   Cell c;
   SolidScene scene;
   if (!load(m, s, &scene)) return c;
-  std::vector<double> ms;
   SolidRun run;
-  for (int i = 0; i < 3; ++i) {
-    const double t0 = bench::now_ms();
-    if (run_hidden_lines(scene, HiddenMethod::kAuto, FallbackParams{}, &run) != Status::kOk)
-      return c;
-    ms.push_back(bench::now_ms() - t0);
-  }
-  c.ms = bench::median(ms);
+  if (run_hidden_lines(scene, HiddenMethod::kAuto, FallbackParams{}, &run) != Status::kOk) return c;
+  c.ms = ms;
   c.qi = run.used_qi;
   const size_t n = scene.edge_pairs.size() / 2;
   c.ns_per_edge = c.ms * 1e6 / double(n);
@@ -206,8 +220,10 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s: %zu edges, reference cast in %.1f s\n", m.name.c_str(),
                  truth.length.size(), (bench::now_ms() - t0) / 1000);
     double whole_ms = 0;
-    for (int s : kResolutions) {
-      const Cell c = measure(m, truth, s);
+    const std::vector<double> times = time_resolutions(m);
+    for (size_t i = 0; i < times.size(); ++i) {
+      const int s = kResolutions[i];
+      const Cell c = measure(m, truth, s, times[i]);
       if (s == 0) whole_ms = c.ms;
       char line[512];
       std::snprintf(
