@@ -6,7 +6,6 @@
 
 #include "cli/options.h"
 #include "cli/solid_options.h"
-#include "geometry/units.h"
 #include "io/atomic_file.h"
 #include "io/line_reader.h"
 #include "io/spans_file.h"
@@ -91,9 +90,7 @@ int cmd_plot_solid(const Options& o) {
   ModeDrawing d = make_mode_drawing(run, mode_in_units(so.spec, units));
   HatchRun hatch;
   if (so.hatch) {
-    HatchParams hp = so.hatch_params;
-    hp.spacing = steps_to_units(hp.spacing, units);
-    const Status hs = run_hatch(scene, hp, &hatch);
+    const Status hs = run_hatch(scene, hatch_in_units(so.hatch_params, units), &hatch);
     if (!ok(hs)) return fail(o.positional[0] + ": hatching failed: " + status_name(hs));
     for (const HatchStroke& h : hatch.strokes)
       d.hatch.push_back(Span{h.polygon, 0, 0, h.line.a.x, h.line.a.y, h.line.b.x, h.line.b.y});

@@ -1,7 +1,6 @@
 #include "pipeline/scene_input.h"
 
 #include "cli/solid_options.h"
-#include "geometry/units.h"
 #include "io/atomic_file.h"
 #include "io/edges_file.h"
 #include "io/job_file.h"
@@ -295,9 +294,7 @@ bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* e
   ModeDrawing d = make_mode_drawing(run, mode_in_units(so.spec, scene.substep_bits));
   if (so.hatch) {
     HatchRun hatch;
-    HatchParams hp = so.hatch_params;
-    hp.spacing = steps_to_units(hp.spacing, scene.substep_bits);
-    const Status hs = run_hatch(scene, hp, &hatch);
+    const Status hs = run_hatch(scene, hatch_in_units(so.hatch_params, scene.substep_bits), &hatch);
     if (!ok(hs)) {
       *error = jf.scene_path + ": hatching failed: " + status_name(hs);
       return false;

@@ -20,6 +20,11 @@ ModeSpec mode_in_units(ModeSpec m, int32_t substep_bits) {
   return m;
 }
 
+HatchParams hatch_in_units(HatchParams h, int32_t substep_bits) {
+  h.spacing = steps_to_units(h.spacing, substep_bits);
+  return h;
+}
+
 void spans_to_steps(std::vector<Span>* spans, int32_t substep_bits) {
   for (Span& s : *spans) {
     s.x0 = units_to_steps(s.x0, substep_bits), s.y0 = units_to_steps(s.y0, substep_bits);

@@ -8,12 +8,14 @@
 #include "cut/cut.h"
 #include "draw/draw.h"
 #include "pipeline/drawing_modes.h"
+#include "surface/hatch.h"
 
 namespace haloplot::host {
 
 DrawParams draw_in_units(DrawParams d, int32_t substep_bits);
 CutParams cut_in_units(CutParams c, int32_t substep_bits);
 ModeSpec mode_in_units(ModeSpec m, int32_t substep_bits);
+HatchParams hatch_in_units(HatchParams h, int32_t substep_bits);
 
 void spans_to_steps(std::vector<Span>* spans, int32_t substep_bits);
 void drawing_to_steps(ModeDrawing* d, int32_t substep_bits);
