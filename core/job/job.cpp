@@ -312,6 +312,7 @@ Status job_prepare_solid(const JobSpec& steps, const SolidInput& in, uint32_t cr
   HiddenParams hp;
   hp.method = spec.hidden.method;
   hp.outline = spec.hidden.outline;
+  hp.intersections = spec.hidden.intersections;
   hp.cut = spec.cut;
   hp.crossing_capacity = crossing_capacity;
   hp.incidence_capacity = incidence_capacity;

@@ -35,6 +35,9 @@ struct HiddenJob {
   // edges and before the outlines.
   bool hatch = false;
   int32_t hatch_spacing = 120, hatch_angle_mdeg = 45000, hatch_mdeg_per_depth = 90000;
+  // Draw the visible parts of the lines where faces cross (solid/intersection_lines.h): on by
+  // default, since solids that pass through each other are common in assemblies.
+  bool intersections = true;
 };
 
 struct JobSpec {

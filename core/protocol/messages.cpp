@@ -159,7 +159,7 @@ Triangle decode_face(const uint8_t* p) {
 
 void encode_hidden(const HiddenJob& h, uint8_t out[kHiddenBytes]) {
   out[0] = uint8_t(h.method);
-  out[1] = uint8_t((h.outline ? 1 : 0) | (h.hatch ? 2 : 0));
+  out[1] = uint8_t((h.outline ? 1 : 0) | (h.hatch ? 2 : 0) | (h.intersections ? 4 : 0));
   put_i32(out + 2, h.dash);
   put_i32(out + 6, h.gap);
   put_i32(out + 10, h.hatch_spacing);
@@ -168,12 +168,13 @@ void encode_hidden(const HiddenJob& h, uint8_t out[kHiddenBytes]) {
 }
 
 Status decode_hidden(const uint8_t* p, size_t n, HiddenJob* out) {
-  if (n != kHiddenBytes || p[0] > uint8_t(HiddenMethod::kFallback) || (p[1] & ~3u))
+  if (n != kHiddenBytes || p[0] > uint8_t(HiddenMethod::kFallback) || (p[1] & ~7u))
     return Status::kMalformedRequest;
   HiddenJob h;
   h.method = HiddenMethod(p[0]);
   h.outline = p[1] & 1;
   h.hatch = (p[1] & 2) != 0;
+  h.intersections = (p[1] & 4) != 0;
   h.dash = get_i32(p + 2);
   h.gap = get_i32(p + 6);
   h.hatch_spacing = get_i32(p + 10);

@@ -14,9 +14,9 @@
 //                      4 backlash, 8 stay), u8 sub-step bits (the scene's units)       3
 //   kUploadFaces       4 x u32: three vertex indices (counter-clockwise from outside) and
 //                      the polygon id (sides shared inside a polygon are not drawn) 16 per face
-//   kSetHidden         u8 method (0 auto, 1 QI, 2 fallback), u8 flags (1 outline, 2 hatch),
-//                      u32 dash, u32 gap, u32 hatch spacing (steps), i32 hatch angle,
-//                      i32 hatch turn across the depth range (millidegrees)            22
+//   kSetHidden         u8 method (0 auto, 1 QI, 2 fallback), u8 flags (1 outline, 2 hatch,
+//                      4 intersection lines), u32 dash, u32 gap, u32 hatch spacing (steps), i32
+//                      hatch angle, i32 hatch turn across the depth range (millidegrees) 22
 //   kSetMachine        u8 kinematics, 13 x u32 (steps num, den, tick Hz, min interval,
 //                      max step rate, draw speed, travel speed, accel, junction deviation,
 //                      pen travel, pen settle, backlash 0, 1), 2 x i32 start x, y      61

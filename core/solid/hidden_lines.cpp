@@ -33,6 +33,7 @@ struct Arena {
 struct Adapter {
   HiddenSink sink;
   const Edge3* edges;
+  uint32_t n_edges;  // intersection lines are numbered after every edge
 };
 
 Status qi_piece(void* ctx, const QiPiece& p) {
@@ -59,6 +60,27 @@ Status outline_piece(void* ctx, const OutlineSegment& s) {
   if (a->sink.outline == nullptr) return Status::kOk;
   return a->sink.outline(a->sink.context,
                          HiddenPiece{s.edge, a->edges + s.edge, s.t0, s.t1, 0, false, true});
+}
+
+Status intersection_piece(void* ctx, const IntersectionPiece& p) {
+  const Adapter* a = static_cast<const Adapter*>(ctx);
+  return a->sink.piece(a->sink.context, HiddenPiece{a->n_edges + p.index,
+                                                    p.segment,
+                                                    p.t0,
+                                                    p.t1,
+                                                    p.q,
+                                                    p.hidden,
+                                                    true,
+                                                    {p.face[0], p.face[1]}});
+}
+
+// The intersection pass's face grid, carved before the sink is given the tail.
+bool carve_intersections(const Topology& topo, const HiddenParams& params, Arena* arena,
+                         FaceGrid* fg, HiddenReport* r) {
+  if (!params.intersections || params.band) return true;
+  r->bytes_intersections = face_grid_bytes(topo);
+  uint8_t* mem = arena->take(r->bytes_intersections);
+  return mem != nullptr && build_face_grid(topo, mem, r->bytes_intersections, fg) == Status::kOk;
 }
 
 Status short_of(const Arena& a, HiddenReport* r) {
@@ -142,7 +164,13 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
                : params.method == HiddenMethod::kFallback ? FallbackReason::kAsked
                : manifold                                 ? FallbackReason::kLooseEdges
                                                           : FallbackReason::kNotManifold;
-  Adapter adapter{sink, edges};
+  Adapter adapter{sink, edges, topo.n_edges};
+  FaceGrid crossing_grid;
+  auto intersections = [&](const uint8_t* hiding_front) {
+    if (!params.intersections || params.band) return Status::kOk;
+    return draw_intersections(topo, hiding_front, crossing_grid,
+                              IntersectionSink{&intersection_piece, &adapter}, &r.intersections);
+  };
   const size_t before_method = arena.used;
   if (use_qi) {
     r.bytes_qi = qi_bytes(topo);
@@ -172,10 +200,13 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
         outline_mem = arena.take(r.bytes_outline);
         if (outline_mem == nullptr) return *report = r, short_of(arena, report);
       }
+      if (!carve_intersections(topo, params, &arena, &crossing_grid, &r))
+        return *report = r, short_of(arena, report);
       if (sink.begin != nullptr)
         sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);
       r.used_qi = true;
       s = emit_qi_pieces(topo, front, cutset, inc, state, QiSink{&qi_piece, &adapter});
+      if (s == Status::kOk) s = intersections(front);
       if (s == Status::kOk && params.outline)
         s = find_outlines(topo, front, cutset, inc, state, outline_mem, r.bytes_outline,
                           OutlineSink{&outline_piece, &adapter}, &r.outline);
@@ -198,11 +229,13 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
   fp.outline = params.outline;
   r.bytes_fallback = fallback_bytes(topo) + (fp.outline ? fallback_outline_bytes(topo, cutset) : 0);
   uint8_t* fb_mem = arena.take(r.bytes_fallback);
-  if (fb_mem == nullptr) return *report = r, short_of(arena, report);
+  if (fb_mem == nullptr || !carve_intersections(topo, params, &arena, &crossing_grid, &r))
+    return *report = r, short_of(arena, report);
   if (sink.begin != nullptr)
     sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);
   s = run_fallback(topo, front, cutset, inc, fp, fb_mem, r.bytes_fallback,
                    FallbackSink{&fallback_piece, &adapter, &fallback_outline}, &r.fallback);
+  if (s == Status::kOk) s = intersections(fp.any_facing ? nullptr : front);
   r.bytes_used = arena.high;
   *report = r;
   return s;

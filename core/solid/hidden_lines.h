@@ -17,6 +17,7 @@
 #include "cut/cut.h"
 #include "solid/classify.h"
 #include "solid/fallback.h"
+#include "solid/intersection_lines.h"
 #include "solid/outline.h"
 #include "solid/qi.h"
 #include "status/status.h"
@@ -39,6 +40,9 @@ struct HiddenParams {
   HiddenMethod method = HiddenMethod::kAuto;
   bool outline = false;  // Kira's outlines (traced from the QI; asked part by part otherwise)
   bool kira = true;      // the fallback's V.C. table and class shortcuts, on manifold meshes
+  // Intersection lines where faces cross (solid/intersection_lines.h), after the edges' pieces
+  // and before the outlines. Not in a band (its faces are local; the band conductor says so).
+  bool intersections = false;
   CutParams cut;
   uint32_t crossing_capacity = 0;   // CUTSET records (CUT says the count if short)
   uint32_t incidence_capacity = 0;  // vertex-on-edge incidences
@@ -58,6 +62,7 @@ struct HiddenReport {
   QiStats qi;
   FallbackStats fallback;
   OutlineStats outline;
+  IntersectionStats intersections;
   uint32_t incidences = 0, incidences_needed = 0, coincident_vertices = 0;
   uint32_t n_drawn = 0, n_edges = 0;
   bool used_qi = false;
@@ -66,20 +71,22 @@ struct HiddenReport {
   bool projected_facing = false;
   FallbackReason reason = FallbackReason::kNone;
   size_t bytes_topology = 0, bytes_cut = 0, bytes_incidence = 0, bytes_qi = 0, bytes_fallback = 0,
-         bytes_outline = 0;
+         bytes_outline = 0, bytes_intersections = 0;
   size_t bytes_used = 0;    // the buffer's high-water mark
   size_t bytes_needed = 0;  // on kWorkspaceTooSmall: at least this many
 };
 
-// A piece of a drawn edge (edge < n_drawn) or of a contour diagonal (edge >= n_drawn), with
-// the edge's projection for rounding; q in halves or kQiUnknown (class or V.C. decided).
+// A piece of a drawn edge (edge < n_drawn), of a contour diagonal (edge >= n_drawn), or of an
+// intersection line (face[0] != kNoFace; edge = the run's edge count + the segment's index),
+// with its projection for rounding; q in halves or kQiUnknown (class or V.C. decided).
 struct HiddenPiece {
   uint32_t edge;
-  const Edge3* geometry;
+  const Edge3* geometry;  // valid during the call only
   int64_t t0, t1;
   int32_t q;
   bool hidden;
   bool tested;  // false: too short for a test point (solid/fallback.h); a band merges it
+  uint32_t face[2] = {kNoFace, kNoFace};  // an intersection line's two faces
 };
 
 struct HiddenSink {

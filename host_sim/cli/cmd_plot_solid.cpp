@@ -55,6 +55,12 @@ void print_solid_stats(const SolidRun& r, const TriangulateStats& tri) {
                  (unsigned long long)f.face_tests, (unsigned long long)f.vc_saved,
                  (unsigned long long)f.class_saved, f.peculiar_a, f.peculiar_b,
                  (unsigned long long)f.pierces, (unsigned long long)f.pierce_tests);
+  const IntersectionStats& x = r.intersection_stats;
+  std::fprintf(stderr,
+               "intersection_pairs=%llu\nintersection_segments=%llu\nintersection_pieces=%llu\n"
+               "intersection_tests=%llu\n",
+               (unsigned long long)x.pairs, (unsigned long long)x.segments,
+               (unsigned long long)x.pieces, (unsigned long long)x.tests);
   if (o.contour_edges > 0)
     std::fprintf(stderr,
                  "outline_contour_segments=%u\noutline_circuits=%u\noutline_potential=%u\n"
@@ -63,9 +69,9 @@ void print_solid_stats(const SolidRun& r, const TriangulateStats& tri) {
                  o.one_by_one);
   std::fprintf(stderr,
                "bytes_topology=%zu\nbytes_incidence=%zu\nbytes_cut=%zu\nbytes_qi=%zu\n"
-               "bytes_fallback=%zu\nbytes_outline=%zu\nhidden_ms=%.3f\n",
+               "bytes_fallback=%zu\nbytes_outline=%zu\nbytes_intersections=%zu\nhidden_ms=%.3f\n",
                r.bytes_topology, r.bytes_incidence, r.bytes_cut, r.bytes_qi, r.bytes_fallback,
-               r.bytes_outline, r.ms_total);
+               r.bytes_outline, r.bytes_intersections, r.ms_total);
 }
 
 }  // namespace

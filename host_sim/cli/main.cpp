@@ -52,6 +52,7 @@ const char* kUsage =
     "               [--substep S]   (for .obj; --up: the file's up axis, default y as most\n"
     "               OBJ files; --substep: decide in units of 2^-S steps)\n"
     "  haloplot plot MODEL.obj --mode all|hidden-removed|hidden-dashed -o OUT.svg [--outline]\n"
+    "               [--no-intersections]   (the lines where faces cross are drawn by default)\n"
     "               [--dash LEN,GAP (mm)] [--steps-per-mm N] [--method auto|qi|fallback]\n"
     "               [--hatch SPACING[,ANGLE[,TURN]]] [--spans OUT.spans] [--view AZ,EL]\n"
     "               [--perspective D] [--substep S] [--stats]\n"
@@ -413,13 +414,15 @@ int cmd_plot(int argc, char** argv) {
   valued.insert({"--halo", "--spans", "--cut", "--mode", "--dash", "--steps-per-mm", "--method",
                  "--hatch", "--arena"});
   valued.insert(std::begin(kSceneOptions), std::end(kSceneOptions));
-  const Options o = parse_options(argc, argv, 2, valued, {"--exact-halo", "--stats", "--outline"});
+  const Options o = parse_options(argc, argv, 2, valued,
+                                  {"--exact-halo", "--stats", "--outline", "--no-intersections"});
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "plot");
   if (o.get("--mode", "haloed") != "haloed") return cmd_plot_solid(o);
-  if (o.has("--outline"))
-    return fail(
-        "--outline needs the faces: use it with --mode all, hidden-removed or hidden-dashed");
+  for (const char* solid_flag : {"--outline", "--no-intersections"})
+    if (o.has(solid_flag))
+      return fail(std::string(solid_flag) +
+                  " needs the faces: use it with --mode all, hidden-removed or hidden-dashed");
   for (const char* solid_only : {"--hatch", "--dash", "--method"})
     if (!o.get(solid_only).empty())
       return fail(std::string(solid_only) +

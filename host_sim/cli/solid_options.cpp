@@ -55,6 +55,7 @@ bool parse_solid_options(const Options& o, SolidOptions* out, std::string* error
     return false;
   }
   so.spec.outline = o.has("--outline");
+  so.spec.intersections = !o.has("--no-intersections");
   if (!o.get("--hatch").empty()) {
     // SPACING in mm, then the angle and the turn across the depth range in whole degrees.
     std::vector<std::string> f;
@@ -84,7 +85,7 @@ bool parse_solid_options(const Options& o, SolidOptions* out, std::string* error
 Status run_solid_options(const SolidScene& scene, const SolidOptions& so, SolidRun* run) {
   FallbackParams kira;
   kira.use_classes = kira.use_vc = true;
-  return run_hidden_lines(scene, so.method, kira, run, so.spec.outline);
+  return run_hidden_lines(scene, so.method, kira, run, so.spec.outline, so.spec.intersections);
 }
 
 }  // namespace haloplot::host

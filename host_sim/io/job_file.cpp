@@ -25,6 +25,7 @@ const std::map<std::string, std::string> kKeys = {
     {"method", "auto | qi | fallback"},
     {"dash", "DASH GAP (mm)"},
     {"outline", "on | off"},
+    {"intersections", "on | off"},
     {"halo", "W (steps)"},
     {"halo-mode", "paper | exact"},
     {"effects", "acceleration pen-servo backlash | none"},
@@ -163,6 +164,8 @@ InputError read_job_file(const std::string& path, JobFile* out) {
         return bad(error);
     } else if (key == "outline" && f.size() == 2 && (f[1] == "on" || f[1] == "off")) {
       out->outline = f[1] == "on";
+    } else if (key == "intersections" && f.size() == 2 && (f[1] == "on" || f[1] == "off")) {
+      out->intersections = f[1] == "on";
     } else if (key == "halo") {
       if (!number(0, 1048575, &v32)) return bad("halo needs a width in [0, 1048575] steps");
       j.draw.halo = int32_t(v32);

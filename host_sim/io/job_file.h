@@ -7,6 +7,8 @@
 //   perspective 1500000       for an .obj scene: eye distance (default orthographic)
 //   dash 2 1                  hidden-dashed: dash and gap in mm
 //   outline on                hidden-line modes: redraw Kira's outlines in a second pass
+//   intersections off         hidden-line modes: leave out the lines where faces cross (on
+//                             by default)
 //   method auto               hidden-line method: auto | qi | fallback
 //   hatch 1.5 45 90           hidden-line modes: hatch the visible faces, spacing in mm, angle
 //                             and the turn across the depth range in degrees
@@ -41,6 +43,7 @@ struct JobFile {
   // simulator hands them to the same parser.
   std::map<std::string, std::string> solid_options;
   bool outline = false;
+  bool intersections = true;
   uint32_t arena = 0;  // bytes; 0: the whole scene in one job buffer
 };
 

@@ -32,6 +32,8 @@ ModeDrawing make_mode_drawing(const SolidRun& run, const ModeSpec& spec) {
   };
   for (const SolidPiece& p : run.pieces) add(p, false);
   for (const SolidPiece& p : run.contour_diagonals) add(p, true);
+  // Intersection lines as the core's job draws them: visible parts only, like a contour diagonal.
+  for (const SolidPiece& p : run.intersections) add(p, true);
   if (spec.outline)
     for (const OutlineSegment& o : run.outline)
       d.outline.push_back(make_stroke(run.edges[o.edge], o.edge, o.t0, o.t1));

@@ -17,6 +17,7 @@ struct ModeSpec {
   SolidMode mode = SolidMode::kHiddenRemoved;
   int32_t dash_steps = 160, gap_steps = 80;  // 2 mm and 1 mm at 80 steps/mm
   bool outline = false;
+  bool intersections = true;  // the visible parts of the lines where faces cross
 };
 
 struct ModeDrawing {

@@ -243,6 +243,7 @@ Options job_options(const JobFile& jf) {
   o.values = jf.solid_options;
   o.values["--steps-per-mm"] = std::to_string(jf.style.steps_per_mm);
   if (jf.outline) o.flags.insert("--outline");
+  if (!jf.intersections) o.flags.insert("--no-intersections");
   return o;
 }
 
@@ -261,7 +262,8 @@ HiddenJob hidden_job(const SolidOptions& so) {
                    so.hatch,
                    so.hatch_params.spacing,
                    so.hatch_params.angle_mdeg,
-                   so.hatch_params.mdeg_per_depth};
+                   so.hatch_params.mdeg_per_depth,
+                   so.spec.intersections};
 }
 
 bool load_solid_job_scene(const JobFile& jf, SolidScene* scene, HiddenJob* hidden,

@@ -19,6 +19,11 @@ struct Collect {
 Status collect_piece(void* context, const HiddenPiece& p) {
   Collect* c = static_cast<Collect*>(context);
   c->keep(p);
+  if (p.face[0] != kNoFace) {
+    c->run->intersections.push_back(SolidPiece{p.edge, p.t0, p.t1, p.q, p.hidden});
+    c->run->intersection_faces.push_back({p.face[0], p.face[1]});
+    return Status::kOk;
+  }
   (p.edge < c->run->n_drawn ? c->run->pieces : c->run->contour_diagonals)
       .push_back(SolidPiece{p.edge, p.t0, p.t1, p.q, p.hidden});
   return Status::kOk;
@@ -87,13 +92,14 @@ SolidInput solid_input(const SolidScene& scene) {
 }
 
 Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackParams kira,
-                        SolidRun* out, bool outlines) {
+                        SolidRun* out, bool outlines, bool intersections) {
   const auto t0 = std::chrono::steady_clock::now();
   *out = SolidRun{};
   const SolidInput in = solid_input(scene);
   HiddenParams params;
   params.method = method;
   params.outline = outlines;
+  params.intersections = intersections;
   params.kira = kira.use_classes || kira.use_vc;
   // First guesses; the core says what a short run needs (never a wrong or partial answer).
   StageNeeds needs;
@@ -107,6 +113,8 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
     out->pieces.clear();
     out->contour_diagonals.clear();
     out->outline.clear();
+    out->intersections.clear();
+    out->intersection_faces.clear();
     out->n_drawn = in.n_edges;
   });
   HostMemory memory;
@@ -117,6 +125,7 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
   out->qi = r.qi;
   out->fallback = r.fallback;
   out->outline_stats = r.outline;
+  out->intersection_stats = r.intersections;
   out->incidences = r.incidences;
   out->coincident_vertices = r.coincident_vertices;
   out->used_qi = r.used_qi;
@@ -127,6 +136,7 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
   out->bytes_qi = r.bytes_qi;
   out->bytes_fallback = r.bytes_fallback;
   out->bytes_outline = r.bytes_outline;
+  out->bytes_intersections = r.bytes_intersections;
   // Every drawn edge's geometry, also for edges that gave no piece (seen end-on).
   if (out->edges.size() < in.n_edges) out->edges.resize(in.n_edges);
   for (uint32_t e = 0; e < in.n_edges; ++e)

@@ -2,6 +2,7 @@
 // CUT over every edge, incidences, then QI propagation or the topology-free fallback), each
 // in a buffer sized by the core's own query, and the pieces of every drawn edge with its QI.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -45,10 +46,15 @@ struct SolidRun {
   QiStats qi;
   FallbackStats fallback;
   uint32_t incidences = 0, coincident_vertices = 0;
-  size_t bytes_topology = 0, bytes_incidence = 0, bytes_qi = 0, bytes_fallback = 0, bytes_cut = 0;
+  size_t bytes_topology = 0, bytes_incidence = 0, bytes_qi = 0, bytes_fallback = 0, bytes_cut = 0,
+         bytes_intersections = 0;
   double ms_total = 0;
   std::vector<SolidPiece> pieces;             // drawn edges
   std::vector<SolidPiece> contour_diagonals;  // H3 diagonals (QI only): edge >= drawn count
+  // Intersection lines (when asked): edge >= every edge's count; the two faces of each piece.
+  std::vector<SolidPiece> intersections;
+  std::vector<std::array<uint32_t, 2>> intersection_faces;
+  IntersectionStats intersection_stats;
   std::vector<Edge3> edges;  // every edge as projected (drawn first, then diagonals)
   uint32_t n_drawn = 0;
   // Kira's outlines (QI method only, when asked).
@@ -64,6 +70,6 @@ bool model_closed(const SolidScene& scene);
 // kAuto: QI on a closed oriented manifold, the fallback otherwise. `kira` chooses the
 // fallback's shortcuts (classes, V.C.); they are only used on manifold meshes.
 Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackParams kira,
-                        SolidRun* out, bool outlines = false);
+                        SolidRun* out, bool outlines = false, bool intersections = false);
 
 }  // namespace haloplot::host

@@ -115,6 +115,16 @@ class Scene {
 
   // Is the point p (view space) hidden by a face other than those holding vertices a and b?
   bool hidden(const V3& p, uint32_t a, uint32_t b) const {
+    return hidden_but(p, [&](uint32_t, const haloplot::Triangle& t) {
+      const bool has_a = t.v[0] == a || t.v[1] == a || t.v[2] == a;
+      const bool has_b = t.v[0] == b || t.v[1] == b || t.v[2] == b;
+      return has_a && has_b;
+    });
+  }
+
+  // Is p hidden by a face that own(index, triangle) does not claim?
+  template <typename Own>
+  bool hidden_but(const V3& p, Own own) const {
     LD x, y;
     cam_.screen(p, &x, &y);
     const int64_t cx = cell_x(x), cy = cell_y(y);
@@ -122,9 +132,7 @@ class Scene {
     const size_t c = size_t(cy * gx_ + cx);
     for (size_t k = start_[c]; k < start_[c + 1]; ++k) {
       const haloplot::Triangle& t = tris_[items_[k]];
-      const bool has_a = t.v[0] == a || t.v[1] == a || t.v[2] == a;
-      const bool has_b = t.v[0] == b || t.v[1] == b || t.v[2] == b;
-      if (has_a && has_b) continue;
+      if (own(items_[k], t)) continue;
       if (blocks(t, p)) return true;
     }
     return false;
@@ -136,8 +144,25 @@ class Scene {
   // ray grazes and the answer flickers).
   LD visible_length(uint32_t a, uint32_t b, LD* length = nullptr,
                     int64_t* changes = nullptr) const {
-    const V3 A = vp_[a], B = vp_[b];
-    const LD L = std::hypot(sx_[b] - sx_[a], sy_[b] - sy_[a]);
+    return segment_visible_length(
+        vp_[a], vp_[b],
+        [&](uint32_t, const haloplot::Triangle& t) {
+          const bool has_a = t.v[0] == a || t.v[1] == a || t.v[2] == a;
+          const bool has_b = t.v[0] == b || t.v[1] == b || t.v[2] == b;
+          return has_a && has_b;
+        },
+        length, changes);
+  }
+
+  // The same for any segment A B of view space (an intersection line), faces own() claims
+  // left out.
+  template <typename Own>
+  LD segment_visible_length(const V3& A, const V3& B, Own own, LD* length = nullptr,
+                            int64_t* changes = nullptr) const {
+    LD ax, ay, bx, by;
+    cam_.screen(A, &ax, &ay);
+    cam_.screen(B, &bx, &by);
+    const LD L = std::hypot(bx - ax, by - ay);
     if (length) *length = L;
     // Screen parameter s to the world point: under perspective the homogeneous weights
     // h = D - d make s = u hB / ((1 - u) hA + u hB), so u = s hA / (s hA + (1 - s) hB).
@@ -146,7 +171,7 @@ class Scene {
       const LD u = s * hA / (s * hA + (1 - s) * hB);
       return V3{A.x + u * (B.x - A.x), A.y + u * (B.y - A.y), A.d + u * (B.d - A.d)};
     };
-    auto visible = [&](LD s) { return !hidden(at(s), a, b); };
+    auto visible = [&](LD s) { return !hidden_but(at(s), own); };
     // Samples at the middles of n equal parts; the ends take the visibility of the nearest.
     const int64_t n = std::max<int64_t>(4, int64_t(std::ceil(L / 0.5)));
     auto sample = [&](int64_t i) { return (LD(i) + 0.5) / LD(n); };
@@ -171,6 +196,7 @@ class Scene {
   }
 
   const V3& vertex(uint32_t i) const { return vp_[i]; }
+  const Camera& camera() const { return cam_; }
   // Vertex i on the exact screen, in steps.
   void screen_of(uint32_t i, LD* x, LD* y) const { *x = sx_[i], *y = sy_[i]; }
 
