@@ -33,9 +33,7 @@ Point3 turn(const Point3& p, int axis) {
 }
 
 int plane_side(const Normal& n, const Point3& on, const Point3& p) {
-  const Wide g = mul_i64(n.x, int64_t{p.x} - on.x) + mul_i64(n.y, int64_t{p.y} - on.y) +
-                 mul_i64(n.z, int64_t{p.z} - on.z);
-  return g.negative() ? -1 : (g.is_zero() ? 0 : 1);
+  return haloplot::plane_side(n.x, n.y, n.z, on, p);
 }
 
 // A point of t's plane inside t or on a side, read along `axis` (2-D crosses: below 2^43).

@@ -74,13 +74,15 @@ Status intersection_piece(void* ctx, const IntersectionPiece& p) {
                                                     {p.face[0], p.face[1]}});
 }
 
-// The intersection pass's face grid, carved before the sink is given the tail.
-bool carve_intersections(const Topology& topo, const HiddenParams& params, Arena* arena,
-                         FaceGrid* fg, HiddenReport* r) {
+// The intersection pass's face grid, carved before the sink is given the tail: the front faces
+// alone when the solids are closed (`front`), every face otherwise.
+bool carve_intersections(const Topology& topo, const uint8_t* front, const HiddenParams& params,
+                         Arena* arena, FaceGrid* fg, HiddenReport* r) {
   if (!params.intersections || params.band) return true;
-  r->bytes_intersections = face_grid_bytes(topo);
+  r->bytes_intersections = face_grid_bytes(topo, front);
   uint8_t* mem = arena->take(r->bytes_intersections);
-  return mem != nullptr && build_face_grid(topo, mem, r->bytes_intersections, fg) == Status::kOk;
+  return mem != nullptr &&
+         build_face_grid(topo, mem, r->bytes_intersections, fg, front) == Status::kOk;
 }
 
 Status short_of(const Arena& a, HiddenReport* r) {
@@ -200,7 +202,7 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
         outline_mem = arena.take(r.bytes_outline);
         if (outline_mem == nullptr) return *report = r, short_of(arena, report);
       }
-      if (!carve_intersections(topo, params, &arena, &crossing_grid, &r))
+      if (!carve_intersections(topo, front, params, &arena, &crossing_grid, &r))
         return *report = r, short_of(arena, report);
       if (sink.begin != nullptr)
         sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);
@@ -229,7 +231,8 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
   fp.outline = params.outline;
   r.bytes_fallback = fallback_bytes(topo) + (fp.outline ? fallback_outline_bytes(topo, cutset) : 0);
   uint8_t* fb_mem = arena.take(r.bytes_fallback);
-  if (fb_mem == nullptr || !carve_intersections(topo, params, &arena, &crossing_grid, &r))
+  if (fb_mem == nullptr || !carve_intersections(topo, fp.any_facing ? nullptr : front, params,
+                                                &arena, &crossing_grid, &r))
     return *report = r, short_of(arena, report);
   if (sink.begin != nullptr)
     sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);

@@ -44,15 +44,24 @@ struct SegmentPass {
     return k != own[0] && k != own[1] && (front == nullptr || front[k] != 0);
   }
 
-  // The first position after `after` where the segment crosses a face's side on paper, meets
-  // a face's corner on paper, or passes through a face; kOne when there is none.
-  int64_t next_cut(int64_t after) const {
+  // The first kBatch distinct positions after `after`, ascending, where the segment crosses a
+  // face's side on paper, meets a face's corner on paper, or passes through a face. Fewer than
+  // kBatch: there are no more. One look along the segment's cells finds a batch, so a segment
+  // with few cuts costs one.
+  static constexpr int kBatch = 16;
+  int next_cuts(int64_t after, int64_t cuts[kBatch]) const {
     const Box sb = box_of(s.a, s.b, s.b);
     const int64_t ex = int64_t{s.b.x} - s.a.x, ey = int64_t{s.b.y} - s.a.y;
     const int64_t len2 = ex * ex + ey * ey;  // below 2^41: coordinates below 2^20
-    int64_t best = kOne;
+    int n = 0;
     auto consider = [&](int64_t t) {
-      if (t > after && t < best) best = t;
+      if (t <= after || t >= kOne || (n == kBatch && t >= cuts[n - 1])) return;
+      int k = n;  // insert in order, once
+      while (k > 0 && cuts[k - 1] > t) --k;
+      if (k > 0 && cuts[k - 1] == t) return;
+      if (n < kBatch) ++n;
+      for (int m = n - 1; m > k; --m) cuts[m] = cuts[m - 1];
+      cuts[k] = t;
     };
     for_each_cell(fg.grid, s, CellCover::kExact, 0, [&](uint32_t c) {
       for (const uint32_t* k = fg.faces + fg.first[c]; k != fg.faces + fg.first[c + 1]; ++k) {
@@ -71,7 +80,7 @@ struct SegmentPass {
         if (fb.z1 >= sb.z0 && fb.z0 <= sb.z1) consider(pierce_q32(s.a, s.b, p[0], p[1], p[2]));
       }
     });
-    return best;
+    return n;
   }
 
   // Halves of cover at position m, by every face of its cell but the segment's own.
@@ -98,27 +107,36 @@ struct SegmentPass {
     IntersectionPiece pending{index, {own[0], own[1]}, &s, 0, 0, 0, false};
     bool have = false;
     int32_t q = 0;
-    for (int64_t at = 0; at < kOne;) {
-      const int64_t t = next_cut(at);
+    auto piece = [&](int64_t t0, int64_t t1) {
       // A piece too short for a point strictly inside keeps the q before it (solid/fallback.h).
-      if (t - at >= 2) q = cover_at(at + (t - at) / 2);
+      if (t1 - t0 >= 2) q = cover_at(t0 + (t1 - t0) / 2);
       ++st->pieces;
       if (have && pending.q == q) {
-        pending.t1 = t;
-      } else {
-        if (have) {
-          const Status r = sink.emit(sink.context, pending);
-          if (r != Status::kOk) return r;
-        }
-        pending.t0 = at;
-        pending.t1 = t;
-        pending.q = q;
-        pending.hidden = q != 0;
-        have = true;
+        pending.t1 = t1;
+        return Status::kOk;
       }
-      at = t;
+      const Status r = have ? sink.emit(sink.context, pending) : Status::kOk;
+      pending.t0 = t0;
+      pending.t1 = t1;
+      pending.q = q;
+      pending.hidden = q != 0;
+      have = true;
+      return r;
+    };
+    int64_t at = 0;
+    for (;;) {
+      int64_t cuts[kBatch];
+      const int n = next_cuts(at, cuts);
+      for (int k = 0; k < n; ++k) {
+        const Status r = piece(at, cuts[k]);
+        if (r != Status::kOk) return r;
+        at = cuts[k];
+      }
+      if (n < kBatch) break;
     }
-    return have ? sink.emit(sink.context, pending) : Status::kOk;
+    const Status r = piece(at, kOne);
+    if (r != Status::kOk) return r;
+    return sink.emit(sink.context, pending);
   }
 };
 
@@ -129,24 +147,33 @@ Status draw_intersections(const Topology& topo, const uint8_t* front, const Face
   IntersectionStats st;
   uint32_t index = 0;
   const Grid& g = fg.grid;
+  auto box = [&](uint32_t t) {
+    const uint32_t* v = topo.triangles[t].v;
+    return box_of(topo.vertices[v[0]], topo.vertices[v[1]], topo.vertices[v[2]]);
+  };
   for (uint32_t c = 0; c < g.cells(); ++c) {
     const uint32_t* first = fg.faces + fg.first[c];
     const uint32_t* last = fg.faces + fg.first[c + 1];
+    // The boxes of the cell's first kCached faces, each found once instead of once a pair.
+    constexpr uint32_t kCached = 24;
+    Box cached[kCached];
+    const uint32_t k = uint32_t(last - first);
+    for (uint32_t m = 0; m < k && m < kCached; ++m) cached[m] = box(first[m]);
     for (const uint32_t* i = first; i != last; ++i) {
       if (front != nullptr && !front[*i]) continue;
       const Triangle& ti = topo.triangles[*i];
       const Point3 p[3] = {topo.vertices[ti.v[0]], topo.vertices[ti.v[1]], topo.vertices[ti.v[2]]};
-      const Box bi = box_of(p[0], p[1], p[2]);
+      const Box bi = uint32_t(i - first) < kCached ? cached[i - first] : box(*i);
       for (const uint32_t* j = i + 1; j != last; ++j) {
         if (front != nullptr && !front[*j]) continue;
-        const Triangle& tj = topo.triangles[*j];
-        const Point3 q[3] = {topo.vertices[tj.v[0]], topo.vertices[tj.v[1]],
-                             topo.vertices[tj.v[2]]};
-        const Box bj = box_of(q[0], q[1], q[2]);
+        const Box bj = uint32_t(j - first) < kCached ? cached[j - first] : box(*j);
         if (!overlap_on_paper(bi, bj) || bi.z1 < bj.z0 || bj.z1 < bi.z0) continue;
         // Each pair once: in the cell of the boxes' common lower-left corner.
         if (g.cell_of(max_i32(bi.x0, bj.x0), max_i32(bi.y0, bj.y0)) != c) continue;
+        const Triangle& tj = topo.triangles[*j];
         if (shares_corner(ti, tj)) continue;
+        const Point3 q[3] = {topo.vertices[tj.v[0]], topo.vertices[tj.v[1]],
+                             topo.vertices[tj.v[2]]};
         ++st.pairs;
         SegmentPass pass{topo, front, fg, &st, Edge3{}, {*i, *j}};
         if (!face_crossing(p, q, &pass.s)) continue;

@@ -41,7 +41,8 @@ struct IntersectionStats {
 };
 
 // Every crossing of topo's faces in the grid, piece by piece. `front`: each triangle's facing
-// when the faces make closed solids (only front faces hide); null: both sides of every face.
+// when the faces make closed solids (only front faces hide; the grid may hold those alone);
+// null: both sides of every face.
 Status draw_intersections(const Topology& topo, const uint8_t* front, const FaceGrid& fg,
                           IntersectionSink sink, IntersectionStats* stats);
 

@@ -17,6 +17,11 @@ constexpr int kInsideBits = kDenBits + kCrossBits + 1;
 static_assert(kNormalBits <= 62, "a normal component fits int64 (mul_i64 takes it)");
 static_assert(kInsideBits <= 126, "D * o(a) + N * k fits a signed Wide");
 static_assert(kDenBits + 1 <= 126, "the long division doubles a remainder below D");
+// plane_side's estimate: n / 8 (floor) times a difference, three terms, fits int64; the
+// remainders (below 8 each) leave an error below 3 * 8 * 2^21 in 8 * estimate.
+constexpr int kEstimateBits = (kNormalBits - 3) + kDiffBits + 2;
+static_assert(kEstimateBits <= 63, "plane_side's estimate fits int64");
+constexpr int64_t kDecided = int64_t{3} << kDiffBits;  // |estimate| >= this: its sign is g's
 
 int sign(Wide w) { return w.negative() ? -1 : (w.is_zero() ? 0 : 1); }
 Wide abs_wide(Wide w) { return w.negative() ? -w : w; }
@@ -49,6 +54,14 @@ int64_t fraction_q32(Wide n, Wide d) {
 
 }  // namespace
 
+int plane_side(int64_t nx, int64_t ny, int64_t nz, const Point3& on, const Point3& p) {
+  const int64_t dx = int64_t{p.x} - on.x, dy = int64_t{p.y} - on.y, dz = int64_t{p.z} - on.z;
+  const int64_t estimate = (nx >> 3) * dx + (ny >> 3) * dy + (nz >> 3) * dz;
+  if (estimate >= kDecided) return 1;
+  if (estimate <= -kDecided) return -1;
+  return sign(mul_i64(nx, dx) + mul_i64(ny, dy) + mul_i64(nz, dz));
+}
+
 int64_t pierce_q32(const Point3& a, const Point3& b, const Point3& A, const Point3& B,
                    const Point3& C) {
   const int64_t ux = int64_t{B.x} - A.x, uy = int64_t{B.y} - A.y, uz = int64_t{B.z} - A.z;
@@ -56,6 +69,9 @@ int64_t pierce_q32(const Point3& a, const Point3& b, const Point3& A, const Poin
   const int64_t nz = ux * vy - uy * vx;
   if (nz == 0) return -1;  // edge-on: it covers nothing, it hides nothing
   const int64_t nx = uy * vz - uz * vy, ny = uz * vx - ux * vz;
+  // Most segments do not reach the plane: both ends on one side, decided by the estimate.
+  const int side_a = plane_side(nx, ny, nz, A, a);
+  if (side_a == 0 || side_a == plane_side(nx, ny, nz, A, b)) return -1;
   auto g = [&](const Point3& p) {
     return mul_i64(nx, int64_t{p.x} - A.x) + mul_i64(ny, int64_t{p.y} - A.y) +
            mul_i64(nz, int64_t{p.z} - A.z);

@@ -27,6 +27,11 @@ namespace haloplot {
 
 inline constexpr int64_t kNoPierce = int64_t{1} << 40;  // beyond every Q0.32 position
 
+// The sign of n . (p - on) (-1, 0, +1), n a plane normal of two 21-bit differences' cross
+// products (components below 2^43). Exact: a 64-bit estimate with n / 8 decides it when it is
+// far from zero (almost always), the 128-bit sum otherwise.
+int plane_side(int64_t nx, int64_t ny, int64_t nz, const Point3& on, const Point3& p);
+
 // floor(2^32 t) where the segment a -> b passes through the inside (or a side) of triangle
 // (A, B, C), strictly between its ends; -1 when it does not. Edge-on triangles: -1.
 int64_t pierce_q32(const Point3& a, const Point3& b, const Point3& A, const Point3& B,

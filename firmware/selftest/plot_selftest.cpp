@@ -65,9 +65,11 @@ struct PieceCount {
   }
 };
 
-// The cubes projected in units of 2^-s steps, and their hidden-line run's instruction count.
+// The cubes projected in units of 2^-s steps, and their hidden-line run's instruction count
+// (with the intersection lines a job draws by default when `intersections`).
 uint64_t hidden_lines_run(const Point3* world, uint32_t nv, Point3* screen, int32_t substep_bits,
-                          const SolidInput& in, PieceCount* count, HiddenReport* report) {
+                          const SolidInput& in, PieceCount* count, HiddenReport* report,
+                          bool intersections = false) {
   View view;
   view.substep_bits = substep_bits;
   const Status ps = project_points(view, world, nv, screen);
@@ -76,6 +78,7 @@ uint64_t hidden_lines_run(const Point3* world, uint32_t nv, Point3* screen, int3
   hp.crossing_capacity = 600;
   hp.incidence_capacity = 64;
   hp.outline = true;
+  hp.intersections = intersections;
   const uint64_t a = counter_ticks();
   const Status hs = hidden_lines(in, hp, job_buffer, sizeof job_buffer,
                                  HiddenSink{nullptr, &PieceCount::piece, nullptr, count}, report);
@@ -138,6 +141,12 @@ void hidden_lines_on_chip() {
   stat("solid_used_qi", report.used_qi ? 1 : 0);
   stat("solid_bytes_used", report.bytes_used);
   stat("hidden_lines_instructions", instructions);
+  PieceCount with_lines;
+  HiddenReport lines_report;
+  stat("hidden_lines_instructions_with_intersections",
+       hidden_lines_run(world, nv, screen, kDefaultSubstepBits, in, &with_lines, &lines_report,
+                        true));
+  stat("solid_intersection_pairs", lines_report.intersections.pairs);
 
   // Franklin's hidden surfaces and the hatching of the same cubes (3 mm at 80 steps/mm, 45
   // degrees turning 90 across the depth range): the host test counts `haloplot plot --hatch`'s

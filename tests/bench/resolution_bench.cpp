@@ -32,7 +32,15 @@ using namespace haloplot::host;
 
 namespace {
 
-const int kResolutions[] = {0, 2, 3, 4, 5};
+// The resolutions, and last whole steps and the default once more with the intersection lines
+// a job draws by default (solid/intersection_lines.h): the resolution's cost with them, and
+// what they add.
+struct Variant {
+  int bits;
+  bool lines;
+};
+const Variant kVariants[] = {{0, false}, {2, false}, {3, false}, {4, false},
+                             {5, false}, {0, true},  {5, true}};
 
 struct Model {
   std::string name;
@@ -52,6 +60,7 @@ struct Truth {
 struct Cell {
   double ink_diff = 0, agree = 0, diagonals = 0, spurious = 0, ns_per_edge = 0, ms = 0;
   bool qi = false;
+  uint64_t segments = 0;  // intersection lines (faces that cross), when drawn
 };
 
 Truth cast(const Model& m) {
@@ -92,16 +101,17 @@ bool load(const Model& m, int s, SolidScene* scene) {
 // Every resolution's scene, timed in turn: five rounds over all of them, so a slow spell of the
 // machine falls on every resolution alike; the median of each.
 std::vector<double> time_resolutions(const Model& m) {
-  const size_t k = sizeof kResolutions / sizeof kResolutions[0];
+  const size_t k = sizeof kVariants / sizeof kVariants[0];
   std::vector<SolidScene> scenes(k);
   std::vector<std::vector<double>> ms(k);
   for (size_t i = 0; i < k; ++i)
-    if (!load(m, kResolutions[i], &scenes[i])) return std::vector<double>(k, 0.0);
+    if (!load(m, kVariants[i].bits, &scenes[i])) return std::vector<double>(k, 0.0);
   for (int round = 0; round < 5; ++round)
     for (size_t i = 0; i < k; ++i) {
       SolidRun run;
       const double t0 = bench::now_ms();
-      run_hidden_lines(scenes[i], HiddenMethod::kAuto, FallbackParams{}, &run);
+      run_hidden_lines(scenes[i], HiddenMethod::kAuto, FallbackParams{}, &run, false,
+                       kVariants[i].lines);
       ms[i].push_back(bench::now_ms() - t0);
     }
   std::vector<double> out;
@@ -109,14 +119,17 @@ std::vector<double> time_resolutions(const Model& m) {
   return out;
 }
 
-Cell measure(const Model& m, const Truth& t, int s, double ms) {
+Cell measure(const Model& m, const Truth& t, Variant variant, double ms) {
   Cell c;
   SolidScene scene;
-  if (!load(m, s, &scene)) return c;
+  if (!load(m, variant.bits, &scene)) return c;
   SolidRun run;
-  if (run_hidden_lines(scene, HiddenMethod::kAuto, FallbackParams{}, &run) != Status::kOk) return c;
+  if (run_hidden_lines(scene, HiddenMethod::kAuto, FallbackParams{}, &run, false, variant.lines) !=
+      Status::kOk)
+    return c;
   c.ms = ms;
   c.qi = run.used_qi;
+  c.segments = run.intersection_stats.segments;
   const size_t n = scene.edge_pairs.size() / 2;
   c.ns_per_edge = c.ms * 1e6 / double(n);
   std::vector<double> share(n, 0.0);
@@ -219,19 +232,27 @@ int main(int argc, char** argv) {
     const Truth truth = cast(m);
     std::fprintf(stderr, "%s: %zu edges, reference cast in %.1f s\n", m.name.c_str(),
                  truth.length.size(), (bench::now_ms() - t0) / 1000);
-    double whole_ms = 0;
+    double whole_ms[2] = {0, 0}, default_ms = 0;  // whole steps without and with the lines
     const std::vector<double> times = time_resolutions(m);
     for (size_t i = 0; i < times.size(); ++i) {
-      const int s = kResolutions[i];
-      const Cell c = measure(m, truth, s, times[i]);
-      if (s == 0) whole_ms = c.ms;
+      const int s = kVariants[i].bits;
+      const bool lines = kVariants[i].lines;
+      const Cell c = measure(m, truth, kVariants[i], times[i]);
+      if (s == 0) whole_ms[lines] = c.ms;
+      if (s == kDefaultSubstepBits && !lines) default_ms = c.ms;
+      char extra[160] = "";
+      if (lines && s == kDefaultSubstepBits && default_ms > 0)
+        std::snprintf(extra, sizeof extra, "; %.2f× the default without them", c.ms / default_ms);
+      const std::string label = std::to_string(s) + (s == kDefaultSubstepBits ? " (default)" : "") +
+                                (lines ? " + intersection lines (" + std::to_string(c.segments) +
+                                             " crossings" + extra + ")"
+                                       : "");
       char line[512];
-      std::snprintf(
-          line, sizeof line,
-          "| %s | %s | %d%s | %.2f %% | %.0f | %.0f (%.0f; %.0f) | %.1f | %.0f | %.2f× |\n",
-          m.name.c_str(), c.qi ? "QI" : "fallback", s, s == kDefaultSubstepBits ? " (default)" : "",
-          c.agree, c.ink_diff, c.diagonals, c.spurious, truth.model_contour_diagonals, c.ms,
-          c.ns_per_edge, whole_ms > 0 ? c.ms / whole_ms : 0.0);
+      std::snprintf(line, sizeof line,
+                    "| %s | %s | %s | %.2f %% | %.0f | %.0f (%.0f; %.0f) | %.1f | %.0f | %.2f× |\n",
+                    m.name.c_str(), c.qi ? "QI" : "fallback", label.c_str(), c.agree, c.ink_diff,
+                    c.diagonals, c.spurious, truth.model_contour_diagonals, c.ms, c.ns_per_edge,
+                    whole_ms[lines] > 0 ? c.ms / whole_ms[lines] : 0.0);
       body << line;
       std::fprintf(stderr, "%s", line);
     }

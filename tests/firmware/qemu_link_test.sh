@@ -55,6 +55,48 @@ box() {  # x0 x1 y0 y1 z0 z1 first-vertex: 8 vertices and 6 faces, counter-clock
 { box 0 2 0 2 0 -2 1; box 0.7 2.6 0.4 2.5 -0.6 -2.7 9; } > pierced.obj
 printf 'scene pierced.obj\ndrawing hidden-removed\nview 30,25\nkinematics corexy\n' > pierced.job
 "$tool" sim pierced.job -o host_pierced.trace
+# The lines where their faces cross are drawn (on by default): the trace is not the one
+# without them.
+{ cat pierced.job; echo "intersections off"; } > pierced_off.job
+"$tool" sim pierced_off.job -o host_pierced_off.trace
+if cmp -s host_pierced.trace host_pierced_off.trace; then
+  bad "the pierced boxes' trace has no intersection lines"
+else
+  ok
+fi
+# A sphere through a torus (10 x 5 and 6 x 5 facets), its intersection lines too.
+torus_sphere() {
+  awk 'BEGIN {
+    pi = 3.14159265358979; n = 0
+    R = 1.5; r = 0.5; nu = 10; nv = 5
+    for (i = 0; i < nu; i++) for (j = 0; j < nv; j++) {
+      u = 2 * pi * i / nu; v = 2 * pi * j / nv
+      printf "v %.6f %.6f %.6f\n", (R + r * cos(v)) * cos(u), r * sin(v), (R + r * cos(v)) * sin(u)
+    }
+    for (i = 0; i < nu; i++) for (j = 0; j < nv; j++) {
+      a = i * nv + j + 1; b = ((i + 1) % nu) * nv + j + 1
+      c = ((i + 1) % nu) * nv + (j + 1) % nv + 1; d = i * nv + (j + 1) % nv + 1
+      printf "f %d %d %d %d\n", a, d, c, b
+    }
+    base = nu * nv; cx = 1.5; cy = 0.1; cz = 0; s = 0.8; ns = 6; nt = 5
+    printf "v %.6f %.6f %.6f\n", cx, cy + s, cz
+    for (t = 1; t < nt; t++) for (k = 0; k < ns; k++) {
+      th = pi * t / nt; ph = 2 * pi * k / ns
+      printf "v %.6f %.6f %.6f\n", cx + s * sin(th) * cos(ph), cy + s * cos(th), cz + s * sin(th) * sin(ph)
+    }
+    printf "v %.6f %.6f %.6f\n", cx, cy - s, cz
+    top = base + 1; bot = base + 2 + (nt - 1) * ns
+    for (k = 0; k < ns; k++) printf "f %d %d %d\n", top, base + 2 + (k + 1) % ns, base + 2 + k
+    for (t = 0; t < nt - 2; t++) for (k = 0; k < ns; k++) {
+      a = base + 2 + t * ns + k; b = base + 2 + t * ns + (k + 1) % ns
+      printf "f %d %d %d %d\n", a, b, b + ns, a + ns
+    }
+    for (k = 0; k < ns; k++) printf "f %d %d %d\n", bot, base + 2 + (nt - 2) * ns + k, base + 2 + (nt - 2) * ns + (k + 1) % ns
+  }'
+}
+torus_sphere > torus_sphere.obj
+printf 'scene torus_sphere.obj\ndrawing hidden-removed\nview 30,25\nkinematics corexy\n' > torus_sphere.job
+"$tool" sim torus_sphere.job -o host_torus_sphere.trace
 "$tool" sim plot.job -o host_plot.trace
 "$tool" sim replot.job -o host_replot.trace
 # Streamed: 2 x 2 cubes in a 2 KB band arena take 8 bands.
@@ -98,6 +140,9 @@ if [ "$rc" -eq 0 ]; then ok; else bad "solid send failed ($rc): $(cat solid.out)
 "$tool" send pierced.job --port "$work/link.sock" > pierced.out 2>&1
 rc=$?
 if [ "$rc" -eq 0 ]; then ok; else bad "pierced send failed ($rc): $(cat pierced.out)"; fi
+"$tool" send torus_sphere.job --port "$work/link.sock" > torus_sphere.out 2>&1
+rc=$?
+if [ "$rc" -eq 0 ]; then ok; else bad "sphere-through-torus send failed ($rc): $(cat torus_sphere.out)"; fi
 # 4. A streamed plot, with damaged frames on the way.
 "$tool" send stream.job --port "$work/link.sock" --corrupt-every 7 --seed 3 > stream.out 2>&1
 rc=$?
@@ -123,12 +168,13 @@ end_session $?
 
 awk '/^haloplot-trace 2$/ { k++; on = 1 } on { print > ("fw_" k ".trace") } /^end / { on = 0 }' fw.out
 # Traces 1 and 2 are the stopped plots; 3 the aborted one resumed; 4 the solid; 5 the pierced
-# boxes; 6 the streamed one; 7 the paused one; 8 and 9 the plot and the re-plot.
-if "$pause_check" plot.job fw_7.trace; then ok; else bad "the paused plot's trace"; fi
+# boxes; 6 the sphere through a torus; 7 the streamed one; 8 the paused one; 9 and 10 the plot
+# and the re-plot.
+if "$pause_check" plot.job fw_8.trace; then ok; else bad "the paused plot's trace"; fi
 hold=$(sed -n 's/^fw hold_events=//p' fw.out)
 if [ -n "$hold" ]; then
   "$tool" sim plot.job -o host_pause.trace --pause-at "$hold"
-  if cmp -s fw_7.trace host_pause.trace; then
+  if cmp -s fw_8.trace host_pause.trace; then
     ok
     echo "paused trace identical to haloplot sim --pause-at $hold: $(wc -c < host_pause.trace) bytes"
   else
@@ -137,8 +183,8 @@ if [ -n "$hold" ]; then
 else
   echo "the hold's step count was not exact (a step came in between): compared by pause_check only"
 fi
-for pair in "3 host_resume" "4 host_solid" "5 host_pierced" "6 host_stream" "8 host_plot" \
-  "9 host_replot"; do
+for pair in "3 host_resume" "4 host_solid" "5 host_pierced" "6 host_torus_sphere" \
+  "7 host_stream" "9 host_plot" "10 host_replot"; do
   set -- $pair
   if [ -s "fw_$1.trace" ] && cmp -s "fw_$1.trace" "$2.trace"; then
     ok
