@@ -132,6 +132,19 @@ expect '[ $rc -ne 0 ] && grep -q "need faces" err.txt' "hidden lines from an .ed
 expect '[ $? -ne 0 ] && grep -q -- "--dash" err.txt' "a bad --dash is named"
 "$tool" plot good.obj --halo 40 --outline -o x.svg 2> err.txt
 expect '[ $? -ne 0 ] && grep -q -- "--outline needs the faces" err.txt' "--outline with haloed lines is refused"
+"$tool" plot good.obj --halo 40 --no-intersections -o x.svg 2> err.txt
+expect '[ $? -ne 0 ] && grep -q -- "--no-intersections needs the faces" err.txt' "--no-intersections with haloed lines is refused"
+# Two boxes through each other: the lines where their faces cross are drawn unless switched off.
+{ printf 'v 0 0 0\nv 2 0 0\nv 0 2 0\nv 2 2 0\nv 0 0 2\nv 2 0 2\nv 0 2 2\nv 2 2 2\n'
+  printf 'v 1 0.5 0.5\nv 3 0.5 0.5\nv 1 2.5 0.5\nv 3 2.5 0.5\nv 1 0.5 2.5\nv 3 0.5 2.5\nv 1 2.5 2.5\nv 3 2.5 2.5\n'
+  for b in 0 8; do
+    printf 'f %d %d %d %d\n' $((b + 1)) $((b + 3)) $((b + 4)) $((b + 2)) $((b + 5)) $((b + 6)) $((b + 8)) $((b + 7)) \
+      $((b + 1)) $((b + 2)) $((b + 6)) $((b + 5)) $((b + 3)) $((b + 7)) $((b + 8)) $((b + 4)) \
+      $((b + 1)) $((b + 5)) $((b + 7)) $((b + 3)) $((b + 2)) $((b + 4)) $((b + 8)) $((b + 6))
+  done; } > boxes.obj
+"$tool" plot boxes.obj --view 30,25 --mode hidden-removed -o lines.svg --spans lines.spans --stats 2> lines.txt
+"$tool" plot boxes.obj --view 30,25 --mode hidden-removed -o nolines.svg --spans nolines.spans --no-intersections 2> /dev/null
+expect '[ "$(sed -n "s/^intersection_segments=//p" lines.txt)" -gt 0 ] && [ "$(grep -c "^s " lines.spans)" -gt "$(grep -c "^s " nolines.spans)" ]' "intersection lines are drawn by default, left out with --no-intersections: $(grep -E "^intersection_(segments|pieces)=" lines.txt | tr '\n' ' ')"
 "$tool" plot good.obj --mode hidden-removed --halo 40 -o x.svg 2> err.txt
 expect '[ $? -ne 0 ] && grep -q -- "--halo belongs to --mode haloed" err.txt' "--halo with a hidden-line mode is refused"
 
@@ -198,6 +211,11 @@ expect '[ $rc -eq 0 ] && [ "$(sed -n "s/^pen_down_length=//p" solid_outline.txt)
 "$tool" sim solid_hatch.job -o solid_hatch.trace 2> err.txt
 rc=$?
 expect '[ $rc -ne 0 ] && grep -q "hatching is not drawn in bands" err.txt && [ ! -e solid_hatch.trace ]' "hatching with an arena is refused by name: $(cat err.txt)"
+expect 'grep -q "intersection lines (where faces cross) are not drawn in bands yet" solid_arena.txt' "a hidden-line job with an arena says its intersection lines are left out"
+{ cat solid_arena.job; echo "intersections off"; } > solid_nolines.job
+"$tool" sim solid_nolines.job -o solid_nolines.trace 2> err.txt
+rc=$?
+expect '[ $rc -eq 0 ] && cmp -s solid_nolines.trace solid_arena.trace && ! grep -q "intersection lines" err.txt' "'intersections off' quiets the note and changes nothing in bands"
 sed 's/^arena .*/arena 12288/' solid_arena.job > solid_tiny.job
 "$tool" sim solid_tiny.job -o solid_tiny.trace 2> err.txt
 rc=$?
