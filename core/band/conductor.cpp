@@ -324,13 +324,14 @@ Status BandConductor::commit_band(Attempt& a) {
   Segment2* u = reinterpret_cast<Segment2*>(a.pieces);
   for (uint32_t i = 0; i < np; ++i) {
     const StoredPiece sp = a.pieces[i];
-    const Edge3& e = a.g.edges[sp.local];
+    const bool line = sp.local >= a.g.n;  // a solid's intersection line (solid_band.cpp)
+    const Edge3& e = line ? a.lines_end[-1 - int64_t{sp.local - a.g.n}] : a.g.edges[sp.local];
     Segment2 g;
     span_point(e, sp.t0, &g.x0, &g.y0);
     span_point(e, int64_t{sp.t1_minus_1} + 1, &g.x1, &g.y1);
     if (observer_.piece != nullptr)
-      observer_.piece(observer_.ctx,
-                      BandPiece{a.g.id(sp.local), sp.t0, int64_t{sp.t1_minus_1} + 1, g});
+      observer_.piece(observer_.ctx, BandPiece{line ? kNoFace : a.g.id(sp.local), sp.t0,
+                                               int64_t{sp.t1_minus_1} + 1, g, line ? &e : nullptr});
     u[i] = g;
   }
   for (uint32_t j = 0; j < ndi; ++j) u[np + j] = deferred_in[j];

@@ -60,6 +60,9 @@ struct BandSpec {
   // and Kira's outlines, asked part by part in each band (solid/fallback.h).
   StrokeStyle style;
   bool outline = false;
+  // And the visible parts of the lines where faces cross (solid/intersection_lines.h), each
+  // band those in its rows, cut at its borders (a stroke on each side meets the other's end).
+  bool intersections = false;
   // The scene's units are 2^-substep_bits steps: the lengths above are in units already
   // (band_spec() converts a job's), and each column's strokes are rounded to steps before its
   // path is planned (geometry/units.h).
@@ -88,9 +91,10 @@ struct BandStream {
 // A visible piece as a band emits it: the edge's index in the source, its Q0.32 ends along
 // the edge (t0 < t1, DRAW's values) and the rounded segment the path draws.
 struct BandPiece {
-  uint32_t edge;
+  uint32_t edge;  // the scene's edge, or kNoFace for a piece of an intersection line ...
   int64_t t0, t1;
   Segment2 segment;
+  const Edge3* line = nullptr;  // ... of this segment (t0, t1 along it; valid during the call)
 };
 
 // Sees every piece once, in the band that owns it, when the band is committed (tests compare

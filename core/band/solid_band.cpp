@@ -1,7 +1,8 @@
 // The band conductor's solid stage: a solid's hidden lines band by band (conductor.h,
 // begin_solid). A band gathers the faces and drawn edges meeting its rows with the vertices
 // they use, runs the topology-free method in its rows only, and keeps the strokes of the
-// pieces it owns; a piece running past the top is carried up with its q.
+// pieces it owns; a piece running past the top is carried up with its q. Intersection lines
+// (where its faces cross) are drawn in its rows too, cut at its borders.
 #include "band/band_attempt.h"
 #include "band/conductor.h"
 #include "memory/carve.h"
@@ -62,10 +63,16 @@ struct SolidSink {
   static Status piece(void* ctx, const HiddenPiece& p);
   static Status outline(void* ctx, const HiddenPiece& p);
   Status finish() { return n_raw > 0 ? flush_edge() : Status::kOk; }
+  Status line_piece(const HiddenPiece& p);
+  const Edge3* last_line = nullptr;  // the segment whose geometry was stacked last
   Status flush_edge();
   Status emit(uint32_t local, bool up, const Run& r);
   Status carry_up(uint32_t id, const Edge3& e, bool up, const Run& r, int64_t join);
-  uint8_t* raw_bottom() const { return reinterpret_cast<uint8_t*>(raw_top - n_raw); }
+  // The lowest byte the top of the tail uses: the current edge's raw pieces, or (after every
+  // edge) the intersection lines' segments.
+  uint8_t* raw_bottom() const {
+    return reinterpret_cast<uint8_t*>(raw_top - n_raw) - size_t{a->n_lines} * sizeof(Edge3);
+  }
 };
 
 }  // namespace
@@ -80,12 +87,14 @@ void SolidSink::begin(void* ctx, uint8_t* tail, size_t bytes) {
   uint8_t* runs = carry + carve_round(size_t{a.carry_capacity} * sizeof(a.carry_out[0]));
   uint8_t* points = runs + carve_round(size_t{a.carry_capacity} * sizeof(a.carry_runs_out[0]));
   uint8_t* pieces = points + carve_round(size_t{a.carry_capacity} * sizeof(RowPoint));
-  a.n_pieces = a.n_carry_out = a.carry_cursor = a.carry_used = 0;
+  a.n_pieces = a.n_carry_out = a.carry_cursor = a.carry_used = a.n_lines = 0;
   self.n_raw = 0;
+  self.last_line = nullptr;
   if (pieces > end) {  // no room even for the carry: every piece is then a full sink
     a.carry_capacity = 0;
     a.pieces = reinterpret_cast<StoredPiece*>(end);
     self.raw_top = reinterpret_cast<RawPiece*>(end);
+    a.lines_end = reinterpret_cast<const Edge3*>(end);
     return;
   }
   a.carry_out = reinterpret_cast<decltype(a.carry_out)>(carry);
@@ -93,10 +102,12 @@ void SolidSink::begin(void* ctx, uint8_t* tail, size_t bytes) {
   a.carry_points = reinterpret_cast<RowPoint*>(points);
   a.pieces = reinterpret_cast<StoredPiece*>(pieces);
   self.raw_top = reinterpret_cast<RawPiece*>(end);
+  a.lines_end = reinterpret_cast<const Edge3*>(end);
 }
 
 Status SolidSink::piece(void* ctx, const HiddenPiece& p) {
   SolidSink& self = *static_cast<SolidSink*>(ctx);
+  if (p.face[0] != kNoFace) return self.line_piece(p);
   if (p.edge >= self.a->in.n_edges) return Status::kOk;  // a contour diagonal: not drawn in bands
   if (self.n_raw > 0 && p.edge != self.raw_edge) {
     const Status s = self.flush_edge();
@@ -108,6 +119,34 @@ Status SolidSink::piece(void* ctx, const HiddenPiece& p) {
     return Status::kSinkFull;
   self.raw_top[-1 - int64_t{self.n_raw++}] =
       RawPiece{p.t0, p.t1, p.q, uint8_t(p.hidden ? 1 : 0), uint8_t(p.tested ? 1 : 0)};
+  return Status::kOk;
+}
+
+// A piece of an intersection line in the band's rows (they come after every edge's pieces): a
+// visible one is stored as a stroke of this band, its segment stacked at the tail's top once.
+// The band above draws the line's next part from the same segment (found from the same two
+// faces), so the strokes of two bands meet end to end.
+Status SolidSink::line_piece(const HiddenPiece& p) {
+  if (n_raw > 0) {  // the last edge's pieces first: their space is the lines' now
+    const Status s = flush_edge();
+    if (!ok(s)) return s;
+  }
+  if (p.hidden || p.t1 <= p.t0 || style->mode == SolidMode::kAll) return Status::kOk;
+  if (last_line == nullptr || last_line->a.x != p.geometry->a.x ||
+      last_line->a.y != p.geometry->a.y || last_line->a.z != p.geometry->a.z ||
+      last_line->b.x != p.geometry->b.x || last_line->b.y != p.geometry->b.y ||
+      last_line->b.z != p.geometry->b.z) {
+    if (raw_bottom() - sizeof(Edge3) < reinterpret_cast<uint8_t*>(a->pieces + a->n_pieces))
+      return Status::kSinkFull;
+    Edge3* slot = const_cast<Edge3*>(a->lines_end) - 1 - a->n_lines++;
+    *slot = *p.geometry;
+    last_line = slot;
+  }
+  if (reinterpret_cast<uint8_t*>(a->pieces + a->n_pieces + 1) > raw_bottom())
+    return Status::kSinkFull;
+  const uint32_t local = a->g.n + a->n_lines - 1;
+  const Span s = make_stroke(*last_line, local, p.t0, p.t1);
+  a->pieces[a->n_pieces++] = StoredPiece{local, uint32_t(s.t0), uint32_t(s.t1 - 1), s.x0 + s.x1};
   return Status::kOk;
 }
 
@@ -376,6 +415,7 @@ Status BandConductor::hide_band(Attempt& a) {
   stage.params.cut.row_hi = int32_t(a.y1);
   stage.params.band = true;
   stage.params.outline = spec_.outline;
+  stage.params.intersections = spec_.intersections;
   stage.params.closed = closed_;
   stage.params.band_y0 = int32_t(a.y0);
   stage.params.band_y1 = int32_t(a.y1);

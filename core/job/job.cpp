@@ -73,6 +73,7 @@ BandSpec band_spec(const JobSpec& steps) {
                                                                       : SolidMode::kHiddenRemoved,
                          spec.hidden.dash, spec.hidden.gap};
   bs.outline = spec.hidden.outline;
+  bs.intersections = spec.hidden.intersections;
   return bs;
 }
 

@@ -78,7 +78,7 @@ Status intersection_piece(void* ctx, const IntersectionPiece& p) {
 // alone when the solids are closed (`front`), every face otherwise.
 bool carve_intersections(const Topology& topo, const uint8_t* front, const HiddenParams& params,
                          Arena* arena, FaceGrid* fg, HiddenReport* r) {
-  if (!params.intersections || params.band) return true;
+  if (!params.intersections) return true;
   r->bytes_intersections = face_grid_bytes(topo, front);
   uint8_t* mem = arena->take(r->bytes_intersections);
   return mem != nullptr &&
@@ -169,9 +169,10 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
   Adapter adapter{sink, edges, topo.n_edges};
   FaceGrid crossing_grid;
   auto intersections = [&](const uint8_t* hiding_front) {
-    if (!params.intersections || params.band) return Status::kOk;
+    if (!params.intersections) return Status::kOk;
     return draw_intersections(topo, hiding_front, crossing_grid,
-                              IntersectionSink{&intersection_piece, &adapter}, &r.intersections);
+                              IntersectionSink{&intersection_piece, &adapter}, &r.intersections,
+                              IntersectionRows{params.band, params.band_y0, params.band_y1});
   };
   const size_t before_method = arena.used;
   if (use_qi) {

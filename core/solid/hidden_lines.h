@@ -41,7 +41,7 @@ struct HiddenParams {
   bool outline = false;  // Kira's outlines (traced from the QI; asked part by part otherwise)
   bool kira = true;      // the fallback's V.C. table and class shortcuts, on manifold meshes
   // Intersection lines where faces cross (solid/intersection_lines.h), after the edges' pieces
-  // and before the outlines. Not in a band (its faces are local; the band conductor says so).
+  // and before the outlines; in a band, their parts in its rows.
   bool intersections = false;
   CutParams cut;
   uint32_t crossing_capacity = 0;   // CUTSET records (CUT says the count if short)

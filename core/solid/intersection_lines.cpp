@@ -2,6 +2,7 @@
 
 #include "geometry/fraction.h"
 #include "geometry/predicates.h"
+#include "geometry/rows.h"
 #include "solid/cover.h"
 #include "solid/face_crossing.h"
 #include "solid/pierce.h"
@@ -102,14 +103,22 @@ struct SegmentPass {
     return q;
   }
 
-  // Cut, test, merge equal neighbours, emit.
-  Status run(uint32_t index, IntersectionSink sink) {
+  // Cut, test, merge equal neighbours, emit: the whole segment, or its part in the rows.
+  Status run(uint32_t index, IntersectionSink sink, IntersectionRows rows) {
+    const RowWindow w = rows.on ? row_window(s, rows.lo, rows.hi) : RowWindow{0, kOne};
+    if (w.lo >= w.hi) return Status::kOk;
+    // The lower border cut a piece unless a cut lies exactly on it.
+    bool clipped = w.lo > 0;
     IntersectionPiece pending{index, {own[0], own[1]}, &s, 0, 0, 0, false};
     bool have = false;
     int32_t q = 0;
     auto piece = [&](int64_t t0, int64_t t1) {
-      // A piece too short for a point strictly inside keeps the q before it (solid/fallback.h).
-      if (t1 - t0 >= 2) q = cover_at(t0 + (t1 - t0) / 2);
+      // A piece too short for a point strictly inside keeps the q before it (solid/fallback.h);
+      // a sliver the lower border cut is asked at the border, inside the piece it came from.
+      if (t1 - t0 >= 2)
+        q = cover_at(t0 + (t1 - t0) / 2);
+      else if (t0 == w.lo && clipped)
+        q = cover_at(t0);
       ++st->pieces;
       if (have && pending.q == q) {
         pending.t1 = t1;
@@ -123,18 +132,28 @@ struct SegmentPass {
       have = true;
       return r;
     };
-    int64_t at = 0;
+    int64_t at = w.lo, after = w.lo > 0 ? w.lo - 1 : 0;  // a cut on the border too
     for (;;) {
       int64_t cuts[kBatch];
-      const int n = next_cuts(at, cuts);
+      const int n = next_cuts(after, cuts);
+      bool done = n < kBatch;
       for (int k = 0; k < n; ++k) {
+        if (cuts[k] >= w.hi) {
+          done = true;
+          break;
+        }
+        if (cuts[k] == w.lo) {  // the border falls on a cut: the first piece starts there
+          clipped = false;
+          continue;
+        }
         const Status r = piece(at, cuts[k]);
         if (r != Status::kOk) return r;
         at = cuts[k];
       }
-      if (n < kBatch) break;
+      if (done) break;
+      after = cuts[n - 1];
     }
-    const Status r = piece(at, kOne);
+    const Status r = piece(at, w.hi);
     if (r != Status::kOk) return r;
     return sink.emit(sink.context, pending);
   }
@@ -143,7 +162,7 @@ struct SegmentPass {
 }  // namespace
 
 Status draw_intersections(const Topology& topo, const uint8_t* front, const FaceGrid& fg,
-                          IntersectionSink sink, IntersectionStats* stats) {
+                          IntersectionSink sink, IntersectionStats* stats, IntersectionRows rows) {
   IntersectionStats st;
   uint32_t index = 0;
   const Grid& g = fg.grid;
@@ -178,7 +197,7 @@ Status draw_intersections(const Topology& topo, const uint8_t* front, const Face
         SegmentPass pass{topo, front, fg, &st, Edge3{}, {*i, *j}};
         if (!face_crossing(p, q, &pass.s)) continue;
         ++st.segments;
-        const Status s = pass.run(index++, sink);
+        const Status s = pass.run(index++, sink, rows);
         if (s != Status::kOk) {
           if (stats != nullptr) *stats = st;
           return s;

@@ -34,6 +34,16 @@ struct IntersectionSink {
   void* context;
 };
 
+// A band's rows (band/band_rule.h): each segment is cut where it enters and leaves rows
+// [lo, hi) (geometry/rows.h) and only the pieces between are tested and emitted. A piece the
+// lower border cut too short to hold a test point is asked at the border itself, inside the
+// piece it was cut from, so the band's pieces are the whole run's pieces cut at the borders.
+// Every face that can cover a point of those rows meets them: the band's input holds it.
+struct IntersectionRows {
+  bool on = false;
+  int32_t lo = 0, hi = 0;
+};
+
 struct IntersectionStats {
   uint64_t pairs = 0;     // face pairs asked the exact question (boxes overlap, no shared corner)
   uint64_t segments = 0;  // pairs that cross
@@ -44,6 +54,7 @@ struct IntersectionStats {
 // when the faces make closed solids (only front faces hide; the grid may hold those alone);
 // null: both sides of every face.
 Status draw_intersections(const Topology& topo, const uint8_t* front, const FaceGrid& fg,
-                          IntersectionSink sink, IntersectionStats* stats);
+                          IntersectionSink sink, IntersectionStats* stats,
+                          IntersectionRows rows = IntersectionRows{});
 
 }  // namespace haloplot

@@ -166,6 +166,7 @@ InputError read_job_file(const std::string& path, JobFile* out) {
       out->outline = f[1] == "on";
     } else if (key == "intersections" && f.size() == 2 && (f[1] == "on" || f[1] == "off")) {
       out->intersections = f[1] == "on";
+      j.hidden.intersections = out->intersections;
     } else if (key == "halo") {
       if (!number(0, 1048575, &v32)) return bad("halo needs a width in [0, 1048575] steps");
       j.draw.halo = int32_t(v32);

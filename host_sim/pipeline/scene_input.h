@@ -54,10 +54,6 @@ bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* e
 // Why a banded hidden-line job cannot have hatching (sim and send say it alike).
 inline constexpr const char* kNotInBands =
     "hatching is not drawn in bands yet: drop 'arena', or 'hatch'";
-// Said (not refused) when a hidden-line job with an arena leaves its intersection lines out.
-inline constexpr const char* kLinesNotInBands =
-    "note: intersection lines (where faces cross) are not drawn in bands yet; without 'arena' "
-    "they are ('intersections off' quiets this)";
 
 // The hidden-line settings of a job's solid options (method, outline, dash, hatching).
 HiddenJob hidden_job(const SolidOptions& so);

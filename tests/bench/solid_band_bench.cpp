@@ -39,6 +39,7 @@ Run banded(const SolidInput& in, bool closed, size_t arena_bytes,
   BandSpec spec;
   spec.haloed = false;
   spec.style = StrokeStyle{mode, 160, 80};
+  spec.intersections = true;  // as a job draws by default (none cross in a cube array)
   spec.cut.compact_cells = false;
   std::vector<uint64_t> arena(arena_bytes / 8);
   BandConductor bc;

@@ -97,6 +97,9 @@ torus_sphere() {
 torus_sphere > torus_sphere.obj
 printf 'scene torus_sphere.obj\ndrawing hidden-removed\nview 30,25\nkinematics corexy\n' > torus_sphere.job
 "$tool" sim torus_sphere.job -o host_torus_sphere.trace
+# The same streamed in bands (16 KB: 9 bands), the lines cut at the bands' borders.
+{ cat torus_sphere.job; echo "arena 16384"; } > torus_sphere_bands.job
+"$tool" sim torus_sphere_bands.job -o host_torus_sphere_bands.trace
 "$tool" sim plot.job -o host_plot.trace
 "$tool" sim replot.job -o host_replot.trace
 # Streamed: 2 x 2 cubes in a 2 KB band arena take 8 bands.
@@ -143,6 +146,13 @@ if [ "$rc" -eq 0 ]; then ok; else bad "pierced send failed ($rc): $(cat pierced.
 "$tool" send torus_sphere.job --port "$work/link.sock" > torus_sphere.out 2>&1
 rc=$?
 if [ "$rc" -eq 0 ]; then ok; else bad "sphere-through-torus send failed ($rc): $(cat torus_sphere.out)"; fi
+"$tool" send torus_sphere_bands.job --port "$work/link.sock" > torus_sphere_bands.out 2>&1
+rc=$?
+if [ "$rc" -eq 0 ] && grep -q "^streamed [0-9]* bands" torus_sphere_bands.out; then
+  ok
+else
+  bad "sphere-through-torus streamed in bands ($rc): $(cat torus_sphere_bands.out)"
+fi
 # 4. A streamed plot, with damaged frames on the way.
 "$tool" send stream.job --port "$work/link.sock" --corrupt-every 7 --seed 3 > stream.out 2>&1
 rc=$?
@@ -168,13 +178,13 @@ end_session $?
 
 awk '/^haloplot-trace 2$/ { k++; on = 1 } on { print > ("fw_" k ".trace") } /^end / { on = 0 }' fw.out
 # Traces 1 and 2 are the stopped plots; 3 the aborted one resumed; 4 the solid; 5 the pierced
-# boxes; 6 the sphere through a torus; 7 the streamed one; 8 the paused one; 9 and 10 the plot
-# and the re-plot.
-if "$pause_check" plot.job fw_8.trace; then ok; else bad "the paused plot's trace"; fi
+# boxes; 6 the sphere through a torus, 7 the same in bands; 8 the streamed one; 9 the paused
+# one; 10 and 11 the plot and the re-plot.
+if "$pause_check" plot.job fw_9.trace; then ok; else bad "the paused plot's trace"; fi
 hold=$(sed -n 's/^fw hold_events=//p' fw.out)
 if [ -n "$hold" ]; then
   "$tool" sim plot.job -o host_pause.trace --pause-at "$hold"
-  if cmp -s fw_8.trace host_pause.trace; then
+  if cmp -s fw_9.trace host_pause.trace; then
     ok
     echo "paused trace identical to haloplot sim --pause-at $hold: $(wc -c < host_pause.trace) bytes"
   else
@@ -184,7 +194,7 @@ else
   echo "the hold's step count was not exact (a step came in between): compared by pause_check only"
 fi
 for pair in "3 host_resume" "4 host_solid" "5 host_pierced" "6 host_torus_sphere" \
-  "7 host_stream" "9 host_plot" "10 host_replot"; do
+  "7 host_torus_sphere_bands" "8 host_stream" "10 host_plot" "11 host_replot"; do
   set -- $pair
   if [ -s "fw_$1.trace" ] && cmp -s "fw_$1.trace" "$2.trace"; then
     ok

@@ -8,7 +8,10 @@
 // method, which shares only CUT and the cover predicate with the bands' Franklin tests).
 // A checker must see the defect it guards: a band source that loses one face, and one that
 // calls the model open (back faces then count), must both change the strokes.
+// Intersection lines (solids through each other): each band draws their visible parts in its
+// rows; joined across the borders they equal the whole-model run's exactly.
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <iterator>
 #include <map>
@@ -31,30 +34,58 @@ namespace {
 using solid_refs::joined;
 using solid_refs::Stroke;
 
+// A stroke of an intersection line: its segment's ends (the same in every band: two faces
+// give one segment), then the Q0.32 ends along it.
+using LineStroke = std::array<int64_t, 8>;
+
+LineStroke line_stroke(const Edge3& e, int64_t t0, int64_t t1) {
+  return {e.a.x, e.a.y, e.a.z, e.b.x, e.b.y, e.b.z, t0, t1};
+}
+
+// Adjacent strokes of one segment joined.
+std::vector<LineStroke> joined_lines(std::vector<LineStroke> v) {
+  std::sort(v.begin(), v.end());
+  std::vector<LineStroke> out;
+  for (const LineStroke& s : v) {
+    if (!out.empty() && std::equal(s.begin(), s.begin() + 6, out.back().begin()) &&
+        out.back()[7] == s[6])
+      out.back()[7] = s[7];
+    else
+      out.push_back(s);
+  }
+  return out;
+}
+
 struct Banded {
   Status status = Status::kOk;
   std::vector<Stroke> strokes;
+  std::vector<LineStroke> lines;  // intersection lines' strokes, when asked
   BandStats stats;
 };
 
 Banded run_bands(const StrokeStyle& style, size_t arena_bytes, SolidSource source,
-                 bool outline = false) {
+                 bool outline = false, bool lines = false) {
   Banded r;
   BandSpec spec;
   spec.style = style;
   spec.outline = outline;
+  spec.intersections = lines;
   spec.cut.compact_cells = false;
   std::vector<uint64_t> arena(arena_bytes / 8);
   BandConductor bc;
   bc.set_observer(PieceObserver{[](void* ctx, const BandPiece& p) {
-                                  static_cast<Banded*>(ctx)->strokes.emplace_back(p.edge, p.t0,
-                                                                                  p.t1);
+                                  Banded* self = static_cast<Banded*>(ctx);
+                                  if (p.line != nullptr)
+                                    self->lines.push_back(line_stroke(*p.line, p.t0, p.t1));
+                                  else
+                                    self->strokes.emplace_back(p.edge, p.t0, p.t1);
                                 },
                                 &r});
   r.status = bc.begin_solid(spec, source, arena.data(), arena.size() * 8);
   if (ok(r.status)) r.status = run_all_bands(bc);
   r.stats = bc.stats();
   std::sort(r.strokes.begin(), r.strokes.end());
+  std::sort(r.lines.begin(), r.lines.end());
   return r;
 }
 
@@ -195,6 +226,56 @@ void check_outlines(const Scene& sc) {
   }
 }
 
+// Intersection lines in bands (solids through each other): each band draws the visible parts
+// in its rows, cut at its borders; joined across the borders they are the whole-model run's
+// (solid/intersection_lines.h on every face at once), and the edges' strokes do not change.
+void check_lines(const Scene& sc) {
+  SolidRun whole;
+  CHECK(ok(run_hidden_lines(sc.scene, HiddenMethod::kAuto, FallbackParams{}, &whole, false, true)));
+  std::vector<LineStroke> reference;
+  for (const SolidPiece& p : whole.intersections)
+    if (!p.hidden) reference.push_back(line_stroke(whole.edges[p.edge], p.t0, p.t1));
+  reference = joined_lines(reference);
+  CHECK_MSG(!reference.empty(), sc.name + ": the whole-model run draws intersection lines");
+  const SolidInput in = solid_input(sc.scene);
+  const SolidSource source = array_solid_source(&in, true);
+  const StrokeStyle style{SolidMode::kHiddenDashed, 160, 80};
+  const Banded plain = run_bands(style, size_t{256} << 20, source);
+  const Banded one = run_bands(style, size_t{256} << 20, source, false, true);
+  CHECK_MSG(ok(one.status) && joined_lines(one.lines) == reference,
+            sc.name + ": one band's intersection lines equal the whole-model run's (" +
+                std::to_string(joined_lines(one.lines).size()) + " runs vs " +
+                std::to_string(reference.size()) + ")");
+  CHECK_MSG(one.strokes == plain.strokes, sc.name + ": the lines leave the edges' strokes alone");
+  for (size_t arena : sc.arenas) {
+    const Banded b = run_bands(style, arena, source, false, true);
+    const std::vector<LineStroke> runs = joined_lines(b.lines);
+    const std::string what = sc.name + " in " + std::to_string(arena >> 10) + " KB (" +
+                             std::to_string(b.stats.bands) + " bands)";
+    CHECK_MSG(ok(b.status) && b.stats.bands > 1, what + ": plots in bands");
+    CHECK_MSG(runs == reference, what +
+                                     ": intersection lines, joined across the borders, equal "
+                                     "the whole-model run's (" +
+                                     std::to_string(runs.size()) + " runs vs " +
+                                     std::to_string(reference.size()) + ")");
+    CHECK_MSG(b.strokes == plain.strokes, what + ": the edges' strokes unchanged");
+    std::printf("%s: %zu intersection strokes, %zu runs joined\n", what.c_str(), b.lines.size(),
+                runs.size());
+  }
+  // The control: a band source that lost a face of a visible crossing must change the lines.
+  size_t seen = 0;
+  while (seen + 1 < whole.intersections.size() && whole.intersections[seen].hidden) ++seen;
+  std::vector<Triangle> tris(sc.scene.triangles);
+  tris.erase(tris.begin() + long(whole.intersection_faces[seen][0]));
+  SolidInput lost = in;
+  lost.triangles = tris.data();
+  lost.n_triangles = uint32_t(tris.size());
+  const Banded c =
+      run_bands(style, sc.arenas.front(), array_solid_source(&lost, true), false, true);
+  CHECK_MSG(ok(c.status) && joined_lines(c.lines) != reference,
+            sc.name + ": a lost crossing face is seen in the lines");
+}
+
 // An open surface (a box without its lid) falls back from QI, and now gets outlines too: every
 // run lies on the boundary of what the picture covers (brute force over all faces, both sides).
 void check_open_outlines() {
@@ -258,6 +339,7 @@ int main() {
   for (Scene& s : pierced) s.pierced = true;
   for (const Scene& s : scenes) check_scene(s);
   for (const Scene& s : pierced) check_scene(s);
+  for (const Scene& s : pierced) check_lines(s);
   for (const Scene& s : scenes) check_outlines(s);
   check_open_outlines();
   check_the_check(scenes[1]);
