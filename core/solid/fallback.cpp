@@ -170,9 +170,9 @@ struct OutlineRuns {
 
 }  // namespace
 
-size_t fallback_bytes(const Topology& topo) {
+size_t fallback_bytes(const Topology& topo, bool shared_grid) {
   ByteCounter c;
-  c.take<uint8_t>(face_grid_bytes(topo));
+  if (!shared_grid) c.take<uint8_t>(face_grid_bytes(topo));
   c.take<uint8_t>(topo.n_vertices);
   return c.total + 8;
 }
@@ -185,12 +185,12 @@ size_t fallback_outline_bytes(const Topology& topo, const CutSet& cutset) {
 
 Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cutset,
                     const Incidences& inc, const FallbackParams& params, void* buffer, size_t bytes,
-                    FallbackSink sink, FallbackStats* stats) {
+                    FallbackSink sink, FallbackStats* stats, const FaceGrid* grid) {
   if (cutset.n_edges != topo.n_edges) return Status::kBadParameter;
   if ((params.use_classes || params.use_vc || !params.any_facing) && front == nullptr)
     return Status::kBadParameter;
   Carver carve(buffer, bytes);
-  const size_t grid_bytes = face_grid_bytes(topo);
+  const size_t grid_bytes = grid != nullptr ? 0 : face_grid_bytes(topo);
   uint8_t* grid_buffer = carve.take<uint8_t>(grid_bytes);
   uint8_t* vc = carve.take<uint8_t>(topo.n_vertices);
   if (carve.short_) return Status::kWorkspaceTooSmall;
@@ -201,9 +201,12 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
     front_t = carve.take<uint32_t>(count_fronts(topo, cutset));
     if (carve.short_) return Status::kWorkspaceTooSmall;
   }
-  FaceGrid fg;
-  const Status gs = build_face_grid(topo, grid_buffer, grid_bytes, &fg);
-  if (gs != Status::kOk) return gs;
+  FaceGrid built;
+  if (grid == nullptr) {
+    const Status gs = build_face_grid(topo, grid_buffer, grid_bytes, &built);
+    if (gs != Status::kOk) return gs;
+  }
+  const FaceGrid& fg = grid != nullptr ? *grid : built;
   if (params.outline) {  // positions where a candidate edge passes in front: count, place, sort
     for (uint32_t e = 0; e <= topo.n_drawn; ++e) front_first[e] = 0;
     for (uint32_t i = 0; i < cutset.n_crossings; ++i) {

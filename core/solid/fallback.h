@@ -18,6 +18,7 @@
 #include <stdint.h>
 
 #include "cut/cutset.h"
+#include "solid/face_grid.h"
 #include "solid/incidence.h"
 #include "solid/topology.h"
 #include "status/status.h"
@@ -74,13 +75,16 @@ struct FallbackSink {
 
 // Scratch bytes for the face grid and the tables (walks the faces once to count cell pairs),
 // and, with outlines, the positions where contour edges pass in front of others.
-size_t fallback_bytes(const Topology& topo);
+// With `shared_grid` the caller builds the face grid (and may use it after: the intersection
+// lines ask the same faces), and it takes no bytes here.
+size_t fallback_bytes(const Topology& topo, bool shared_grid = false);
 size_t fallback_outline_bytes(const Topology& topo, const CutSet& cutset);
 
 // `cutset` is CUT over topo's edges in topo's order; `front` may be null unless classes or
-// V.C. are asked for (then classify() must have run).
+// V.C. are asked for (then classify() must have run). `grid`: every face of topo in a face
+// grid the caller built (null: built here, in the buffer).
 Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cutset,
                     const Incidences& inc, const FallbackParams& params, void* buffer, size_t bytes,
-                    FallbackSink sink, FallbackStats* stats);
+                    FallbackSink sink, FallbackStats* stats, const FaceGrid* grid = nullptr);
 
 }  // namespace haloplot

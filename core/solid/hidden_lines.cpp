@@ -230,15 +230,19 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
   // Outlines from the fallback: Kira's condition on every visible contour part (no QI to
   // trace circuits with).
   fp.outline = params.outline;
-  r.bytes_fallback = fallback_bytes(topo) + (fp.outline ? fallback_outline_bytes(topo, cutset) : 0);
+  // With intersection lines, one face grid of every face serves both: the lines skip back
+  // faces themselves when only front faces hide.
+  const bool share = params.intersections;
+  r.bytes_fallback =
+      fallback_bytes(topo, share) + (fp.outline ? fallback_outline_bytes(topo, cutset) : 0);
   uint8_t* fb_mem = arena.take(r.bytes_fallback);
-  if (fb_mem == nullptr || !carve_intersections(topo, fp.any_facing ? nullptr : front, params,
-                                                &arena, &crossing_grid, &r))
+  if (fb_mem == nullptr || !carve_intersections(topo, nullptr, params, &arena, &crossing_grid, &r))
     return *report = r, short_of(arena, report);
   if (sink.begin != nullptr)
     sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);
   s = run_fallback(topo, front, cutset, inc, fp, fb_mem, r.bytes_fallback,
-                   FallbackSink{&fallback_piece, &adapter, &fallback_outline}, &r.fallback);
+                   FallbackSink{&fallback_piece, &adapter, &fallback_outline}, &r.fallback,
+                   share ? &crossing_grid : nullptr);
   if (s == Status::kOk) s = intersections(fp.any_facing ? nullptr : front);
   r.bytes_used = arena.high;
   *report = r;
