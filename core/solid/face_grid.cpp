@@ -19,30 +19,28 @@ Edge3 face_box(const Topology& topo, uint32_t t) {
   return box;
 }
 
-uint64_t count_pairs(const Topology& topo, const Grid& g, const uint8_t* keep) {
+uint64_t count_pairs(const Topology& topo, const Grid& g) {
   uint64_t n = 0;
   for (uint32_t t = 0; t < topo.n_triangles; ++t)
-    if (keep == nullptr || keep[t] != 0)
-      for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0, [&](uint32_t) { ++n; });
+    for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0, [&](uint32_t) { ++n; });
   return n;
 }
 
 }  // namespace
 
-size_t face_grid_bytes(const Topology& topo, const uint8_t* keep) {
+size_t face_grid_bytes(const Topology& topo) {
   const Grid g = choose_grid(topo);
   ByteCounter c;
   c.take<uint32_t>(size_t{g.cells()} + 1);
   // More pairs than 32 bits count is refused by the build; size it as if none.
-  const uint64_t pairs = count_pairs(topo, g, keep);
+  const uint64_t pairs = count_pairs(topo, g);
   c.take<uint32_t>(pairs > 0xffffffffu ? 0 : static_cast<size_t>(pairs));
   return c.total + 8;
 }
 
-Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGrid* out,
-                       const uint8_t* keep) {
+Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGrid* out) {
   const Grid g = choose_grid(topo);
-  const uint64_t pairs = count_pairs(topo, g, keep);
+  const uint64_t pairs = count_pairs(topo, g);
   if (pairs > 0xffffffffu) return Status::kCellPairOverflow;
   Carver carve(buffer, bytes);
   uint32_t* first = carve.take<uint32_t>(size_t{g.cells()} + 1);
@@ -50,14 +48,12 @@ Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGri
   if (carve.short_) return Status::kWorkspaceTooSmall;
   for (uint32_t c = 0; c <= g.cells(); ++c) first[c] = 0;
   for (uint32_t t = 0; t < topo.n_triangles; ++t)
-    if (keep == nullptr || keep[t] != 0)
-      for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0,
-                    [&](uint32_t c) { ++first[c + 1]; });
+    for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0,
+                  [&](uint32_t c) { ++first[c + 1]; });
   for (uint32_t c = 0; c < g.cells(); ++c) first[c + 1] += first[c];
   for (uint32_t t = 0; t < topo.n_triangles; ++t)
-    if (keep == nullptr || keep[t] != 0)
-      for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0,
-                    [&](uint32_t c) { faces[first[c]++] = t; });
+    for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0,
+                  [&](uint32_t c) { faces[first[c]++] = t; });
   for (uint32_t c = g.cells(); c > 0; --c) first[c] = first[c - 1];
   first[0] = 0;
   out->grid = g;

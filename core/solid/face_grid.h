@@ -32,10 +32,7 @@ inline Topology faces_only(const SolidInput& in) {
   return t;
 }
 
-// `keep` (optional, one byte per triangle): only the triangles it marks enter the grid (the
-// intersection lines of closed solids ask front faces alone). The cells stay the same.
-size_t face_grid_bytes(const Topology& topo, const uint8_t* keep = nullptr);  // walks once
-Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGrid* out,
-                       const uint8_t* keep = nullptr);
+size_t face_grid_bytes(const Topology& topo);  // walks the faces' cells once to count
+Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGrid* out);
 
 }  // namespace haloplot

@@ -74,15 +74,14 @@ Status intersection_piece(void* ctx, const IntersectionPiece& p) {
                                                     {p.face[0], p.face[1]}});
 }
 
-// The intersection pass's face grid, carved before the sink is given the tail: the front faces
-// alone when the solids are closed (`front`), every face otherwise.
-bool carve_intersections(const Topology& topo, const uint8_t* front, const HiddenParams& params,
-                         Arena* arena, FaceGrid* fg, HiddenReport* r) {
+// The fallback's face grid when the intersection lines share it, carved before the sink is
+// given the tail (the QI method's own grid serves them otherwise).
+bool carve_shared_grid(const Topology& topo, const HiddenParams& params, Arena* arena, FaceGrid* fg,
+                       HiddenReport* r) {
   if (!params.intersections) return true;
-  r->bytes_intersections = face_grid_bytes(topo, front);
+  r->bytes_intersections = face_grid_bytes(topo);
   uint8_t* mem = arena->take(r->bytes_intersections);
-  return mem != nullptr &&
-         build_face_grid(topo, mem, r->bytes_intersections, fg, front) == Status::kOk;
+  return mem != nullptr && build_face_grid(topo, mem, r->bytes_intersections, fg) == Status::kOk;
 }
 
 Status short_of(const Arena& a, HiddenReport* r) {
@@ -203,8 +202,7 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
         outline_mem = arena.take(r.bytes_outline);
         if (outline_mem == nullptr) return *report = r, short_of(arena, report);
       }
-      if (!carve_intersections(topo, front, params, &arena, &crossing_grid, &r))
-        return *report = r, short_of(arena, report);
+      crossing_grid = state.grid;  // the lines ask the QI's grid of every face
       if (sink.begin != nullptr)
         sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);
       r.used_qi = true;
@@ -236,7 +234,7 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
   r.bytes_fallback =
       fallback_bytes(topo, share) + (fp.outline ? fallback_outline_bytes(topo, cutset) : 0);
   uint8_t* fb_mem = arena.take(r.bytes_fallback);
-  if (fb_mem == nullptr || !carve_intersections(topo, nullptr, params, &arena, &crossing_grid, &r))
+  if (fb_mem == nullptr || !carve_shared_grid(topo, params, &arena, &crossing_grid, &r))
     return *report = r, short_of(arena, report);
   if (sink.begin != nullptr)
     sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);

@@ -170,39 +170,55 @@ Status draw_intersections(const Topology& topo, const uint8_t* front, const Face
     const uint32_t* v = topo.triangles[t].v;
     return box_of(topo.vertices[v[0]], topo.vertices[v[1]], topo.vertices[v[2]]);
   };
-  for (uint32_t c = 0; c < g.cells(); ++c) {
+  auto asked = [&](uint32_t t) { return front == nullptr || front[t] != 0; };
+  uint32_t c = 0;  // the cell whose pairs are read
+  // One pair of the cell's faces: the exact question if their boxes overlap in depth too and
+  // this cell holds their boxes' common lower-left corner (so each pair is asked once).
+  auto pair = [&](uint32_t i, const Box& bi, uint32_t j, const Box& bj) {
+    if (!overlap_on_paper(bi, bj) || bi.z1 < bj.z0 || bj.z1 < bi.z0) return Status::kOk;
+    if (g.cell_of(max_i32(bi.x0, bj.x0), max_i32(bi.y0, bj.y0)) != c) return Status::kOk;
+    const Triangle &ti = topo.triangles[i], &tj = topo.triangles[j];
+    if (shares_corner(ti, tj)) return Status::kOk;
+    const Point3 p[3] = {topo.vertices[ti.v[0]], topo.vertices[ti.v[1]], topo.vertices[ti.v[2]]};
+    const Point3 q[3] = {topo.vertices[tj.v[0]], topo.vertices[tj.v[1]], topo.vertices[tj.v[2]]};
+    ++st.pairs;
+    SegmentPass pass{topo, front, fg, &st, Edge3{}, {i, j}};
+    if (!face_crossing(p, q, &pass.s)) return Status::kOk;
+    ++st.segments;
+    return pass.run(index++, sink, rows);
+  };
+  for (; c < g.cells(); ++c) {
     const uint32_t* first = fg.faces + fg.first[c];
     const uint32_t* last = fg.faces + fg.first[c + 1];
-    // The boxes of the cell's first kCached faces, each found once instead of once a pair.
+    // The cell's asked faces with their boxes, each box found once instead of once a pair;
+    // past kCached of them (rare: about one face per cell) the rest find theirs as they go.
     constexpr uint32_t kCached = 24;
-    Box cached[kCached];
-    const uint32_t k = uint32_t(last - first);
-    for (uint32_t m = 0; m < k && m < kCached; ++m) cached[m] = box(first[m]);
-    for (const uint32_t* i = first; i != last; ++i) {
-      if (front != nullptr && !front[*i]) continue;
-      const Triangle& ti = topo.triangles[*i];
-      const Point3 p[3] = {topo.vertices[ti.v[0]], topo.vertices[ti.v[1]], topo.vertices[ti.v[2]]};
-      const Box bi = uint32_t(i - first) < kCached ? cached[i - first] : box(*i);
-      for (const uint32_t* j = i + 1; j != last; ++j) {
-        if (front != nullptr && !front[*j]) continue;
-        const Box bj = uint32_t(j - first) < kCached ? cached[j - first] : box(*j);
-        if (!overlap_on_paper(bi, bj) || bi.z1 < bj.z0 || bj.z1 < bi.z0) continue;
-        // Each pair once: in the cell of the boxes' common lower-left corner.
-        if (g.cell_of(max_i32(bi.x0, bj.x0), max_i32(bi.y0, bj.y0)) != c) continue;
-        const Triangle& tj = topo.triangles[*j];
-        if (shares_corner(ti, tj)) continue;
-        const Point3 q[3] = {topo.vertices[tj.v[0]], topo.vertices[tj.v[1]],
-                             topo.vertices[tj.v[2]]};
-        ++st.pairs;
-        SegmentPass pass{topo, front, fg, &st, Edge3{}, {*i, *j}};
-        if (!face_crossing(p, q, &pass.s)) continue;
-        ++st.segments;
-        const Status s = pass.run(index++, sink, rows);
-        if (s != Status::kOk) {
-          if (stats != nullptr) *stats = st;
-          return s;
-        }
+    uint32_t ids[kCached];
+    Box boxes[kCached];
+    uint32_t m = 0;
+    const uint32_t* spill = last;
+    for (const uint32_t* f = first; f != last && spill == last; ++f) {
+      if (!asked(*f)) continue;
+      if (m == kCached) {
+        spill = f;
+      } else {
+        ids[m] = *f;
+        boxes[m++] = box(*f);
       }
+    }
+    Status s = Status::kOk;
+    for (uint32_t i = 0; i < m && ok(s); ++i)
+      for (uint32_t j = i + 1; j < m && ok(s); ++j) s = pair(ids[i], boxes[i], ids[j], boxes[j]);
+    for (const uint32_t* f = spill; f != last && ok(s); ++f) {
+      if (!asked(*f)) continue;
+      const Box bf = box(*f);
+      for (uint32_t i = 0; i < m && ok(s); ++i) s = pair(ids[i], boxes[i], *f, bf);
+      for (const uint32_t* h = f + 1; h != last && ok(s); ++h)
+        if (asked(*h)) s = pair(*f, bf, *h, box(*h));
+    }
+    if (!ok(s)) {
+      if (stats != nullptr) *stats = st;
+      return s;
     }
   }
   if (stats != nullptr) *stats = st;

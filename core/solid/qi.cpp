@@ -167,9 +167,9 @@ Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cu
   s.q_at_v0 = carve.take<int32_t>(topo.n_edges);
   uint32_t* queue = carve.take<uint32_t>(topo.n_vertices);
   if (carve.short_) return Status::kWorkspaceTooSmall;
-  FaceGrid fg;
-  const Status gs = build_face_grid(topo, grid_buffer, grid_bytes, &fg);
+  const Status gs = build_face_grid(topo, grid_buffer, grid_bytes, &s.grid);
   if (gs != Status::kOk) return gs;
+  const FaceGrid& fg = s.grid;
   const Ctx c{topo, front, cutset, inc};
   QiStats st;
   for (uint32_t v = 0; v < topo.n_vertices; ++v) s.base[v] = kQiUnknown;

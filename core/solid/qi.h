@@ -22,6 +22,7 @@
 #include <stdint.h>
 
 #include "cut/cutset.h"
+#include "solid/face_grid.h"
 #include "solid/incidence.h"
 #include "solid/topology.h"
 #include "status/status.h"
@@ -47,6 +48,7 @@ struct QiStats {
 struct QiState {
   int32_t* base = nullptr;     // [n_vertices], in halves, kQiUnknown before it is reached
   int32_t* q_at_v0 = nullptr;  // [n_edges]: the QI at the start of each edge, leaving v0
+  FaceGrid grid;               // every face, for the ray casts (the intersection lines reuse it)
 };
 
 size_t qi_bytes(const Topology& topo);
