@@ -96,8 +96,8 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
   echo "steps. The last two rows of each scene add the intersection lines a hidden-line job draws by"
   echo "default (core/solid/intersection_lines.h; the number of face pairs that cross): their ratio"
   echo "is to whole steps with the lines too, and the label says what the lines add to the default"
-  echo "run. Closed meshes that cross nowhere still pay for looking (pairs from a grid of their"
-  echo "front faces); WusonOBJ and spider pierce themselves in hundreds of places."
+  echo "run. Closed meshes that cross nowhere still pay for looking (pairs of front faces from the"
+  echo "method's own face grid); WusonOBJ and spider pierce themselves in hundreds of places."
   echo
   build/host/tests/bench/resolution_bench "$out" 2>/dev/null
   cat "$out/resolution.body.md"
