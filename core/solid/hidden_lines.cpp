@@ -90,6 +90,25 @@ Status short_of(const Arena& a, HiddenReport* r) {
   return Status::kWorkspaceTooSmall;
 }
 
+// CUT over every edge; its scratch is given back afterwards. kWorkspaceTooSmall: the arena is
+// short (arena->need says how much it needed).
+Status cut_step(const Edge3* edges, uint32_t n, const HiddenParams& params, Arena* arena,
+                CutSet* cutset, HiddenReport* r) {
+  CutPlan plan;
+  Status s = plan_cut(edges, n, params.cut, &plan);
+  if (s != Status::kOk) return s;
+  const size_t cutset_size = cutset_bytes(n, params.crossing_capacity);
+  r->bytes_cut = cutset_size + plan.scratch_bytes;
+  uint8_t* cutset_mem = arena->take(cutset_size);
+  const size_t mark = arena->used;
+  uint8_t* cut_scratch = arena->take(plan.scratch_bytes);
+  if (cutset_mem == nullptr || cut_scratch == nullptr) return Status::kWorkspaceTooSmall;
+  s = run_cut(plan, edges, cut_scratch, plan.scratch_bytes, cutset_mem, cutset_size, cutset,
+              &r->cut);
+  arena->used = mark;
+  return s;
+}
+
 }  // namespace
 
 Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buffer, size_t bytes,
@@ -127,21 +146,10 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
   r.classes = classify(&topo, front, in.facing);
   for (uint32_t e = 0; e < topo.n_edges; ++e) edges[e] = topo.edge3(e);
 
-  // CUT; its scratch is given back afterwards.
-  CutPlan plan;
-  s = plan_cut(edges, topo.n_edges, params.cut, &plan);
-  if (s != Status::kOk) return *report = r, s;
-  const size_t cutset_size = cutset_bytes(topo.n_edges, params.crossing_capacity);
-  r.bytes_cut = cutset_size + plan.scratch_bytes;
-  uint8_t* cutset_mem = arena.take(cutset_size);
-  const size_t mark = arena.used;
-  uint8_t* cut_scratch = arena.take(plan.scratch_bytes);
-  if (cutset_mem == nullptr || cut_scratch == nullptr) return *report = r, short_of(arena, report);
   CutSet cutset;
-  s = run_cut(plan, edges, cut_scratch, plan.scratch_bytes, cutset_mem, cutset_size, &cutset,
-              &r.cut);
+  s = cut_step(edges, topo.n_edges, params, &arena, &cutset, &r);
+  if (s == Status::kWorkspaceTooSmall) return *report = r, short_of(arena, report);
   if (s != Status::kOk) return *report = r, s;
-  arena.used = mark;
 
   // The singular touches CUT leaves out.
   r.bytes_incidence = incidence_bytes(topo, params.incidence_capacity);

@@ -196,7 +196,6 @@ class Scene {
   }
 
   const V3& vertex(uint32_t i) const { return vp_[i]; }
-  const Camera& camera() const { return cam_; }
   // Vertex i on the exact screen, in steps.
   void screen_of(uint32_t i, LD* x, LD* y) const { *x = sx_[i], *y = sy_[i]; }
 
