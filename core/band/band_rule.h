@@ -14,6 +14,8 @@
 #include "geometry/contract.h"
 #include "geometry/fraction.h"
 #include "geometry/rows.h"
+#include "solid/mesh.h"
+#include "status/status.h"
 
 namespace haloplot {
 
@@ -31,5 +33,51 @@ inline bool edge_meets_rows(const Edge3& e, int64_t lo, int64_t hi) {
 inline bool rising(const Edge3& e) { return e.b.y >= e.a.y; }
 inline int64_t lower_end(const Edge3& e, int64_t t0, int64_t t1) { return rising(e) ? t0 : t1; }
 inline int64_t upper_end(const Edge3& e, int64_t t0, int64_t t1) { return rising(e) ? t1 : t0; }
+
+// Does the triangle reach any row of [lo, hi] (inclusive)?
+inline bool triangle_meets_rows(const Point3& a, const Point3& b, const Point3& c, int64_t lo,
+                                int64_t hi) {
+  const int32_t y_min = a.y < b.y ? (a.y < c.y ? a.y : c.y) : (b.y < c.y ? b.y : c.y);
+  const int32_t y_max = a.y > b.y ? (a.y > c.y ? a.y : c.y) : (b.y > c.y ? b.y : c.y);
+  return y_max >= lo && y_min <= hi;
+}
+
+// The faces a solid's band holds, in scene order: those meeting its rows (read(i, &t, &meets)
+// says whether triangle i does), and with `whole_polygons` every triangle of a polygon (a run
+// of consecutive triangles with one id) that one of them belongs to: hatching reads the whole
+// polygon for its lines' direction. take(i, t) for each; the host that streams a band and the
+// conductor that gathers it ask this one rule.
+template <typename Read, typename Take>
+Status for_band_triangles(uint32_t n, bool whole_polygons, Read read, Take take) {
+  uint32_t i = 0;
+  while (i < n) {
+    Triangle t;
+    bool meets = false;
+    Status s = read(i, &t, &meets);
+    if (!ok(s)) return s;
+    if (!whole_polygons) {
+      if (meets) take(i, t);
+      ++i;
+      continue;
+    }
+    uint32_t end = i + 1;
+    bool any = meets;
+    for (; end < n; ++end) {
+      Triangle u;
+      bool m = false;
+      s = read(end, &u, &m);
+      if (!ok(s)) return s;
+      if (u.polygon != t.polygon) break;
+      any = any || m;
+    }
+    for (uint32_t k = i; any && k < end; ++k) {
+      s = k == i ? Status::kOk : read(k, &t, &meets);
+      if (!ok(s)) return s;
+      take(k, t);
+    }
+    i = end;
+  }
+  return Status::kOk;
+}
 
 }  // namespace haloplot

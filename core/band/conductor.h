@@ -42,6 +42,7 @@
 #include "motion/path_plan.h"
 #include "solid/modes.h"
 #include "status/status.h"
+#include "surface/hatch.h"
 
 namespace haloplot {
 
@@ -63,6 +64,10 @@ struct BandSpec {
   // And the visible parts of the lines where faces cross (solid/intersection_lines.h), each
   // band those in its rows, cut at its borders (a stroke on each side meets the other's end).
   bool intersections = false;
+  // And hatching (solid/hatch_lines.h): each band the parts of the lines in its rows, cut at its
+  // borders. A band then holds every triangle of each polygon it holds (band_rule.h).
+  bool hatch = false;
+  HatchParams hatch_params;
   // The scene's units are 2^-substep_bits steps: the lengths above are in units already
   // (band_spec() converts a job's), and each column's strokes are rounded to steps before its
   // path is planned (geometry/units.h).

@@ -13,12 +13,6 @@
 namespace haloplot {
 namespace {
 
-bool triangle_meets(const Point3& a, const Point3& b, const Point3& c, int64_t lo, int64_t hi) {
-  const int32_t y_min = a.y < b.y ? (a.y < c.y ? a.y : c.y) : (b.y < c.y ? b.y : c.y);
-  const int32_t y_max = a.y > b.y ? (a.y > c.y ? a.y : c.y) : (b.y > c.y ? b.y : c.y);
-  return y_max >= lo && y_min <= hi;
-}
-
 // The index of global vertex v among the band's sorted vertex ids.
 uint32_t local_vertex(const uint32_t* ids, uint32_t n, uint32_t v) {
   uint32_t lo = 0, hi = n;
@@ -327,16 +321,19 @@ Status BandConductor::gather_solid(Attempt& a) {
     }
     if (pass == 0) m = k;
     k = 0;
-    for (uint32_t i = 0; i < src.n_triangles; ++i) {
-      Triangle t;
+    auto read_triangle = [&](uint32_t i, Triangle* t, bool* meets) {
       Point3 p[3];
-      Status s = src.triangle(src.ctx, i, &t);
-      for (int c = 0; c < 3 && ok(s); ++c) s = read_vertex(t.v[c], &p[c]);
-      if (!ok(s)) return s;
-      if (!triangle_meets(p[0], p[1], p[2], lo, hi + 1)) continue;  // and the row above it
-      if (pass == 1) tris[k] = t;
-      ++k;
-    }
+      Status s = src.triangle(src.ctx, i, t);
+      for (int c = 0; c < 3 && ok(s); ++c) s = read_vertex(t->v[c], &p[c]);
+      *meets = triangle_meets_rows(p[0], p[1], p[2], lo, hi + 1);  // and the row above it
+      return s;
+    };
+    const Status ts =
+        for_band_triangles(src.n_triangles, spec_.hatch, read_triangle, [&](uint32_t, Triangle t) {
+          if (pass == 1) tris[k] = t;
+          ++k;
+        });
+    if (!ok(ts)) return ts;
     if (pass == 0) nt = k;
     stats_.edge_reads += src.n_edges;
     if (pass == 1) break;
@@ -416,6 +413,8 @@ Status BandConductor::hide_band(Attempt& a) {
   stage.params.band = true;
   stage.params.outline = spec_.outline;
   stage.params.intersections = spec_.intersections;
+  stage.params.hatch = spec_.hatch;
+  stage.params.hatch_params = spec_.hatch_params;
   stage.params.closed = closed_;
   stage.params.band_y0 = int32_t(a.y0);
   stage.params.band_y1 = int32_t(a.y1);

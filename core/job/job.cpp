@@ -3,7 +3,6 @@
 #include "geometry/units.h"
 #include "memory/carve.h"
 #include "solid/modes.h"
-#include "surface/hidden_surface.h"
 
 namespace haloplot {
 namespace {
@@ -60,6 +59,18 @@ void size_path_stages(uint64_t spans, JobBytes* b) {
 
 }  // namespace
 
+namespace {
+
+HatchParams hatch_params(const HiddenJob& h) {
+  HatchParams p;
+  p.spacing = h.hatch_spacing;
+  p.angle_mdeg = h.hatch_angle_mdeg;
+  p.mdeg_per_depth = h.hatch_mdeg_per_depth;
+  return p;
+}
+
+}  // namespace
+
 BandSpec band_spec(const JobSpec& steps) {
   const JobSpec spec = in_units(steps);
   BandSpec bs;
@@ -74,6 +85,8 @@ BandSpec band_spec(const JobSpec& steps) {
                          spec.hidden.dash, spec.hidden.gap};
   bs.outline = spec.hidden.outline;
   bs.intersections = spec.hidden.intersections;
+  bs.hatch = spec.hidden.hatch;
+  bs.hatch_params = hatch_params(spec.hidden);
   return bs;
 }
 
@@ -230,67 +243,9 @@ struct StrokeCollector {
   }
   static Status outline(void* ctx, const HiddenPiece& p) {
     auto* self = static_cast<StrokeCollector*>(ctx);
-    if (self->outline_from == kNoOutline) self->outline_from = self->count;
     return self->add(make_stroke(*p.geometry, p.edge, p.t0, p.t1));
   }
-  static constexpr uint32_t kNoOutline = 0xffffffffu;
-  uint32_t outline_from = kNoOutline;  // the first outline stroke (they come last)
 };
-
-// Hatch strokes written at `out` (counted only while `out` is null).
-struct HatchWriter {
-  Segment2* out;
-  uint32_t count;
-  static Status emit(void* ctx, const HatchStroke& h) {
-    auto* self = static_cast<HatchWriter*>(ctx);
-    if (self->out != nullptr)
-      self->out[self->count] = Segment2{h.line.a.x, h.line.a.y, h.line.b.x, h.line.b.y};
-    ++self->count;
-    return Status::kOk;
-  }
-};
-
-// Franklin's hidden surfaces, hatched, into the strokes: [edges | outlines] becomes
-// [edges | hatching | outlines]. Two sized runs in the buffer's free tail: the first counts the
-// strokes (its workspace after the strokes so far), the second writes them once the outlines
-// have moved up to make room.
-Status add_hatching(const HiddenJob& h, const SolidInput& in, uint32_t crossings,
-                    uint32_t incidences, uint8_t* base, size_t bytes, uint32_t edges,
-                    uint32_t* count) {
-  HatchParams hp;
-  hp.spacing = h.hatch_spacing;
-  hp.angle_mdeg = h.hatch_angle_mdeg;
-  hp.mdeg_per_depth = h.hatch_mdeg_per_depth;
-  Segment2* strokes = reinterpret_cast<Segment2*>(base);
-  StageNeeds needs;
-  needs.crossings = crossings;
-  needs.incidences = incidences;
-  needs.segments = 4 * in.n_edges + 64;
-  HatchWriter writer{nullptr, 0};
-  HiddenSurfaceStats st;
-  HiddenSurfaceStage stage{&in,
-                           FranklinParams{},
-                           hp,
-                           FranklinSink{nullptr, nullptr},
-                           HatchSink{&HatchWriter::emit, &writer},
-                           &st};
-  auto counted = restarting(&stage, [&writer] { writer.count = 0; });
-  for (int pass = 0; pass < 2; ++pass) {
-    const uint32_t before = *count + (pass == 1 ? writer.count : 0);
-    const size_t used = carve_round(size_t{before} * sizeof(Segment2));
-    if (used > bytes) return Status::kWorkspaceTooSmall;
-    if (pass == 1) {
-      const uint32_t hatch = writer.count;
-      for (uint32_t i = *count; i > edges; --i) strokes[i - 1 + hatch] = strokes[i - 1];
-      writer = HatchWriter{strokes + edges, 0};
-    }
-    FixedMemory tail{base + used, bytes - used};
-    const Status s = run_sized(counted, tail.memory(), &needs);
-    if (s != Status::kOk) return s;
-  }
-  *count += writer.count;
-  return Status::kOk;
-}
 
 }  // namespace
 
@@ -314,6 +269,8 @@ Status job_prepare_solid(const JobSpec& steps, const SolidInput& in, uint32_t cr
   hp.method = spec.hidden.method;
   hp.outline = spec.hidden.outline;
   hp.intersections = spec.hidden.intersections;
+  hp.hatch = spec.hidden.hatch;
+  hp.hatch_params = hatch_params(spec.hidden);
   hp.cut = spec.cut;
   hp.crossing_capacity = crossing_capacity;
   hp.incidence_capacity = incidence_capacity;
@@ -335,13 +292,6 @@ Status job_prepare_solid(const JobSpec& steps, const SolidInput& in, uint32_t cr
   // The strokes to the front (the run's memory is dead now); forward copy, since they move down.
   Segment2* front = reinterpret_cast<Segment2*>(base);
   for (uint32_t i = 0; i < collect.count; ++i) front[i] = collect.out[i];
-  if (spec.hidden.hatch) {
-    const uint32_t edges =
-        collect.outline_from == StrokeCollector::kNoOutline ? collect.count : collect.outline_from;
-    s = add_hatching(spec.hidden, in, crossing_capacity, incidence_capacity, base, buffer_bytes,
-                     edges, &collect.count);
-    if (!ok(s)) return s;
-  }
   SpanCollector spans{front, collect.count, collect.count};
   PreparedJob job;
   s = plan_stage(spec, base, 0, carve_round(size_t{collect.count} * sizeof(Segment2)), buffer_bytes,

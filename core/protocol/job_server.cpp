@@ -514,9 +514,7 @@ Status JobServer::plot_streamed() {
       spec_.drawing == DrawingEffect::kHaloed || spec_.drawing == DrawingEffect::kAllEdges;
   const bool lines = spec_.drawing == DrawingEffect::kHiddenRemoved ||
                      spec_.drawing == DrawingEffect::kHiddenDashed;
-  // Hatching is not drawn in bands.
-  if (!(edges && !solid_stream()) && !(lines && solid_stream() && !spec_.hidden.hatch))
-    return Status::kUnsupported;
+  if (!(edges && !solid_stream()) && !(lines && solid_stream())) return Status::kUnsupported;
   BandStream stream;
   stream.ctx = this;
   stream.next = &JobServer::next_band;

@@ -33,7 +33,7 @@ struct Arena {
 struct Adapter {
   HiddenSink sink;
   const Edge3* edges;
-  uint32_t n_edges;  // intersection lines are numbered after every edge
+  uint32_t n_edges;  // lines on the faces are numbered after every edge
 };
 
 Status qi_piece(void* ctx, const QiPiece& p) {
@@ -62,8 +62,7 @@ Status outline_piece(void* ctx, const OutlineSegment& s) {
                          HiddenPiece{s.edge, a->edges + s.edge, s.t0, s.t1, 0, false, true});
 }
 
-Status intersection_piece(void* ctx, const IntersectionPiece& p) {
-  const Adapter* a = static_cast<const Adapter*>(ctx);
+Status line_piece(const Adapter* a, const LinePiece& p, bool hatch) {
   return a->sink.piece(a->sink.context, HiddenPiece{a->n_edges + p.index,
                                                     p.segment,
                                                     p.t0,
@@ -71,14 +70,24 @@ Status intersection_piece(void* ctx, const IntersectionPiece& p) {
                                                     p.q,
                                                     p.hidden,
                                                     true,
-                                                    {p.face[0], p.face[1]}});
+                                                    {p.face[0], p.face[1]},
+                                                    hatch});
+}
+Status intersection_piece(void* ctx, const LinePiece& p) {
+  return line_piece(static_cast<const Adapter*>(ctx), p, false);
+}
+Status hatch_piece(void* ctx, const LinePiece& p) {
+  return line_piece(static_cast<const Adapter*>(ctx), p, true);
 }
 
-// The fallback's face grid when the intersection lines share it, carved before the sink is
+// Lines on the faces: intersection lines, hatching.
+bool draws_lines(const HiddenParams& params) { return params.intersections || params.hatch; }
+
+// The fallback's face grid when the lines on the faces share it, carved before the sink is
 // given the tail (the QI method's own grid serves them otherwise).
 bool carve_shared_grid(const Topology& topo, const HiddenParams& params, Arena* arena, FaceGrid* fg,
                        HiddenReport* r) {
-  if (!params.intersections) return true;
+  if (!draws_lines(params)) return true;
   r->bytes_intersections = face_grid_bytes(topo);
   uint8_t* mem = arena->take(r->bytes_intersections);
   return mem != nullptr && build_face_grid(topo, mem, r->bytes_intersections, fg) == Status::kOk;
@@ -114,6 +123,8 @@ Status cut_step(const Edge3* edges, uint32_t n, const HiddenParams& params, Aren
 Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buffer, size_t bytes,
                     HiddenSink sink, HiddenReport* report) {
   HiddenReport r;
+  if (params.hatch && (params.hatch_params.spacing < 1 || params.hatch_params.spacing > kCoordMax))
+    return *report = r, Status::kBadParameter;  // before any piece is emitted
   Arena arena(buffer, bytes);
   Status s;
 
@@ -175,11 +186,18 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
                                                           : FallbackReason::kNotManifold;
   Adapter adapter{sink, edges, topo.n_edges};
   FaceGrid crossing_grid;
-  auto intersections = [&](const uint8_t* hiding_front) {
-    if (!params.intersections) return Status::kOk;
-    return draw_intersections(topo, hiding_front, crossing_grid,
-                              IntersectionSink{&intersection_piece, &adapter}, &r.intersections,
-                              IntersectionRows{params.band, params.band_y0, params.band_y1});
+  // The lines on the faces, after the edges: intersection lines, then hatching.
+  auto lines = [&](const uint8_t* hiding_front) {
+    const LineRows rows{params.band, params.band_y0, params.band_y1};
+    Status ls = Status::kOk;
+    if (params.intersections)
+      ls = draw_intersections(topo, hiding_front, crossing_grid,
+                              LineSink{&intersection_piece, &adapter}, &r.intersections, rows);
+    if (ls == Status::kOk && params.hatch)
+      ls = draw_hatch_lines(topo, hiding_front, crossing_grid, params.hatch_params,
+                            uint32_t(r.intersections.segments), LineSink{&hatch_piece, &adapter},
+                            &r.hatch, rows);
+    return ls;
   };
   const size_t before_method = arena.used;
   if (use_qi) {
@@ -215,7 +233,7 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
         sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);
       r.used_qi = true;
       s = emit_qi_pieces(topo, front, cutset, inc, state, QiSink{&qi_piece, &adapter});
-      if (s == Status::kOk) s = intersections(front);
+      if (s == Status::kOk) s = lines(front);
       if (s == Status::kOk && params.outline)
         s = find_outlines(topo, front, cutset, inc, state, outline_mem, r.bytes_outline,
                           OutlineSink{&outline_piece, &adapter}, &r.outline);
@@ -236,9 +254,9 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
   // Outlines from the fallback: Kira's condition on every visible contour part (no QI to
   // trace circuits with).
   fp.outline = params.outline;
-  // With intersection lines, one face grid of every face serves both: the lines skip back
+  // With lines on the faces, one face grid of every face serves both: the lines skip back
   // faces themselves when only front faces hide.
-  const bool share = params.intersections;
+  const bool share = draws_lines(params);
   r.bytes_fallback =
       fallback_bytes(topo, share) + (fp.outline ? fallback_outline_bytes(topo, cutset) : 0);
   uint8_t* fb_mem = arena.take(r.bytes_fallback);
@@ -249,7 +267,7 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
   s = run_fallback(topo, front, cutset, inc, fp, fb_mem, r.bytes_fallback,
                    FallbackSink{&fallback_piece, &adapter, &fallback_outline}, &r.fallback,
                    share ? &crossing_grid : nullptr);
-  if (s == Status::kOk) s = intersections(fp.any_facing ? nullptr : front);
+  if (s == Status::kOk) s = lines(fp.any_facing ? nullptr : front);
   r.bytes_used = arena.high;
   *report = r;
   return s;

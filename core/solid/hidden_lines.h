@@ -17,6 +17,7 @@
 #include "cut/cut.h"
 #include "solid/classify.h"
 #include "solid/fallback.h"
+#include "solid/hatch_lines.h"
 #include "solid/intersection_lines.h"
 #include "solid/outline.h"
 #include "solid/qi.h"
@@ -43,6 +44,11 @@ struct HiddenParams {
   // Intersection lines where faces cross (solid/intersection_lines.h), after the edges' pieces
   // and before the outlines; in a band, their parts in its rows.
   bool intersections = false;
+  // Hatching (solid/hatch_lines.h) after the intersection lines, drawn with the same grid: each
+  // hatched face's lines, their visible parts (in a band, those in its rows). A band must hold
+  // every triangle of each polygon it holds (the lines' direction reads the whole polygon).
+  bool hatch = false;
+  HatchParams hatch_params;
   CutParams cut;
   uint32_t crossing_capacity = 0;   // CUTSET records (CUT says the count if short)
   uint32_t incidence_capacity = 0;  // vertex-on-edge incidences
@@ -63,6 +69,7 @@ struct HiddenReport {
   FallbackStats fallback;
   OutlineStats outline;
   IntersectionStats intersections;
+  HatchLineStats hatch;
   uint32_t incidences = 0, incidences_needed = 0, coincident_vertices = 0;
   uint32_t n_drawn = 0, n_edges = 0;
   bool used_qi = false;
@@ -71,14 +78,16 @@ struct HiddenReport {
   bool projected_facing = false;
   FallbackReason reason = FallbackReason::kNone;
   size_t bytes_topology = 0, bytes_cut = 0, bytes_incidence = 0, bytes_qi = 0, bytes_fallback = 0,
-         bytes_outline = 0, bytes_intersections = 0;
-  size_t bytes_used = 0;    // the buffer's high-water mark
-  size_t bytes_needed = 0;  // on kWorkspaceTooSmall: at least this many
+         bytes_outline = 0, bytes_intersections = 0;  // the lines' face grid (and the hatching's)
+  size_t bytes_used = 0;                              // the buffer's high-water mark
+  size_t bytes_needed = 0;                            // on kWorkspaceTooSmall: at least this many
 };
 
-// A piece of a drawn edge (edge < n_drawn), of a contour diagonal (edge >= n_drawn), or of an
-// intersection line (face[0] != kNoFace; edge = the run's edge count + the segment's index),
-// with its projection for rounding; q in halves or kQiUnknown (class or V.C. decided).
+// A piece of a drawn edge (edge < n_drawn), of a contour diagonal (edge >= n_drawn), or of a
+// line on the faces (face[0] != kNoFace): an intersection line, or a hatch line (`hatch`, on
+// face[0]); a line's edge is the run's edge count + its number (the hatch lines' after the
+// intersection lines'). With its projection for rounding; q in halves or kQiUnknown (class or
+// V.C. decided).
 struct HiddenPiece {
   uint32_t edge;
   const Edge3* geometry;  // valid during the call only
@@ -86,7 +95,8 @@ struct HiddenPiece {
   int32_t q;
   bool hidden;
   bool tested;  // false: too short for a test point (solid/fallback.h); a band merges it
-  uint32_t face[2] = {kNoFace, kNoFace};  // an intersection line's two faces
+  uint32_t face[2] = {kNoFace, kNoFace};  // the faces a line lies on
+  bool hatch = false;
 };
 
 struct HiddenSink {

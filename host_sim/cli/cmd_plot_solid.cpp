@@ -11,7 +11,6 @@
 #include "io/spans_file.h"
 #include "pipeline/drawing_modes.h"
 #include "pipeline/scene_input.h"
-#include "pipeline/surface_pipeline.h"
 #include "pipeline/units.h"
 #include "render/svg.h"
 
@@ -94,13 +93,6 @@ int cmd_plot_solid(const Options& o) {
   // Decided in the scene's units (dashes and hatch spacing converted), drawn in steps.
   const int32_t units = scene.substep_bits;
   ModeDrawing d = make_mode_drawing(run, mode_in_units(so.spec, units));
-  HatchRun hatch;
-  if (so.hatch) {
-    const Status hs = run_hatch(scene, hatch_in_units(so.hatch_params, units), &hatch);
-    if (!ok(hs)) return fail(o.positional[0] + ": hatching failed: " + status_name(hs));
-    for (const HatchStroke& h : hatch.strokes)
-      d.hatch.push_back(Span{h.polygon, 0, 0, h.line.a.x, h.line.a.y, h.line.b.x, h.line.b.y});
-  }
   drawing_to_steps(&d, units);
   SvgStyle style;
   style.second_pen = &d.outline;
@@ -122,16 +114,12 @@ int cmd_plot_solid(const Options& o) {
   if (o.has("--stats")) {
     print_solid_stats(run, tri);
     if (so.hatch) {
-      const HiddenSurfaceStats& h = hatch.surface;
+      const HatchLineStats& h = run.hatch_stats;
       std::fprintf(stderr,
-                   "regions_segments=%u\nregions_nodes=%u\nregions_cycles=%u\n"
-                   "regions_bounded=%u\nregions_holes=%u\nregions_background=%u\n"
-                   "regions_face_tests=%llu\nhatch_faces=%u\nhatch_crossings=%llu\n"
-                   "hatch_strokes=%llu\nhatch_ms=%.2f\n",
-                   h.regions.segments, h.regions.nodes, h.regions.cycles, h.regions.bounded,
-                   h.regions.holes, h.regions.background, (unsigned long long)h.regions.face_tests,
-                   h.hatch.faces, (unsigned long long)h.hatch.crossings,
-                   (unsigned long long)h.hatch.strokes, hatch.ms);
+                   "hatch_faces=%u\nhatch_lines=%llu\nhatch_pieces=%llu\nhatch_tests=%llu\n"
+                   "hatch_strokes=%zu\n",
+                   h.faces, (unsigned long long)h.lines, (unsigned long long)h.pieces,
+                   (unsigned long long)h.tests, d.hatch.size());
     }
   }
   return 0;

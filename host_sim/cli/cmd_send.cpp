@@ -112,8 +112,6 @@ int cmd_send(int argc, char** argv) {
     if (obj && !lines)
       return send_fail(o.positional[0] +
                        ": 'arena' streams .edges scenes and hidden-line drawings of .obj models");
-    if (obj && jf.spec.hidden.hatch)
-      return send_fail(o.positional[0] + ": 'arena': " + kNotInBands);
     Status ps = Status::kOk;
     if (obj) {  // the model projected here with the core's view, as `sim` does
       SolidScene solid;

@@ -536,7 +536,6 @@ int cmd_sim(int argc, char** argv) {
   SolidScene solid;
   if (solid_bands) {
     if (!load_solid_job_scene(jf, &solid, &jf.spec.hidden, &error)) return fail(error);
-    if (jf.spec.hidden.hatch) return fail(o.positional[0] + ": 'arena': " + kNotInBands);
     jf.spec.substep_bits = solid.substep_bits;
   } else if (!load_job_scene(jf, &edges, &error, &jf.spec.substep_bits)) {
     return fail(error);

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "io/line_reader.h"
+#include "pipeline/units.h"
 
 namespace haloplot::host {
 
@@ -85,7 +86,10 @@ bool parse_solid_options(const Options& o, SolidOptions* out, std::string* error
 Status run_solid_options(const SolidScene& scene, const SolidOptions& so, SolidRun* run) {
   FallbackParams kira;
   kira.use_classes = kira.use_vc = true;
-  return run_hidden_lines(scene, so.method, kira, run, so.spec.outline, so.spec.intersections);
+  // The hatch spacing in the scene's units, like every length the run decides with.
+  const HatchParams hatch = hatch_in_units(so.hatch_params, scene.substep_bits);
+  return run_hidden_lines(scene, so.method, kira, run, so.spec.outline, so.spec.intersections,
+                          so.hatch ? &hatch : nullptr);
 }
 
 }  // namespace haloplot::host

@@ -20,10 +20,6 @@ PieceObserver band_noter(BandPlan* out) {
   return observer;
 }
 
-bool rows_meet(int32_t a, int32_t b, int32_t c, int64_t lo, int64_t hi) {
-  return std::max({a, b, c}) >= lo && std::min({a, b, c}) <= hi;
-}
-
 }  // namespace
 
 Status plan_streamed_bands(const std::vector<Edge3>& edges, const BandSpec& spec,
@@ -73,13 +69,18 @@ Status plan_streamed_solid(const SolidInput& in, bool closed, const BandSpec& sp
       b.pairs.insert(b.pairs.end(), {v0, v1});
       b.vertex_ids.insert(b.vertex_ids.end(), {v0, v1});
     }
-    for (uint32_t t = 0; t < in.n_triangles; ++t) {
-      const uint32_t* v = in.triangles[t].v;
-      if (!rows_meet(in.vertices[v[0]].y, in.vertices[v[1]].y, in.vertices[v[2]].y, lo, hi + 1))
-        continue;
-      b.triangles.push_back(in.triangles[t]);
-      b.vertex_ids.insert(b.vertex_ids.end(), {v[0], v[1], v[2]});
-    }
+    auto read = [&](uint32_t t, Triangle* tri, bool* meets) {
+      *tri = in.triangles[t];
+      const uint32_t* v = tri->v;
+      *meets =
+          triangle_meets_rows(in.vertices[v[0]], in.vertices[v[1]], in.vertices[v[2]], lo, hi + 1);
+      return Status::kOk;
+    };
+    s = for_band_triangles(in.n_triangles, spec.hatch, read, [&](uint32_t, Triangle t) {
+      b.triangles.push_back(t);
+      b.vertex_ids.insert(b.vertex_ids.end(), {t.v[0], t.v[1], t.v[2]});
+    });
+    if (!ok(s)) return s;
     std::sort(b.vertex_ids.begin(), b.vertex_ids.end());
     b.vertex_ids.erase(std::unique(b.vertex_ids.begin(), b.vertex_ids.end()), b.vertex_ids.end());
     for (uint32_t v : b.vertex_ids) b.vertices.push_back(in.vertices[v]);

@@ -34,6 +34,15 @@ ModeDrawing make_mode_drawing(const SolidRun& run, const ModeSpec& spec) {
   for (const SolidPiece& p : run.contour_diagonals) add(p, true);
   // Intersection lines as the core's job draws them: visible parts only, like a contour diagonal.
   for (const SolidPiece& p : run.intersections) add(p, true);
+  // Hatching likewise, after them (Span::edge = the polygon).
+  for (size_t k = 0; k < run.hatch.size(); ++k) {
+    const SolidPiece& p = run.hatch[k];
+    piece_strokes(run.edges[p.edge], p.edge, true, p.t0, p.t1, p.hidden, style, [&](Span s) {
+      s.edge = run.hatch_polygons[k];
+      d.hatch.push_back(s);
+      return Status::kOk;
+    });
+  }
   if (spec.outline)
     for (const OutlineSegment& o : run.outline)
       d.outline.push_back(make_stroke(run.edges[o.edge], o.edge, o.t0, o.t1));

@@ -294,16 +294,6 @@ bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* e
   }
   // Decided in the scene's units, drawn in steps: the strokes come out rounded (units 0).
   ModeDrawing d = make_mode_drawing(run, mode_in_units(so.spec, scene.substep_bits));
-  if (so.hatch) {
-    HatchRun hatch;
-    const Status hs = run_hatch(scene, hatch_in_units(so.hatch_params, scene.substep_bits), &hatch);
-    if (!ok(hs)) {
-      *error = jf.scene_path + ": hatching failed: " + status_name(hs);
-      return false;
-    }
-    for (const HatchStroke& h : hatch.strokes)
-      d.hatch.push_back(Span{h.polygon, 0, 0, h.line.a.x, h.line.a.y, h.line.b.x, h.line.b.y});
-  }
   drawing_to_steps(&d, scene.substep_bits);
   edges->clear();
   for (const std::vector<Span>* part : {&d.spans, &d.hatch, &d.outline})

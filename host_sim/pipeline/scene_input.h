@@ -51,10 +51,6 @@ bool job_solid_settings(const JobFile& jf, SolidOptions* so, View* view, std::st
 // to steps. *substep_bits (may be null): the edges' units (0 for the strokes).
 bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* error,
                     int32_t* substep_bits = nullptr);
-// Why a banded hidden-line job cannot have hatching (sim and send say it alike).
-inline constexpr const char* kNotInBands =
-    "hatching is not drawn in bands yet: drop 'arena', or 'hatch'";
-
 // The hidden-line settings of a job's solid options (method, outline, dash, hatching).
 HiddenJob hidden_job(const SolidOptions& so);
 // A hidden-line job's model itself (its view applied) and its settings, for a plot in bands.

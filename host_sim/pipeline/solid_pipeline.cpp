@@ -19,6 +19,11 @@ struct Collect {
 Status collect_piece(void* context, const HiddenPiece& p) {
   Collect* c = static_cast<Collect*>(context);
   c->keep(p);
+  if (p.hatch) {
+    c->run->hatch.push_back(SolidPiece{p.edge, p.t0, p.t1, p.q, p.hidden});
+    c->run->hatch_faces.push_back(p.face[0]);
+    return Status::kOk;
+  }
   if (p.face[0] != kNoFace) {
     c->run->intersections.push_back(SolidPiece{p.edge, p.t0, p.t1, p.q, p.hidden});
     c->run->intersection_faces.push_back({p.face[0], p.face[1]});
@@ -92,7 +97,8 @@ SolidInput solid_input(const SolidScene& scene) {
 }
 
 Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackParams kira,
-                        SolidRun* out, bool outlines, bool intersections) {
+                        SolidRun* out, bool outlines, bool intersections,
+                        const HatchParams* hatch) {
   const auto t0 = std::chrono::steady_clock::now();
   *out = SolidRun{};
   const SolidInput in = solid_input(scene);
@@ -100,6 +106,8 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
   params.method = method;
   params.outline = outlines;
   params.intersections = intersections;
+  params.hatch = hatch != nullptr;
+  if (hatch != nullptr) params.hatch_params = *hatch;
   params.kira = kira.use_classes || kira.use_vc;
   // First guesses; the core says what a short run needs (never a wrong or partial answer).
   StageNeeds needs;
@@ -115,6 +123,8 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
     out->outline.clear();
     out->intersections.clear();
     out->intersection_faces.clear();
+    out->hatch.clear();
+    out->hatch_faces.clear();
     out->n_drawn = in.n_edges;
   });
   HostMemory memory;
@@ -126,6 +136,8 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
   out->fallback = r.fallback;
   out->outline_stats = r.outline;
   out->intersection_stats = r.intersections;
+  out->hatch_stats = r.hatch;
+  for (uint32_t f : out->hatch_faces) out->hatch_polygons.push_back(scene.triangles[f].polygon);
   out->incidences = r.incidences;
   out->coincident_vertices = r.coincident_vertices;
   out->used_qi = r.used_qi;

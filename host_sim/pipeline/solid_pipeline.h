@@ -55,6 +55,10 @@ struct SolidRun {
   std::vector<SolidPiece> intersections;
   std::vector<std::array<uint32_t, 2>> intersection_faces;
   IntersectionStats intersection_stats;
+  // Hatch lines (when asked): edge >= every edge's and line's count; the face of each piece.
+  std::vector<SolidPiece> hatch;
+  std::vector<uint32_t> hatch_faces, hatch_polygons;
+  HatchLineStats hatch_stats;
   std::vector<Edge3> edges;  // every edge as projected (drawn first, then diagonals)
   uint32_t n_drawn = 0;
   // Kira's outlines (QI method only, when asked).
@@ -70,6 +74,7 @@ bool model_closed(const SolidScene& scene);
 // kAuto: QI on a closed oriented manifold, the fallback otherwise. `kira` chooses the
 // fallback's shortcuts (classes, V.C.); they are only used on manifold meshes.
 Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackParams kira,
-                        SolidRun* out, bool outlines = false, bool intersections = false);
+                        SolidRun* out, bool outlines = false, bool intersections = false,
+                        const HatchParams* hatch = nullptr);
 
 }  // namespace haloplot::host

@@ -113,12 +113,21 @@ Status run_hatch(const SolidScene& scene, const HatchParams& params, HatchRun* o
                  HatchMethod method, FranklinParams franklin) {
   const SolidInput in = solid_input(scene);
   if (method == HatchMethod::kRegions) return run_regions_hatch(in, params, franklin, out);
-  StageNeeds needs;
-  needs.crossings = 8 * in.n_triangles + 1024;
-  HatchStage stage{&in, params, HatchSink{&collect_stroke, &out->strokes}, &out->stats};
-  auto restart = restarting(&stage, [out] { out->strokes.clear(); });
-  HostMemory memory;
-  const Status s = run_sized(restart, memory.memory(), &needs);
+  SolidRun run;
+  FallbackParams kira;
+  kira.use_classes = kira.use_vc = true;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Status s = run_hidden_lines(scene, HiddenMethod::kAuto, kira, &run, false, false, &params);
+  out->ms = ms_since(t0);
+  out->lines = run.hatch_stats;
+  for (size_t k = 0; k < run.hatch.size(); ++k) {
+    const SolidPiece& p = run.hatch[k];
+    if (p.hidden) continue;
+    HatchStroke h{run.hatch_faces[k], run.hatch_polygons[k], Edge3{}};
+    const Span sp = make_stroke(run.edges[p.edge], p.edge, p.t0, p.t1);
+    h.line = Edge3{{sp.x0, sp.y0, 0}, {sp.x1, sp.y1, 0}};
+    out->strokes.push_back(h);
+  }
   return s;
 }
 

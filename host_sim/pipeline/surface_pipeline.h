@@ -31,13 +31,14 @@ struct RegionsRun {
 Status run_regions(const SolidScene& scene, const FranklinParams& params, RegionsRun* out);
 
 // kRegions: Franklin's steps 10-11 (the regions of the visible segments, each hatched as the
-// face it shows: core/surface/hidden_surface.h). kPerFace: every face's own lines found visible
-// like edges (core/surface/hatch.h), the independent second method the tests compare with.
-enum class HatchMethod { kRegions, kPerFace };
+// face it shows: core/surface/hidden_surface.h). kLines: every face's own lines, what shows of
+// each decided like an edge's (core/solid/hatch_lines.h, in the hidden-line run: what the job,
+// the bands and the controller draw). The tests compare the two.
+enum class HatchMethod { kRegions, kLines };
 
 struct HatchRun {
   std::vector<HatchStroke> strokes;
-  HatchStats stats;            // kPerFace
+  HatchLineStats lines;        // kLines
   HiddenSurfaceStats surface;  // kRegions
   double ms = 0;               // the core run alone (the last round)
 };

@@ -180,8 +180,8 @@ void compare_methods(const HatchRun& regions, const HatchRun& faces, const std::
 void check_scene(const SolidScene& s, const HatchParams& hp, const std::string& label) {
   check_regions(s, label);
   HatchRun faces;
-  CHECK(run_hatch(s, hp, &faces, HatchMethod::kPerFace) == Status::kOk);
-  check_strokes(s, faces, label + " (per face)");
+  CHECK(run_hatch(s, hp, &faces, HatchMethod::kLines) == Status::kOk);
+  check_strokes(s, faces, label + " (lines)");
   HatchRun hr;
   const Status st = run_hatch(s, hp, &hr);
   CHECK_MSG(st == Status::kOk, label + ": " + status_name(st));

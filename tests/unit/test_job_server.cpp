@@ -350,7 +350,7 @@ void solid_scene() {
     spec.hidden.outline = true;
     spec.hidden.dash = 120;
     spec.hidden.gap = 60;
-    // The dashed drawing also hatched (Franklin's regions on the controller).
+    // The dashed drawing also hatched (the hidden-line run's hatch lines on the controller).
     const bool hatch = drawing == DrawingEffect::kHiddenDashed;
     spec.hidden.hatch = hatch;
     spec.hidden.hatch_spacing = 150;
@@ -376,7 +376,12 @@ void solid_scene() {
     host::SolidRun run;
     FallbackParams kira;
     kira.use_classes = kira.use_vc = true;
-    CHECK(host::run_hidden_lines(scene, HiddenMethod::kAuto, kira, &run, true) == Status::kOk);
+    HatchParams hp;
+    hp.spacing = 150;
+    hp.angle_mdeg = 30000;
+    hp.mdeg_per_depth = 90000;
+    CHECK(host::run_hidden_lines(scene, HiddenMethod::kAuto, kira, &run, true, false,
+                                 hatch ? &hp : nullptr) == Status::kOk);
     host::ModeSpec ms;
     ms.mode = drawing == DrawingEffect::kHiddenDashed ? SolidMode::kHiddenDashed
                                                       : SolidMode::kHiddenRemoved;
@@ -386,19 +391,9 @@ void solid_scene() {
     const host::ModeDrawing d = host::make_mode_drawing(run, ms);
     std::vector<Segment2> want;
     for (const Span& x : d.spans) want.push_back(Segment2{x.x0, x.y0, x.x1, x.y1});
-    size_t hatched = 0;
-    if (hatch) {
-      HatchParams hp;
-      hp.spacing = 150;
-      hp.angle_mdeg = 30000;
-      hp.mdeg_per_depth = 90000;
-      host::HatchRun hr;
-      CHECK(host::run_hatch(scene, hp, &hr) == Status::kOk);
-      for (const HatchStroke& h : hr.strokes)
-        want.push_back(Segment2{h.line.a.x, h.line.a.y, h.line.b.x, h.line.b.y});
-      hatched = hr.strokes.size();
-      CHECK(hatched > 20);  // not vacuous: the cubes' visible faces are hatched
-    }
+    for (const Span& x : d.hatch) want.push_back(Segment2{x.x0, x.y0, x.x1, x.y1});
+    const size_t hatched = d.hatch.size();
+    if (hatch) CHECK(hatched > 20);  // not vacuous: the cubes' visible faces are hatched
     for (const Span& x : d.outline) want.push_back(Segment2{x.x0, x.y0, x.x1, x.y1});
     const std::vector<Segment2>& got = c.motion.spans[0];
     CHECK_EQ(got.size(), want.size());
