@@ -61,8 +61,11 @@ void size_path_stages(uint64_t spans, JobBytes* b) {
 
 namespace {
 
-HatchParams hatch_params(const HiddenJob& h) {
+// The job's hatching, in the scene's units (`spec` converted): no line shorter than a step.
+HatchParams hatch_params(const JobSpec& spec) {
+  const HiddenJob& h = spec.hidden;
   HatchParams p;
+  p.min_length = int32_t{1} << spec.substep_bits;
   p.spacing = h.hatch_spacing;
   p.angle_mdeg = h.hatch_angle_mdeg;
   p.mdeg_per_depth = h.hatch_mdeg_per_depth;
@@ -86,7 +89,7 @@ BandSpec band_spec(const JobSpec& steps) {
   bs.outline = spec.hidden.outline;
   bs.intersections = spec.hidden.intersections;
   bs.hatch = spec.hidden.hatch;
-  bs.hatch_params = hatch_params(spec.hidden);
+  bs.hatch_params = hatch_params(spec);
   return bs;
 }
 
@@ -270,7 +273,7 @@ Status job_prepare_solid(const JobSpec& steps, const SolidInput& in, uint32_t cr
   hp.outline = spec.hidden.outline;
   hp.intersections = spec.hidden.intersections;
   hp.hatch = spec.hidden.hatch;
-  hp.hatch_params = hatch_params(spec.hidden);
+  hp.hatch_params = hatch_params(spec);
   hp.cut = spec.cut;
   hp.crossing_capacity = crossing_capacity;
   hp.incidence_capacity = incidence_capacity;

@@ -6,13 +6,29 @@
 namespace haloplot {
 namespace {
 
-// w = n . p with n in Q2.30 and coordinates below 2^20: below 2^51; the levels k S likewise.
+// w = n . p with n in Q2.30 and coordinates below 2^20: below 2^51; the levels k S likewise. A
+// side's point: a coordinate difference (2^21) times a 31-bit fraction.
 static_assert(kCoordBits + kTrigFractionBits + 1 < 62, "a line's level fits in int64");
+static_assert(kCoordBits + 1 + 31 < 63, "a side's point fits in int64");
 
 bool point_before(const Point3& p, const Point3& q) {
   if (p.x != q.x) return p.x < q.x;
   if (p.y != q.y) return p.y < q.y;
   return p.z < q.z;
+}
+
+// round(d * num / den) for 0 < num < den < 2^52 and |d| < 2^21: num and den are first cut to
+// 31 bits, so it is one int64 product and division (the position along the side then carries a
+// relative error below 2^-30: under 2^-9 units on a side below 2^21). Deterministic, so the
+// host and the chip, and two triangles sharing the side, get the same point.
+int32_t lerp_round(int64_t d, int64_t num, int64_t den) {
+  const int shift = 64 - __builtin_clzll(uint64_t(den)) - 31;
+  if (shift > 0) {
+    num >>= shift;
+    den >>= shift;
+  }
+  const int64_t p = d * num;
+  return static_cast<int32_t>(p >= 0 ? (p + den / 2) / den : -((-p + den / 2) / den));
 }
 
 // Where the side from p (w_p) to q (w_q) meets the level, strictly inside it, rounded to
@@ -27,50 +43,104 @@ Point3 side_point(Point3 p, Point3 q, int64_t a, int64_t b) {
     b = u;
   }
   const int64_t den = a - b > 0 ? a - b : b - a, num = a - b > 0 ? a : -a;
-  return Point3{p.x + static_cast<int32_t>(scale_round(q.x - p.x, num, den)),
-                p.y + static_cast<int32_t>(scale_round(q.y - p.y, num, den)),
-                p.z + static_cast<int32_t>(scale_round(q.z - p.z, num, den))};
+  return Point3{p.x + lerp_round(int64_t{q.x} - p.x, num, den),
+                p.y + lerp_round(int64_t{q.y} - p.y, num, den),
+                p.z + lerp_round(int64_t{q.z} - p.z, num, den)};
 }
 
-// Calls line(Edge3) for each hatch line of triangle t: the lattice line n . p = k S clipped to
-// the triangle, ends rounded.
+// The lattice line at `level` clipped to the triangle with corners q (their w): false when it
+// misses the triangle or touches it at one point.
+bool triangle_segment(const Point3 q[3], const int64_t w[3], int64_t level, Edge3* out) {
+  Point3 ends[2];
+  int n = 0;
+  for (int i = 0; i < 3 && n < 2; ++i) {
+    const int j = (i + 1) % 3;
+    const int64_t a = w[i] - level, b = w[j] - level;
+    Point3 at;
+    if (a == 0)
+      at = q[i];
+    else if ((a < 0) != (b < 0) && b != 0)
+      at = side_point(q[i], q[j], a, b);
+    else
+      continue;
+    if (n == 1 && ends[0].x == at.x && ends[0].y == at.y) continue;
+    ends[n++] = at;
+  }
+  *out = Edge3{ends[0], ends[1]};
+  return n == 2;
+}
+
+bool same_point(const Point3& p, const Point3& q) { return p.x == q.x && p.y == q.y && p.z == q.z; }
+
+int64_t distance2(const Point3& p, const Point3& q) {
+  const int64_t dx = int64_t{p.x} - q.x, dy = int64_t{p.y} - q.y;
+  return dx * dx + dy * dy;
+}
+
+// Pieces of one lattice line that meet end to end (the triangles of a flat polygon meet on their
+// diagonals, where both round the point alike) become one: the two ends farthest apart.
+uint32_t join_pieces(Edge3* seg, uint32_t n) {
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (uint32_t i = 0; i < n && !merged; ++i)
+      for (uint32_t j = i + 1; j < n && !merged; ++j) {
+        const Edge3 a = seg[i], b = seg[j];
+        if (!same_point(a.a, b.a) && !same_point(a.a, b.b) && !same_point(a.b, b.a) &&
+            !same_point(a.b, b.b))
+          continue;
+        const Point3 ends[4] = {a.a, a.b, b.a, b.b};
+        Edge3 best = a;
+        for (int u = 0; u < 4; ++u)
+          for (int v = u + 1; v < 4; ++v)
+            if (distance2(ends[u], ends[v]) > distance2(best.a, best.b))
+              best = Edge3{ends[u], ends[v]};
+        seg[i] = best;
+        seg[j] = seg[--n];
+        merged = true;
+      }
+  }
+  return n;
+}
+
+// A flat polygon of at most this many triangles, all hatched, takes its lines across it whole.
+constexpr uint32_t kJoined = 8;
+
+// Calls line(Edge3, face) for each hatch line of triangles [s, e) of one polygon: the lattice
+// lines n . p = k S clipped to each triangle, ends rounded, joined across the polygon when
+// `joined`. Lines shorter than params.min_length on paper (both axes) are not laid.
 template <typename Line>
-Status triangle_lines(const Topology& topo, uint32_t t, const HatchParams& p, Line line) {
-  const SinCos d = hatch_direction(topo.triangles, topo.n_triangles, topo.vertices, t, p);
+Status polygon_lines(const Topology& topo, uint32_t s, uint32_t e, bool joined,
+                     const HatchParams& p, Line line) {
+  const SinCos d = hatch_direction(topo.triangles, topo.n_triangles, topo.vertices, s, p);
   const int64_t nx = -d.sin, ny = d.cos;  // the lines' normal, Q2.30
   const int64_t spacing = int64_t{p.spacing} << kTrigFractionBits;
-  Point3 q[3];
-  int64_t w[3];
-  for (int k = 0; k < 3; ++k) {
-    q[k] = topo.vertices[topo.triangles[t].v[k]];
-    w[k] = nx * q[k].x + ny * q[k].y;
-  }
-  int64_t lo = w[0], hi = w[0];
-  for (int k = 1; k < 3; ++k) {
-    lo = w[k] < lo ? w[k] : lo;
-    hi = w[k] > hi ? w[k] : hi;
-  }
-  const int64_t k0 = -floor_div(-lo, spacing), k1 = floor_div(hi, spacing);
-  for (int64_t k = k0; k <= k1; ++k) {
-    const int64_t level = k * spacing;
-    Point3 ends[2];
-    int n = 0;
-    for (int i = 0; i < 3 && n < 2; ++i) {
-      const int j = (i + 1) % 3;
-      const int64_t a = w[i] - level, b = w[j] - level;
-      Point3 at;
-      if (a == 0)
-        at = q[i];
-      else if ((a < 0) != (b < 0) && b != 0)
-        at = side_point(q[i], q[j], a, b);
-      else
-        continue;
-      if (n == 1 && ends[0].x == at.x && ends[0].y == at.y) continue;
-      ends[n++] = at;
+  for (uint32_t first = s; first < e; first = joined ? e : first + 1) {
+    const uint32_t last = joined ? e : first + 1;
+    Point3 q[kJoined][3];
+    int64_t w[kJoined][3];
+    int64_t lo = 0, hi = 0;
+    for (uint32_t t = first; t < last; ++t)
+      for (int k = 0; k < 3; ++k) {
+        q[t - first][k] = topo.vertices[topo.triangles[t].v[k]];
+        const int64_t wk = nx * q[t - first][k].x + ny * q[t - first][k].y;
+        w[t - first][k] = wk;
+        lo = (t == first && k == 0) || wk < lo ? wk : lo;
+        hi = (t == first && k == 0) || wk > hi ? wk : hi;
+      }
+    const int64_t k0 = -floor_div(-lo, spacing), k1 = floor_div(hi, spacing);
+    for (int64_t k = k0; k <= k1; ++k) {
+      Edge3 seg[kJoined];
+      uint32_t n = 0;
+      for (uint32_t t = first; t < last; ++t)
+        if (triangle_segment(q[t - first], w[t - first], k * spacing, &seg[n])) ++n;
+      n = join_pieces(seg, n);
+      for (uint32_t i = 0; i < n; ++i) {
+        const int32_t dx = seg[i].b.x - seg[i].a.x, dy = seg[i].b.y - seg[i].a.y;
+        if ((dx < 0 ? -dx : dx) < p.min_length && (dy < 0 ? -dy : dy) < p.min_length) continue;
+        const Status r = line(seg[i], first);
+        if (r != Status::kOk) return r;
+      }
     }
-    if (n < 2) continue;
-    const Status s = line(Edge3{ends[0], ends[1]});
-    if (s != Status::kOk) return s;
   }
   return Status::kOk;
 }
@@ -93,14 +163,26 @@ Status draw_hatch_lines(const Topology& topo, const uint8_t* front, const FaceGr
   HatchLineStats st;
   uint32_t index = first_index;
   Status s = Status::kOk;
-  for (uint32_t t = 0; t < topo.n_triangles && s == Status::kOk; ++t) {
-    if (!hatched_face(topo, front, t, params)) continue;
-    ++st.faces;
-    s = triangle_lines(topo, t, params, [&](const Edge3& e) {
+  // Polygon by polygon (runs of triangles with one id): joined when flat, small and hatched
+  // whole, triangle by triangle otherwise.
+  for (uint32_t first = 0, end = 0; first < topo.n_triangles && s == Status::kOk; first = end) {
+    const uint32_t polygon = topo.triangles[first].polygon;
+    uint32_t hatched = 0;
+    bool flat = true;
+    for (end = first; end < topo.n_triangles && topo.triangles[end].polygon == polygon; ++end) {
+      hatched += hatched_face(topo, front, end, params) ? 1 : 0;
+      flat = flat && coplanar_faces(topo, first, end);
+    }
+    if (hatched == 0) continue;
+    st.faces += hatched;
+    const bool joined = flat && hatched == end - first && end - first <= kJoined;
+    const uint32_t begin = first, stop = end;  // the polygon's triangles
+    s = polygon_lines(topo, first, end, joined, params, [&](const Edge3& e, uint32_t t) {
+      if (!joined && !hatched_face(topo, front, t, params)) return Status::kOk;
       const int32_t y0 = min_i32(e.a.y, e.b.y), y1 = max_i32(e.a.y, e.b.y);
       if (rows.on && (y1 < rows.lo || y0 >= rows.hi)) return Status::kOk;  // not in the band
       ++st.lines;
-      const SegmentPass pass{topo, front, fg, &st, e, {t, kNoFace}, topo.triangles[t].polygon};
+      const SegmentPass pass{topo, front, fg, &st, e, {t, kNoFace}, polygon, begin, stop};
       return pass.run(index++, sink, rows);
     });
   }

@@ -7,10 +7,11 @@
 // part of every line, cut exactly at its borders, and the banded hatching is the whole one.
 //
 // Rounding: a line's ends are where the exact lattice line meets the triangle's sides, rounded
-// to units (each side computed from its lesser end, so the two triangles of a quad round the
-// point on their diagonal alike and their strokes meet end to end); its depth is the face's
-// plane there, rounded. Franklin's regions (surface/region_hatch.h) fill the same areas and are
-// what the tests check this against.
+// to units, within 1/2 + 2^-9 of the exact point on each axis (each side computed from its
+// lesser end, so the two triangles of a quad round the point on their diagonal alike: a flat
+// polygon's pieces are joined into one line); its depth is the face's plane there, rounded.
+// Franklin's regions (surface/region_hatch.h) fill the same areas and are what the tests check this
+// against.
 #pragma once
 #include <stdint.h>
 

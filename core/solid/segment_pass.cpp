@@ -12,8 +12,9 @@ namespace {
 
 constexpr int64_t kOne = int64_t{1} << 32;
 
-// Every corner of triangle u on the plane of triangle t (exact 3-D orientations).
-bool coplanar(const Topology& topo, uint32_t t, uint32_t u) {
+}  // namespace
+
+bool coplanar_faces(const Topology& topo, uint32_t t, uint32_t u) {
   const uint32_t* v = topo.triangles[t].v;
   const Point3 a = topo.vertices[v[0]], b = topo.vertices[v[1]], c = topo.vertices[v[2]];
   const int64_t ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
@@ -27,12 +28,22 @@ bool coplanar(const Topology& topo, uint32_t t, uint32_t u) {
   return true;
 }
 
-}  // namespace
+bool SegmentPass::neighbour(uint32_t k) const {
+  const uint32_t* v = topo.triangles[k].v;
+  for (uint32_t t = own_first; t < own_end; ++t) {
+    const uint32_t* u = topo.triangles[t].v;
+    int shared = 0;
+    for (int i = 0; i < 3; ++i) shared += (v[i] == u[0] || v[i] == u[1] || v[i] == u[2]) ? 1 : 0;
+    if (shared >= 2) return true;
+  }
+  return false;
+}
 
 bool SegmentPass::asks(uint32_t k) const {
   if (k == own[0] || k == own[1] || (front != nullptr && front[k] == 0)) return false;
+  if (front != nullptr && own_end > own_first && neighbour(k)) return false;
   return own_polygon == kNoFace || topo.triangles[k].polygon != own_polygon ||
-         !coplanar(topo, own[0], k);
+         !coplanar_faces(topo, own[0], k);
 }
 
 // The first kBatch distinct positions after `after`, ascending, where the segment crosses a
@@ -82,6 +93,9 @@ int32_t SegmentPass::cover_at(int64_t m) const {
     if (!asks(*k)) continue;
     const uint32_t* v = topo.triangles[*k].v;
     const Point3 &a = topo.vertices[v[0]], &b = topo.vertices[v[1]], &c = topo.vertices[v[2]];
+    // Outside the face's box on paper: no cover, exactly (p is (x / d, y / d), d <= 2^32).
+    const FaceBox fb = box_of(a, b, c);
+    if (p.x < fb.x0 * p.d || p.x > fb.x1 * p.d || p.y < fb.y0 * p.d || p.y > fb.y1 * p.d) continue;
     ++st->face_tests;
     if (front != nullptr)
       q += cover_halves(a, b, c, p);

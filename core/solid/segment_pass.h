@@ -56,6 +56,9 @@ inline bool overlap_on_paper(const FaceBox& a, const FaceBox& b) {
   return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1;
 }
 
+// Every corner of triangle u on the plane of triangle t (exact 3-D orientations).
+bool coplanar_faces(const Topology& topo, uint32_t t, uint32_t u);
+
 struct SegmentPass {
   const Topology& topo;
   const uint8_t* front;  // only front faces hide (closed solids); null: every face, both sides
@@ -67,11 +70,18 @@ struct SegmentPass {
   // too (a hatch line lies on its whole flat polygon; a bent polygon's other half can fold
   // over it, and is asked like any face).
   uint32_t own_polygon = kNoFace;
+  // With `front` (closed solids): the faces that share a side with triangles [own_first,
+  // own_end) are not asked either. Two front faces of a closed, consistently oriented solid that
+  // share a side lie on opposite sides of it on paper, so such a neighbour covers nothing of the
+  // polygon; it could only cover where a line's rounded end overhangs its polygon, and a hidden
+  // sliver there would leave a dot of ink before it.
+  uint32_t own_first = 0, own_end = 0;
 
   // Cut, test, merge equal neighbours, emit: the whole segment, or its part in the rows.
   Status run(uint32_t index, LineSink sink, LineRows rows) const;
 
   bool asks(uint32_t k) const;
+  bool neighbour(uint32_t k) const;
   static constexpr int kBatch = 16;
   int next_cuts(int64_t after, int64_t cuts[kBatch]) const;
   int32_t cover_at(int64_t m) const;

@@ -57,19 +57,23 @@ TracedQueue<SegmentQueue<64>> queue;
 // core/solid run in the job buffer. The host test compares the visible pieces with
 // `haloplot plot` of the same model.
 struct PieceCount {
-  uint32_t visible = 0, hidden = 0;
+  uint32_t visible = 0, hidden = 0, hatch = 0;  // hatch: visible hatch pieces (strokes)
   static Status piece(void* ctx, const HiddenPiece& p) {
     auto* self = static_cast<PieceCount*>(ctx);
-    ++(p.hidden ? self->hidden : self->visible);
+    if (p.hatch)
+      self->hatch += p.hidden ? 0 : 1;
+    else
+      ++(p.hidden ? self->hidden : self->visible);
     return Status::kOk;
   }
 };
 
 // The cubes projected in units of 2^-s steps, and their hidden-line run's instruction count
-// (with the intersection lines a job draws by default when `intersections`).
+// (with the intersection lines a job draws by default when `intersections`, and hatching
+// when `hatch` is not null).
 uint64_t hidden_lines_run(const Point3* world, uint32_t nv, Point3* screen, int32_t substep_bits,
                           const SolidInput& in, PieceCount* count, HiddenReport* report,
-                          bool intersections = false) {
+                          bool intersections = false, const HatchParams* hatch = nullptr) {
   View view;
   view.substep_bits = substep_bits;
   const Status ps = project_points(view, world, nv, screen);
@@ -79,6 +83,8 @@ uint64_t hidden_lines_run(const Point3* world, uint32_t nv, Point3* screen, int3
   hp.incidence_capacity = 64;
   hp.outline = true;
   hp.intersections = intersections;
+  hp.hatch = hatch != nullptr;
+  if (hatch != nullptr) hp.hatch_params = *hatch;
   const uint64_t a = counter_ticks();
   const Status hs = hidden_lines(in, hp, job_buffer, sizeof job_buffer,
                                  HiddenSink{nullptr, &PieceCount::piece, nullptr, count}, report);
@@ -148,13 +154,22 @@ void hidden_lines_on_chip() {
                         true));
   stat("solid_intersection_pairs", lines_report.intersections.pairs);
 
-  // Franklin's hidden surfaces and the hatching of the same cubes (3 mm at 80 steps/mm, 45
-  // degrees turning 90 across the depth range): the host test counts `haloplot plot --hatch`'s
-  // strokes for the same model.
+  // The hatching of the same cubes (3 mm at 80 steps/mm, 45 degrees turning 90 across the
+  // depth range) as a job draws it, in the hidden-line run: the host test counts `haloplot plot
+  // --hatch`'s strokes for the same model.
   HatchParams hatch;
   hatch.spacing = steps_to_units(240, kDefaultSubstepBits);
+  hatch.min_length = steps_to_units(1, kDefaultSubstepBits);
   hatch.angle_mdeg = 45000;
   hatch.mdeg_per_depth = 90000;
+  PieceCount hatched;
+  HiddenReport hatch_report;
+  stat("hidden_lines_instructions_with_hatching",
+       hidden_lines_run(world, nv, screen, kDefaultSubstepBits, in, &hatched, &hatch_report, false,
+                        &hatch));
+  stat("solid_hatch_strokes", hatched.hatch);
+  // Franklin's hidden surfaces (steps 10-11: the regions, each hatched as the face it shows),
+  // the reference the hatch lines are tested against on the host, run on the chip too.
   uint32_t strokes = 0;
   HiddenSurfaceStats hst;
   const uint64_t c = counter_ticks();
@@ -169,7 +184,7 @@ void hidden_lines_on_chip() {
   const uint64_t d = counter_ticks();
   if (!ok(ss)) fail("hidden surfaces", ss);
   stat("solid_regions_cycles", hst.regions.cycles);
-  stat("solid_hatch_strokes", strokes);
+  stat("solid_region_hatch_strokes", strokes);
   stat("hidden_surface_instructions", ticks_to_instructions(d - c));
 }
 

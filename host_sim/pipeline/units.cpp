@@ -22,6 +22,7 @@ ModeSpec mode_in_units(ModeSpec m, int32_t substep_bits) {
 
 HatchParams hatch_in_units(HatchParams h, int32_t substep_bits) {
   h.spacing = steps_to_units(h.spacing, substep_bits);
+  h.min_length = steps_to_units(1, substep_bits);  // as the job: no line shorter than a step
   return h;
 }
 

@@ -4,8 +4,8 @@
 #   demo   the README's demo: Figure 4 (9408 edges, halo 50, the demo machine), its edges
 #          streamed band by band;
 #   solid  a 10 x 10 solid cube array (800 vertices, 1200 edges, 1200 triangles) hidden-dashed
-#          with outlines, each band's vertices, edges and triangles streamed, its hidden lines
-#          and outlines worked out on the controller band by band.
+#          with outlines and hatching, each band's vertices, edges and triangles streamed, its
+#          hidden lines, outlines and hatch lines worked out on the controller band by band.
 # Checks that the controller's step trace equals `haloplot sim` of the same job with
 # `arena 65536`, byte for byte (the image sums its trace to a CRC-32 and a length, a test hook;
 # gzip's trailer gives the host's), that it took more than one band, and that the image exits 0.
@@ -20,7 +20,7 @@ if [ "$kind" = solid ]; then
   "$tool" demo-scene --cubes 10 -o cubes10.obj
   # Half a motor step per plot step: the same bands and hidden lines, half the step interrupts
   # (QEMU's time goes to them: 100 s instead of 200).
-  printf 'scene cubes10.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nkinematics corexy\nsteps 1/2\narena 65536\n' \
+  printf 'scene cubes10.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\nkinematics corexy\nsteps 1/2\narena 65536\n' \
     > demo.job
   "$tool" sim demo.job -o host.trace --stats 2> host.stats
   host=$(trace_digest host.trace)

@@ -182,6 +182,18 @@ void check_scene(const SolidScene& s, const HatchParams& hp, const std::string& 
   HatchRun faces;
   CHECK(run_hatch(s, hp, &faces, HatchMethod::kLines) == Status::kOk);
   check_strokes(s, faces, label + " (lines)");
+  // No dots: with lines shorter than a step not laid, a visible piece is a step or more long,
+  // except where a nearer face leaves less of it (a piece ending at another face's side).
+  HatchParams steps = hp;
+  steps.min_length = 1;
+  HatchRun laid;
+  CHECK(run_hatch(s, steps, &laid, HatchMethod::kLines) == Status::kOk);
+  size_t dots = 0;
+  for (const HatchStroke& h : laid.strokes)
+    dots += h.line.a.x == h.line.b.x && h.line.a.y == h.line.b.y ? 1 : 0;
+  CHECK_MSG(dots * 1000 <= laid.strokes.size(), label + ": " + std::to_string(dots) + " of " +
+                                                    std::to_string(laid.strokes.size()) +
+                                                    " hatch strokes are dots");
   HatchRun hr;
   const Status st = run_hatch(s, hp, &hr);
   CHECK_MSG(st == Status::kOk, label + ": " + status_name(st));
