@@ -38,7 +38,11 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
   echo "same conductor given room for one band; *visible equal QI* compares the one-band run's"
   echo "visible runs with the whole-model QI propagation's. The time peer is that whole-model run"
   echo "(core/solid/hidden_lines.h, one buffer for the whole model), which the controller can only"
-  echo "make for models that fit its arena whole (3 x 3 cubes in 64 KB)."
+  echo "make for models that fit its arena whole (3 x 3 cubes in 64 KB). The second table hatches"
+  echo "the same arrays (solid/hatch_lines.h, 240 steps apart): each band draws the hatch lines' parts"
+  echo "in its rows; *equal one band* compares the edges' strokes and the hatch strokes joined across"
+  echo "the borders. A band's hatch lines cost 40 bytes a visible piece however thin it is, so the"
+  echo "hatched arrays need more bands, and their pen-up travel grows with the strokes cut at borders."
   echo
   build/host/tests/bench/solid_band_bench 65536 98304
 } > docs/bands.md

@@ -7,6 +7,7 @@
 // the host time against the whole-model run, and the pen-up travel against one band.
 // Usage: solid_band_bench ARENA_BYTES... > table.md
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -29,14 +30,17 @@ using solid_refs::Stroke;
 struct Run {
   Status status = Status::kOk;
   std::vector<Stroke> strokes;
+  std::vector<std::array<int64_t, 8>> lines;  // hatch strokes: the line's ends, then t0, t1
   BandStats stats;
   double ms = 0;
 };
 
 Run banded(const SolidInput& in, bool closed, size_t arena_bytes,
-           SolidMode mode = SolidMode::kHiddenDashed) {
+           SolidMode mode = SolidMode::kHiddenDashed, const HatchParams* hatch = nullptr) {
   Run r;
   BandSpec spec;
+  spec.hatch = hatch != nullptr;
+  if (hatch != nullptr) spec.hatch_params = *hatch;
   spec.haloed = false;
   spec.style = StrokeStyle{mode, 160, 80};
   spec.intersections = true;  // as a job draws by default (none cross in a cube array)
@@ -44,7 +48,13 @@ Run banded(const SolidInput& in, bool closed, size_t arena_bytes,
   std::vector<uint64_t> arena(arena_bytes / 8);
   BandConductor bc;
   bc.set_observer(PieceObserver{[](void* ctx, const BandPiece& p) {
-                                  static_cast<Run*>(ctx)->strokes.emplace_back(p.edge, p.t0, p.t1);
+                                  Run* self = static_cast<Run*>(ctx);
+                                  if (p.line != nullptr)
+                                    self->lines.push_back({p.line->a.x, p.line->a.y, p.line->a.z,
+                                                           p.line->b.x, p.line->b.y, p.line->b.z,
+                                                           p.t0, p.t1});
+                                  else
+                                    self->strokes.emplace_back(p.edge, p.t0, p.t1);
                                 },
                                 &r});
   const double t0 = bench::now_ms();
@@ -53,7 +63,58 @@ Run banded(const SolidInput& in, bool closed, size_t arena_bytes,
   r.ms = bench::now_ms() - t0;
   r.stats = bc.stats();
   std::sort(r.strokes.begin(), r.strokes.end());
+  // Hatch strokes of one line that meet at a band border, joined.
+  std::sort(r.lines.begin(), r.lines.end());
+  std::vector<std::array<int64_t, 8>> joined;
+  for (const auto& l : r.lines)
+    if (!joined.empty() && std::equal(l.begin(), l.begin() + 6, joined.back().begin()) &&
+        joined.back()[7] == l[6])
+      joined.back()[7] = l[7];
+    else
+      joined.push_back(l);
+  r.lines = joined;
   return r;
+}
+
+// The same arrays hatched (3 mm at 80 steps/mm): bands, peak, the hatching against one band's.
+void hatched_table(const std::vector<size_t>& arenas) {
+  std::printf(
+      "\n| cubes, hatched | arena | bands | peak bytes | strokes and hatching equal one band | "
+      "hatch strokes | pen-up banded / one band |\n");
+  std::printf("|---|---:|---:|---:|---|---:|---:|\n");
+  HatchParams hp;
+  hp.spacing = 240;
+  hp.angle_mdeg = 30000;
+  hp.min_length = 1;
+  for (int n : {3, 10, 14, 20}) {
+    solid_scenes::Mesh m;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        solid_scenes::box(&m, i * 3000, j * 3000, 0, i * 3000 + 2000, j * 3000 + 2000, 2000);
+    SolidScene scene;
+    if (!solid_scenes::project(m, solid_scenes::view(30000, 25000), &scene)) return;
+    const SolidInput in = solid_input(scene);
+    const bool closed = model_closed(scene);
+    const Run one = banded(in, closed, size_t{1} << 30, SolidMode::kHiddenDashed, &hp);
+    for (size_t arena : arenas) {
+      const Run b = banded(in, closed, arena, SolidMode::kHiddenDashed, &hp);
+      std::string bands = std::to_string(b.stats.bands), peak = std::to_string(b.stats.peak_bytes);
+      std::string equal = "-", pen = "-";
+      if (ok(b.status)) {
+        equal = b.strokes == one.strokes && b.lines == one.lines ? "yes" : "NO";
+        pen = bench::fmt(double(b.stats.path.pen_up_length) /
+                             double(std::max<uint64_t>(one.stats.path.pen_up_length, 1)),
+                         2);
+      } else {
+        bands = std::string(status_name(b.status)) + " (a band one row high needs " +
+                std::to_string(b.stats.need_bytes) + " bytes)";
+        peak = "-";
+      }
+      std::printf("| %d x %d | %zu KB | %s | %s | %s | %zu | %s |\n", n, n, arena >> 10,
+                  bands.c_str(), peak.c_str(), equal.c_str(), one.lines.size(), pen.c_str());
+      std::fflush(stdout);
+    }
+  }
 }
 
 }  // namespace
@@ -110,5 +171,6 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
     }
   }
+  hatched_table(arenas);
   return 0;
 }
