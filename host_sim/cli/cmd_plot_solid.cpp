@@ -81,6 +81,11 @@ int cmd_plot_solid(const Options& o) {
   if (!parse_solid_options(o, &so, &error)) return fail(error);
   if (!o.get("--halo").empty() || o.has("--exact-halo"))
     return fail("--halo belongs to --mode haloed (HALO needs no faces)");
+  // Not silently ignored: a solid's bands are a job's (the same strokes in any arena).
+  if (!o.get("--arena").empty())
+    return fail("--arena with --mode " + o.get("--mode") +
+                ": a solid's drawing is the same in any arena; to plot it in bands as a "
+                "controller would, give its job 'arena BYTES' and run `haloplot sim JOB.job`");
   SolidScene scene;
   TriangulateStats tri;
   if (!load_solid_scene(o, o.positional[0], &scene, &tri, &error)) return fail(error);

@@ -216,6 +216,9 @@ rc=$?
 "$tool" sim solid_hatch_whole.job -o solid_hatch_whole.trace --stats 2> solid_hatch_whole.txt
 down() { sed -n 's/^pen_down_length=//p' "$1"; }
 expect '[ $rc -eq 0 ] && [ "$(sed -n "s/^bands=//p" solid_hatch.txt)" -gt 1 ] && [ "$(down solid_hatch.txt)" -gt $(( $(down solid_arena.txt) * 2 )) ] && [ $(( 1000 * $(down solid_hatch.txt) / $(down solid_hatch_whole.txt) )) -ge 995 ] && [ $(( 1000 * $(down solid_hatch.txt) / $(down solid_hatch_whole.txt) )) -le 1005 ]' "a hatched job with an arena plots in bands, as much ink as without: $(grep -E "^(bands|pen_down_length)=" solid_hatch.txt solid_hatch_whole.txt solid_arena.txt | tr '\n' ' ')"
+"$tool" plot cubes4.obj --mode hidden-dashed --hatch 3 --arena 32768 -o solid_arena.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "arena BYTES" err.txt && [ ! -e solid_arena.svg ]' "plot --arena of a solid is refused by name, not ignored: $(cat err.txt)"
 # Intersection lines in bands too: the boxes through each other, with and without them.
 printf 'scene boxes.obj\ndrawing hidden-removed\nview 30,25\narena 6144\n' > lines_arena.job
 { cat lines_arena.job; echo "intersections off"; } > nolines_arena.job
