@@ -3,13 +3,15 @@
 // (here the same core on the host, fed by a stream that is often not ready yet) must draw the
 // same plot: its step trace equals `haloplot sim` of the same job with the same arena, byte for
 // byte, however often the plot waits for a band. A band with an edge missing must show. The
-// same for a solid's hidden lines in bands (10 x 10 cubes, hidden-dashed, outlined): its bands
-// carry vertices, edges and triangles, and a band missing faces must show.
+// same for a solid's hidden lines in bands (10 x 10 cubes, hidden-dashed, outlined, and
+// hatched; a hatched torus): its bands carry vertices, edges and triangles, and a band missing
+// faces must show, as must the torus's bands without the triangles that complete a polygon.
 #include <algorithm>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "band/band_rule.h"
 #include "check.h"
 #include "demo/cube_array.h"
 #include "pipeline/band_stream.h"
@@ -21,12 +23,17 @@ using namespace haloplot::host;
 
 namespace {
 constexpr size_t kArena = 64 * 1024;
-// A solid's bands streamed: the trace equals the banded `sim` of the same job.
-void check_solid() {
+// A solid's bands streamed: the trace equals the banded `sim` of the same job. Hatched too: then
+// each band carries every triangle of each polygon it holds (the lines' direction reads the
+// whole polygon), and bands planned without that rule must change the plot.
+void check_solid(bool hatch, bool torus = false) {
   solid_scenes::Mesh m;
-  for (int i = 0; i < 10; ++i)
-    for (int j = 0; j < 10; ++j)
-      solid_scenes::box(&m, i * 3000, j * 3000, 0, i * 3000 + 2000, j * 3000 + 2000, 2000);
+  if (torus)  // quads whose diagonals do not span them in y: a band can meet half of one
+    solid_scenes::torus(&m, 0, 0, 0, 6000, 2000, 48, 24, true);
+  else
+    for (int i = 0; i < 10; ++i)
+      for (int j = 0; j < 10; ++j)
+        solid_scenes::box(&m, i * 3000, j * 3000, 0, i * 3000 + 2000, j * 3000 + 2000, 2000);
   SolidScene scene;
   CHECK(solid_scenes::project(m, solid_scenes::view(30000, 25000), &scene));
   const SolidInput in = solid_input(scene);
@@ -37,6 +44,8 @@ void check_solid() {
   job.hidden.dash = 160;
   job.hidden.gap = 80;
   job.hidden.outline = true;
+  job.hidden.hatch = hatch;
+  job.hidden.hatch_spacing = 240;
   job.machine.kinematics = Kinematics::kCoreXY;
   std::ostringstream reference;
   SimReport report;
@@ -52,9 +61,10 @@ void check_solid() {
     t += b.triangles.size();
   }
   std::printf(
-      "10 x 10 solid cubes streamed: %zu bands; %zu vertices, %zu edges, %zu triangles "
+      "%s%s streamed: %zu bands; %zu vertices, %zu edges, %zu triangles "
       "sent for %u, %u, %u\n",
-      plan.bands.size(), v, e, t, in.n_vertices, in.n_edges, in.n_triangles);
+      torus ? "a torus" : "10 x 10 solid cubes", hatch ? " hatched" : "", plan.bands.size(), v, e,
+      t, in.n_vertices, in.n_edges, in.n_triangles);
   for (int busy : {0, 2}) {
     PlanStream stream;
     stream.plan = &plan;
@@ -77,6 +87,28 @@ void check_solid() {
   SimReport streamed;
   const Status s = simulate_streamed(job, stream.stream(), 0, kArena, &out, &streamed, &broken);
   CHECK_MSG(!ok(s) || out.str() != reference.str(), "a band missing faces must change the plot");
+  if (!torus) return;  // (a cube's quads: both halves span the quad's rows, so no band cuts one)
+  // The same bands, each without the triangles that only complete a polygon.
+  BandPlan cut = plan;
+  size_t fewer = 0;
+  for (PlannedBand& band : cut.bands) {
+    std::vector<Triangle> kept;
+    for (const Triangle& tri : band.triangles)
+      if (triangle_meets_rows(in.vertices[tri.v[0]], in.vertices[tri.v[1]], in.vertices[tri.v[2]],
+                              band.y0, band.y1))
+        kept.push_back(tri);
+    fewer += band.triangles.size() - kept.size();
+    band.triangles = kept;
+  }
+  PlanStream cut_stream;
+  cut_stream.plan = &cut;
+  std::ostringstream cut_out;
+  SimReport cut_report;
+  const Status cs =
+      simulate_streamed(job, cut_stream.stream(), 0, kArena, &cut_out, &cut_report, &cut);
+  CHECK_MSG(fewer > 0 && (!ok(cs) || cut_out.str() != reference.str()),
+            "bands without whole polygons (" + std::to_string(fewer) +
+                " triangles fewer) must change the hatched plot");
 }
 
 }  // namespace
@@ -140,6 +172,8 @@ int main() {
     CHECK_MSG(!ok(s) || out.str() != reference.str(),
               "a band missing an edge must change the plot");
   }
-  check_solid();
+  check_solid(false);
+  check_solid(true);
+  check_solid(true, true);
   return check::finish("band_stream");
 }
