@@ -76,6 +76,34 @@ Run banded(const SolidInput& in, bool closed, size_t arena_bytes,
   return r;
 }
 
+// A banded run's cells of a table row, against one band's run.
+struct Cells {
+  std::string bands, peak = "-", pen = "-";
+};
+Cells cells(const Run& b, const Run& one) {
+  Cells c;
+  if (!ok(b.status)) {
+    c.bands = std::string(status_name(b.status)) + " (a band one row high needs " +
+              std::to_string(b.stats.need_bytes) + " bytes)";
+    return c;
+  }
+  c.bands = std::to_string(b.stats.bands);
+  c.peak = std::to_string(b.stats.peak_bytes);
+  c.pen = bench::fmt(double(b.stats.path.pen_up_length) /
+                         double(std::max<uint64_t>(one.stats.path.pen_up_length, 1)),
+                     2);
+  return c;
+}
+
+// N x N solid cubes at view 30,25, the plot area the same for every N.
+bool cube_array_scene(int n, SolidScene* scene) {
+  solid_scenes::Mesh m;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      solid_scenes::box(&m, i * 3000, j * 3000, 0, i * 3000 + 2000, j * 3000 + 2000, 2000);
+  return solid_scenes::project(m, solid_scenes::view(30000, 25000), scene);
+}
+
 // The same arrays hatched (3 mm at 80 steps/mm): bands, peak, the hatching against one band's.
 void hatched_table(const std::vector<size_t>& arenas) {
   std::printf(
@@ -87,31 +115,19 @@ void hatched_table(const std::vector<size_t>& arenas) {
   hp.angle_mdeg = 30000;
   hp.min_length = 1;
   for (int n : {3, 10, 14, 20}) {
-    solid_scenes::Mesh m;
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j)
-        solid_scenes::box(&m, i * 3000, j * 3000, 0, i * 3000 + 2000, j * 3000 + 2000, 2000);
     SolidScene scene;
-    if (!solid_scenes::project(m, solid_scenes::view(30000, 25000), &scene)) return;
+    if (!cube_array_scene(n, &scene)) return;
     const SolidInput in = solid_input(scene);
     const bool closed = model_closed(scene);
     const Run one = banded(in, closed, size_t{1} << 30, SolidMode::kHiddenDashed, &hp);
     for (size_t arena : arenas) {
       const Run b = banded(in, closed, arena, SolidMode::kHiddenDashed, &hp);
-      std::string bands = std::to_string(b.stats.bands), peak = std::to_string(b.stats.peak_bytes);
-      std::string equal = "-", pen = "-";
-      if (ok(b.status)) {
-        equal = b.strokes == one.strokes && b.lines == one.lines ? "yes" : "NO";
-        pen = bench::fmt(double(b.stats.path.pen_up_length) /
-                             double(std::max<uint64_t>(one.stats.path.pen_up_length, 1)),
-                         2);
-      } else {
-        bands = std::string(status_name(b.status)) + " (a band one row high needs " +
-                std::to_string(b.stats.need_bytes) + " bytes)";
-        peak = "-";
-      }
+      const Cells c = cells(b, one);
+      const std::string equal = !ok(b.status)                                      ? "-"
+                                : b.strokes == one.strokes && b.lines == one.lines ? "yes"
+                                                                                   : "NO";
       std::printf("| %d x %d | %zu KB | %s | %s | %s | %zu | %s |\n", n, n, arena >> 10,
-                  bands.c_str(), peak.c_str(), equal.c_str(), one.lines.size(), pen.c_str());
+                  c.bands.c_str(), c.peak.c_str(), equal.c_str(), one.lines.size(), c.pen.c_str());
       std::fflush(stdout);
     }
   }
@@ -128,12 +144,8 @@ int main(int argc, char** argv) {
       "band | visible equal QI | time banded / whole-model QI | pen-up banded / one band |\n");
   std::printf("|---|---:|---:|---:|---:|---|---|---:|---:|\n");
   for (int n : {3, 10, 14, 20, 28}) {
-    solid_scenes::Mesh m;
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j)
-        solid_scenes::box(&m, i * 3000, j * 3000, 0, i * 3000 + 2000, j * 3000 + 2000, 2000);
     SolidScene scene;
-    if (!solid_scenes::project(m, solid_scenes::view(30000, 25000), &scene)) return 1;
+    if (!cube_array_scene(n, &scene)) return 1;
     const SolidInput in = solid_input(scene);
     const bool closed = model_closed(scene);
     SolidRun qi;
@@ -152,19 +164,10 @@ int main(int argc, char** argv) {
                                                                                           : "NO";
     for (size_t arena : arenas) {
       const Run b = banded(in, closed, arena);
-      std::string bands = std::to_string(b.stats.bands), peak = std::to_string(b.stats.peak_bytes);
-      std::string equal = "-", time = "-", pen = "-";
-      if (ok(b.status)) {
-        equal = b.strokes == one.strokes ? "yes" : "NO";
-        time = bench::fmt(b.ms / std::max(qi_ms, 1e-3), 2);
-        pen = bench::fmt(double(b.stats.path.pen_up_length) /
-                             double(std::max<uint64_t>(one.stats.path.pen_up_length, 1)),
-                         2);
-      } else {
-        bands = std::string(status_name(b.status)) + " (a band one row high needs " +
-                std::to_string(b.stats.need_bytes) + " bytes)";
-        peak = "-";
-      }
+      const Cells c = cells(b, one);
+      const std::string &bands = c.bands, &peak = c.peak, &pen = c.pen;
+      const std::string equal = !ok(b.status) ? "-" : b.strokes == one.strokes ? "yes" : "NO";
+      const std::string time = !ok(b.status) ? "-" : bench::fmt(b.ms / std::max(qi_ms, 1e-3), 2);
       std::printf("| %d x %d | %u / %u / %u | %zu KB | %s | %s | %s | %s | %s | %s |\n", n, n,
                   in.n_vertices, in.n_edges, in.n_triangles, arena >> 10, bands.c_str(),
                   peak.c_str(), equal.c_str(), vis.c_str(), time.c_str(), pen.c_str());

@@ -229,6 +229,36 @@ void check_outlines(const Scene& sc) {
   }
 }
 
+// In every arena of the scene: the lines' strokes (intersection or hatch lines), joined across
+// the borders, equal `reference`, and the edges' strokes equal `plain`'s.
+void check_lines_in_bands(const Scene& sc, const std::string& kind, SolidSource source,
+                          const std::vector<LineStroke>& reference, const Banded& plain,
+                          bool intersections, const HatchParams* hatch) {
+  const StrokeStyle style{SolidMode::kHiddenDashed, 160, 80};
+  for (size_t arena : sc.arenas) {
+    const Banded b = run_bands(style, arena, source, false, intersections, hatch);
+    const std::vector<LineStroke> runs = joined_lines(b.lines);
+    const std::string what = sc.name + " " + kind + " in " + std::to_string(arena >> 10) + " KB (" +
+                             std::to_string(b.stats.bands) + " bands)";
+    CHECK_MSG(ok(b.status) && b.stats.bands > 1, what + ": plots in bands");
+    CHECK_MSG(runs == reference, what + ": strokes, joined across the borders, equal the " +
+                                     "whole-model run's (" + std::to_string(runs.size()) +
+                                     " runs vs " + std::to_string(reference.size()) + ")");
+    CHECK_MSG(b.strokes == plain.strokes, what + ": the edges' strokes unchanged");
+    std::printf("%s: %zu strokes, %zu runs joined\n", what.c_str(), b.lines.size(), runs.size());
+  }
+}
+
+// The scene's input without triangle f (the triangles kept in *storage).
+SolidInput without_face(const Scene& sc, uint32_t f, std::vector<Triangle>* storage) {
+  SolidInput lost = solid_input(sc.scene);
+  *storage = sc.scene.triangles;
+  storage->erase(storage->begin() + long(f));
+  lost.triangles = storage->data();
+  lost.n_triangles = uint32_t(storage->size());
+  return lost;
+}
+
 // Intersection lines in bands (solids through each other): each band draws the visible parts
 // in its rows, cut at its borders; joined across the borders they are the whole-model run's
 // (solid/intersection_lines.h on every face at once), and the edges' strokes do not change.
@@ -250,29 +280,12 @@ void check_lines(const Scene& sc) {
                 std::to_string(joined_lines(one.lines).size()) + " runs vs " +
                 std::to_string(reference.size()) + ")");
   CHECK_MSG(one.strokes == plain.strokes, sc.name + ": the lines leave the edges' strokes alone");
-  for (size_t arena : sc.arenas) {
-    const Banded b = run_bands(style, arena, source, false, true);
-    const std::vector<LineStroke> runs = joined_lines(b.lines);
-    const std::string what = sc.name + " in " + std::to_string(arena >> 10) + " KB (" +
-                             std::to_string(b.stats.bands) + " bands)";
-    CHECK_MSG(ok(b.status) && b.stats.bands > 1, what + ": plots in bands");
-    CHECK_MSG(runs == reference, what +
-                                     ": intersection lines, joined across the borders, equal "
-                                     "the whole-model run's (" +
-                                     std::to_string(runs.size()) + " runs vs " +
-                                     std::to_string(reference.size()) + ")");
-    CHECK_MSG(b.strokes == plain.strokes, what + ": the edges' strokes unchanged");
-    std::printf("%s: %zu intersection strokes, %zu runs joined\n", what.c_str(), b.lines.size(),
-                runs.size());
-  }
+  check_lines_in_bands(sc, "intersection lines", source, reference, plain, true, nullptr);
   // The control: a band source that lost a face of a visible crossing must change the lines.
   size_t seen = 0;
   while (seen + 1 < whole.intersections.size() && whole.intersections[seen].hidden) ++seen;
-  std::vector<Triangle> tris(sc.scene.triangles);
-  tris.erase(tris.begin() + long(whole.intersection_faces[seen][0]));
-  SolidInput lost = in;
-  lost.triangles = tris.data();
-  lost.n_triangles = uint32_t(tris.size());
+  std::vector<Triangle> tris;
+  const SolidInput lost = without_face(sc, whole.intersection_faces[seen][0], &tris);
   const Banded c =
       run_bands(style, sc.arenas.front(), array_solid_source(&lost, true), false, true);
   CHECK_MSG(ok(c.status) && joined_lines(c.lines) != reference,
@@ -303,30 +316,13 @@ void check_hatch(Scene sc, int32_t spacing, std::vector<size_t> arenas_kb = {}) 
   const SolidSource source = array_solid_source(&in, !sc.open);
   const StrokeStyle style{SolidMode::kHiddenDashed, 160, 80};
   const Banded plain = run_bands(style, size_t{256} << 20, source);
-  for (size_t arena : sc.arenas) {
-    const Banded b = run_bands(style, arena, source, false, false, &hp);
-    const std::vector<LineStroke> runs = joined_lines(b.lines);
-    const std::string what = sc.name + " hatched in " + std::to_string(arena >> 10) + " KB (" +
-                             std::to_string(b.stats.bands) + " bands)";
-    CHECK_MSG(ok(b.status) && b.stats.bands > 1, what + ": plots in bands");
-    CHECK_MSG(runs == reference, what +
-                                     ": hatch strokes, joined across the borders, equal the "
-                                     "whole-model run's (" +
-                                     std::to_string(runs.size()) + " runs vs " +
-                                     std::to_string(reference.size()) + ")");
-    CHECK_MSG(b.strokes == plain.strokes, what + ": the edges' strokes unchanged");
-    std::printf("%s: %zu hatch strokes, %zu runs joined\n", what.c_str(), b.lines.size(),
-                runs.size());
-  }
+  check_lines_in_bands(sc, "hatched", source, reference, plain, false, &hp);
   // The controls: a band source that lost a hatched face, and one that turned the hatch (the
   // lines' direction reads the whole polygon), must change the hatching.
   uint32_t hatched = 0;
   while (hatched < whole.hatch_faces.size() && whole.hatch[hatched].hidden) ++hatched;
-  std::vector<Triangle> tris(sc.scene.triangles);
-  tris.erase(tris.begin() + long(whole.hatch_faces[hatched]));
-  SolidInput lost = in;
-  lost.triangles = tris.data();
-  lost.n_triangles = uint32_t(tris.size());
+  std::vector<Triangle> tris;
+  const SolidInput lost = without_face(sc, whole.hatch_faces[hatched], &tris);
   const Banded c =
       run_bands(style, sc.arenas.front(), array_solid_source(&lost, !sc.open), false, false, &hp);
   CHECK_MSG(ok(c.status) && joined_lines(c.lines) != reference,
@@ -413,7 +409,7 @@ int main() {
     m.faces.erase(m.faces.begin() + 1);  // the lid
     Scene open = make("open box at 30,25", m, 30000, 25000, {8, 16});
     open.open = true;
-    check_hatch(open, 150);
+    check_hatch(open, 150, {12, 16});
   }
   for (const Scene& s : scenes) check_outlines(s);
   check_open_outlines();
