@@ -30,10 +30,11 @@ struct LineSink {
 };
 
 // A band's rows (band/band_rule.h): the segment is cut where it enters and leaves rows
-// [lo, hi) (geometry/rows.h) and only the pieces between are tested and emitted. A piece the
-// lower border cut too short to hold a test point is asked at the border itself, inside the
+// [lo, hi) (geometry/rows.h) and only the pieces between are tested and emitted. A piece
+// either border cut too short to hold a test point is asked at the border itself, inside the
 // piece it was cut from, so the band's pieces are the whole run's pieces cut at the borders.
-// Every face that can cover a point of those rows meets them: the band's input holds it.
+// Every face that can cover a point of those rows or of the row above meets them: the band's
+// input holds it.
 struct LineRows {
   bool on = false;
   int32_t lo = 0, hi = 0;
