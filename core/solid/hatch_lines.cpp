@@ -106,16 +106,18 @@ uint32_t join_pieces(Edge3* seg, uint32_t n) {
 constexpr uint32_t kJoined = 8;
 
 // Calls line(Edge3, face) for each hatch line of triangles [s, e) of one polygon: the lattice
-// lines n . p = k S clipped to each triangle, ends rounded, joined across the polygon when
-// `joined`. Lines shorter than params.min_length on paper (both axes) are not laid.
-template <typename Line>
+// lines n . p = k S clipped to each triangle (those lays(t) accepts, when not joined), ends
+// rounded, joined across the polygon when `joined`. Lines shorter than params.min_length on paper
+// (both axes) are not laid.
+template <typename Lays, typename Line>
 Status polygon_lines(const Topology& topo, uint32_t s, uint32_t e, bool joined,
-                     const HatchParams& p, Line line) {
+                     const HatchParams& p, Lays lays, Line line) {
   const SinCos d = hatch_direction(topo.triangles, topo.n_triangles, topo.vertices, s, p);
   const int64_t nx = -d.sin, ny = d.cos;  // the lines' normal, Q2.30
   const int64_t spacing = int64_t{p.spacing} << kTrigFractionBits;
   for (uint32_t first = s; first < e; first = joined ? e : first + 1) {
     const uint32_t last = joined ? e : first + 1;
+    if (!joined && !lays(first)) continue;  // a triangle of a bent polygon that is not hatched
     Point3 q[kJoined][3];
     int64_t w[kJoined][3];
     int64_t lo = 0, hi = 0;
@@ -177,8 +179,8 @@ Status draw_hatch_lines(const Topology& topo, const uint8_t* front, const FaceGr
     st.faces += hatched;
     const bool joined = flat && hatched == end - first && end - first <= kJoined;
     const uint32_t begin = first, stop = end;  // the polygon's triangles
-    s = polygon_lines(topo, first, end, joined, params, [&](const Edge3& e, uint32_t t) {
-      if (!joined && !hatched_face(topo, front, t, params)) return Status::kOk;
+    auto lays = [&](uint32_t t) { return hatched_face(topo, front, t, params); };
+    s = polygon_lines(topo, first, end, joined, params, lays, [&](const Edge3& e, uint32_t t) {
       const int32_t y0 = min_i32(e.a.y, e.b.y), y1 = max_i32(e.a.y, e.b.y);
       if (rows.on && (y1 < rows.lo || y0 >= rows.hi)) return Status::kOk;  // not in the band
       ++st.lines;
