@@ -8,6 +8,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 tool="${1:-$root/build/host/host_sim/haloplot}"
+case "$tool" in /*) ;; *) tool="$PWD/$tool" ;; esac
 [ -x "$tool" ] || { echo "demo_figures: no tool at $tool (build it: cmake --build --preset host --target haloplot)" >&2; exit 2; }
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT

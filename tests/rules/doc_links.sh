@@ -10,10 +10,14 @@ perl -e '
 use strict; use warnings;
 my %anchors;  # file -> { anchor -> 1 }
 sub slurp { my ($f) = @_; open my $h, "<", $f or return undef; local $/; my $t = <$h>; close $h; $t }
-sub strip_code {  # fenced blocks and inline code spans out, line count kept
+sub strip_fences {  # fenced code blocks out, line count kept
   my ($t) = @_;
   $t =~ s{^(```|~~~).*?^\1[^\n]*$}{ my $b = $&; $b =~ s/[^\n]//g; $b }gmse;
-  $t =~ s{`[^`\n]*`}{ "" }ge;
+  return $t;
+}
+sub strip_code {  # and inline code spans
+  my ($t) = strip_fences(@_);
+  $t =~ s{`[^`\n]*`}{}g;
   return $t;
 }
 sub anchors_of {
@@ -21,7 +25,7 @@ sub anchors_of {
   return $anchors{$f} if $anchors{$f};
   my $t = slurp($f); my %a; my %seen;
   if (defined $t) {
-    $t = strip_code($t);
+    $t = strip_fences($t);
     for my $line (split /\n/, $t) {
       next unless $line =~ /^#{1,6}\s+(.*?)\s*#*\s*$/;
       my $s = lc $1;
