@@ -3,9 +3,9 @@
 # Usage: tools/install_deps.sh [demo|test]
 set -euo pipefail
 want_demo=(cmake g++ make rsvg-convert)
-want_test=(cmake g++ make clang++ clang-format valgrind arm-none-eabi-gcc arm-none-eabi-g++ qemu-system-arm)
+want_test=(cmake g++ make clang++ clang-format ctags valgrind arm-none-eabi-gcc arm-none-eabi-g++ qemu-system-arm)
 declare -A package=(
-  [cmake]=cmake [g++]=g++ [make]=make [clang++]=clang [clang-format]=clang-format [valgrind]=valgrind
+  [cmake]=cmake [g++]=g++ [make]=make [clang++]=clang [clang-format]=clang-format [ctags]=universal-ctags [valgrind]=valgrind
   [rsvg-convert]=librsvg2-bin
   [arm-none-eabi-gcc]=gcc-arm-none-eabi [arm-none-eabi-g++]=gcc-arm-none-eabi
   [qemu-system-arm]=qemu-system-arm

@@ -1,11 +1,17 @@
 #!/usr/bin/env bash
-# Every C++ source matches the committed .clang-format.
+# Every C++ source matches the committed .clang-format. One clang-format process reads them all
+# (one per file took a minute and a half on a loaded 2-core machine); it names each file and
+# line that differs, and this script counts the files.
 set -u
 cd "$1"
-files=$(find core hal host_sim firmware tests -name '*.cpp' -o -name '*.h')
-bad=0 good=0
-for f in $files; do
-  if clang-format --dry-run -Werror "$f" >/dev/null 2>&1; then good=$((good + 1)); else bad=$((bad + 1)); echo "FAILED: $f is not clang-formatted"; fi
-done
-echo "format: $good passed, $bad failed"
-[ "$bad" -eq 0 ]
+mapfile -t files < <(find core hal host_sim firmware tests examples -name '*.cpp' -o -name '*.h' 2>/dev/null | sort)
+out=$(clang-format --dry-run -Werror "${files[@]}" 2>&1)
+rc=$?
+mapfile -t bad < <(printf '%s\n' "$out" | sed -n 's/^\([^:]*\):[0-9]*:[0-9]*: error: .*clang-format.*/\1/p' | sort -u)
+for f in "${bad[@]}"; do echo "FAILED: $f is not clang-formatted"; done
+if [ "$rc" -ne 0 ] && [ ${#bad[@]} -eq 0 ]; then
+  echo "FAILED: clang-format exited $rc: $out"
+  bad=("(clang-format itself)")
+fi
+echo "format: $((${#files[@]} - ${#bad[@]})) passed, ${#bad[@]} failed"
+[ ${#bad[@]} -eq 0 ] && [ "$rc" -eq 0 ]
