@@ -181,52 +181,21 @@ Workspace carve_workspace(C* front, C* grid, uint32_t n) {
   return w;
 }
 
-}  // namespace
-
-void round_to_steps(Segment2* spans, uint32_t n, int substep_bits) {
-  if (substep_bits == 0) return;
+// Pen-up travel with no planning (every span on its own, in input order): the stats' baseline.
+uint64_t naive_pen_up(const Segment2* spans, uint32_t n, int32_t start_x, int32_t start_y) {
+  uint64_t length = 0;
+  int32_t px = start_x, py = start_y;
   for (uint32_t i = 0; i < n; ++i) {
-    Segment2& g = spans[i];
-    g = Segment2{units_to_steps(g.x0, substep_bits), units_to_steps(g.y0, substep_bits),
-                 units_to_steps(g.x1, substep_bits), units_to_steps(g.y1, substep_bits)};
+    length += length_floor(int64_t{spans[i].x0} - px, int64_t{spans[i].y0} - py);
+    px = spans[i].x1;
+    py = spans[i].y1;
   }
+  return length;
 }
 
-uint32_t length_floor(int64_t dx, int64_t dy) {
-  return isqrt_u64(static_cast<uint64_t>(dx * dx + dy * dy));
-}
-
-size_t path_plan_bytes(uint32_t n_spans) {
-  ByteCounter front, grid;
-  carve_workspace(&front, &grid, n_spans);
-  return front.total > grid.total ? front.total : grid.total;
-}
-
-Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t start_y,
-                 void* workspace, size_t workspace_bytes, PathPoint* out, uint32_t out_capacity,
-                 uint32_t* out_count, PathStats* stats, PathEnd end) {
-  Carver front(workspace, workspace_bytes), grid = front;
-  const Workspace ws = carve_workspace(&front, &grid, n);
-  if (front.short_ || grid.short_) return Status::kWorkspaceTooSmall;
-  if (out_capacity < path_points_max(n)) return Status::kBadParameter;
-  EndKey* ends = ws.ends;
-  uint32_t* link = ws.link;
-  Chain* chains = ws.chains;
-  uint8_t* done = ws.done;
-  PathStats st;
-
-  // Naive pen-up travel: every span on its own, in input order.
-  {
-    int32_t px = start_x, py = start_y;
-    for (uint32_t i = 0; i < n; ++i) {
-      st.naive_pen_up_length += length_floor(int64_t{spans[i].x0} - px, int64_t{spans[i].y0} - py);
-      px = spans[i].x1;
-      py = spans[i].y1;
-    }
-  }
-
-  // 1. Join: sort all ends by position, pair the ends that meet. Zero-length spans (dots)
-  //    stay alone so a chain never links a span to itself.
+// 1. Join: sort all ends by position, pair the ends that meet, so the pen can go on without
+//    lifting. Zero-length spans (dots) stay alone so a chain never links a span to itself.
+void join_ends(const Segment2* spans, uint32_t n, EndKey* ends, uint32_t* link) {
   for (uint32_t id = 0; id < 2 * n; ++id) {
     end_point(spans, id, &ends[id].x, &ends[id].y);
     ends[id].id = id;
@@ -257,8 +226,11 @@ Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t sta
     }
     i = j;
   }
+}
 
-  // 2. Chains: open ones start at an unlinked end; what is left over forms closed loops.
+// 2. Chains: open ones start at an unlinked end (so each is drawn end to end); what is left
+//    over forms closed loops. Returns the number of chains.
+uint32_t make_chains(uint32_t n, const uint32_t* link, Chain* chains, uint8_t* done) {
   for (uint32_t s = 0; s < n; ++s) done[s] = 0;
   uint32_t n_chains = 0;
   auto make_chain = [&](uint32_t start) {
@@ -275,51 +247,63 @@ Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t sta
     if (link[id] == kNone && !done[id >> 1]) make_chain(id);
   for (uint32_t s = 0; s < n; ++s)
     if (!done[s]) make_chain(2 * s);  // a closed loop: start anywhere
-  st.polylines = n_chains;
+  return n_chains;
+}
 
-  // 3. Greedy nearest neighbour over chain ends, bucketed in a uniform grid (counting sort).
-  int32_t xmin = start_x, ymin = start_y, xmax = start_x, ymax = start_y;
-  for (uint32_t i = 0; i < 2 * n; ++i) {
-    xmin = ends[i].x < xmin ? ends[i].x : xmin;
-    xmax = ends[i].x > xmax ? ends[i].x : xmax;
-    ymin = ends[i].y < ymin ? ends[i].y : ymin;
-    ymax = ends[i].y > ymax ? ends[i].y : ymax;
-  }
-  // In 64 bits: a caller's start need not lie in the coordinate range the strokes do.
-  const uint64_t w = uint64_t(int64_t{xmax} - xmin) + 1, h = uint64_t(int64_t{ymax} - ymin) + 1;
-  // Cell side: about one chain end per cell.
-  uint32_t side = isqrt_u64(w * h / (2ull * n_chains + 1)) + 1;
-  while ((w / side + 1) * (h / side + 1) > cells_cap(n)) side += side / 8 + 1;
-  const uint32_t gx = uint32_t(w / side + 1), gy = uint32_t(h / side + 1);
-  uint32_t* cell_start = ws.cell_start;
-  uint32_t* items = ws.items;
-  auto cell_of = [&](int32_t x, int32_t y) {
+// 3. The chain ends bucketed in a uniform grid (counting sort) over them and the start, so the
+//    nearest end not yet taken is found by searching rings of cells outwards.
+struct EndGrid {
+  const Segment2* spans;
+  const Chain* chains;
+  uint32_t* cell_start;
+  uint32_t* items;  // 2 * chain + end
+  int32_t xmin = 0, ymin = 0;
+  uint32_t side = 1, gx = 1, gy = 1;
+
+  uint32_t cell_of(int32_t x, int32_t y) const {
     return uint32_t(uint64_t(y - ymin) / side) * gx + uint32_t(uint64_t(x - xmin) / side);
-  };
-  auto chain_end = [&](uint32_t item, int32_t* x, int32_t* y) {
+  }
+  void chain_end(uint32_t item, int32_t* x, int32_t* y) const {
     const Chain& c = chains[item >> 1];
     end_point(spans, (item & 1) ? c.last_end : c.first_end, x, y);
-  };
-  const uint32_t cells = gx * gy;
-  for (uint32_t c = 0; c <= cells; ++c) cell_start[c] = 0;
-  for (uint32_t item = 0; item < 2 * n_chains; ++item) {
-    int32_t x, y;
-    chain_end(item, &x, &y);
-    ++cell_start[cell_of(x, y) + 1];
   }
-  for (uint32_t c = 0; c < cells; ++c) cell_start[c + 1] += cell_start[c];
-  for (uint32_t item = 2 * n_chains; item-- > 0;) {
-    int32_t x, y;
-    chain_end(item, &x, &y);
-    items[--cell_start[cell_of(x, y) + 1]] = item;
-  }
-  for (uint32_t c = 0; c < cells; ++c) cell_start[c] = cell_start[c + 1];
-  cell_start[cells] = 2 * n_chains;
-  for (uint32_t c = 0; c < n_chains; ++c) done[c] = 0;
 
-  uint32_t* order = ws.order;
-  int32_t px = start_x, py = start_y;
-  for (uint32_t taken = 0; taken < n_chains; ++taken) {
+  // The grid's extent from the sorted ends (read before the cells, carved over them, are
+  // written), then its items. Cell side: about one chain end per cell.
+  void build(const EndKey* ends, uint32_t n, uint32_t n_chains, int32_t start_x, int32_t start_y) {
+    int32_t xmax = start_x, ymax = start_y;
+    xmin = start_x, ymin = start_y;
+    for (uint32_t i = 0; i < 2 * n; ++i) {
+      xmin = ends[i].x < xmin ? ends[i].x : xmin;
+      xmax = ends[i].x > xmax ? ends[i].x : xmax;
+      ymin = ends[i].y < ymin ? ends[i].y : ymin;
+      ymax = ends[i].y > ymax ? ends[i].y : ymax;
+    }
+    // In 64 bits: a caller's start need not lie in the coordinate range the strokes do.
+    const uint64_t w = uint64_t(int64_t{xmax} - xmin) + 1, h = uint64_t(int64_t{ymax} - ymin) + 1;
+    side = isqrt_u64(w * h / (2ull * n_chains + 1)) + 1;
+    while ((w / side + 1) * (h / side + 1) > cells_cap(n)) side += side / 8 + 1;
+    gx = uint32_t(w / side + 1), gy = uint32_t(h / side + 1);
+    const uint32_t cells = gx * gy;
+    for (uint32_t c = 0; c <= cells; ++c) cell_start[c] = 0;
+    for (uint32_t item = 0; item < 2 * n_chains; ++item) {
+      int32_t x, y;
+      chain_end(item, &x, &y);
+      ++cell_start[cell_of(x, y) + 1];
+    }
+    for (uint32_t c = 0; c < cells; ++c) cell_start[c + 1] += cell_start[c];
+    for (uint32_t item = 2 * n_chains; item-- > 0;) {
+      int32_t x, y;
+      chain_end(item, &x, &y);
+      items[--cell_start[cell_of(x, y) + 1]] = item;
+    }
+    for (uint32_t c = 0; c < cells; ++c) cell_start[c] = cell_start[c + 1];
+    cell_start[cells] = 2 * n_chains;
+  }
+
+  // The nearest end of a chain not done (ties: the lower item), ring by ring until no cell
+  // further out can hold a nearer one.
+  uint32_t nearest(int32_t px, int32_t py, const uint8_t* done) const {
     const int64_t pcx = (px - xmin) / int64_t(side), pcy = (py - ymin) / int64_t(side);
     uint64_t best = ~uint64_t{0};
     uint32_t best_item = kNone;
@@ -350,16 +334,17 @@ Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t sta
       if (best_item != kNone && best <= reach * reach) break;
       if (r > int64_t(gx) + int64_t(gy)) break;
     }
-    done[best_item >> 1] = 1;
-    order[taken] = best_item;
-    // The pen leaves the chain by its other end.
-    chain_end(best_item ^ 1u, &px, &py);
+    return best_item;
   }
-  Tour tour{spans, chains, order, items, n_chains, start_x, start_y, end};
-  improve_tour(tour);  // the grid's items are dead now: they hold the moves' lengths
+};
 
+// 4. The tour's chains as pen moves: a pen-up move to each chain's entry unless the pen is
+//    already there, then its spans pen-down. Returns the number of points written.
+uint32_t write_path(const Segment2* spans, const uint32_t* link, const Chain* chains,
+                    const uint32_t* order, uint32_t n_chains, int32_t start_x, int32_t start_y,
+                    PathPoint* out, PathStats& st) {
   uint32_t count = 0;
-  px = start_x, py = start_y;
+  int32_t px = start_x, py = start_y;
   for (uint32_t taken = 0; taken < n_chains; ++taken) {
     const uint32_t best_item = order[taken];
     const Chain& ch = chains[best_item >> 1];
@@ -388,7 +373,60 @@ Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t sta
     px = out[count - 1].x;
     py = out[count - 1].y;
   }
-  *out_count = count;
+  return count;
+}
+
+}  // namespace
+
+void round_to_steps(Segment2* spans, uint32_t n, int substep_bits) {
+  if (substep_bits == 0) return;
+  for (uint32_t i = 0; i < n; ++i) {
+    Segment2& g = spans[i];
+    g = Segment2{units_to_steps(g.x0, substep_bits), units_to_steps(g.y0, substep_bits),
+                 units_to_steps(g.x1, substep_bits), units_to_steps(g.y1, substep_bits)};
+  }
+}
+
+uint32_t length_floor(int64_t dx, int64_t dy) {
+  return isqrt_u64(static_cast<uint64_t>(dx * dx + dy * dy));
+}
+
+size_t path_plan_bytes(uint32_t n_spans) {
+  ByteCounter front, grid;
+  carve_workspace(&front, &grid, n_spans);
+  return front.total > grid.total ? front.total : grid.total;
+}
+
+Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t start_y,
+                 void* workspace, size_t workspace_bytes, PathPoint* out, uint32_t out_capacity,
+                 uint32_t* out_count, PathStats* stats, PathEnd end) {
+  Carver front(workspace, workspace_bytes), grid = front;
+  const Workspace ws = carve_workspace(&front, &grid, n);
+  if (front.short_ || grid.short_) return Status::kWorkspaceTooSmall;
+  if (out_capacity < path_points_max(n)) return Status::kBadParameter;
+  PathStats st;
+  st.naive_pen_up_length = naive_pen_up(spans, n, start_x, start_y);
+  join_ends(spans, n, ws.ends, ws.link);
+  const uint32_t n_chains = make_chains(n, ws.link, ws.chains, ws.done);
+  st.polylines = n_chains;
+
+  // 3. Greedy nearest neighbour over chain ends, then 2-opt on that tour.
+  EndGrid eg{spans, ws.chains, ws.cell_start, ws.items};
+  eg.build(ws.ends, n, n_chains, start_x, start_y);
+  uint8_t* done = ws.done;
+  for (uint32_t c = 0; c < n_chains; ++c) done[c] = 0;
+  int32_t px = start_x, py = start_y;
+  for (uint32_t taken = 0; taken < n_chains; ++taken) {
+    const uint32_t best_item = eg.nearest(px, py, done);
+    done[best_item >> 1] = 1;
+    ws.order[taken] = best_item;
+    // The pen leaves the chain by its other end.
+    eg.chain_end(best_item ^ 1u, &px, &py);
+  }
+  Tour tour{spans, ws.chains, ws.order, ws.items, n_chains, start_x, start_y, end};
+  improve_tour(tour);  // the grid's items are dead now: they hold the moves' lengths
+
+  *out_count = write_path(spans, ws.link, ws.chains, ws.order, n_chains, start_x, start_y, out, st);
   if (stats) *stats = st;
   return Status::kOk;
 }

@@ -335,6 +335,79 @@ void StepPrep::restart_at(uint32_t remaining, const int32_t motors[2]) {
   }
 }
 
+// A pen change the planner asked for: its dwell is the planner's, on the tick's clock too.
+inline void StepPrep::planned_pen(const MotionItem& it, StepSegment* out) {
+  out->kind = StepSegment::kPen;
+  out->pen_down = it.pen_down;
+  out->dwell_ticks = it.dwell_ticks;
+  time_q8_ += uint64_t{it.dwell_ticks} * 256;
+  pen_down_ = it.pen_down;
+  last_takeup_ = false;
+  ++counters_.segments;
+}
+
+// Slack take-up from rest, one motor only, at the rate whose first step from rest needs the
+// motor's acceleration: interval = sqrt(2 / a_motor).
+inline Status StepPrep::takeup_segment(uint8_t mo, StepSegment* out) {
+  takeup_pending_[mo] = false;
+  const uint64_t a_motor = uint64_t{m_.accel} * m_.steps_num / m_.steps_den + 1;
+  const uint64_t root_q8 = isqrt_u64(a_motor * 65536 / 2);  // sqrt(a / 2) * 256
+  int64_t interval = int64_t(uint64_t{m_.tick_hz} * 65536 / root_q8);
+  if (interval < int64_t{m_.min_interval} * 256) interval = int64_t{m_.min_interval} * 256;
+  out->kind = StepSegment::kSteps;
+  out->new_block = true;
+  out->dominant = mo;
+  out->dir_bits =
+      uint8_t((dir_bits_ & (1u << mo)) | (last_backward_[1 - mo] ? (1u << (1 - mo)) : 0));
+  out->major = m_.backlash[mo];
+  out->minor = 0;
+  out->count = uint16_t(m_.backlash[mo]);
+  if (interval > INT32_MAX) return Status::kIntervalTooLong;
+  out->interval_q8 = int32_t(interval);
+  out->add_q8 = 0;
+  advance_time(out->count, interval, 0);
+  counters_.motor_steps[mo] += m_.backlash[mo];
+  ++counters_.backlash_takeups;
+  ++counters_.segments;
+  block_start_q8_ = time_q8_;
+  last_takeup_ = true;
+  return Status::kOk;
+}
+
+// The move's next stretch of steps as one linear ramp (choose_ramp()), refused where the timer
+// cannot run it: faster than its floor, or an interval beyond the tick's 32 bits.
+inline Status StepPrep::steps_segment(StepSegment* out) {
+  uint32_t j1 = 0;
+  int64_t first = 0, add = 0;
+  choose_ramp(&j1, &first, &add);
+  const int64_t m = j1 - j_;
+  const int64_t floor_q8 = int64_t{m_.min_interval} * 256;
+  if (first < floor_q8 || first + (m - 1) * add < floor_q8) return Status::kTimerFloor;
+  // The tick runs in 32 bits: every interval of the segment (linear, so its two ends) and
+  // the step between them must fit.
+  if (first > INT32_MAX || first + (m - 1) * add > INT32_MAX || add > INT32_MAX || add < INT32_MIN)
+    return Status::kIntervalTooLong;
+  out->kind = StepSegment::kSteps;
+  out->new_block = first_segment_;
+  out->dominant = dominant_;
+  out->dir_bits = dir_bits_;
+  out->major = n_;
+  out->minor = minor_;
+  out->count = uint16_t(m);
+  out->interval_q8 = int32_t(first);
+  out->add_q8 = int32_t(add);
+  first_segment_ = false;
+  advance_time(uint32_t(m), first, add);
+  reg_q8_ = first + m * add;  // the tick's interval register after the segment
+  reg_add_ = add;
+  counters_.motor_steps[dominant_] += uint64_t(m);
+  ++counters_.segments;
+  last_takeup_ = false;
+  j_ = j1;
+  if (j_ >= end_j_) counters_.motor_steps[1 - dominant_] += minor_at(end_j_);
+  return Status::kOk;
+}
+
 Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* have) {
   *have = false;
   for (;;) {
@@ -365,13 +438,7 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
         return planner.status();  // kOk, or why the point feed stopped
       }
       if (it.kind == MotionItem::kPen) {
-        out->kind = StepSegment::kPen;
-        out->pen_down = it.pen_down;
-        out->dwell_ticks = it.dwell_ticks;
-        time_q8_ += uint64_t{it.dwell_ticks} * 256;
-        pen_down_ = it.pen_down;
-        last_takeup_ = false;
-        ++counters_.segments;
+        planned_pen(it, out);
         *have = true;
         return Status::kOk;
       }
@@ -383,32 +450,9 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
     }
     for (uint8_t mo = 0; mo < 2; ++mo) {
       if (!takeup_pending_[mo]) continue;
-      // Slack take-up from rest, one motor only, at the rate whose first step from rest needs
-      // the motor's acceleration: interval = sqrt(2 / a_motor).
-      takeup_pending_[mo] = false;
-      const uint64_t a_motor = uint64_t{m_.accel} * m_.steps_num / m_.steps_den + 1;
-      const uint64_t root_q8 = isqrt_u64(a_motor * 65536 / 2);  // sqrt(a / 2) * 256
-      int64_t interval = int64_t(uint64_t{m_.tick_hz} * 65536 / root_q8);
-      if (interval < int64_t{m_.min_interval} * 256) interval = int64_t{m_.min_interval} * 256;
-      out->kind = StepSegment::kSteps;
-      out->new_block = true;
-      out->dominant = mo;
-      out->dir_bits =
-          uint8_t((dir_bits_ & (1u << mo)) | (last_backward_[1 - mo] ? (1u << (1 - mo)) : 0));
-      out->major = m_.backlash[mo];
-      out->minor = 0;
-      out->count = uint16_t(m_.backlash[mo]);
-      if (interval > INT32_MAX) return Status::kIntervalTooLong;
-      out->interval_q8 = int32_t(interval);
-      out->add_q8 = 0;
-      advance_time(out->count, interval, 0);
-      counters_.motor_steps[mo] += m_.backlash[mo];
-      ++counters_.backlash_takeups;
-      ++counters_.segments;
-      block_start_q8_ = time_q8_;
-      last_takeup_ = true;
-      *have = true;
-      return Status::kOk;
+      const Status s = takeup_segment(mo, out);
+      *have = ok(s);
+      return s;
     }
     // A hold starts once the move's take-ups are done (they run from rest): from step j_.
     if (hold_ == Hold::kRequested) {
@@ -421,37 +465,9 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
       if (item_.accel == 0) last_exit2_ = 0;  // no acceleration modelled: a hold stops at once
       continue;
     }
-    uint32_t j1 = 0;
-    int64_t first = 0, add = 0;
-    choose_ramp(&j1, &first, &add);
-    const int64_t m = j1 - j_;
-    const int64_t floor_q8 = int64_t{m_.min_interval} * 256;
-    if (first < floor_q8 || first + (m - 1) * add < floor_q8) return Status::kTimerFloor;
-    // The tick runs in 32 bits: every interval of the segment (linear, so its two ends) and
-    // the step between them must fit.
-    if (first > INT32_MAX || first + (m - 1) * add > INT32_MAX || add > INT32_MAX ||
-        add < INT32_MIN)
-      return Status::kIntervalTooLong;
-    out->kind = StepSegment::kSteps;
-    out->new_block = first_segment_;
-    out->dominant = dominant_;
-    out->dir_bits = dir_bits_;
-    out->major = n_;
-    out->minor = minor_;
-    out->count = uint16_t(m);
-    out->interval_q8 = int32_t(first);
-    out->add_q8 = int32_t(add);
-    first_segment_ = false;
-    advance_time(uint32_t(m), first, add);
-    reg_q8_ = first + m * add;  // the tick's interval register after the segment
-    reg_add_ = add;
-    counters_.motor_steps[dominant_] += uint64_t(m);
-    ++counters_.segments;
-    last_takeup_ = false;
-    j_ = j1;
-    if (j_ >= end_j_) counters_.motor_steps[1 - dominant_] += minor_at(end_j_);
-    *have = true;
-    return Status::kOk;
+    const Status s = steps_segment(out);
+    *have = ok(s);
+    return s;
   }
 }
 

@@ -105,6 +105,10 @@ class StepPrep {
   int64_t interval_at(uint32_t j) const;  // the exact interval before dominant step j (1-based)
   bool fits(uint32_t j1, int64_t first, int64_t add) const;  // close enough to the exact times?
   void choose_ramp(uint32_t* j1, int64_t* first, int64_t* add) const;  // the next segment
+  // next_segment()'s three kinds of segment, each written to *out.
+  void planned_pen(const MotionItem& it, StepSegment* out);
+  Status takeup_segment(uint8_t motor, StepSegment* out);  // a motor's backlash, from rest
+  Status steps_segment(StepSegment* out);                  // the move's next ramp
 
   Machine m_{};
   PlotterEffects fx_{};

@@ -168,6 +168,230 @@ struct OutlineRuns {
   }
 };
 
+// The outline pass's table, filled: for each candidate edge, where it passes in front of
+// another (count, place, sort), so its visible pieces are cut there too.
+void place_fronts(const Topology& topo, const CutSet& cutset, uint32_t* front_first,
+                  uint32_t* front_t) {
+  for (uint32_t e = 0; e <= topo.n_drawn; ++e) front_first[e] = 0;
+  for (uint32_t i = 0; i < cutset.n_crossings; ++i) {
+    const Crossing& r = cutset.crossings[i];
+    const uint32_t f = r.front_edge();
+    if (!r.near_miss() && f < topo.n_drawn && outline_candidate(topo.edges[f]))
+      ++front_first[f + 1];
+  }
+  for (uint32_t e = 0; e < topo.n_drawn; ++e) front_first[e + 1] += front_first[e];
+  for (uint32_t e = 0; e < topo.n_edges; ++e)  // every record, by the edge behind
+    for (const Crossing* r = cutset.begin(e); r != cutset.begin(e) + cutset.count(e); ++r) {
+      const uint32_t f = r->front_edge();
+      if (r->near_miss() || f >= topo.n_drawn || !outline_candidate(topo.edges[f])) continue;
+      const CrossingTest x = test_crossing(topo.edge3(f), topo.edge3(e));
+      front_t[front_first[f]++] = frac_q32_small(x.tn, x.den);
+    }
+  for (uint32_t e = topo.n_drawn; e > 0; --e) front_first[e] = front_first[e - 1];
+  front_first[0] = 0;
+  for (uint32_t e = 0; e < topo.n_drawn; ++e)
+    sort_in_place(front_t + front_first[e], front_first[e + 1] - front_first[e],
+                  [](uint32_t a, uint32_t b) { return a < b; });
+}
+
+// The V.C. table starts unknown except where it must never be used: a vertex where an edge
+// or another vertex meets it, a peculiar vertex, or one on a hidden fold (H2).
+void start_vc(const Topology& topo, const uint8_t* front, const Incidences& inc, bool use_vc,
+              uint8_t* vc, FallbackStats& st) {
+  for (uint32_t v = 0; v < topo.n_vertices; ++v) {
+    const bool singular = inc.same_next[v] != v || inc.vertex_first[v] != inc.vertex_first[v + 1];
+    vc[v] = (use_vc && !singular) ? kVcUnknown : kVcUnusable;
+  }
+  if (!use_vc) return;
+  // Contour vectors run with the front face on their right (Kira): count starts and ends.
+  for (uint32_t v = 0; v < topo.n_vertices; ++v) {
+    uint32_t starts = 0, ends = 0;
+    bool h2 = false;
+    for (uint32_t k = topo.vertex_edge_first[v]; k < topo.vertex_edge_first[v + 1]; ++k) {
+      const SolidEdge& e = topo.edges[topo.vertex_edges[k]];
+      if (e.cls == EdgeClass::kH2) h2 = true;
+      if (e.cls != EdgeClass::kH3) continue;
+      // Front face on the left of v0 -> v1 means the vector runs v1 -> v0.
+      const bool from_v1 = front_face_side(topo, front, topo.vertex_edges[k]) > 0;
+      const uint32_t start = from_v1 ? e.v1 : e.v0;
+      ++(start == v ? starts : ends);
+    }
+    if (ends >= 2) ++st.peculiar_a;
+    if (starts >= 2) ++st.peculiar_b;
+    if (ends >= 2 || starts >= 2 || h2) vc[v] = kVcUnusable;
+  }
+}
+
+// What one piece was found to be: its QI (kQiUnknown when a class or the V.C. decided),
+// hidden or not, and whether a test point decided it.
+struct Verdict {
+  int32_t q;
+  bool hidden, tested;
+};
+
+// One run's shared state, and the edge in hand: its pieces are cut, judged, merged while
+// equal, and handed to the sink one behind (and their visible parts to the outline pass).
+struct FallbackRun {
+  const Topology& topo;
+  const uint8_t* front;
+  const FaceGrid& fg;
+  const CutSet& cutset;
+  const Incidences& inc;
+  const FallbackParams& params;
+  FallbackSink sink;
+  uint8_t* vc;
+  OutlineRuns& runs;
+  FallbackStats& st;
+  bool use_front;               // only front faces count (else either side of every face)
+  const uint8_t* pierce_front;  // the front table when only front faces count, else null
+  // The edge in hand.
+  uint32_t e = 0;
+  Point3 a{}, b{};
+  int64_t lo = 0, hi = kOne;
+  bool by_class = false, vc_edge = false;
+  FallbackPiece pending{0, 0, 0, 0, false, true};
+  bool have = false;
+  Status status = Status::kOk;
+  int32_t last_q = 0;
+  bool last_hidden = false;
+
+  // Halves of cover at p, from the faces of its cell.
+  int32_t cover_count(const CoverPoint& p) {
+    const int32_t cx = cell_x(p), cy = cell_y(p);
+    int32_t q = 0;
+    for (const uint32_t* k = fg.begin(cx, cy); k != fg.end(cx, cy); ++k) {
+      const uint32_t t = *k;
+      const uint32_t* v = topo.triangles[t].v;
+      const Point3 &fa = topo.vertices[v[0]], &fb = topo.vertices[v[1]], &fc = topo.vertices[v[2]];
+      ++st.face_tests;
+      if (use_front) {
+        if (front[t]) q += cover_halves(fa, fb, fc, p);
+      } else {
+        q += projected_area2(fa, fb, fc) >= 0 ? cover_halves(fa, fb, fc, p)
+                                              : cover_halves(fa, fc, fb, p);
+      }
+    }
+    return q;
+  }
+
+  // A piece is decided by its edge's class, by the piece before (too short to test), by the
+  // V.C. of the vertex it ends at, or by a test at its middle, cheapest first.
+  Verdict judge(int64_t t0, int64_t t1) {
+    if (by_class) {
+      ++st.class_saved;
+      return Verdict{kQiUnknown, true, true};
+    }
+    if (t1 - t0 < 2) {
+      ++st.short_pieces;
+      return Verdict{last_q, last_hidden, false};
+    }
+    const uint32_t end_v = t0 == 0 ? topo.edges[e].v0 : (t1 == kOne ? topo.edges[e].v1 : kNoFace);
+    if (vc_edge && end_v != kNoFace && (vc[end_v] == kVcVisible || vc[end_v] == kVcHidden)) {
+      ++st.vc_saved;
+      return Verdict{kQiUnknown, vc[end_v] == kVcHidden, true};
+    }
+    const int32_t q = cover_count(edge_point(Edge3{a, b}, t0 + (t1 - t0) / 2));
+    ++st.tests;
+    const bool hidden = q != 0;
+    if (vc_edge && end_v != kNoFace && vc[end_v] == kVcUnknown)
+      vc[end_v] = hidden ? kVcHidden : kVcVisible;
+    return Verdict{q, hidden, true};
+  }
+
+  // The pending piece to the sink, and its outline runs.
+  void flush() {
+    status = sink.emit(sink.context, pending);
+    if (ok(status) && params.outline && !pending.hidden)
+      status = runs.visible(pending.t0, pending.t1);
+  }
+
+  // The piece [t0, t1), clipped to the part of the edge this run draws.
+  void piece(int64_t t0, int64_t t1) {
+    if (t0 < lo) t0 = lo;
+    if (t1 > hi) t1 = hi;
+    if (t1 <= t0 || status != Status::kOk) return;
+    ++st.pieces;
+    const Verdict v = judge(t0, t1);
+    last_q = v.q;
+    last_hidden = v.hidden;
+    if (have && !params.window && pending.q == v.q && pending.hidden == v.hidden &&
+        pending.t1 == t0) {
+      pending.t1 = t1;
+      return;
+    }
+    if (have) flush();
+    pending = FallbackPiece{e, t0, t1, v.q, v.hidden, v.tested};
+    have = true;
+  }
+
+  // Cut points: every crossing behind another edge, every vertex the edge passes through,
+  // every face it passes through (solid/pierce.h; found one at a time, in order, so an edge
+  // that pierces nothing costs one look along its cells). An edge hidden by class needs none.
+  void cut_pieces() {
+    const Crossing* cx = cutset.begin(e);
+    const uint32_t ncx = cutset.count(e);
+    const Incidence* ix = inc.by_edge + inc.edge_first[e];
+    const uint32_t nix = inc.edge_first[e + 1] - inc.edge_first[e];
+    int64_t at = 0;
+    uint32_t i = 0, j = 0;
+    int64_t pierce =
+        by_class ? kNoPierce : next_pierce(topo, fg, pierce_front, e, -1, &st.pierce_tests);
+    while (i < ncx || j < nix || pierce != kNoPierce) {
+      int64_t t = pierce;
+      if (i < ncx && cx[i].t <= t) t = cx[i].t;
+      if (j < nix && ix[j].t <= t) t = ix[j].t;
+      if (i < ncx && cx[i].t == t) {
+        ++i;
+      } else if (j < nix && ix[j].t == t) {
+        ++j;
+      } else {
+        ++st.pierces;
+        pierce = next_pierce(topo, fg, pierce_front, e, t, &st.pierce_tests);
+      }
+      // A cut at floor(t * 2^32): the true point lies in [t, t + 1). The middle of [at, t) is
+      // at least at + 1 and at most t - 1, so strictly between the true cut points.
+      piece(at, t);
+      at = t;
+    }
+    piece(at, kOne);
+  }
+
+  // Drawn edge `edge`: its pieces to the sink, its outline runs to the outline pass.
+  Status edge(uint32_t edge_index) {
+    e = edge_index;
+    const SolidEdge& se = topo.edges[e];
+    a = topo.vertices[se.v0];
+    b = topo.vertices[se.v1];
+    if (b.x == a.x && b.y == a.y) return Status::kOk;  // a point on paper: nothing to draw
+    // The part of the edge this run draws: all of it, or the band's rows.
+    lo = 0;
+    hi = kOne;
+    if (params.window) {
+      const RowWindow w = row_window(Edge3{a, b}, params.row_lo, params.row_hi);
+      lo = w.lo;
+      hi = w.hi;
+      if (lo >= hi) return Status::kOk;
+    }
+    by_class = params.use_classes && (se.cls == EdgeClass::kH1 || se.cls == EdgeClass::kH2);
+    vc_edge = params.use_vc && (se.cls == EdgeClass::kH3 || se.cls == EdgeClass::kH4);
+    pending = FallbackPiece{e, 0, 0, 0, false, true};
+    have = false;
+    status = Status::kOk;
+    if (params.outline) {
+      runs.start(e);
+      runs.window = params.window;
+      runs.lo = lo;
+      runs.hi = hi;
+    }
+    last_q = 0;
+    last_hidden = false;
+    cut_pieces();
+    if (have && status == Status::kOk) flush();
+    if (status == Status::kOk && params.outline) status = runs.finish();
+    return status;
+  }
+};
+
 }  // namespace
 
 size_t fallback_bytes(const Topology& topo, bool shared_grid) {
@@ -207,180 +431,20 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
     if (gs != Status::kOk) return gs;
   }
   const FaceGrid& fg = grid != nullptr ? *grid : built;
-  if (params.outline) {  // positions where a candidate edge passes in front: count, place, sort
-    for (uint32_t e = 0; e <= topo.n_drawn; ++e) front_first[e] = 0;
-    for (uint32_t i = 0; i < cutset.n_crossings; ++i) {
-      const Crossing& r = cutset.crossings[i];
-      const uint32_t f = r.front_edge();
-      if (!r.near_miss() && f < topo.n_drawn && outline_candidate(topo.edges[f]))
-        ++front_first[f + 1];
-    }
-    for (uint32_t e = 0; e < topo.n_drawn; ++e) front_first[e + 1] += front_first[e];
-    for (uint32_t e = 0; e < topo.n_edges; ++e)  // every record, by the edge behind
-      for (const Crossing* r = cutset.begin(e); r != cutset.begin(e) + cutset.count(e); ++r) {
-        const uint32_t f = r->front_edge();
-        if (r->near_miss() || f >= topo.n_drawn || !outline_candidate(topo.edges[f])) continue;
-        const CrossingTest x = test_crossing(topo.edge3(f), topo.edge3(e));
-        front_t[front_first[f]++] = frac_q32_small(x.tn, x.den);
-      }
-    for (uint32_t e = topo.n_drawn; e > 0; --e) front_first[e] = front_first[e - 1];
-    front_first[0] = 0;
-    for (uint32_t e = 0; e < topo.n_drawn; ++e)
-      sort_in_place(front_t + front_first[e], front_first[e + 1] - front_first[e],
-                    [](uint32_t a, uint32_t b) { return a < b; });
-  }
+  if (params.outline) place_fronts(topo, cutset, front_first, front_t);
   FallbackStats st;
   st.grid_cells = fg.grid.cells();
   st.cell_faces = fg.pairs;
-
-  // The V.C. table starts unknown except where it must never be used.
-  for (uint32_t v = 0; v < topo.n_vertices; ++v) {
-    const bool singular = inc.same_next[v] != v || inc.vertex_first[v] != inc.vertex_first[v + 1];
-    vc[v] = (params.use_vc && !singular) ? kVcUnknown : kVcUnusable;
-  }
-  if (params.use_vc) {
-    // Contour vectors run with the front face on their right (Kira): count starts and ends.
-    // Peculiar vertices, and vertices on a hidden fold (H2), keep no V.C.
-    for (uint32_t v = 0; v < topo.n_vertices; ++v) {
-      uint32_t starts = 0, ends = 0;
-      bool h2 = false;
-      for (uint32_t k = topo.vertex_edge_first[v]; k < topo.vertex_edge_first[v + 1]; ++k) {
-        const SolidEdge& e = topo.edges[topo.vertex_edges[k]];
-        if (e.cls == EdgeClass::kH2) h2 = true;
-        if (e.cls != EdgeClass::kH3) continue;
-        // Front face on the left of v0 -> v1 means the vector runs v1 -> v0.
-        const bool from_v1 = front_face_side(topo, front, topo.vertex_edges[k]) > 0;
-        const uint32_t start = from_v1 ? e.v1 : e.v0;
-        ++(start == v ? starts : ends);
-      }
-      if (ends >= 2) ++st.peculiar_a;
-      if (starts >= 2) ++st.peculiar_b;
-      if (ends >= 2 || starts >= 2 || h2) vc[v] = kVcUnusable;
-    }
-  }
+  start_vc(topo, front, inc, params.use_vc, vc, st);
 
   OutlineRuns runs{topo, fg, cutset, inc, front_first, front_t, sink};
   const bool use_front = !params.any_facing;
   const uint8_t* pierce_front = use_front ? front : nullptr;
+  FallbackRun run{topo, front, fg,   cutset, inc,       params,
+                  sink, vc,    runs, st,     use_front, pierce_front};
   for (uint32_t e = 0; e < topo.n_drawn; ++e) {
-    const SolidEdge& se = topo.edges[e];
-    const Point3 a = topo.vertices[se.v0], b = topo.vertices[se.v1];
-    const int64_t dx = b.x - a.x, dy = b.y - a.y;
-    if (dx == 0 && dy == 0) continue;  // a point on paper: nothing to draw
-    // The part of the edge this run draws: all of it, or the band's rows.
-    int64_t lo = 0, hi = kOne;
-    if (params.window) {
-      const RowWindow w = row_window(Edge3{a, b}, params.row_lo, params.row_hi);
-      lo = w.lo;
-      hi = w.hi;
-      if (lo >= hi) continue;
-    }
-    const bool by_class =
-        params.use_classes && (se.cls == EdgeClass::kH1 || se.cls == EdgeClass::kH2);
-    const bool vc_edge = params.use_vc && (se.cls == EdgeClass::kH3 || se.cls == EdgeClass::kH4);
-    FallbackPiece pending{e, 0, 0, 0, false, true};
-    bool have = false;
-    Status status = Status::kOk;
-    if (params.outline) {
-      runs.start(e);
-      runs.window = params.window;
-      runs.lo = lo;
-      runs.hi = hi;
-    }
-    auto flush = [&] {  // the pending piece to the sink, and its outline runs
-      status = sink.emit(sink.context, pending);
-      if (ok(status) && params.outline && !pending.hidden)
-        status = runs.visible(pending.t0, pending.t1);
-    };
-    int32_t last_q = 0;
-    bool last_hidden = false;
-    auto emit = [&](int64_t t0, int64_t t1) {
-      if (t0 < lo) t0 = lo;
-      if (t1 > hi) t1 = hi;
-      if (t1 <= t0 || status != Status::kOk) return;
-      ++st.pieces;
-      int32_t q = kQiUnknown;
-      bool hidden = false, tested = true;
-      if (by_class) {
-        ++st.class_saved;
-        hidden = true;
-      } else if (t1 - t0 < 2) {
-        ++st.short_pieces;
-        q = last_q;
-        hidden = last_hidden;
-        tested = false;
-      } else {
-        const uint32_t end_v = t0 == 0 ? se.v0 : (t1 == kOne ? se.v1 : kNoFace);
-        if (vc_edge && end_v != kNoFace && (vc[end_v] == kVcVisible || vc[end_v] == kVcHidden)) {
-          ++st.vc_saved;
-          hidden = vc[end_v] == kVcHidden;
-        } else {
-          const int64_t m = t0 + (t1 - t0) / 2;
-          const CoverPoint p = edge_point(Edge3{a, b}, m);
-          const int32_t cx = cell_x(p), cy = cell_y(p);
-          q = 0;
-          for (const uint32_t* k = fg.begin(cx, cy); k != fg.end(cx, cy); ++k) {
-            const uint32_t t = *k;
-            const uint32_t* v = topo.triangles[t].v;
-            const Point3 &fa = topo.vertices[v[0]], &fb = topo.vertices[v[1]],
-                         &fc = topo.vertices[v[2]];
-            ++st.face_tests;
-            if (use_front) {
-              if (front[t]) q += cover_halves(fa, fb, fc, p);
-            } else {
-              q += projected_area2(fa, fb, fc) >= 0 ? cover_halves(fa, fb, fc, p)
-                                                    : cover_halves(fa, fc, fb, p);
-            }
-          }
-          ++st.tests;
-          hidden = q != 0;
-          if (vc_edge && end_v != kNoFace && vc[end_v] == kVcUnknown)
-            vc[end_v] = hidden ? kVcHidden : kVcVisible;
-        }
-      }
-      last_q = q;
-      last_hidden = hidden;
-      if (have && !params.window && pending.q == q && pending.hidden == hidden &&
-          pending.t1 == t0) {
-        pending.t1 = t1;
-        return;
-      }
-      if (have) flush();
-      pending = FallbackPiece{e, t0, t1, q, hidden, tested};
-      have = true;
-    };
-    // Cut points: every crossing behind another edge, every vertex the edge passes through,
-    // every face it passes through (solid/pierce.h; found one at a time, in order, so an edge
-    // that pierces nothing costs one look along its cells). An edge hidden by class needs none.
-    const Crossing* cx = cutset.begin(e);
-    const uint32_t ncx = cutset.count(e);
-    const Incidence* ix = inc.by_edge + inc.edge_first[e];
-    const uint32_t nix = inc.edge_first[e + 1] - inc.edge_first[e];
-    int64_t at = 0;
-    uint32_t i = 0, j = 0;
-    int64_t pierce =
-        by_class ? kNoPierce : next_pierce(topo, fg, pierce_front, e, -1, &st.pierce_tests);
-    while (i < ncx || j < nix || pierce != kNoPierce) {
-      int64_t t = pierce;
-      if (i < ncx && cx[i].t <= t) t = cx[i].t;
-      if (j < nix && ix[j].t <= t) t = ix[j].t;
-      if (i < ncx && cx[i].t == t) {
-        ++i;
-      } else if (j < nix && ix[j].t == t) {
-        ++j;
-      } else {
-        ++st.pierces;
-        pierce = next_pierce(topo, fg, pierce_front, e, t, &st.pierce_tests);
-      }
-      // A cut at floor(t * 2^32): the true point lies in [t, t + 1). The middle of [at, t) is
-      // at least at + 1 and at most t - 1, so strictly between the true cut points.
-      emit(at, t);
-      at = t;
-    }
-    emit(at, kOne);
-    if (have && status == Status::kOk) flush();
-    if (status == Status::kOk && params.outline) status = runs.finish();
-    if (status != Status::kOk) return status;
+    const Status s = run.edge(e);
+    if (s != Status::kOk) return s;
   }
   st.outline_tests = runs.tests;
   if (stats != nullptr) *stats = st;

@@ -1,6 +1,6 @@
 // Hatching as lines on the faces: each hatched face is filled with its polygon's parallel
-// lines (surface/hatch.h: a lattice anchored at the origin, the angle from the polygon's mean
-// depth), and what shows of each line is decided as an intersection line's is
+// lines (solid/hatch_pattern.h: a lattice anchored at the origin, the angle from the polygon's
+// mean depth), and what shows of each line is decided as an intersection line's is
 // (solid/segment_pass.h): cut where it crosses a face's side on paper, meets a corner or passes
 // through a face, and the middle of each piece asked against every face but its own polygon's
 // flat part. It needs no planar graph and no memory of its own, so a band can draw its rows'
@@ -15,8 +15,8 @@
 #pragma once
 #include <stdint.h>
 
+#include "solid/hatch_pattern.h"
 #include "solid/segment_pass.h"
-#include "surface/hatch.h"
 
 namespace haloplot {
 

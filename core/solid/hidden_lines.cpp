@@ -118,19 +118,44 @@ Status cut_step(const Edge3* edges, uint32_t n, const HiddenParams& params, Aren
   return s;
 }
 
-}  // namespace
-
-Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buffer, size_t bytes,
-                    HiddenSink sink, HiddenReport* report) {
+// One run's state, shared by its steps: the arena, the report so far, and what each step built
+// for the next. Every step that fails writes the report before it returns.
+struct HiddenRun {
+  const SolidInput& in;
+  const HiddenParams& params;
+  HiddenSink sink;
+  HiddenReport* report;
+  Arena arena;
   HiddenReport r;
-  if (params.hatch && (params.hatch_params.spacing < 1 || params.hatch_params.spacing > kCoordMax))
-    return *report = r, Status::kBadParameter;  // before any piece is emitted
-  Arena arena(buffer, bytes);
-  Status s;
-
-  // Topology, classes, and every edge as CUT sees it.
-  // The build takes what it needs of the free arena and keeps its first kept_bytes.
   Topology topo;
+  uint8_t* front = nullptr;
+  Edge3* edges = nullptr;
+  CutSet cutset;
+  Incidences inc;
+  FaceGrid crossing_grid;
+  Adapter adapter;
+
+  HiddenRun(const SolidInput& input, const HiddenParams& p, void* buffer, size_t bytes,
+            HiddenSink s, HiddenReport* out)
+      : in(input), params(p), sink(s), report(out), arena(buffer, bytes), adapter{s, nullptr, 0} {}
+
+  Status fail(Status s) { return *report = r, s; }
+  Status out_of_room() { return *report = r, short_of(arena, report); }
+  Status finish(Status s) {
+    r.bytes_used = arena.high;
+    *report = r;
+    return s;
+  }
+  Status build_edges();
+  Status cut_and_touches();
+  Status lines(const uint8_t* hiding_front);
+  Status qi_method(bool* gave_up);
+  Status fallback_method(bool manifold);
+};
+
+// Topology, classes, and every edge as CUT sees it. The build takes what it needs of the free
+// arena and keeps its first kept_bytes.
+Status HiddenRun::build_edges() {
   TopologyOptions to;
   if (params.band) {  // the band's fallback reads no stars, and no side beyond its rows
     to.stars = false;
@@ -138,12 +163,12 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
     to.row_lo = params.band_y0;
     to.row_hi = params.band_y1 - 1;
   }
-  s = build_topology(in, arena.base + arena.used, arena.size - arena.used, &topo, to);
+  const Status s = build_topology(in, arena.base + arena.used, arena.size - arena.used, &topo, to);
   if (s == Status::kWorkspaceTooSmall) {
     arena.need = arena.used + topology_bytes(in);
-    return *report = r, short_of(arena, report);
+    return out_of_room();
   }
-  if (s != Status::kOk) return *report = r, s;
+  if (s != Status::kOk) return fail(s);
   r.bytes_topology = topo.kept_bytes;
   arena.take(topo.kept_bytes);
   const size_t build_high = arena.used + topology_scratch_bytes(in);
@@ -151,97 +176,91 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
   r.check = topo.check;
   r.n_drawn = topo.n_drawn;
   r.n_edges = topo.n_edges;
-  uint8_t* front = arena.take(topo.n_triangles);
-  Edge3* edges = reinterpret_cast<Edge3*>(arena.take(size_t{topo.n_edges} * sizeof(Edge3)));
-  if (front == nullptr || edges == nullptr) return *report = r, short_of(arena, report);
+  front = arena.take(topo.n_triangles);
+  edges = reinterpret_cast<Edge3*>(arena.take(size_t{topo.n_edges} * sizeof(Edge3)));
+  if (front == nullptr || edges == nullptr) return out_of_room();
   r.classes = classify(&topo, front, in.facing);
   for (uint32_t e = 0; e < topo.n_edges; ++e) edges[e] = topo.edge3(e);
+  adapter = Adapter{sink, edges, topo.n_edges};
+  return Status::kOk;
+}
 
-  CutSet cutset;
-  s = cut_step(edges, topo.n_edges, params, &arena, &cutset, &r);
-  if (s == Status::kWorkspaceTooSmall) return *report = r, short_of(arena, report);
-  if (s != Status::kOk) return *report = r, s;
-
-  // The singular touches CUT leaves out.
+// CUT, then the singular touches CUT leaves out: every place an edge's visibility may change.
+Status HiddenRun::cut_and_touches() {
+  Status s = cut_step(edges, topo.n_edges, params, &arena, &cutset, &r);
+  if (s == Status::kWorkspaceTooSmall) return out_of_room();
+  if (s != Status::kOk) return fail(s);
   r.bytes_incidence = incidence_bytes(topo, params.incidence_capacity);
   uint8_t* inc_mem = arena.take(r.bytes_incidence);
-  if (inc_mem == nullptr) return *report = r, short_of(arena, report);
-  Incidences inc;
+  if (inc_mem == nullptr) return out_of_room();
   s = find_incidences(topo, params.incidence_capacity, inc_mem, r.bytes_incidence, &inc,
                       &r.incidences_needed);
-  if (s != Status::kOk) return *report = r, s;
+  if (s != Status::kOk) return fail(s);
   r.incidences = inc.n;
   r.coincident_vertices = inc.coincident_vertices;
+  return Status::kOk;
+}
 
-  // The method.
-  const bool manifold = params.band ? params.closed : topo.check.manifold();
-  if (params.method == HiddenMethod::kQi && !manifold) return *report = r, Status::kNotManifold;
-  bool use_qi = !params.band &&
-                (params.method == HiddenMethod::kQi ||
-                 (params.method == HiddenMethod::kAuto && manifold && topo.check.loose_edges == 0));
-  if (!use_qi)
-    r.reason = params.band                                ? FallbackReason::kBand
-               : params.method == HiddenMethod::kFallback ? FallbackReason::kAsked
-               : manifold                                 ? FallbackReason::kLooseEdges
-                                                          : FallbackReason::kNotManifold;
-  Adapter adapter{sink, edges, topo.n_edges};
-  FaceGrid crossing_grid;
-  // The lines on the faces, after the edges: intersection lines, then hatching.
-  auto lines = [&](const uint8_t* hiding_front) {
-    const LineRows rows{params.band, params.band_y0, params.band_y1};
-    Status ls = Status::kOk;
-    if (params.intersections)
-      ls = draw_intersections(topo, hiding_front, crossing_grid,
-                              LineSink{&intersection_piece, &adapter}, &r.intersections, rows);
-    if (ls == Status::kOk && params.hatch)
-      ls = draw_hatch_lines(topo, hiding_front, crossing_grid, params.hatch_params,
-                            uint32_t(r.intersections.segments), LineSink{&hatch_piece, &adapter},
-                            &r.hatch, rows);
-    return ls;
-  };
+// The lines on the faces, after the edges: intersection lines, then hatching.
+Status HiddenRun::lines(const uint8_t* hiding_front) {
+  const LineRows rows{params.band, params.band_y0, params.band_y1};
+  Status ls = Status::kOk;
+  if (params.intersections)
+    ls = draw_intersections(topo, hiding_front, crossing_grid,
+                            LineSink{&intersection_piece, &adapter}, &r.intersections, rows);
+  if (ls == Status::kOk && params.hatch)
+    ls = draw_hatch_lines(topo, hiding_front, crossing_grid, params.hatch_params,
+                          uint32_t(r.intersections.segments), LineSink{&hatch_piece, &adapter},
+                          &r.hatch, rows);
+  return ls;
+}
+
+// The QI method. *gave_up (the report not yet written) when its walk found conflicts the
+// fallback must settle instead; its memory is given back then.
+Status HiddenRun::qi_method(bool* gave_up) {
   const size_t before_method = arena.used;
-  if (use_qi) {
-    r.bytes_qi = qi_bytes(topo);
-    uint8_t* qi_mem = arena.take(r.bytes_qi);
-    if (qi_mem == nullptr) return *report = r, short_of(arena, report);
-    QiState state;
+  r.bytes_qi = qi_bytes(topo);
+  uint8_t* qi_mem = arena.take(r.bytes_qi);
+  if (qi_mem == nullptr) return out_of_room();
+  QiState state;
+  Status s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi);
+  if (s != Status::kOk) return fail(s);
+  // Where a sliver folds over on paper, the model's facing disagrees with the geometry the
+  // QI walks and it finds conflicts: once more with the facing the geometry shows, before
+  // giving up the QI (a diagonal may then be drawn as contour; the picture stays right).
+  if (params.method == HiddenMethod::kAuto && r.qi.conflicts > 0 && in.facing != nullptr) {
+    r.projected_facing = true;
+    r.classes = classify(&topo, front, nullptr);
+    r.qi = QiStats{};
     s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi);
-    if (s != Status::kOk) return *report = r, s;
-    // Where a sliver folds over on paper, the model's facing disagrees with the geometry the
-    // QI walks and it finds conflicts: once more with the facing the geometry shows, before
-    // giving up the QI (a diagonal may then be drawn as contour; the picture stays right).
-    if (params.method == HiddenMethod::kAuto && r.qi.conflicts > 0 && in.facing != nullptr) {
-      r.projected_facing = true;
-      r.classes = classify(&topo, front, nullptr);
-      r.qi = QiStats{};
-      s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi);
-      if (s != Status::kOk) return *report = r, s;
-    }
-    if (params.method == HiddenMethod::kAuto && r.qi.conflicts > 0) {
-      use_qi = false;  // the mesh pierces itself: ask the faces directly
-      r.reason = FallbackReason::kConflicts;
-      arena.used = before_method;
-    } else {
-      uint8_t* outline_mem = nullptr;
-      if (params.outline) {
-        r.bytes_outline = outline_bytes(topo, cutset, inc);
-        outline_mem = arena.take(r.bytes_outline);
-        if (outline_mem == nullptr) return *report = r, short_of(arena, report);
-      }
-      crossing_grid = state.grid;  // the lines ask the QI's grid of every face
-      if (sink.begin != nullptr)
-        sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);
-      r.used_qi = true;
-      s = emit_qi_pieces(topo, front, cutset, inc, state, QiSink{&qi_piece, &adapter});
-      if (s == Status::kOk) s = lines(front);
-      if (s == Status::kOk && params.outline)
-        s = find_outlines(topo, front, cutset, inc, state, outline_mem, r.bytes_outline,
-                          OutlineSink{&outline_piece, &adapter}, &r.outline);
-      r.bytes_used = arena.high;
-      *report = r;
-      return s;
-    }
+    if (s != Status::kOk) return fail(s);
   }
+  if (params.method == HiddenMethod::kAuto && r.qi.conflicts > 0) {
+    *gave_up = true;  // the mesh pierces itself: ask the faces directly
+    r.reason = FallbackReason::kConflicts;
+    arena.used = before_method;
+    return Status::kOk;
+  }
+  uint8_t* outline_mem = nullptr;
+  if (params.outline) {
+    r.bytes_outline = outline_bytes(topo, cutset, inc);
+    outline_mem = arena.take(r.bytes_outline);
+    if (outline_mem == nullptr) return out_of_room();
+  }
+  crossing_grid = state.grid;  // the lines ask the QI's grid of every face
+  if (sink.begin != nullptr)
+    sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);
+  r.used_qi = true;
+  s = emit_qi_pieces(topo, front, cutset, inc, state, QiSink{&qi_piece, &adapter});
+  if (s == Status::kOk) s = lines(front);
+  if (s == Status::kOk && params.outline)
+    s = find_outlines(topo, front, cutset, inc, state, outline_mem, r.bytes_outline,
+                      OutlineSink{&outline_piece, &adapter}, &r.outline);
+  return finish(s);
+}
+
+// The fallback: every piece asked against the faces directly.
+Status HiddenRun::fallback_method(bool manifold) {
   FallbackParams fp;
   fp.any_facing = !manifold;
   fp.use_classes = fp.use_vc = params.kira && manifold;
@@ -261,16 +280,47 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
       fallback_bytes(topo, share) + (fp.outline ? fallback_outline_bytes(topo, cutset) : 0);
   uint8_t* fb_mem = arena.take(r.bytes_fallback);
   if (fb_mem == nullptr || !carve_shared_grid(topo, params, &arena, &crossing_grid, &r))
-    return *report = r, short_of(arena, report);
+    return out_of_room();
   if (sink.begin != nullptr)
     sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);
-  s = run_fallback(topo, front, cutset, inc, fp, fb_mem, r.bytes_fallback,
-                   FallbackSink{&fallback_piece, &adapter, &fallback_outline}, &r.fallback,
-                   share ? &crossing_grid : nullptr);
+  Status s = run_fallback(topo, front, cutset, inc, fp, fb_mem, r.bytes_fallback,
+                          FallbackSink{&fallback_piece, &adapter, &fallback_outline}, &r.fallback,
+                          share ? &crossing_grid : nullptr);
   if (s == Status::kOk) s = lines(fp.any_facing ? nullptr : front);
-  r.bytes_used = arena.high;
-  *report = r;
-  return s;
+  return finish(s);
+}
+
+}  // namespace
+
+Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buffer, size_t bytes,
+                    HiddenSink sink, HiddenReport* report) {
+  HiddenRun run(in, params, buffer, bytes, sink, report);
+  if (params.hatch && (params.hatch_params.spacing < 1 || params.hatch_params.spacing > kCoordMax))
+    return run.fail(Status::kBadParameter);  // before any piece is emitted
+  Status s = run.build_edges();
+  if (s != Status::kOk) return s;
+  s = run.cut_and_touches();
+  if (s != Status::kOk) return s;
+
+  // The method.
+  const Topology& topo = run.topo;
+  const bool manifold = params.band ? params.closed : topo.check.manifold();
+  if (params.method == HiddenMethod::kQi && !manifold) return run.fail(Status::kNotManifold);
+  const bool use_qi =
+      !params.band &&
+      (params.method == HiddenMethod::kQi ||
+       (params.method == HiddenMethod::kAuto && manifold && topo.check.loose_edges == 0));
+  if (!use_qi)
+    run.r.reason = params.band                                ? FallbackReason::kBand
+                   : params.method == HiddenMethod::kFallback ? FallbackReason::kAsked
+                   : manifold                                 ? FallbackReason::kLooseEdges
+                                                              : FallbackReason::kNotManifold;
+  if (use_qi) {
+    bool gave_up = false;
+    s = run.qi_method(&gave_up);
+    if (!gave_up) return s;
+  }
+  return run.fallback_method(manifold);
 }
 
 Status HiddenLinesStage::run(const StageNeeds& needs, void* buffer, size_t bytes,

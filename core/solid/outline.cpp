@@ -205,6 +205,167 @@ Status mark_visible(void* context, const QiPiece& piece) {
   return Status::kOk;
 }
 
+// Contour edges, their vectors (front face on the right), and the vertex types: how many
+// vectors end and start at each vertex says where a trace must ask or choose (types A, B).
+void orient_contours(Ctx& c) {
+  const Topology& topo = c.topo;
+  uint32_t h = 0;
+  for (uint32_t v = 0; v < topo.n_vertices; ++v) c.ends[v] = 0;
+  for (uint32_t e = 0; e < topo.n_edges; ++e) {
+    c.index[e] = kNone;
+    const SolidEdge& se = topo.edges[e];
+    if (se.cls != EdgeClass::kH3) continue;
+    c.index[e] = h;
+    c.edge[h] = e;
+    c.forward[h] = front_face_side(topo, c.front, e) < 0;  // front face on the right
+    const uint32_t s = c.start_vertex(h), t = c.end_vertex(h);
+    if ((c.ends[t] & 0x0f) < 15) ++c.ends[t];
+    if ((c.ends[s] >> 4) < 15) c.ends[s] = static_cast<uint8_t>(c.ends[s] + 0x10);
+    ++h;
+  }
+  for (uint32_t v = 0; v < topo.n_vertices; ++v) {
+    if ((c.ends[v] & 0x0f) >= 2) ++c.st->peculiar_a;
+    if ((c.ends[v] >> 4) >= 2) ++c.st->peculiar_b;
+  }
+}
+
+// Crossing nodes on both edges of every contour pair, sorted along each edge and linked to
+// their partner, so a trace can turn onto the other contour at a crossing.
+void place_nodes(Ctx& c, const CutSet& cutset, const Incidences& inc, uint32_t n_h3) {
+  const Topology& topo = c.topo;
+  for (uint32_t i = 0; i <= n_h3; ++i) c.node_first[i] = 0;
+  for (uint32_t e = 0; e < topo.n_edges; ++e) {
+    if (c.index[e] == kNone) continue;
+    for (const Crossing* x = cutset.begin(e); x != cutset.begin(e) + cutset.count(e); ++x) {
+      if (x->near_miss() || c.index[x->front_edge()] == kNone) continue;
+      ++c.node_first[c.index[e] + 1];
+      ++c.node_first[c.index[x->front_edge()] + 1];
+    }
+    c.node_first[c.index[e] + 1] += inc.edge_first[e + 1] - inc.edge_first[e];
+  }
+  for (uint32_t i = 0; i < n_h3; ++i) c.node_first[i + 1] += c.node_first[i];
+  for (uint32_t e = 0; e < topo.n_edges; ++e) {
+    if (c.index[e] == kNone) continue;
+    for (const Crossing* x = cutset.begin(e); x != cutset.begin(e) + cutset.count(e); ++x) {
+      const uint32_t g = x->front_edge();
+      if (x->near_miss() || c.index[g] == kNone) continue;
+      const Edge3 pe = topo.edge3(e), pg = topo.edge3(g);
+      const CrossingTest ct = test_crossing(pg, pe);  // along g: tn / den
+      const uint32_t tg = frac_q32_small(ct.tn, ct.den);
+      c.nodes[c.node_first[c.index[e]]++] = Node{x->t, c.index[g], kNone};
+      c.nodes[c.node_first[c.index[g]]++] = Node{tg, c.index[e], kNone};
+    }
+    for (uint32_t i = inc.edge_first[e]; i < inc.edge_first[e + 1]; ++i)
+      c.nodes[c.node_first[c.index[e]]++] = Node{inc.by_edge[i].t, kNone, kNone};
+  }
+  for (uint32_t i = n_h3; i > 0; --i) c.node_first[i] = c.node_first[i - 1];
+  c.node_first[0] = 0;
+  for (uint32_t i = 0; i < n_h3; ++i)
+    sort_in_place(c.nodes + c.node_first[i], c.node_first[i + 1] - c.node_first[i],
+                  [](const Node& a, const Node& b) {
+                    return a.t < b.t || (a.t == b.t && a.partner < b.partner);
+                  });
+  for (uint32_t i = 0; i < n_h3; ++i)
+    for (uint32_t n = c.node_first[i]; n < c.node_first[i + 1]; ++n) {
+      const uint32_t p = c.nodes[n].partner;
+      if (p == kNone) continue;
+      for (uint32_t m = c.node_first[p]; m < c.node_first[p + 1]; ++m)
+        if (c.nodes[m].partner == i) c.nodes[n].partner_node = m - c.node_first[p];
+    }
+}
+
+// A failed trace's segments, each asked the condition on its own (no circuit vouches for them).
+void ask_one_by_one(Ctx& c, const uint32_t* walk, uint32_t n, uint32_t n_h3) {
+  for (uint32_t i = 0; i < n; ++i) {
+    // The contour edge holding segment walk[i]: the last h with seg_id(h, 0) <= it.
+    uint32_t lo = 0, hi = n_h3 - 1;
+    while (lo < hi) {
+      const uint32_t mid = lo + (hi - lo + 1) / 2;
+      if (c.seg_id(mid, 0) <= walk[i])
+        lo = mid;
+      else
+        hi = mid - 1;
+    }
+    const uint32_t hh = lo;
+    const uint32_t kk = walk[i] - c.seg_id(hh, 0);
+    ++c.st->one_by_one;
+    c.state[walk[i]] = c.visible[walk[i]] && outside_is_empty(c, hh, kk) ? kOutline : kNotOutline;
+  }
+}
+
+// One trace from visible segment (h0, k0): along the vectors until it closes, so that one test
+// of the condition settles the whole circuit; otherwise its segments are asked one by one.
+void trace_from(Ctx& c, uint32_t* walk, uint32_t n_h3, uint32_t h0, uint32_t k0) {
+  const uint32_t s0 = c.seg_id(h0, k0);
+  uint32_t n = 0, ch = h0, ck = k0;
+  bool closed = false, abandon = false, invisible = false;
+  walk[n++] = s0;
+  c.state[s0] = kInWalk;
+  for (;;) {
+    if (c.singular(ch)) break;  // asked one by one below
+    uint32_t nh = 0, nk = 0;
+    const uint32_t s = next_segment(c, ch, ck, &abandon, &nh, &nk);
+    if (s == s0) {
+      closed = true;
+      break;
+    }
+    if (s == kNone || c.state[s] != kOpen) break;  // dead end, or a loop missing its start
+    walk[n++] = s;
+    c.state[s] = kInWalk;
+    invisible = invisible || !c.visible[s];
+    ch = nh;
+    ck = nk;
+  }
+  if (!closed) return ask_one_by_one(c, walk, n, n_h3);
+  ++c.st->circuits;
+  if (!invisible) ++c.st->potential;
+  const bool outline = !invisible && outside_is_empty(c, h0, k0);
+  c.st->outlines += outline;
+  const uint8_t verdict = outline ? kOutline : kNotOutline;
+  for (uint32_t i = 0; i < n; ++i) c.state[walk[i]] = verdict;
+}
+
+// Every open segment settled: an invisible one is no outline, a visible one starts a trace.
+void trace_circuits(Ctx& c, uint32_t* walk, uint32_t n_h3) {
+  for (uint32_t h0 = 0; h0 < n_h3; ++h0)
+    for (uint32_t k0 = 0; k0 < c.segs(h0); ++k0) {
+      const uint32_t s0 = c.seg_id(h0, k0);
+      if (c.state[s0] != kOpen) continue;
+      if (!c.visible[s0]) {
+        c.state[s0] = kNotOutline;
+        continue;
+      }
+      trace_from(c, walk, n_h3, h0, k0);
+    }
+}
+
+// The outline segments to the sink, merged along each edge.
+Status emit_outlines(const Ctx& c, uint32_t n_h3, OutlineSink sink) {
+  for (uint32_t i = 0; i < n_h3; ++i) {
+    OutlineSegment pending{c.edge[i], 0, 0};
+    bool have = false;
+    for (uint32_t kk = 0; kk < c.segs(i); ++kk) {
+      if (c.state[c.seg_id(i, kk)] != kOutline) continue;
+      ++c.st->outline_segments;
+      if (have && pending.t1 == c.t_lo(i, kk)) {
+        pending.t1 = c.t_hi(i, kk);
+        continue;
+      }
+      if (have) {
+        const Status s = sink.emit(sink.context, pending);
+        if (s != Status::kOk) return s;
+      }
+      pending = OutlineSegment{c.edge[i], c.t_lo(i, kk), c.t_hi(i, kk)};
+      have = true;
+    }
+    if (have) {
+      const Status s = sink.emit(sink.context, pending);
+      if (s != Status::kOk) return s;
+    }
+  }
+  return Status::kOk;
+}
+
 }  // namespace
 
 size_t outline_bytes(const Topology& topo, const CutSet& cutset, const Incidences& inc) {
@@ -246,66 +407,8 @@ Status find_outlines(const Topology& topo, const uint8_t* front, const CutSet& c
   st.contour_edges = n_h3;
   st.contour_crossings = static_cast<uint32_t>(crossings);
 
-  // Contour edges, their vectors (front face on the right), and the vertex types.
-  uint32_t h = 0;
-  for (uint32_t v = 0; v < topo.n_vertices; ++v) c.ends[v] = 0;
-  for (uint32_t e = 0; e < topo.n_edges; ++e) {
-    c.index[e] = kNone;
-    const SolidEdge& se = topo.edges[e];
-    if (se.cls != EdgeClass::kH3) continue;
-    c.index[e] = h;
-    c.edge[h] = e;
-    c.forward[h] = front_face_side(topo, front, e) < 0;  // front face on the right
-    const uint32_t s = c.start_vertex(h), t = c.end_vertex(h);
-    if ((c.ends[t] & 0x0f) < 15) ++c.ends[t];
-    if ((c.ends[s] >> 4) < 15) c.ends[s] = static_cast<uint8_t>(c.ends[s] + 0x10);
-    ++h;
-  }
-  for (uint32_t v = 0; v < topo.n_vertices; ++v) {
-    if ((c.ends[v] & 0x0f) >= 2) ++st.peculiar_a;
-    if ((c.ends[v] >> 4) >= 2) ++st.peculiar_b;
-  }
-
-  // Crossing nodes on both edges of every contour pair, sorted along each edge.
-  for (uint32_t i = 0; i <= n_h3; ++i) c.node_first[i] = 0;
-  for (uint32_t e = 0; e < topo.n_edges; ++e) {
-    if (c.index[e] == kNone) continue;
-    for (const Crossing* x = cutset.begin(e); x != cutset.begin(e) + cutset.count(e); ++x) {
-      if (x->near_miss() || c.index[x->front_edge()] == kNone) continue;
-      ++c.node_first[c.index[e] + 1];
-      ++c.node_first[c.index[x->front_edge()] + 1];
-    }
-    c.node_first[c.index[e] + 1] += inc.edge_first[e + 1] - inc.edge_first[e];
-  }
-  for (uint32_t i = 0; i < n_h3; ++i) c.node_first[i + 1] += c.node_first[i];
-  for (uint32_t e = 0; e < topo.n_edges; ++e) {
-    if (c.index[e] == kNone) continue;
-    for (const Crossing* x = cutset.begin(e); x != cutset.begin(e) + cutset.count(e); ++x) {
-      const uint32_t g = x->front_edge();
-      if (x->near_miss() || c.index[g] == kNone) continue;
-      const Edge3 pe = topo.edge3(e), pg = topo.edge3(g);
-      const CrossingTest ct = test_crossing(pg, pe);  // along g: tn / den
-      const uint32_t tg = frac_q32_small(ct.tn, ct.den);
-      c.nodes[c.node_first[c.index[e]]++] = Node{x->t, c.index[g], kNone};
-      c.nodes[c.node_first[c.index[g]]++] = Node{tg, c.index[e], kNone};
-    }
-    for (uint32_t i = inc.edge_first[e]; i < inc.edge_first[e + 1]; ++i)
-      c.nodes[c.node_first[c.index[e]]++] = Node{inc.by_edge[i].t, kNone, kNone};
-  }
-  for (uint32_t i = n_h3; i > 0; --i) c.node_first[i] = c.node_first[i - 1];
-  c.node_first[0] = 0;
-  for (uint32_t i = 0; i < n_h3; ++i)
-    sort_in_place(c.nodes + c.node_first[i], c.node_first[i + 1] - c.node_first[i],
-                  [](const Node& a, const Node& b) {
-                    return a.t < b.t || (a.t == b.t && a.partner < b.partner);
-                  });
-  for (uint32_t i = 0; i < n_h3; ++i)
-    for (uint32_t n = c.node_first[i]; n < c.node_first[i + 1]; ++n) {
-      const uint32_t p = c.nodes[n].partner;
-      if (p == kNone) continue;
-      for (uint32_t m = c.node_first[p]; m < c.node_first[p + 1]; ++m)
-        if (c.nodes[m].partner == i) c.nodes[n].partner_node = m - c.node_first[p];
-    }
+  orient_contours(c);
+  place_nodes(c, cutset, inc, n_h3);
   st.unit_segments = n_h3 + c.node_first[n_h3];
 
   // Which unit segments are visible, from the QI.
@@ -320,86 +423,9 @@ Status find_outlines(const Topology& topo, const uint8_t* front, const CutSet& c
     if (s != Status::kOk) return s;
   }
 
-  // Trace circuits.
-  for (uint32_t h0 = 0; h0 < n_h3; ++h0)
-    for (uint32_t k0 = 0; k0 < c.segs(h0); ++k0) {
-      const uint32_t s0 = c.seg_id(h0, k0);
-      if (c.state[s0] != kOpen) continue;
-      if (!c.visible[s0]) {
-        c.state[s0] = kNotOutline;
-        continue;
-      }
-      uint32_t n = 0, ch = h0, ck = k0;
-      bool closed = false, abandon = false, invisible = false;
-      walk[n++] = s0;
-      c.state[s0] = kInWalk;
-      for (;;) {
-        if (c.singular(ch)) break;  // asked one by one below
-        uint32_t nh = 0, nk = 0;
-        const uint32_t s = next_segment(c, ch, ck, &abandon, &nh, &nk);
-        if (s == s0) {
-          closed = true;
-          break;
-        }
-        if (s == kNone || c.state[s] != kOpen) break;  // dead end, or a loop missing its start
-        walk[n++] = s;
-        c.state[s] = kInWalk;
-        invisible = invisible || !c.visible[s];
-        ch = nh;
-        ck = nk;
-      }
-      uint8_t verdict;
-      if (closed) {
-        ++st.circuits;
-        if (!invisible) ++st.potential;
-        const bool outline = !invisible && outside_is_empty(c, h0, k0);
-        st.outlines += outline;
-        verdict = outline ? kOutline : kNotOutline;
-        for (uint32_t i = 0; i < n; ++i) c.state[walk[i]] = verdict;
-      } else {
-        // Ask every segment of the failed trace on its own.
-        for (uint32_t i = 0; i < n; ++i) {
-          // The contour edge holding segment walk[i]: the last h with seg_id(h, 0) <= it.
-          uint32_t lo = 0, hi = n_h3 - 1;
-          while (lo < hi) {
-            const uint32_t mid = lo + (hi - lo + 1) / 2;
-            if (c.seg_id(mid, 0) <= walk[i])
-              lo = mid;
-            else
-              hi = mid - 1;
-          }
-          const uint32_t hh = lo;
-          const uint32_t kk = walk[i] - c.seg_id(hh, 0);
-          ++st.one_by_one;
-          c.state[walk[i]] =
-              c.visible[walk[i]] && outside_is_empty(c, hh, kk) ? kOutline : kNotOutline;
-        }
-      }
-    }
-
-  // Emit the outline segments, merged along each edge.
-  for (uint32_t i = 0; i < n_h3; ++i) {
-    OutlineSegment pending{c.edge[i], 0, 0};
-    bool have = false;
-    for (uint32_t kk = 0; kk < c.segs(i); ++kk) {
-      if (c.state[c.seg_id(i, kk)] != kOutline) continue;
-      ++st.outline_segments;
-      if (have && pending.t1 == c.t_lo(i, kk)) {
-        pending.t1 = c.t_hi(i, kk);
-        continue;
-      }
-      if (have) {
-        const Status s = sink.emit(sink.context, pending);
-        if (s != Status::kOk) return s;
-      }
-      pending = OutlineSegment{c.edge[i], c.t_lo(i, kk), c.t_hi(i, kk)};
-      have = true;
-    }
-    if (have) {
-      const Status s = sink.emit(sink.context, pending);
-      if (s != Status::kOk) return s;
-    }
-  }
+  trace_circuits(c, walk, n_h3);
+  const Status s = emit_outlines(c, n_h3, sink);
+  if (s != Status::kOk) return s;
   if (stats != nullptr) *stats = st;
   return Status::kOk;
 }

@@ -55,23 +55,8 @@ void count_scratch(C& c, const SolidInput& in) {
   c.template take<uint32_t>(sides);              // the edge of each triangle side
 }
 
-}  // namespace
-
-size_t topology_bytes(const SolidInput& in) {
-  ByteCounter kept, scratch;
-  count_kept(kept, in, size_t{in.n_edges} + size_t{in.n_triangles} * 3);  // at most this many
-  count_scratch(scratch, in);
-  return kept.total + scratch.total + 8;
-}
-
-size_t topology_scratch_bytes(const SolidInput& in) {
-  ByteCounter scratch;
-  count_scratch(scratch, in);
-  return scratch.total;
-}
-
-Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology* out,
-                      const TopologyOptions& options) {
+// Every vertex in range and every index in its array; no edge or triangle repeats a vertex.
+Status check_input(const SolidInput& in) {
   if (in.n_edges > 0x3fffffffu || in.n_triangles > 0x3fffffffu / 3) return Status::kTooManyEdges;
   for (uint32_t i = 0; i < in.n_vertices; ++i)
     if (!in_range(in.vertices[i])) return Status::kCoordinateOutOfRange;
@@ -85,38 +70,14 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
       return Status::kBadParameter;
     if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) return Status::kBadParameter;
   }
+  return Status::kOk;
+}
+
+// Triangle sides that are not drawn edges (the diagonals to be), sorted by key so they are
+// numbered independently of the triangle order; a band keeps only those meeting its rows.
+uint32_t undrawn_sides(const SolidInput& in, const TopologyOptions& options, const SideKey* drawn,
+                       SideKey* side) {
   const uint32_t sides = in.n_triangles * 3;
-  // Scratch from the top of the buffer (8-byte aligned), the kept arrays from the bottom once
-  // the number of edges is known.
-  ByteCounter scratch_size;
-  count_scratch(scratch_size, in);
-  uint8_t* lo =
-      reinterpret_cast<uint8_t*>((reinterpret_cast<uintptr_t>(buffer) + 7) & ~uintptr_t{7});
-  uint8_t* hi = reinterpret_cast<uint8_t*>(
-      (reinterpret_cast<uintptr_t>(static_cast<uint8_t*>(buffer) + bytes)) & ~uintptr_t{7});
-  if (buffer == nullptr || hi < lo || size_t(hi - lo) < scratch_size.total)
-    return Status::kWorkspaceTooSmall;
-  Carver scratch(hi - scratch_size.total, scratch_size.total);
-  SideKey* drawn = scratch.take<SideKey>(in.n_edges);
-  SideKey* side = scratch.take<SideKey>(sides);
-  uint8_t* nfaces = scratch.take<uint8_t>(in.n_edges + size_t{sides});
-  uint32_t* side_edge = scratch.take<uint32_t>(sides);  // triangle t's side k at [3t + k]
-  Topology t;
-  t.vertices = in.vertices;
-  t.n_vertices = in.n_vertices;
-  t.triangles = in.triangles;
-  t.n_triangles = in.n_triangles;
-
-  // Drawn edges keep their input order and index; a repeat is an input error.
-  for (uint32_t e = 0; e < in.n_edges; ++e)
-    drawn[e] = SideKey{key_of(in.edge_pairs[2 * e], in.edge_pairs[2 * e + 1]), e};
-  heap_sort(drawn, in.n_edges, key_less);
-  for (uint32_t i = 1; i < in.n_edges; ++i)
-    if (drawn[i].key == drawn[i - 1].key) return Status::kBadParameter;
-
-  // Triangle sides that are not drawn edges become diagonals, numbered in key order so the
-  // result does not depend on the triangle order. Their keys come first, so the kept arrays
-  // are carved for the exact number of edges.
   uint32_t n_side = 0;
   auto in_rows = [&](uint32_t a, uint32_t b) {
     const int32_t ya = in.vertices[a].y, yb = in.vertices[b].y;
@@ -131,19 +92,14 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
       side[n_side++] = SideKey{k, s};
   }
   heap_sort(side, n_side, key_less);
-  uint32_t n_diagonals = 0;
-  for (uint32_t i = 0; i < n_side; ++i)
-    if (i == 0 || side[i].key != side[i - 1].key) ++n_diagonals;
-  Carver carve(lo, size_t(hi - lo) - scratch_size.total);
-  t.edges = carve.take<SolidEdge>(size_t{in.n_edges} + n_diagonals);
-  if (options.stars) {
-    t.vertex_edge_first = carve.take<uint32_t>(in.n_vertices + 1);
-    t.vertex_edges = carve.take<uint32_t>(2 * (size_t{in.n_edges} + n_diagonals));
-    t.vertex_face_first = carve.take<uint32_t>(in.n_vertices + 1);
-    t.vertex_faces = carve.take<uint32_t>(sides);
-  }
-  if (carve.short_) return Status::kWorkspaceTooSmall;
-  t.kept_bytes = size_t(carve.next - static_cast<uint8_t*>(buffer));
+  return n_side;
+}
+
+// The edges: the drawn ones in input order, then one diagonal per distinct undrawn side; and
+// for each triangle side the edge it lies on (kNoFace for a band's side beyond its rows).
+void number_edges(const SolidInput& in, const SideKey* drawn, const SideKey* side, uint32_t n_side,
+                  uint32_t* side_edge, Topology& t) {
+  const uint32_t sides = in.n_triangles * 3;
   for (uint32_t e = 0; e < in.n_edges; ++e)
     t.edges[e] = SolidEdge{in.edge_pairs[2 * e],
                            in.edge_pairs[2 * e + 1],
@@ -167,8 +123,12 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
   }
   t.n_edges = n;
   t.n_drawn = in.n_edges;
+}
 
-  // Attach faces: a side running v0 -> v1 takes slot 0, v1 -> v0 slot 1.
+// Attach faces: a side running v0 -> v1 takes slot 0, v1 -> v0 slot 1. Then each edge is
+// checked: loose, a boundary, non-manifold, or two faces that agree (regular) or not.
+void attach_faces(const SolidInput& in, const uint32_t* side_edge, uint8_t* nfaces, Topology& t) {
+  const uint32_t sides = in.n_triangles * 3, n = t.n_edges;
   for (uint32_t e = 0; e < n; ++e) nfaces[e] = 0;
   for (uint32_t s = 0; s < sides; ++s) {
     if (side_edge[s] == kNoFace) continue;  // a band's side beyond its rows
@@ -205,12 +165,11 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
         t.edges[e].regular = true;
     }
   }
+}
 
-  if (!options.stars) {
-    *out = t;
-    return Status::kOk;
-  }
-  // Stars, by counting then filling.
+// Stars (each vertex's edges and faces), by counting then filling.
+void build_stars(const SolidInput& in, Topology& t) {
+  const uint32_t sides = in.n_triangles * 3, n = t.n_edges;
   for (uint32_t v = 0; v <= in.n_vertices; ++v) t.vertex_edge_first[v] = t.vertex_face_first[v] = 0;
   for (uint32_t e = 0; e < n; ++e) {
     ++t.vertex_edge_first[t.edges[e].v0 + 1];
@@ -233,6 +192,74 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
     t.vertex_face_first[v] = t.vertex_face_first[v - 1];
   }
   t.vertex_edge_first[0] = t.vertex_face_first[0] = 0;
+}
+
+}  // namespace
+
+size_t topology_bytes(const SolidInput& in) {
+  ByteCounter kept, scratch;
+  count_kept(kept, in, size_t{in.n_edges} + size_t{in.n_triangles} * 3);  // at most this many
+  count_scratch(scratch, in);
+  return kept.total + scratch.total + 8;
+}
+
+size_t topology_scratch_bytes(const SolidInput& in) {
+  ByteCounter scratch;
+  count_scratch(scratch, in);
+  return scratch.total;
+}
+
+Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology* out,
+                      const TopologyOptions& options) {
+  const Status checked = check_input(in);
+  if (checked != Status::kOk) return checked;
+  const uint32_t sides = in.n_triangles * 3;
+  // Scratch from the top of the buffer (8-byte aligned), the kept arrays from the bottom once
+  // the number of edges is known.
+  ByteCounter scratch_size;
+  count_scratch(scratch_size, in);
+  uint8_t* lo =
+      reinterpret_cast<uint8_t*>((reinterpret_cast<uintptr_t>(buffer) + 7) & ~uintptr_t{7});
+  uint8_t* hi = reinterpret_cast<uint8_t*>(
+      (reinterpret_cast<uintptr_t>(static_cast<uint8_t*>(buffer) + bytes)) & ~uintptr_t{7});
+  if (buffer == nullptr || hi < lo || size_t(hi - lo) < scratch_size.total)
+    return Status::kWorkspaceTooSmall;
+  Carver scratch(hi - scratch_size.total, scratch_size.total);
+  SideKey* drawn = scratch.take<SideKey>(in.n_edges);
+  SideKey* side = scratch.take<SideKey>(sides);
+  uint8_t* nfaces = scratch.take<uint8_t>(in.n_edges + size_t{sides});
+  uint32_t* side_edge = scratch.take<uint32_t>(sides);  // triangle t's side k at [3t + k]
+  Topology t;
+  t.vertices = in.vertices;
+  t.n_vertices = in.n_vertices;
+  t.triangles = in.triangles;
+  t.n_triangles = in.n_triangles;
+
+  // Drawn edges keep their input order and index; a repeat is an input error.
+  for (uint32_t e = 0; e < in.n_edges; ++e)
+    drawn[e] = SideKey{key_of(in.edge_pairs[2 * e], in.edge_pairs[2 * e + 1]), e};
+  heap_sort(drawn, in.n_edges, key_less);
+  for (uint32_t i = 1; i < in.n_edges; ++i)
+    if (drawn[i].key == drawn[i - 1].key) return Status::kBadParameter;
+
+  // The diagonals' keys come first, so the kept arrays are carved for the exact number of edges.
+  const uint32_t n_side = undrawn_sides(in, options, drawn, side);
+  uint32_t n_diagonals = 0;
+  for (uint32_t i = 0; i < n_side; ++i)
+    if (i == 0 || side[i].key != side[i - 1].key) ++n_diagonals;
+  Carver carve(lo, size_t(hi - lo) - scratch_size.total);
+  t.edges = carve.take<SolidEdge>(size_t{in.n_edges} + n_diagonals);
+  if (options.stars) {
+    t.vertex_edge_first = carve.take<uint32_t>(in.n_vertices + 1);
+    t.vertex_edges = carve.take<uint32_t>(2 * (size_t{in.n_edges} + n_diagonals));
+    t.vertex_face_first = carve.take<uint32_t>(in.n_vertices + 1);
+    t.vertex_faces = carve.take<uint32_t>(sides);
+  }
+  if (carve.short_) return Status::kWorkspaceTooSmall;
+  t.kept_bytes = size_t(carve.next - static_cast<uint8_t*>(buffer));
+  number_edges(in, drawn, side, n_side, side_edge, t);
+  attach_faces(in, side_edge, nfaces, t);
+  if (options.stars) build_stars(in, t);
   *out = t;
   return Status::kOk;
 }

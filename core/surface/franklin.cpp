@@ -296,6 +296,272 @@ uint32_t append_diagonals(const SolidInput& in, uint32_t* pairs, uint64_t* keys)
   return out;
 }
 
+// One run's state, shared by its steps: the edges that cut (the drawn ones, then the
+// diagonals), the grid, and the per-cell lists carved from the caller's buffer.
+struct FranklinRun {
+  SolidInput in;
+  uint32_t n_drawn = 0;  // the drawn edges come first in `in` and are the only ones drawn
+  Grid g;
+  uint32_t cells = 0;
+  uint32_t* blocking = nullptr;  // the first triangle of each cell's blocking polygon, or kNone
+  uint32_t* face_first = nullptr;
+  uint32_t* face_list = nullptr;
+  uint32_t* edge_first = nullptr;
+  uint32_t* edge_list = nullptr;
+  uint8_t* edge_kept = nullptr;
+  Cut* cuts = nullptr;
+  uint64_t n_cuts = 0;
+  FranklinStats st;
+
+  void choose_blocking();
+  void list_faces();
+  void list_edges();
+  void cut_pairs(uint32_t crossing_capacity);
+  void sort_cuts();
+  bool covers(uint32_t t, const CoverPoint& pt);
+  bool hidden_at(const Edge3& ed, int64_t m);
+  Status edge_pieces(uint32_t e, uint64_t k, const Incidences& inc, bool every_piece,
+                     FranklinSink sink);
+};
+
+// Steps 5-6, first half: a face becomes a cell's Fb unless the current one is in front of it.
+void FranklinRun::choose_blocking() {
+  for (uint32_t c = 0; c < cells; ++c) blocking[c] = kNone;
+  for (uint32_t t = 0; t < in.n_triangles;) {
+    const uint32_t end = group_end(in, t);
+    const bool flat = flat_group(in, t, end);
+    for (uint32_t f = t; f < end; ++f) {
+      // A flat polygon is tried whole, once, over the union of its triangles' boxes (each
+      // triangle's box is visited; a cell already blocked by this polygon is skipped).
+      const Plane pf = plane_of(in, f);
+      if (pf.area == 0) continue;  // edge-on: covers no cell, hides nothing
+      for_each_cell(g, face_box(in, f), CellCover::kBoundingBox, 0, [&](uint32_t c) {
+        if (blocking[c] == t) return;
+        const Cell box = cell_box(g, c);
+        if (!(flat ? group_blocks(in, t, end, box) : blocks(pf, box))) return;
+        if (blocking[c] != kNone && face_behind(pf, plane_of(in, blocking[c]), box)) return;
+        blocking[c] = flat ? t : f;
+      });
+    }
+    t = end;
+  }
+}
+
+// Steps 5-6, second half: each cell lists its faces not behind its final Fb (counted, then
+// filled), so a midpoint is tested against only the faces that can hide it there.
+void FranklinRun::list_faces() {
+  for (uint32_t c = 0; c <= cells; ++c) face_first[c] = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (uint32_t t = 0; t < in.n_triangles; ++t) {
+      const Plane f = plane_of(in, t);
+      if (f.area == 0) continue;
+      bool kept = false;
+      for_each_cell(g, face_box(in, t), CellCover::kBoundingBox, 0, [&](uint32_t c) {
+        if (blocking[c] != kNone && blocking[c] <= t && t < group_end(in, blocking[c]) &&
+            (blocking[c] == t || flat_group(in, blocking[c], group_end(in, blocking[c])))) {
+          kept = true;  // the blocking polygon itself is kept apart from the list
+          return;
+        }
+        if (blocking[c] != kNone && face_behind(f, plane_of(in, blocking[c]), cell_box(g, c))) {
+          if (pass == 0) ++st.face_cells_culled;
+          return;
+        }
+        kept = true;
+        if (pass == 0)
+          ++face_first[c + 1];
+        else
+          face_list[face_first[c]++] = t;
+      });
+      if (pass == 0 && !kept) ++st.faces_deleted;
+    }
+    if (pass == 0)
+      for (uint32_t c = 0; c < cells; ++c) face_first[c + 1] += face_first[c];
+  }
+  for (uint32_t c = cells; c > 0; --c) face_first[c] = face_first[c - 1];
+  face_first[0] = 0;
+  st.face_cells = face_first[cells];
+  for (uint32_t c = 0; c < cells; ++c) st.blocking_cells += blocking[c] != kNone;
+}
+
+// Step 7: edges into cells, unless behind the blocking face there: a cell's pairs are then
+// tested only among the edges that can show in it.
+void FranklinRun::list_edges() {
+  for (uint32_t c = 0; c <= cells; ++c) edge_first[c] = 0;
+  for (uint32_t e = 0; e < in.n_edges; ++e) edge_kept[e] = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (uint32_t e = 0; e < in.n_edges; ++e) {
+      const Edge3 ed = edge_of(in, e);
+      for_each_cell(g, ed, CellCover::kExact, 0, [&](uint32_t c) {
+        if (blocking[c] != kNone && edge_behind(ed, plane_of(in, blocking[c]), cell_box(g, c))) {
+          if (pass == 0) ++st.edge_cells_culled;
+          return;
+        }
+        edge_kept[e] = 1;
+        if (pass == 0)
+          ++edge_first[c + 1];
+        else
+          edge_list[edge_first[c]++] = e;
+      });
+    }
+    if (pass == 0)
+      for (uint32_t c = 0; c < cells; ++c) edge_first[c + 1] += edge_first[c];
+  }
+  for (uint32_t c = cells; c > 0; --c) edge_first[c] = edge_first[c - 1];
+  edge_first[0] = 0;
+  st.edge_cells = edge_first[cells];
+  for (uint32_t e = 0; e < n_drawn; ++e) st.edges_deleted += edge_kept[e] == 0;
+}
+
+// Step 8: pairs in each cell; a crossing counts in the cell that holds it, so a pair sharing
+// several cells is cut once; both edges are cut. Cuts past the capacity are counted, not kept.
+void FranklinRun::cut_pairs(uint32_t crossing_capacity) {
+  for (uint32_t c = 0; c < cells; ++c) {
+    const Cell box = cell_box(g, c);
+    for (uint32_t i = edge_first[c]; i < edge_first[c + 1]; ++i)
+      for (uint32_t j = i + 1; j < edge_first[c + 1]; ++j) {
+        const Edge3 p1 = edge_of(in, edge_list[i]), p2 = edge_of(in, edge_list[j]);
+        ++st.pairs_tested;
+        const CrossingTest x = test_crossing(p1, p2);
+        if (!x.crosses) continue;
+        const int64_t px = int64_t{p1.b.x - p1.a.x} * x.tn, py = int64_t{p1.b.y - p1.a.y} * x.tn;
+        if (!((box.x0 - p1.a.x) * x.den <= px && px < (box.x1 - p1.a.x) * x.den &&
+              (box.y0 - p1.a.y) * x.den <= py && py < (box.y1 - p1.a.y) * x.den))
+          continue;
+        ++st.crossings;
+        if (n_cuts + 2 <= uint64_t{crossing_capacity} * 2) {
+          const uint32_t* pi = in.edge_pairs + 2 * edge_list[i];
+          const uint32_t* pj = in.edge_pairs + 2 * edge_list[j];
+          cuts[n_cuts] = Cut{edge_list[i], frac_q32_small(x.tn, x.den), pj[0], pj[1]};
+          cuts[n_cuts + 1] = Cut{edge_list[j], frac_q32_small(x.un, x.den), pi[0], pi[1]};
+        }
+        n_cuts += 2;
+      }
+  }
+}
+
+// Each edge's cuts together and in exact order along it, for step 9's walk.
+void FranklinRun::sort_cuts() {
+  const SolidInput& edges = in;
+  heap_sort(cuts, size_t(n_cuts), [&](const Cut& a, const Cut& b) {
+    if (a.edge != b.edge) return a.edge < b.edge;
+    if (a.t != b.t) return a.t < b.t;
+    return before(edges, a.edge, PieceEnd{a.u, a.w}, PieceEnd{b.u, b.w});
+  });
+}
+
+bool FranklinRun::covers(uint32_t t, const CoverPoint& pt) {
+  const uint32_t* v = in.triangles[t].v;
+  const Point3 &a = in.vertices[v[0]], &b = in.vertices[v[1]], &cc = in.vertices[v[2]];
+  ++st.face_tests;
+  return (projected_area2(a, b, cc) >= 0 ? cover_halves(a, b, cc, pt)
+                                         : cover_halves(a, cc, b, pt)) != 0;
+}
+
+// Step 9's test: a piece is hidden when a face of its midpoint's cell covers the midpoint;
+// the cell's blocking polygon is kept apart from its list, so it is asked first.
+bool FranklinRun::hidden_at(const Edge3& ed, int64_t m) {
+  const CoverPoint pt = edge_point(ed, m);
+  const uint32_t c = g.cell_of(cell_x(pt), cell_y(pt));
+  ++st.midpoint_tests;
+  bool hidden = false;
+  if (blocking[c] != kNone) {
+    const uint32_t b0 = blocking[c];
+    const uint32_t b1 = flat_group(in, b0, group_end(in, b0)) ? group_end(in, b0) : b0 + 1;
+    for (uint32_t t = b0; !hidden && t < b1; ++t) hidden = covers(t, pt);
+  }
+  for (uint32_t i = face_first[c]; !hidden && i < face_first[c + 1]; ++i)
+    hidden = covers(face_list[i], pt);
+  return hidden;
+}
+
+// Step 9 for one edge: its pieces between cuts, runs of equal visibility joined (unless
+// every piece is wanted) and handed to the sink one behind, when the next one differs.
+struct EdgePieces {
+  FranklinRun& run;
+  uint32_t e;
+  Edge3 ed;
+  bool every_piece;
+  FranklinSink sink;
+  FranklinPiece pending{e, 0, 0, false, {}, {}};
+  bool have = false;
+  bool last_hidden = false;
+
+  Status piece(int64_t t0, int64_t t1, PieceEnd from, PieceEnd to) {
+    if (t1 < t0 || (t1 == t0 && !every_piece)) return Status::kOk;
+    ++run.st.pieces;
+    bool hidden = true;
+    if (!run.edge_kept[e]) {
+      hidden = true;
+    } else if (t1 - t0 < 2) {
+      hidden = last_hidden;
+    } else {
+      hidden = run.hidden_at(ed, t0 + (t1 - t0) / 2);
+    }
+    last_hidden = hidden;
+    if (have && !every_piece && pending.hidden == hidden && pending.t1 == t0) {
+      pending.t1 = t1;
+      pending.to = to;
+      return Status::kOk;
+    }
+    Status r = Status::kOk;
+    if (have) r = sink.emit(sink.context, pending);
+    pending = FranklinPiece{e, t0, t1, hidden, from, to};
+    have = true;
+    return r;
+  }
+};
+
+// Walks edge e's cuts (from cuts[k]) and the vertices on it in order along the edge: visibility
+// can change at either (solid/incidence.h).
+Status FranklinRun::edge_pieces(uint32_t e, uint64_t k, const Incidences& inc, bool every_piece,
+                                FranklinSink sink) {
+  EdgePieces ps{*this, e, edge_of(in, e), every_piece, sink};
+  uint64_t kc = k;
+  uint32_t ki = inc.edge_first[e];
+  Status s = Status::kOk;
+  int64_t at = 0;
+  PieceEnd at_end{in.edge_pairs[2 * e], PieceEnd::kNoVertex};
+  while (s == Status::kOk && ((kc < n_cuts && cuts[kc].edge == e) || ki < inc.edge_first[e + 1])) {
+    int64_t t;
+    PieceEnd end;
+    bool take_cut = ki >= inc.edge_first[e + 1];
+    if (!take_cut && kc < n_cuts && cuts[kc].edge == e) {
+      const Incidence& v = inc.by_edge[ki];
+      take_cut = cuts[kc].t < v.t ||
+                 (cuts[kc].t == v.t && !before(in, e, PieceEnd{v.vertex, PieceEnd::kNoVertex},
+                                               PieceEnd{cuts[kc].u, cuts[kc].w}));
+    }
+    if (take_cut) {
+      end = PieceEnd{cuts[kc].u, cuts[kc].w};
+      t = cuts[kc++].t;
+    } else {
+      end = PieceEnd{inc.by_edge[ki].vertex, PieceEnd::kNoVertex};
+      t = inc.by_edge[ki++].t;
+    }
+    s = ps.piece(at, t, at_end, end);
+    at = t;
+    at_end = end;
+  }
+  if (s == Status::kOk)
+    s = ps.piece(at, kOne, at_end, PieceEnd{in.edge_pairs[2 * e + 1], PieceEnd::kNoVertex});
+  if (s == Status::kOk && ps.have) s = sink.emit(sink.context, ps.pending);
+  return s;
+}
+
+// Every vertex in range, every index in its array, and room for the diagonals' indices.
+Status check_input(const SolidInput& drawn) {
+  for (uint32_t v = 0; v < drawn.n_vertices; ++v)
+    if (!in_range(drawn.vertices[v])) return Status::kCoordinateOutOfRange;
+  for (uint32_t e = 0; e < 2 * drawn.n_edges; ++e)
+    if (drawn.edge_pairs[e] >= drawn.n_vertices) return Status::kBadParameter;
+  for (uint32_t t = 0; t < drawn.n_triangles; ++t)
+    for (int k = 0; k < 3; ++k)
+      if (drawn.triangles[t].v[k] >= drawn.n_vertices) return Status::kBadParameter;
+  if (uint64_t{drawn.n_edges} + 3ull * drawn.n_triangles > 0x3fffffffu)
+    return Status::kTooManyEdges;
+  return Status::kOk;
+}
+
 }  // namespace
 
 PiecePosition piece_end_position(const SolidInput& in, uint32_t e, const PieceEnd& at) {
@@ -341,253 +607,70 @@ size_t franklin_bytes(const SolidInput& drawn, const FranklinParams& p, uint32_t
 Status franklin_hidden_lines(const SolidInput& drawn, const FranklinParams& p,
                              uint32_t crossing_capacity, uint32_t incidence_capacity, void* buffer,
                              size_t bytes, FranklinSink sink, FranklinStats* stats) {
-  for (uint32_t v = 0; v < drawn.n_vertices; ++v)
-    if (!in_range(drawn.vertices[v])) return Status::kCoordinateOutOfRange;
-  for (uint32_t e = 0; e < 2 * drawn.n_edges; ++e)
-    if (drawn.edge_pairs[e] >= drawn.n_vertices) return Status::kBadParameter;
-  for (uint32_t t = 0; t < drawn.n_triangles; ++t)
-    for (int k = 0; k < 3; ++k)
-      if (drawn.triangles[t].v[k] >= drawn.n_vertices) return Status::kBadParameter;
-  if (uint64_t{drawn.n_edges} + 3ull * drawn.n_triangles > 0x3fffffffu)
-    return Status::kTooManyEdges;
-  FranklinStats st;
+  const Status checked = check_input(drawn);
+  if (checked != Status::kOk) return checked;
+  FranklinRun run;
   Carver carve(buffer, bytes);
   const size_t most = size_t{drawn.n_edges} + 3 * size_t{drawn.n_triangles};
   uint32_t* all_pairs = carve.take<uint32_t>(2 * most);
   uint64_t* keys = carve.take<uint64_t>(most);
   if (carve.short_) return Status::kWorkspaceTooSmall;
   // The edges that cut: the drawn ones, then the diagonals (which make no pieces).
-  SolidInput in = drawn;
-  in.edge_pairs = all_pairs;
-  in.n_edges = append_diagonals(drawn, all_pairs, keys);
-  const Grid g = make_grid(drawn, p);
+  run.in = drawn;
+  run.in.edge_pairs = all_pairs;
+  run.in.n_edges = append_diagonals(drawn, all_pairs, keys);
+  run.n_drawn = drawn.n_edges;
+  run.g = make_grid(drawn, p);
   uint64_t face_pairs = 0, edge_pairs = 0;
-  bounds(in, g, &face_pairs, &edge_pairs);
+  bounds(run.in, run.g, &face_pairs, &edge_pairs);
   if (face_pairs > 0xffffffffu || edge_pairs > 0xffffffffu) return Status::kCellPairOverflow;
-  const uint32_t cells = g.cells();
-  st.b = g.nx > g.ny ? g.nx : g.ny;
-  st.cells = cells;
-  SolidEdge* lite = carve.take<SolidEdge>(in.n_edges);
-  uint32_t* blocking = carve.take<uint32_t>(cells);
-  uint32_t* face_first = carve.take<uint32_t>(size_t{cells} + 1);
-  uint32_t* face_list = carve.take<uint32_t>(size_t(face_pairs));
-  uint32_t* edge_first = carve.take<uint32_t>(size_t{cells} + 1);
-  uint32_t* edge_list = carve.take<uint32_t>(size_t(edge_pairs));
-  uint8_t* edge_kept = carve.take<uint8_t>(in.n_edges);
-  Cut* cuts = carve.take<Cut>(size_t{crossing_capacity} * 2);
+  const uint32_t cells = run.cells = run.g.cells();
+  run.st.b = run.g.nx > run.g.ny ? run.g.nx : run.g.ny;
+  run.st.cells = cells;
+  SolidEdge* lite = carve.take<SolidEdge>(run.in.n_edges);
+  run.blocking = carve.take<uint32_t>(cells);
+  run.face_first = carve.take<uint32_t>(size_t{cells} + 1);
+  run.face_list = carve.take<uint32_t>(size_t(face_pairs));
+  run.edge_first = carve.take<uint32_t>(size_t{cells} + 1);
+  run.edge_list = carve.take<uint32_t>(size_t(edge_pairs));
+  run.edge_kept = carve.take<uint8_t>(run.in.n_edges);
+  run.cuts = carve.take<Cut>(size_t{crossing_capacity} * 2);
   if (carve.short_) return Status::kWorkspaceTooSmall;
-  Topology topo = lite_topology(in, lite);
+  Topology topo = lite_topology(run.in, lite);
   const size_t inc_bytes = incidence_bytes(topo, incidence_capacity);
   uint8_t* inc_mem = carve.take<uint8_t>(inc_bytes);
   if (carve.short_) return Status::kWorkspaceTooSmall;
 
-  // Steps 5-6: blocking faces first (a face becomes Fb unless the current one is in front of
-  // it), then each cell's faces not behind its final Fb.
-  // blocking[c] is the first triangle of the blocking polygon (group_end() finds the rest).
-  for (uint32_t c = 0; c < cells; ++c) blocking[c] = kNone;
-  for (uint32_t t = 0; t < in.n_triangles;) {
-    const uint32_t end = group_end(in, t);
-    const bool flat = flat_group(in, t, end);
-    for (uint32_t f = t; f < end; ++f) {
-      // A flat polygon is tried whole, once, over the union of its triangles' boxes (each
-      // triangle's box is visited; a cell already blocked by this polygon is skipped).
-      const Plane pf = plane_of(in, f);
-      if (pf.area == 0) continue;  // edge-on: covers no cell, hides nothing
-      for_each_cell(g, face_box(in, f), CellCover::kBoundingBox, 0, [&](uint32_t c) {
-        if (blocking[c] == t) return;
-        const Cell box = cell_box(g, c);
-        if (!(flat ? group_blocks(in, t, end, box) : blocks(pf, box))) return;
-        if (blocking[c] != kNone && face_behind(pf, plane_of(in, blocking[c]), box)) return;
-        blocking[c] = flat ? t : f;
-      });
-    }
-    t = end;
-  }
-  for (uint32_t c = 0; c <= cells; ++c) face_first[c] = 0;
-  for (int pass = 0; pass < 2; ++pass) {
-    for (uint32_t t = 0; t < in.n_triangles; ++t) {
-      const Plane f = plane_of(in, t);
-      if (f.area == 0) continue;
-      bool kept = false;
-      for_each_cell(g, face_box(in, t), CellCover::kBoundingBox, 0, [&](uint32_t c) {
-        if (blocking[c] != kNone && blocking[c] <= t && t < group_end(in, blocking[c]) &&
-            (blocking[c] == t || flat_group(in, blocking[c], group_end(in, blocking[c])))) {
-          kept = true;  // the blocking polygon itself is kept apart from the list
-          return;
-        }
-        if (blocking[c] != kNone && face_behind(f, plane_of(in, blocking[c]), cell_box(g, c))) {
-          if (pass == 0) ++st.face_cells_culled;
-          return;
-        }
-        kept = true;
-        if (pass == 0)
-          ++face_first[c + 1];
-        else
-          face_list[face_first[c]++] = t;
-      });
-      if (pass == 0 && !kept) ++st.faces_deleted;
-    }
-    if (pass == 0)
-      for (uint32_t c = 0; c < cells; ++c) face_first[c + 1] += face_first[c];
-  }
-  for (uint32_t c = cells; c > 0; --c) face_first[c] = face_first[c - 1];
-  face_first[0] = 0;
-  st.face_cells = face_first[cells];
-  for (uint32_t c = 0; c < cells; ++c) st.blocking_cells += blocking[c] != kNone;
-
-  // Step 7: edges into cells, unless behind the blocking face there.
-  for (uint32_t c = 0; c <= cells; ++c) edge_first[c] = 0;
-  for (uint32_t e = 0; e < in.n_edges; ++e) edge_kept[e] = 0;
-  for (int pass = 0; pass < 2; ++pass) {
-    for (uint32_t e = 0; e < in.n_edges; ++e) {
-      const Edge3 ed = edge_of(in, e);
-      for_each_cell(g, ed, CellCover::kExact, 0, [&](uint32_t c) {
-        if (blocking[c] != kNone && edge_behind(ed, plane_of(in, blocking[c]), cell_box(g, c))) {
-          if (pass == 0) ++st.edge_cells_culled;
-          return;
-        }
-        edge_kept[e] = 1;
-        if (pass == 0)
-          ++edge_first[c + 1];
-        else
-          edge_list[edge_first[c]++] = e;
-      });
-    }
-    if (pass == 0)
-      for (uint32_t c = 0; c < cells; ++c) edge_first[c + 1] += edge_first[c];
-  }
-  for (uint32_t c = cells; c > 0; --c) edge_first[c] = edge_first[c - 1];
-  edge_first[0] = 0;
-  st.edge_cells = edge_first[cells];
-  for (uint32_t e = 0; e < drawn.n_edges; ++e) st.edges_deleted += edge_kept[e] == 0;
-
-  // Step 8: pairs in each cell; a crossing counts in the cell that holds it; both edges cut.
-  uint64_t n_cuts = 0;
-  for (uint32_t c = 0; c < cells; ++c) {
-    const Cell box = cell_box(g, c);
-    for (uint32_t i = edge_first[c]; i < edge_first[c + 1]; ++i)
-      for (uint32_t j = i + 1; j < edge_first[c + 1]; ++j) {
-        const Edge3 p1 = edge_of(in, edge_list[i]), p2 = edge_of(in, edge_list[j]);
-        ++st.pairs_tested;
-        const CrossingTest x = test_crossing(p1, p2);
-        if (!x.crosses) continue;
-        const int64_t px = int64_t{p1.b.x - p1.a.x} * x.tn, py = int64_t{p1.b.y - p1.a.y} * x.tn;
-        if (!((box.x0 - p1.a.x) * x.den <= px && px < (box.x1 - p1.a.x) * x.den &&
-              (box.y0 - p1.a.y) * x.den <= py && py < (box.y1 - p1.a.y) * x.den))
-          continue;
-        ++st.crossings;
-        if (n_cuts + 2 <= uint64_t{crossing_capacity} * 2) {
-          const uint32_t* pi = in.edge_pairs + 2 * edge_list[i];
-          const uint32_t* pj = in.edge_pairs + 2 * edge_list[j];
-          cuts[n_cuts] = Cut{edge_list[i], frac_q32_small(x.tn, x.den), pj[0], pj[1]};
-          cuts[n_cuts + 1] = Cut{edge_list[j], frac_q32_small(x.un, x.den), pi[0], pi[1]};
-        }
-        n_cuts += 2;
-      }
-  }
-  if (st.crossings > crossing_capacity) {
-    if (stats) *stats = st;
+  run.choose_blocking();
+  run.list_faces();
+  run.list_edges();
+  run.cut_pairs(crossing_capacity);
+  if (run.st.crossings > crossing_capacity) {
+    if (stats) *stats = run.st;
     return Status::kCrossingCapacity;
   }
-  heap_sort(cuts, size_t(n_cuts), [&](const Cut& a, const Cut& b) {
-    if (a.edge != b.edge) return a.edge < b.edge;
-    if (a.t != b.t) return a.t < b.t;
-    return before(in, a.edge, PieceEnd{a.u, a.w}, PieceEnd{b.u, b.w});
-  });
+  run.sort_cuts();
 
   // The vertices lying on edges: visibility can change there too (solid/incidence.h).
   Incidences inc;
   uint32_t needed = 0;
   Status s = find_incidences(topo, incidence_capacity, inc_mem, inc_bytes, &inc, &needed);
-  st.incidences = needed;
+  run.st.incidences = needed;
   if (s != Status::kOk) {
-    if (stats) *stats = st;
+    if (stats) *stats = run.st;
     return s;
   }
 
-  // Step 9: pieces and their midpoints.
+  // Step 9: pieces and their midpoints, for the drawn edges only.
   uint64_t k = 0;
-  for (uint32_t e = 0; e < drawn.n_edges; ++e) {  // only the drawn edges make pieces
-    const Edge3 ed = edge_of(in, e);
-    const int64_t dx = ed.b.x - ed.a.x, dy = ed.b.y - ed.a.y;
-    while (k < n_cuts && cuts[k].edge < e) ++k;
-    uint64_t kc = k;
-    uint32_t ki = inc.edge_first[e];
-    if (dx == 0 && dy == 0) continue;
-    FranklinPiece pending{e, 0, 0, false, {}, {}};
-    bool have = false;
-    bool last_hidden = false;
-    auto piece = [&](int64_t t0, int64_t t1, PieceEnd from, PieceEnd to) -> Status {
-      if (t1 < t0 || (t1 == t0 && !p.every_piece)) return Status::kOk;
-      ++st.pieces;
-      bool hidden = true;
-      if (!edge_kept[e]) {
-        hidden = true;
-      } else if (t1 - t0 < 2) {
-        hidden = last_hidden;
-      } else {
-        const int64_t m = t0 + (t1 - t0) / 2;
-        const CoverPoint pt = edge_point(ed, m);
-        const uint32_t c = g.cell_of(cell_x(pt), cell_y(pt));
-        ++st.midpoint_tests;
-        auto covers = [&](uint32_t t) {
-          const uint32_t* v = in.triangles[t].v;
-          const Point3 &a = in.vertices[v[0]], &b = in.vertices[v[1]], &cc = in.vertices[v[2]];
-          ++st.face_tests;
-          return (projected_area2(a, b, cc) >= 0 ? cover_halves(a, b, cc, pt)
-                                                 : cover_halves(a, cc, b, pt)) != 0;
-        };
-        hidden = false;
-        if (blocking[c] != kNone) {
-          const uint32_t b0 = blocking[c];
-          const uint32_t b1 = flat_group(in, b0, group_end(in, b0)) ? group_end(in, b0) : b0 + 1;
-          for (uint32_t t = b0; !hidden && t < b1; ++t) hidden = covers(t);
-        }
-        for (uint32_t i = face_first[c]; !hidden && i < face_first[c + 1]; ++i)
-          hidden = covers(face_list[i]);
-      }
-      last_hidden = hidden;
-      if (have && !p.every_piece && pending.hidden == hidden && pending.t1 == t0) {
-        pending.t1 = t1;
-        pending.to = to;
-        return Status::kOk;
-      }
-      Status r = Status::kOk;
-      if (have) r = sink.emit(sink.context, pending);
-      pending = FranklinPiece{e, t0, t1, hidden, from, to};
-      have = true;
-      return r;
-    };
-    int64_t at = 0;
-    PieceEnd at_end{in.edge_pairs[2 * e], PieceEnd::kNoVertex};
-    while (s == Status::kOk &&
-           ((kc < n_cuts && cuts[kc].edge == e) || ki < inc.edge_first[e + 1])) {
-      int64_t t;
-      PieceEnd end;
-      bool take_cut = ki >= inc.edge_first[e + 1];
-      if (!take_cut && kc < n_cuts && cuts[kc].edge == e) {
-        const Incidence& v = inc.by_edge[ki];
-        take_cut = cuts[kc].t < v.t ||
-                   (cuts[kc].t == v.t && !before(in, e, PieceEnd{v.vertex, PieceEnd::kNoVertex},
-                                                 PieceEnd{cuts[kc].u, cuts[kc].w}));
-      }
-      if (take_cut) {
-        end = PieceEnd{cuts[kc].u, cuts[kc].w};
-        t = cuts[kc++].t;
-      } else {
-        end = PieceEnd{inc.by_edge[ki].vertex, PieceEnd::kNoVertex};
-        t = inc.by_edge[ki++].t;
-      }
-      s = piece(at, t, at_end, end);
-      at = t;
-      at_end = end;
-    }
-    if (s == Status::kOk)
-      s = piece(at, kOne, at_end, PieceEnd{in.edge_pairs[2 * e + 1], PieceEnd::kNoVertex});
-    if (s == Status::kOk && have) s = sink.emit(sink.context, pending);
+  for (uint32_t e = 0; e < drawn.n_edges; ++e) {
+    const Edge3 ed = edge_of(run.in, e);
+    while (k < run.n_cuts && run.cuts[k].edge < e) ++k;
+    if (ed.b.x == ed.a.x && ed.b.y == ed.a.y) continue;  // a point on paper: no pieces
+    s = run.edge_pieces(e, k, inc, p.every_piece, sink);
     if (s != Status::kOk) break;
   }
-  if (stats) *stats = st;
+  if (stats) *stats = run.st;
   return s;
 }
 

@@ -146,6 +146,196 @@ void carve_all(C& c, uint32_t n) {
   c.template take<uint8_t>(2 * size_t{n});       // cycle bounded
 }
 
+// One run's state: the segments, the arrays carved for them, and what each step found.
+struct RegionRun {
+  const SolidInput& in;
+  const RegionSegment* seg;
+  uint32_t n;
+  Exact* ends;
+  uint32_t* node;
+  uint32_t* order;
+  uint8_t* kept;
+  uint64_t* keys;
+  uint32_t* node_first;
+  uint32_t* pos;
+  uint32_t* cycle;
+  uint32_t* cycle_face;
+  uint8_t* cycle_bounded;
+  RegionStats& st;
+  uint32_t nodes = 0, nh = 0, cycles = 0;
+
+  uint32_t origin(uint32_t h) const { return node[h]; }  // half-edge 2s leaves end 2s's node
+  Dir dir(uint32_t h) const { return half_edge_dir(in, seg[h / 2], h); }
+  // next(h): the half-edge just clockwise of h's twin around h's far node.
+  uint32_t next(uint32_t h) const {
+    const uint32_t t = h ^ 1u, v = origin(t), i = pos[t];
+    return order[i == node_first[v] ? node_first[v + 1] - 1 : i - 1];
+  }
+
+  Status merge_nodes();
+  void drop_segments();
+  void order_half_edges();
+  bool opens_left(uint32_t start, uint32_t low) const;
+  Status find_cycles();
+  uint32_t face_left_of(const FaceGrid& fg, uint32_t h);
+  void name_faces(const FaceGrid& fg);
+};
+
+// Step 10, nodes: every end as an exact point, sorted, equal points merged, so segments that
+// meet share a node however their ends were computed.
+Status RegionRun::merge_nodes() {
+  for (uint32_t s = 0; s < n; ++s) {
+    if (!exact_end(in, seg[s].edge, seg[s].from, &ends[2 * s]) ||
+        !exact_end(in, seg[s].edge, seg[s].to, &ends[2 * s + 1]))
+      return Status::kVisibilityInconsistent;
+    order[2 * s] = 2 * s;
+    order[2 * s + 1] = 2 * s + 1;
+  }
+  const Exact* at = ends;
+  heap_sort(order, 2 * size_t{n},
+            [&](uint32_t a, uint32_t b) { return compare_exact(at[a], at[b]) < 0; });
+  for (uint32_t i = 0; i < 2 * n; ++i) {
+    if (i > 0 && compare_exact(ends[order[i - 1]], ends[order[i]]) != 0) ++nodes;
+    node[order[i]] = nodes;
+  }
+  if (n > 0) ++nodes;
+  st.nodes = nodes;
+  return Status::kOk;
+}
+
+// Segments: drop those of zero length and the second of two with the same nodes, which would
+// otherwise make empty cycles.
+void RegionRun::drop_segments() {
+  for (uint32_t s = 0; s < n; ++s) {
+    const uint32_t a = node[2 * s], b = node[2 * s + 1];
+    kept[s] = a != b;
+    st.zero_length += a == b;
+    keys[s] = (uint64_t{a < b ? a : b} << 32) | (a < b ? b : a);
+    order[s] = s;
+  }
+  const uint64_t* k = keys;
+  heap_sort(order, n,
+            [&](uint32_t a, uint32_t b) { return k[a] < k[b] || (k[a] == k[b] && a < b); });
+  for (uint32_t i = 1; i < n; ++i)
+    if (kept[order[i]] && keys[order[i]] == keys[order[i - 1]] && kept[order[i - 1]]) {
+      kept[order[i]] = 0;
+      ++st.duplicates;
+    }
+}
+
+// Half-edges around each node in counter-clockwise order: what next() walks the cycles by.
+void RegionRun::order_half_edges() {
+  nh = 0;
+  for (uint32_t h = 0; h < 2 * n; ++h)
+    if (kept[h / 2]) order[nh++] = h;
+  heap_sort(order, nh, [&](uint32_t a, uint32_t b) {
+    if (origin(a) != origin(b)) return origin(a) < origin(b);
+    return angle_before(dir(a), dir(b));
+  });
+  for (uint32_t v = 0; v <= nodes; ++v) node_first[v] = 0;
+  for (uint32_t i = 0; i < nh; ++i) {
+    ++node_first[origin(order[i]) + 1];
+    pos[order[i]] = i;
+    if (i > 0 && origin(order[i]) == origin(order[i - 1]) &&
+        same_direction(dir(order[i]), dir(order[i - 1])))
+      ++st.overlaps;
+  }
+  for (uint32_t v = 0; v < nodes; ++v) node_first[v + 1] += node_first[v];
+}
+
+// At its lowest node every half-edge points right (or straight up), so only one corner there
+// opens to the left: the cycle whose corner it is bounds the outside of its piece (a hole
+// boundary). A corner runs counter-clockwise from the way out to the way back; it opens to the
+// left when that is the long way round, or all the way round (a spike).
+bool RegionRun::opens_left(uint32_t start, uint32_t low) const {
+  bool left = false;
+  uint32_t h = start;
+  do {
+    const uint32_t nx = next(h);
+    if (origin(nx) == low) {
+      const Dir out_d = dir(nx);
+      const Dir in_d = dir(h);
+      const Dir back{-in_d.x, -in_d.y};
+      const int64_t turn = out_d.x * back.y - out_d.y * back.x;
+      left = left || turn < 0 || (turn == 0 && same_direction(out_d, back));
+    }
+    h = nx;
+  } while (h != start);
+  return left;
+}
+
+// Cycles, each classified at its lowest node (the smallest id: nodes are in (x, y) order).
+Status RegionRun::find_cycles() {
+  for (uint32_t h = 0; h < 2 * n; ++h) cycle[h] = kRegionBackground;
+  cycles = 0;
+  for (uint32_t i = 0; i < nh; ++i) {
+    const uint32_t start = order[i];
+    if (cycle[start] != kRegionBackground) continue;
+    uint32_t h = start, low = origin(start), guard = 0;
+    do {
+      cycle[h] = cycles;
+      low = origin(h) < low ? origin(h) : low;
+      h = next(h);
+      if (++guard > nh) return Status::kVisibilityInconsistent;
+    } while (h != start);
+    cycle_bounded[cycles] = !opens_left(start, low);
+    st.bounded += cycle_bounded[cycles];
+    ++cycles;
+  }
+  st.cycles = cycles;
+  st.holes = cycles - st.bounded;
+  return Status::kOk;
+}
+
+// The nearest face covering the middle of half-edge h's segment, nudged to its left (the
+// cycle's inside), or kRegionBackground.
+uint32_t RegionRun::face_left_of(const FaceGrid& fg, uint32_t h) {
+  const RegionSegment& g = seg[h / 2];
+  const Edge3 e = edge_of(in, g.edge);
+  const int64_t m = g.t0 + (g.t1 - g.t0) / 2;
+  CoverPoint pt = edge_point(e, m);
+  const Dir d = half_edge_dir(in, g, h);
+  const Dir left{-d.y, d.x};
+  pt.dir_x = static_cast<int32_t>(left.x);
+  pt.dir_y = static_cast<int32_t>(left.y);
+  pt.dir_z = 0;
+  uint32_t best = kRegionBackground;
+  Tri best_tri{};
+  for (const uint32_t* f = fg.begin(cell_x(pt), cell_y(pt)); f != fg.end(cell_x(pt), cell_y(pt));
+       ++f) {
+    ++st.face_tests;
+    const Tri t = ccw(in, *f);
+    if (t.area == 0 || projection_cover_halves(t.a, t.b, t.c, pt) != 2) continue;
+    if (best == kRegionBackground || nearer(t, best_tri, e, m, left)) {
+      best = *f;
+      best_tri = t;
+    }
+  }
+  return best;
+}
+
+// Step 11: each cycle's face, asked beside its longest segment (the one whose middle is
+// surest to be away from the cycle's corners).
+void RegionRun::name_faces(const FaceGrid& fg) {
+  uint32_t* longest = cycle_face;  // reused: the half-edge, then the face
+  for (uint32_t c = 0; c < cycles; ++c) longest[c] = kRegionUnnamed;
+  for (uint32_t i = 0; i < nh; ++i) {
+    const uint32_t h = order[i], c = cycle[h];
+    const int64_t len = seg[h / 2].t1 - seg[h / 2].t0;
+    if (len < 2) continue;
+    if (longest[c] == kRegionUnnamed || len > seg[longest[c] / 2].t1 - seg[longest[c] / 2].t0)
+      longest[c] = h;
+  }
+  for (uint32_t c = 0; c < cycles; ++c) {
+    if (longest[c] == kRegionUnnamed) {
+      ++st.unnamed;
+      continue;
+    }
+    longest[c] = face_left_of(fg, longest[c]);
+    st.background += longest[c] == kRegionBackground;
+  }
+}
+
 }  // namespace
 
 size_t regions_bytes(const SolidInput& in, uint32_t n_segments) {
@@ -162,170 +352,45 @@ Status build_regions(const SolidInput& in, const RegionSegment* seg, uint32_t n,
   for (uint32_t s = 0; s < n; ++s)
     if (seg[s].edge >= in.n_edges) return Status::kBadParameter;
   Carver carve(buffer, bytes);
-  Exact* ends = carve.take<Exact>(2 * size_t{n});
-  uint32_t* node = carve.take<uint32_t>(2 * size_t{n});
-  uint32_t* order = carve.take<uint32_t>(2 * size_t{n});
-  uint8_t* kept = carve.take<uint8_t>(n);
-  uint64_t* keys = carve.take<uint64_t>(n);
-  uint32_t* node_first = carve.take<uint32_t>(2 * size_t{n} + 1);
-  uint32_t* pos = carve.take<uint32_t>(2 * size_t{n});
-  uint32_t* cycle = carve.take<uint32_t>(2 * size_t{n});
-  uint32_t* cycle_face = carve.take<uint32_t>(2 * size_t{n});
-  uint8_t* cycle_bounded = carve.take<uint8_t>(2 * size_t{n});
+  RegionRun run{in,
+                seg,
+                n,
+                carve.take<Exact>(2 * size_t{n}),
+                carve.take<uint32_t>(2 * size_t{n}),
+                carve.take<uint32_t>(2 * size_t{n}),
+                carve.take<uint8_t>(n),
+                carve.take<uint64_t>(n),
+                carve.take<uint32_t>(2 * size_t{n} + 1),
+                carve.take<uint32_t>(2 * size_t{n}),
+                carve.take<uint32_t>(2 * size_t{n}),
+                carve.take<uint32_t>(2 * size_t{n}),
+                carve.take<uint8_t>(2 * size_t{n}),
+                st};
   const Topology topo = faces_only(in);
   const size_t fg_bytes = face_grid_bytes(topo);
   uint8_t* fg_mem = carve.take<uint8_t>(fg_bytes);
   if (carve.short_) return Status::kWorkspaceTooSmall;
 
-  // Step 10, nodes: every end as an exact point, sorted, equal points merged.
-  for (uint32_t s = 0; s < n; ++s) {
-    if (!exact_end(in, seg[s].edge, seg[s].from, &ends[2 * s]) ||
-        !exact_end(in, seg[s].edge, seg[s].to, &ends[2 * s + 1]))
-      return Status::kVisibilityInconsistent;
-    order[2 * s] = 2 * s;
-    order[2 * s + 1] = 2 * s + 1;
-  }
-  heap_sort(order, 2 * size_t{n},
-            [&](uint32_t a, uint32_t b) { return compare_exact(ends[a], ends[b]) < 0; });
-  uint32_t nodes = 0;
-  for (uint32_t i = 0; i < 2 * n; ++i) {
-    if (i > 0 && compare_exact(ends[order[i - 1]], ends[order[i]]) != 0) ++nodes;
-    node[order[i]] = nodes;
-  }
-  if (n > 0) ++nodes;
-  st.nodes = nodes;
-
-  // Segments: drop those of zero length and the second of two with the same nodes.
-  for (uint32_t s = 0; s < n; ++s) {
-    const uint32_t a = node[2 * s], b = node[2 * s + 1];
-    kept[s] = a != b;
-    st.zero_length += a == b;
-    keys[s] = (uint64_t{a < b ? a : b} << 32) | (a < b ? b : a);
-    order[s] = s;
-  }
-  heap_sort(order, n, [&](uint32_t a, uint32_t b) {
-    return keys[a] < keys[b] || (keys[a] == keys[b] && a < b);
-  });
-  for (uint32_t i = 1; i < n; ++i)
-    if (kept[order[i]] && keys[order[i]] == keys[order[i - 1]] && kept[order[i - 1]]) {
-      kept[order[i]] = 0;
-      ++st.duplicates;
-    }
-
-  // Half-edges around each node in counter-clockwise order.
-  auto origin = [&](uint32_t h) { return node[h]; };  // half-edge 2s leaves end 2s's node
-  uint32_t nh = 0;
-  for (uint32_t h = 0; h < 2 * n; ++h)
-    if (kept[h / 2]) order[nh++] = h;
-  heap_sort(order, nh, [&](uint32_t a, uint32_t b) {
-    if (origin(a) != origin(b)) return origin(a) < origin(b);
-    return angle_before(half_edge_dir(in, seg[a / 2], a), half_edge_dir(in, seg[b / 2], b));
-  });
-  for (uint32_t v = 0; v <= nodes; ++v) node_first[v] = 0;
-  for (uint32_t i = 0; i < nh; ++i) {
-    ++node_first[origin(order[i]) + 1];
-    pos[order[i]] = i;
-    if (i > 0 && origin(order[i]) == origin(order[i - 1]) &&
-        same_direction(half_edge_dir(in, seg[order[i] / 2], order[i]),
-                       half_edge_dir(in, seg[order[i - 1] / 2], order[i - 1])))
-      ++st.overlaps;
-  }
-  for (uint32_t v = 0; v < nodes; ++v) node_first[v + 1] += node_first[v];
-  // next(h): the half-edge just clockwise of h's twin around h's far node.
-  auto next = [&](uint32_t h) {
-    const uint32_t t = h ^ 1u, v = origin(t), i = pos[t];
-    return order[i == node_first[v] ? node_first[v + 1] - 1 : i - 1];
-  };
-
-  // Cycles, each classified at its lowest node (the smallest id: nodes are in (x, y) order).
-  for (uint32_t h = 0; h < 2 * n; ++h) cycle[h] = kRegionBackground;
-  uint32_t cycles = 0;
-  for (uint32_t i = 0; i < nh; ++i) {
-    const uint32_t start = order[i];
-    if (cycle[start] != kRegionBackground) continue;
-    uint32_t h = start, low = origin(start), guard = 0;
-    do {
-      cycle[h] = cycles;
-      low = origin(h) < low ? origin(h) : low;
-      h = next(h);
-      if (++guard > nh) return Status::kVisibilityInconsistent;
-    } while (h != start);
-    // At its lowest node every half-edge points right (or straight up), so only one corner
-    // there opens to the left: the cycle whose corner it is bounds the outside of its piece
-    // (a hole boundary). A corner runs counter-clockwise from the way out to the way back; it
-    // opens to the left when that is the long way round, or all the way round (a spike).
-    bool opens_left = false;
-    do {
-      const uint32_t nx = next(h);
-      if (origin(nx) == low) {
-        const Dir out_d = half_edge_dir(in, seg[nx / 2], nx);
-        const Dir in_d = half_edge_dir(in, seg[h / 2], h);
-        const Dir back{-in_d.x, -in_d.y};
-        const int64_t turn = out_d.x * back.y - out_d.y * back.x;
-        opens_left = opens_left || turn < 0 || (turn == 0 && same_direction(out_d, back));
-      }
-      h = nx;
-    } while (h != start);
-    cycle_bounded[cycles] = !opens_left;
-    st.bounded += cycle_bounded[cycles];
-    ++cycles;
-  }
-  st.cycles = cycles;
-  st.holes = cycles - st.bounded;
-
-  // Step 11: the face at a point nudged to the left of each cycle's longest segment.
-  FaceGrid fg;
-  Status s = build_face_grid(topo, fg_mem, fg_bytes, &fg);
+  Status s = run.merge_nodes();
   if (s != Status::kOk) return s;
-  uint32_t* longest = cycle_face;  // reused: the half-edge, then the face
-  for (uint32_t c = 0; c < cycles; ++c) longest[c] = kRegionUnnamed;
-  for (uint32_t i = 0; i < nh; ++i) {
-    const uint32_t h = order[i], c = cycle[h];
-    const int64_t len = seg[h / 2].t1 - seg[h / 2].t0;
-    if (len < 2) continue;
-    if (longest[c] == kRegionUnnamed || len > seg[longest[c] / 2].t1 - seg[longest[c] / 2].t0)
-      longest[c] = h;
-  }
-  for (uint32_t c = 0; c < cycles; ++c) {
-    if (longest[c] == kRegionUnnamed) {
-      ++st.unnamed;
-      continue;
-    }
-    const uint32_t h = longest[c];
-    const RegionSegment& g = seg[h / 2];
-    const Edge3 e = edge_of(in, g.edge);
-    const int64_t m = g.t0 + (g.t1 - g.t0) / 2;
-    CoverPoint pt = edge_point(e, m);
-    const Dir d = half_edge_dir(in, g, h);
-    const Dir left{-d.y, d.x};
-    pt.dir_x = static_cast<int32_t>(left.x);
-    pt.dir_y = static_cast<int32_t>(left.y);
-    pt.dir_z = 0;
-    uint32_t best = kRegionBackground;
-    Tri best_tri{};
-    for (const uint32_t* f = fg.begin(cell_x(pt), cell_y(pt)); f != fg.end(cell_x(pt), cell_y(pt));
-         ++f) {
-      ++st.face_tests;
-      const Tri t = ccw(in, *f);
-      if (t.area == 0 || projection_cover_halves(t.a, t.b, t.c, pt) != 2) continue;
-      if (best == kRegionBackground || nearer(t, best_tri, e, m, left)) {
-        best = *f;
-        best_tri = t;
-      }
-    }
-    longest[c] = best;
-    st.background += best == kRegionBackground;
-  }
+  run.drop_segments();
+  run.order_half_edges();
+  s = run.find_cycles();
+  if (s != Status::kOk) return s;
+  FaceGrid fg;
+  s = build_face_grid(topo, fg_mem, fg_bytes, &fg);
+  if (s != Status::kOk) return s;
+  run.name_faces(fg);
 
   out->n_segments = n;
-  out->n_nodes = nodes;
-  out->n_cycles = cycles;
+  out->n_nodes = run.nodes;
+  out->n_cycles = run.cycles;
   out->segments = seg;
-  out->node = node;
-  out->kept = kept;
-  out->cycle = cycle;
-  out->cycle_face = cycle_face;
-  out->cycle_bounded = cycle_bounded;
+  out->node = run.node;
+  out->kept = run.kept;
+  out->cycle = run.cycle;
+  out->cycle_face = run.cycle_face;
+  out->cycle_bounded = run.cycle_bounded;
   if (stats) *stats = st;
   return Status::kOk;
 }

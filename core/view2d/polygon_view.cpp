@@ -208,6 +208,90 @@ Status check_simple(const Point2* p, uint32_t n, uint32_t* order, uint32_t bad[2
   return Status::kOk;
 }
 
+// The input's checks, in the order their errors take precedence: coordinates in range, no
+// zero-length edge, a simple polygon with area, and E not on it. *area2: twice the signed area.
+Status check_input(const Point2* poly, uint32_t n, Point2 eye, uint32_t* order,
+                   uint32_t bad_edges[2], int64_t* area2) {
+  auto in_range = [](Point2 q) {
+    return q.x >= -kView2dLimit && q.x <= kView2dLimit && q.y >= -kView2dLimit &&
+           q.y <= kView2dLimit;
+  };
+  if (!in_range(eye)) return Status::kCoordinateOutOfRange;
+  *area2 = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    const Point2 a = poly[i], b = poly[(i + 1) % n];
+    if (!in_range(a)) return Status::kCoordinateOutOfRange;
+    if (a.x == b.x && a.y == b.y) {
+      if (bad_edges) bad_edges[0] = bad_edges[1] = i;
+      return Status::kSelfIntersecting;  // a zero-length edge
+    }
+    *area2 += cross(a.x, a.y, b.x, b.y);
+  }
+  const Status status = check_simple(poly, n, order, bad_edges);
+  if (!ok(status)) return status;
+  if (*area2 == 0) return Status::kSelfIntersecting;
+  for (uint32_t i = 0; i < n; ++i)
+    if (on_segment(poly[i], poly[(i + 1) % n], eye)) return Status::kBadParameter;  // E on P
+  return Status::kOk;
+}
+
+// Steps 12-19: walk from visible point to visible point, handing each visible piece out.
+struct Walk {
+  const Scene& sc;
+  const Output& out;
+  View2dStats& st;
+  bool free_view;
+  uint32_t skip_first, skip_count;  // Proposition 3's vertices, never tested again
+  uint32_t end_ahead;               // step 20: a free exterior's walk ends at Am
+
+  Status run(const WalkPoint& start) const {
+    const uint32_t n = sc.n;
+    WalkPoint p = start;
+    uint32_t walked = 0;  // edges advanced since the start
+    for (uint32_t guard = 0; guard < 4 * n + 8; ++guard) {
+      if (free_view && walked >= end_ahead) break;
+      const bool closing = !free_view && walked >= n;  // back on the start edge, a turn later
+      if (closing && (walked > n || !less(p.s, start.s))) break;
+      const uint32_t nxt = sc.next(p.edge);
+      const uint32_t target_ray = closing ? start.ray : nxt;
+      const Ratio target_s = closing ? start.s : Ratio{1, 1};
+      if (sc.turn(p.ray, target_ray) > 0) {
+        uint32_t k = 0;
+        if (forward_bay(sc, p, target_ray, skip_first, skip_count, &k, st)) {
+          // Step 19: hidden from the ray E A(k) on; A(k) is the next visible vertex.
+          ++st.forward_bays;
+          const Status status = out.emit(p.edge, p.s, sc.edge_s(k, p.edge));
+          if (!ok(status)) return status;
+          if (closing) break;
+          walked += sc.ahead(p.edge, k);
+          p = at_vertex(k);
+        } else {
+          // Step 18: Proposition 2, the piece to the target is visible.
+          ++st.visible_steps;
+          const Status status = out.emit(p.edge, p.s, target_s);
+          if (!ok(status)) return status;
+          if (closing) break;
+          walked += 1;
+          p = at_vertex(nxt);
+        }
+      } else {
+        // Step 14: a backward bay. The walk resumes where the boundary next crosses the ray
+        // through P beyond P, counterclockwise.
+        if (closing) break;
+        ++st.backward_bays;
+        uint32_t edge;
+        Ratio t;
+        bool ccw;
+        if (!shoot(sc, p.ray, p.t, &edge, &t, &ccw) || !ccw || edge == p.edge)
+          return Status::kVisibilityInconsistent;
+        walked += sc.ahead(p.edge, edge);
+        p = WalkPoint{edge, sc.edge_s(p.ray, edge), p.ray, t};
+      }
+    }
+    return Status::kOk;
+  }
+};
+
 }  // namespace
 
 size_t view2d_scratch_bytes(uint32_t n) { return size_t{n} * (sizeof(Point2) + sizeof(uint32_t)); }
@@ -223,28 +307,11 @@ Status view2d(const Point2* poly, uint32_t n, Point2 eye, void* scratch, size_t 
   View2dStats st;
   if (n < 3) return Status::kBadParameter;
   if (scratch_bytes < view2d_scratch_bytes(n)) return Status::kWorkspaceTooSmall;
-  auto in_range = [](Point2 q) {
-    return q.x >= -kView2dLimit && q.x <= kView2dLimit && q.y >= -kView2dLimit &&
-           q.y <= kView2dLimit;
-  };
-  if (!in_range(eye)) return Status::kCoordinateOutOfRange;
-  int64_t area2 = 0;
-  for (uint32_t i = 0; i < n; ++i) {
-    const Point2 a = poly[i], b = poly[(i + 1) % n];
-    if (!in_range(a)) return Status::kCoordinateOutOfRange;
-    if (a.x == b.x && a.y == b.y) {
-      if (bad_edges) bad_edges[0] = bad_edges[1] = i;
-      return Status::kSelfIntersecting;  // a zero-length edge
-    }
-    area2 += cross(a.x, a.y, b.x, b.y);
-  }
   Point2* v = static_cast<Point2*>(scratch);
   uint32_t* order = reinterpret_cast<uint32_t*>(v + n);
-  Status status = check_simple(poly, n, order, bad_edges);
+  int64_t area2 = 0;
+  Status status = check_input(poly, n, eye, order, bad_edges, &area2);
   if (!ok(status)) return status;
-  if (area2 == 0) return Status::kSelfIntersecting;
-  for (uint32_t i = 0; i < n; ++i)
-    if (on_segment(poly[i], poly[(i + 1) % n], eye)) return Status::kBadParameter;  // E on P
 
   // Steps 1-3: clockwise order (interior on the right), total angles, configuration. An
   // interior E reverses the order once more, so visible edges always turn counterclockwise.
@@ -297,51 +364,9 @@ Status view2d(const Point2* poly, uint32_t n, Point2 eye, void* scratch, size_t 
       p = WalkPoint{edge, sc.edge_s(a1, edge), a1, t};
     }
   }
-  const WalkPoint start = p;
   const uint32_t end_ahead = free_view ? sc.ahead(a1, am) : n;  // step 20
-
-  // Steps 12-19: walk from visible point to visible point.
-  uint32_t walked = 0;  // edges advanced since the start
-  for (uint32_t guard = 0; guard < 4 * n + 8; ++guard) {
-    if (free_view && walked >= end_ahead) break;
-    const bool closing = !free_view && walked >= n;  // back on the start edge, a turn later
-    if (closing && (walked > n || !less(p.s, start.s))) break;
-    const uint32_t nxt = sc.next(p.edge);
-    const uint32_t target_ray = closing ? start.ray : nxt;
-    const Ratio target_s = closing ? start.s : Ratio{1, 1};
-    if (sc.turn(p.ray, target_ray) > 0) {
-      uint32_t k = 0;
-      if (forward_bay(sc, p, target_ray, skip_first, skip_count, &k, st)) {
-        // Step 19: hidden from the ray E A(k) on; A(k) is the next visible vertex.
-        ++st.forward_bays;
-        status = out.emit(p.edge, p.s, sc.edge_s(k, p.edge));
-        if (!ok(status)) return status;
-        if (closing) break;
-        walked += sc.ahead(p.edge, k);
-        p = at_vertex(k);
-      } else {
-        // Step 18: Proposition 2, the piece to the target is visible.
-        ++st.visible_steps;
-        status = out.emit(p.edge, p.s, target_s);
-        if (!ok(status)) return status;
-        if (closing) break;
-        walked += 1;
-        p = at_vertex(nxt);
-      }
-    } else {
-      // Step 14: a backward bay. The walk resumes where the boundary next crosses the ray
-      // through P beyond P, counterclockwise.
-      if (closing) break;
-      ++st.backward_bays;
-      uint32_t edge;
-      Ratio t;
-      bool ccw;
-      if (!shoot(sc, p.ray, p.t, &edge, &t, &ccw) || !ccw || edge == p.edge)
-        return Status::kVisibilityInconsistent;
-      walked += sc.ahead(p.edge, edge);
-      p = WalkPoint{edge, sc.edge_s(p.ray, edge), p.ray, t};
-    }
-  }
+  status = Walk{sc, out, st, free_view, skip_first, skip_count, end_ahead}.run(p);
+  if (!ok(status)) return status;
   if (stats) *stats = st;
   return Status::kOk;
 }

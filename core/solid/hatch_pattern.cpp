@@ -1,4 +1,4 @@
-#include "surface/hatch.h"
+#include "solid/hatch_pattern.h"
 
 namespace haloplot {
 
