@@ -1,18 +1,66 @@
 #!/usr/bin/env bash
-# The README's test command: install what is missing, build every preset the tests need
-# (host, host-asan, firmware for the STM32F405, firmware-mps2 for the second board, fuzz) and
-# run CTest on the host presets and the fuzz targets (each replays its seed corpus, then
-# explores for 20 seconds).
+# The README's test command: install what is missing, build every preset the tests need and
+# run every test. CI runs exactly this (.ci/run).
+#
+# Two lanes run side by side, so neither core waits for the other's tail:
+#   plain:     the firmware images (STM32F405, MPS2 AN385), the host build, then CTest on it:
+#              unit tests, the tool, the package and the QEMU runs of both boards (the long
+#              ones start first: their COST is set in tests/CMakeLists.txt);
+#   sanitized: the host-asan build (ASan + UBSan) and its CTest, then the libFuzzer targets,
+#              each replaying its seed corpus and exploring for a bounded time.
+# No test depends on the machine's speed (the QEMU link runs wait on the emulator's progress,
+# not a clock), so the lanes may load both cores as they like.
+#
+# Usage: tools/run_tests.sh            everything (about 15 minutes on 2 cores)
+#        ctest --preset host -L quick  the quick tests of an existing host build (2 minutes)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install_deps.sh test
 jobs=$(nproc)
-for preset in host host-asan firmware firmware-mps2 fuzz; do
-  echo "== configure and build: $preset"
-  cmake --preset "$preset" >/dev/null
-  cmake --build --preset "$preset" -j "$jobs"
-done
-for preset in host host-asan fuzz; do
-  echo "== ctest: $preset"
-  ctest --preset "$preset" -j "$jobs"
-done
+start=$SECONDS
+logs=build/test-logs
+mkdir -p "$logs"
+
+say() { echo "== $1 ($((SECONDS - start)) s)"; }
+# (errexit does not reach into a function run on the left of ||: each step returns its failure.)
+build() {
+  cmake --preset "$1" >/dev/null || return
+  cmake --build --preset "$1" -j "$jobs"
+}
+
+plain_lane() {
+  for preset in firmware firmware-mps2 host; do
+    say "build: $preset"
+    build "$preset" || return
+  done
+  say "ctest: host"
+  ctest --preset host -j "$jobs"
+}
+
+sanitized_lane() {
+  for preset in host-asan fuzz; do
+    say "build: $preset"
+    build "$preset" || return
+  done
+  local rc=0
+  say "ctest: host-asan"
+  ctest --preset host-asan -j "$jobs" || rc=$?
+  say "ctest: fuzz"
+  ctest --preset fuzz -j "$jobs" || rc=$?
+  return "$rc"
+}
+
+# The sanitized lane writes to its log; the plain lane to the terminal. Both logs are kept in
+# build/test-logs/, and the sanitized one is printed whole once it ends.
+sanitized_lane > "$logs/sanitized.log" 2>&1 &
+sanitized_pid=$!
+plain_rc=0
+plain_lane 2>&1 | tee "$logs/plain.log" || plain_rc=$?
+sanitized_rc=0
+wait "$sanitized_pid" || sanitized_rc=$?
+echo
+echo "== the sanitized lane (build/test-logs/sanitized.log)"
+cat "$logs/sanitized.log"
+echo
+say "done: plain lane exit $plain_rc, sanitized lane exit $sanitized_rc"
+[ "$plain_rc" -eq 0 ] && [ "$sanitized_rc" -eq 0 ]

@@ -44,12 +44,15 @@ same_digest() {
   bytes=$(sed -n 's/^fw trace_bytes=//p' "$1")
   [ -n "$crc" ] && [ "$crc $bytes" = "$2" ]
 }
-# The README's demo job (scenes/demo.job) on the demo scene with `arena ARENA`, in $work, and
-# `haloplot sim` of it: prints the digest of the host's trace; its --stats in $work/host.stats.
+# The README's demo job (scenes/demo.job) on the demo scene with `arena ARENA` (and any
+# further job LINE, which overrides the demo's), in $work, and `haloplot sim` of it: prints the
+# digest of the host's trace; its --stats in $work/host.stats.
+# Usage: demo_job_digest ARENA [LINE]
 demo_job_digest() {
   "$tool" demo-scene -o "$work/demo.edges"
   sed -e 's|^scene .*|scene demo.edges|' "$repo_root/scenes/demo.job" > "$work/demo.job"
   echo "arena $1" >> "$work/demo.job"
+  [ -z "${2:-}" ] || echo "$2" >> "$work/demo.job"
   "$tool" sim "$work/demo.job" -o "$work/host.trace" --stats 2> "$work/host.stats"
   trace_digest "$work/host.trace"
   rm -f "$work/host.trace"
