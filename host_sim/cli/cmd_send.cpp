@@ -1,6 +1,7 @@
 // haloplot send JOB.job --port PATH: upload a job to a plotter controller and plot it, over
 // the job protocol (core/protocol). Options re-plot with another halo width (DRAW only on
-// the controller), damage frames on purpose (to test the link), and end a QEMU test image.
+// the controller), damage frames on purpose (to test the link), set how long to wait for a
+// reply (an emulated controller on a loaded machine answers late), and end a QEMU test image.
 #include <sys/stat.h>
 
 #include <chrono>
@@ -149,10 +150,16 @@ bool plan_bands(const std::string& job_path, SendScene* sc, std::string* error) 
   return false;
 }
 
-// The link's own settings: frames damaged on purpose, and a re-plot's halo width.
+// How long to wait for a reply before resending (JobClient tries 20 times): a real serial
+// link answers within milliseconds, so a dead controller is given up in a minute.
+constexpr int kDefaultReplyTimeoutMs = 3000;
+
+// The link's own settings: frames damaged on purpose, a re-plot's halo width, and how long
+// each reply may take.
 struct LinkOptions {
   FaultPlan faults;
   uint32_t replot = 0;
+  int reply_timeout_ms = kDefaultReplyTimeoutMs;
 };
 
 bool read_link_options(const Options& o, LinkOptions* lo, std::string* error) {
@@ -162,12 +169,24 @@ bool read_link_options(const Options& o, LinkOptions* lo, std::string* error) {
       !read_u32(o, "--replot", &lo->replot, error) || !read_u32(o, "--seed", &seed, error))
     return false;
   lo->faults.seed = seed;
+  // A lost or damaged frame is answered by a NAK (the controller's frame idle timeout ends a
+  // truncated one), so a long reply timeout only waits out a controller that is slow to answer.
+  const std::string timeout = o.get("--reply-timeout");
+  int64_t ms = 0;
+  if (!timeout.empty()) {
+    if (!parse_int(timeout, 1, 600000, &ms)) {
+      *error = "--reply-timeout '" + timeout + "' must be milliseconds in [1, 600000]";
+      return false;
+    }
+    lo->reply_timeout_ms = int(ms);
+  }
   return true;
 }
 
 // A socket server that still holds the previous session may close a new connection at
 // once (QEMU's chardev serves one client): reconnect a few times before giving up.
-std::unique_ptr<Transport> connect_to_controller(const std::string& path, std::string* error) {
+std::unique_ptr<Transport> connect_to_controller(const std::string& path, int reply_timeout_ms,
+                                                 std::string* error) {
   struct stat port_stat {};
   if (::stat(path.c_str(), &port_stat) != 0 && path.rfind("/dev/", 0) != 0)
     std::fprintf(stderr, "haloplot send: waiting up to 20 s for %s to appear\n", path.c_str());
@@ -175,7 +194,7 @@ std::unique_ptr<Transport> connect_to_controller(const std::string& path, std::s
     std::unique_ptr<Transport> port = open_port(path, 20000, error);
     if (!port) return nullptr;
     JobClient probe(*port);
-    probe.timeout_ms = 3000;
+    probe.timeout_ms = reply_timeout_ms;
     if (probe.sync()) return port;
     if (!port->closed()) {
       *error = "sync: " + probe.error();
@@ -338,16 +357,17 @@ int SendSession::replot() {
 }  // namespace
 
 int cmd_send(int argc, char** argv) {
-  const Options o = parse_options(argc, argv, 2,
-                                  {"--port", "--replot", "--corrupt-every", "--truncate-every",
-                                   "--seed", "--stop-after", "--stop", "--pause-after", "--resume"},
-                                  {"--test-exit", "--trace-digest"});
+  const Options o =
+      parse_options(argc, argv, 2,
+                    {"--port", "--replot", "--corrupt-every", "--truncate-every", "--seed",
+                     "--stop-after", "--stop", "--pause-after", "--resume", "--reply-timeout"},
+                    {"--test-exit", "--trace-digest"});
   if (!o.error.empty()) return send_fail(o.error);
   if (o.positional.size() != 1 || o.get("--port").empty())
     return send_fail(
         "usage: haloplot send JOB.job --port PATH [--replot W] [--corrupt-every K] "
         "[--truncate-every K] [--pause-after EVENTS] [--stop-after EVENTS [--stop abort|limit]] "
-        "[--resume EVENTS] "
+        "[--resume EVENTS] [--reply-timeout MS] "
         "[--test-exit] [--trace-digest]");
   SendScene sc;
   LinkOptions lo;
@@ -355,10 +375,11 @@ int cmd_send(int argc, char** argv) {
   if (!load_scene(o.positional[0], &sc, &error) || !plan_bands(o.positional[0], &sc, &error) ||
       !read_link_options(o, &lo, &error))
     return send_fail(error);
-  const std::unique_ptr<Transport> port = connect_to_controller(o.get("--port"), &error);
+  const std::unique_ptr<Transport> port =
+      connect_to_controller(o.get("--port"), lo.reply_timeout_ms, &error);
   if (!port) return send_fail(error);
   JobClient client(*port, lo.faults);
-  client.timeout_ms = 3000;
+  client.timeout_ms = lo.reply_timeout_ms;
   SendSession session(o, sc, client, lo.replot);
   return session.run();
 }

@@ -61,6 +61,9 @@ const char* kUsage =
     "  haloplot replay IN.trace -o OUT.svg [--stats]\n"
     "  haloplot send JOB.job --port PATH [--replot W] [--corrupt-every K] [--truncate-every K]\n"
     "               [--test-exit]   (upload to a controller over its serial port or socket)\n"
+    "               [--reply-timeout MS]   (how long to wait for each reply before resending,\n"
+    "               20 tries in all; default 3000, ample on a serial link: raise it for a\n"
+    "               slow emulated controller)\n"
     "  haloplot view2d POLYGON.txt --from X,Y -o OUT.svg [--spans OUT.spans] [--trace OUT.trace]\n"
     "               [--stats]   (which parts of a polygon are visible from a point)\n";
 
