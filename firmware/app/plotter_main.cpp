@@ -70,6 +70,55 @@ extern "C" void step_timer_irq() {
 
 extern "C" uint32_t stack_unused_bytes();
 
+namespace {
+
+#ifdef HALOPLOT_FW_TEST_HOOKS
+// The test-only requests: close limit switch 0, digest the traces from the next plot on, and
+// exit (once the plot is over: *exit_requested).
+JobServer::Extension test_requests(bool* exit_requested) {
+  return JobServer::Extension{exit_requested, [](void* c, const Frame& f) {
+                                if (f.type == kTestLimitType) {
+                                  Board::test_close_limit(0);
+                                  return Status::kOk;
+                                }
+                                if (f.type == kTestDigestType) {
+                                  digesting = true;
+                                  motion.set_trace(digest.sink());
+                                  return Status::kOk;
+                                }
+                                if (f.type != kTestExitType) return Status::kMalformedRequest;
+                                *static_cast<bool*>(c) = true;
+                                return Status::kOk;
+                              }};
+}
+
+// Between plots: each plot's trace whole (or its digest) before the next, and on kTestExit
+// the session's counters, then the exit.
+void test_image_between_plots(const JobServer& server, bool exit_requested) {
+  if (!motion.running()) console.flush();
+  if (!motion.running() && digesting && digest.bytes > 0) {
+    stat("trace_crc32", digest.crc);
+    stat("trace_bytes", digest.bytes);
+    console.flush();
+    digest.crc = 0;
+    digest.bytes = 0;
+  }
+  if (!exit_requested || motion.running()) return;
+  stat("edges", server.edges());
+  stat("prepare_instructions", ticks_to_instructions(server.prepare_ticks()));
+  stat("replot_instructions", ticks_to_instructions(server.redraw_ticks()));
+  stat("underruns", motion.underruns());
+  if (motion.hold_exact()) stat("hold_events", motion.hold_events());
+  stat("usart_overruns", Board::serial_overruns());
+  stat("stack_used_bytes", 16 * 1024 - stack_unused_bytes());
+  stat("arena_bytes", sizeof arena);
+  console.flush();
+  semihost_exit(0);
+}
+#endif
+
+}  // namespace
+
 int main() {
   Board::init();
   Board::pen_init();
@@ -83,27 +132,13 @@ int main() {
   // the trace's ticks are the same, and a plot of minutes takes seconds.
   motion.set_time_scale(Board::kTestTimeScale);
   bool exit_requested = false;
-  JobServer::Extension ext{&exit_requested, [](void* c, const Frame& f) {
-                             if (f.type == kTestLimitType) {
-                               Board::test_close_limit(0);
-                               return Status::kOk;
-                             }
-                             if (f.type == kTestDigestType) {
-                               digesting = true;
-                               motion.set_trace(digest.sink());
-                               return Status::kOk;
-                             }
-                             if (f.type != kTestExitType) return Status::kMalformedRequest;
-                             *static_cast<bool*>(c) = true;
-                             return Status::kOk;
-                           }};
 #endif
   JobServer server(
       arena, sizeof arena, rx_frame, sizeof rx_frame,
       ByteOutput{nullptr, [](void*, const uint8_t* b, uint32_t n) { Board::serial_write(b, n); }},
       motion.port());
 #ifdef HALOPLOT_FW_TEST_HOOKS
-  server.set_extension(ext);
+  server.set_extension(test_requests(&exit_requested));
 #endif
   server.set_clock(&counter_ticks);
   uint64_t last_byte = counter_ticks();
@@ -131,26 +166,7 @@ int main() {
     if (motion.stepping()) __asm__ volatile("wfi");
     __asm__ volatile("cpsie i" ::: "memory");
 #ifdef HALOPLOT_FW_TEST_HOOKS
-    if (!motion.running()) console.flush();  // each plot's trace whole, before the next
-    if (!motion.running() && digesting && digest.bytes > 0) {
-      stat("trace_crc32", digest.crc);
-      stat("trace_bytes", digest.bytes);
-      console.flush();
-      digest.crc = 0;
-      digest.bytes = 0;
-    }
-    if (exit_requested && !motion.running()) {
-      stat("edges", server.edges());
-      stat("prepare_instructions", ticks_to_instructions(server.prepare_ticks()));
-      stat("replot_instructions", ticks_to_instructions(server.redraw_ticks()));
-      stat("underruns", motion.underruns());
-      if (motion.hold_exact()) stat("hold_events", motion.hold_events());
-      stat("usart_overruns", Board::serial_overruns());
-      stat("stack_used_bytes", 16 * 1024 - stack_unused_bytes());
-      stat("arena_bytes", sizeof arena);
-      console.flush();
-      semihost_exit(0);
-    }
+    test_image_between_plots(server, exit_requested);
 #endif
   }
 }

@@ -93,7 +93,17 @@ uint64_t hidden_lines_run(const Point3* world, uint32_t nv, Point3* screen, int3
   return ticks_to_instructions(b - a);
 }
 
-void hidden_lines_on_chip() {
+// 3 x 3 solid cubes (the demo's geometry, view 30,40): each cube's 8 corners in world, its 12
+// edges as corner index pairs, its 6 faces as two triangles each. The input's vertices are
+// `screen`, where each hidden-line run projects the corners first.
+struct SolidCubes {
+  Point3* world;
+  Point3* screen;
+  uint32_t nv;
+  SolidInput in;
+};
+
+SolidCubes solid_cubes() {
   constexpr int32_t n = 3;
   static Point3 world[8 * n * n], screen[8 * n * n];
   static uint32_t pairs[2 * 12 * n * n];
@@ -122,54 +132,31 @@ void hidden_lines_on_chip() {
             pairs[ne++] = base + (a | bit);
           }
     }
-  SolidInput in;
-  in.vertices = screen;
-  in.n_vertices = nv;
-  in.edge_pairs = pairs;
-  in.n_edges = ne / 2;
-  in.triangles = tris;
-  in.n_triangles = nt;
-  // Whole steps first, for the resolution axis's cost on the chip (docs/accuracy.md); then the
-  // host's default units, which the host test compares with `haloplot plot`.
-  PieceCount whole_count;
-  HiddenReport whole_report;
-  stat("hidden_lines_instructions_whole_steps",
-       hidden_lines_run(world, nv, screen, 0, in, &whole_count, &whole_report));
-  PieceCount count;
-  HiddenReport report;
-  const uint64_t instructions =
-      hidden_lines_run(world, nv, screen, kDefaultSubstepBits, in, &count, &report);
-  stat("solid_edges", in.n_edges);
-  stat("solid_triangles", nt);
-  stat("solid_crossings", report.cut.crossings);
-  stat("solid_visible_pieces", count.visible);
-  stat("solid_hidden_pieces", count.hidden);
-  stat("solid_used_qi", report.used_qi ? 1 : 0);
-  stat("solid_bytes_used", report.bytes_used);
-  stat("hidden_lines_instructions", instructions);
-  PieceCount with_lines;
-  HiddenReport lines_report;
-  stat("hidden_lines_instructions_with_intersections",
-       hidden_lines_run(world, nv, screen, kDefaultSubstepBits, in, &with_lines, &lines_report,
-                        true));
-  stat("solid_intersection_pairs", lines_report.intersections.pairs);
+  SolidCubes c{world, screen, nv, SolidInput{}};
+  c.in.vertices = screen;
+  c.in.n_vertices = nv;
+  c.in.edge_pairs = pairs;
+  c.in.n_edges = ne / 2;
+  c.in.triangles = tris;
+  c.in.n_triangles = nt;
+  return c;
+}
 
-  // The hatching of the same cubes (3 mm at 80 steps/mm, 45 degrees turning 90 across the
-  // depth range) as a job draws it, in the hidden-line run: the host test counts `haloplot plot
-  // --hatch`'s strokes for the same model.
-  HatchParams hatch;
-  hatch.spacing = steps_to_units(240, kDefaultSubstepBits);
-  hatch.min_length = steps_to_units(1, kDefaultSubstepBits);
-  hatch.angle_mdeg = 45000;
-  hatch.mdeg_per_depth = 90000;
+// The hatching of the cubes (3 mm at 80 steps/mm, 45 degrees turning 90 across the depth
+// range) as a job draws it, in the hidden-line run: the host test counts `haloplot plot
+// --hatch`'s strokes for the same model.
+void hatch_lines_on_chip(const SolidCubes& c, const HatchParams& hatch) {
   PieceCount hatched;
   HiddenReport hatch_report;
   stat("hidden_lines_instructions_with_hatching",
-       hidden_lines_run(world, nv, screen, kDefaultSubstepBits, in, &hatched, &hatch_report, false,
-                        &hatch));
+       hidden_lines_run(c.world, c.nv, c.screen, kDefaultSubstepBits, c.in, &hatched, &hatch_report,
+                        false, &hatch));
   stat("solid_hatch_strokes", hatched.hatch);
-  // Franklin's hidden surfaces (steps 10-11: the regions, each hatched as the face it shows),
-  // the reference the hatch lines are tested against on the host, run on the chip too.
+}
+
+// Franklin's hidden surfaces (steps 10-11: the regions, each hatched as the face it shows),
+// the reference the hatch lines are tested against on the host, run on the chip too.
+void hidden_surfaces_on_chip(const SolidInput& in, const HatchParams& hatch) {
   uint32_t strokes = 0;
   HiddenSurfaceStats hst;
   const uint64_t c = counter_ticks();
@@ -188,102 +175,137 @@ void hidden_lines_on_chip() {
   stat("hidden_surface_instructions", ticks_to_instructions(d - c));
 }
 
-}  // namespace
+void hidden_lines_on_chip() {
+  const SolidCubes c = solid_cubes();
+  // Whole steps first, for the resolution axis's cost on the chip (docs/accuracy.md); then the
+  // host's default units, which the host test compares with `haloplot plot`.
+  PieceCount whole_count;
+  HiddenReport whole_report;
+  stat("hidden_lines_instructions_whole_steps",
+       hidden_lines_run(c.world, c.nv, c.screen, 0, c.in, &whole_count, &whole_report));
+  PieceCount count;
+  HiddenReport report;
+  const uint64_t instructions =
+      hidden_lines_run(c.world, c.nv, c.screen, kDefaultSubstepBits, c.in, &count, &report);
+  stat("solid_edges", c.in.n_edges);
+  stat("solid_triangles", c.in.n_triangles);
+  stat("solid_crossings", report.cut.crossings);
+  stat("solid_visible_pieces", count.visible);
+  stat("solid_hidden_pieces", count.hidden);
+  stat("solid_used_qi", report.used_qi ? 1 : 0);
+  stat("solid_bytes_used", report.bytes_used);
+  stat("hidden_lines_instructions", instructions);
+  PieceCount with_lines;
+  HiddenReport lines_report;
+  stat("hidden_lines_instructions_with_intersections",
+       hidden_lines_run(c.world, c.nv, c.screen, kDefaultSubstepBits, c.in, &with_lines,
+                        &lines_report, true));
+  stat("solid_intersection_pairs", lines_report.intersections.pairs);
+  HatchParams hatch;
+  hatch.spacing = steps_to_units(240, kDefaultSubstepBits);
+  hatch.min_length = steps_to_units(1, kDefaultSubstepBits);
+  hatch.angle_mdeg = 45000;
+  hatch.mdeg_per_depth = 90000;
+  hatch_lines_on_chip(c, hatch);
+  hidden_surfaces_on_chip(c.in, hatch);
+}
 
-int main() {
-  counter_start();
-  {  // Calibration: a loop of exactly 2 instructions per pass (subs, bne), 2,000,000 passes.
+// A loop of exactly 2 instructions per pass (subs, bne), 2,000,000 passes: what the counter
+// reads for a known count.
+void calibrate() {
+  const uint64_t a = counter_ticks();
+  uint32_t n = 2000000;
+  __asm__ volatile("1: subs %0, %0, #1\n bne 1b" : "+r"(n) : : "cc");
+  stat("calibration_4000000_instructions", ticks_to_instructions(counter_ticks() - a));
+}
+
+// Every DRAW precision mode (draw/precision.h) on the same CUTSET: what each costs on the
+// Cortex-M4, where a 64-bit division is a library call (docs/accuracy.md quotes these).
+void draw_modes(const CutSet& set, uint8_t* scratch, size_t scratch_size, const SpanSink& count) {
+  auto mode = [&](const char* name, auto tag) {
+    using P = decltype(tag);
     const uint64_t a = counter_ticks();
-    uint32_t n = 2000000;
-    __asm__ volatile("1: subs %0, %0, #1\n bne 1b" : "+r"(n) : : "cc");
-    stat("calibration_4000000_instructions", ticks_to_instructions(counter_ticks() - a));
-  }
-  CubeArrayParams cp;
-  cp.cubes = kCubes;
-  Status s = cube_array(cp, edges, kEdges);
-  if (!ok(s)) fail("cube array", s);
+    const Status ms =
+        draw_with<P>(set, DrawParams{50, HaloMode::kPaper}, scratch, scratch_size, count, nullptr);
+    const uint64_t b = counter_ticks();
+    if (!ok(ms)) fail(name, ms);
+    stat(name, ticks_to_instructions(b - a));
+  };
+  mode("draw_mode_exact_q32", DrawPrecision<SqrtExact, PositionBits<32>>{});
+  mode("draw_mode_newton_q32", DrawPrecision<SqrtNewton, PositionBits<32>>{});
+  mode("draw_mode_table_q32", DrawPrecision<SqrtTable, PositionBits<32>>{});
+  mode("draw_mode_exact_q16", DrawPrecision<SqrtExact, PositionBits<16>>{});
+  mode("draw_mode_newton_q16", DrawPrecision<SqrtNewton, PositionBits<16>>{});
+  mode("draw_mode_table_q16", DrawPrecision<SqrtTable, PositionBits<16>>{});
+}
 
-  // CUT and DRAW alone, for their instruction counts.
-  {
-    CutPlan plan;
-    CutParams tight;
-    tight.compact_cells = false;  // 4 bytes per (cell, edge) pair: RAM is tight here
-    s = plan_cut(edges, kEdges, tight, &plan);
-    if (!ok(s)) fail("plan_cut", s);
-    // Borrow the job buffer (the job has not started): CUTSET first, then CUT's scratch,
-    // which DRAW reuses once CUT is done.
-    uint8_t* cutset_mem = job_buffer;
-    const size_t cutset_size = (cutset_bytes(kEdges, kCrossingCapacity) + 7) & ~size_t{7};
-    uint8_t* scratch = job_buffer + cutset_size;
-    const size_t scratch_size = sizeof job_buffer - cutset_size;
-    CutSet set;
-    CutStats st;
-    const uint64_t t0 = counter_ticks();
-    s = run_cut(plan, edges, scratch, scratch_size, cutset_mem, cutset_size, &set, &st);
-    const uint64_t t1 = counter_ticks();
-    if (!ok(s)) fail("run_cut", s);
-    uint64_t spans = 0;
-    const SpanSink count{[](void* c, const Span&) {
-                           ++*static_cast<uint64_t*>(c);
-                           return Status::kOk;
-                         },
-                         &spans};
-    s = draw(set, DrawParams{50, HaloMode::kPaper}, scratch, scratch_size, count, nullptr);
-    const uint64_t t2 = counter_ticks();
-    if (!ok(s)) fail("draw", s);
-    stat("edges", kEdges);
-    stat("crossings", set.n_crossings);
-    stat("spans", spans);
-    stat("cut_scratch_bytes", plan.scratch_bytes);
-    stat("cut_instructions", ticks_to_instructions(t1 - t0));
-    stat("draw_instructions", ticks_to_instructions(t2 - t1));
-    // Every DRAW precision mode (draw/precision.h) on the same CUTSET: what each costs on the
-    // Cortex-M4, where a 64-bit division is a library call (docs/accuracy.md quotes these).
-    auto mode = [&](const char* name, auto tag) {
-      using P = decltype(tag);
-      const uint64_t a = counter_ticks();
-      const Status ms = draw_with<P>(set, DrawParams{50, HaloMode::kPaper}, scratch, scratch_size,
-                                     count, nullptr);
-      const uint64_t b = counter_ticks();
-      if (!ok(ms)) fail(name, ms);
-      stat(name, ticks_to_instructions(b - a));
-    };
-    mode("draw_mode_exact_q32", DrawPrecision<SqrtExact, PositionBits<32>>{});
-    mode("draw_mode_newton_q32", DrawPrecision<SqrtNewton, PositionBits<32>>{});
-    mode("draw_mode_table_q32", DrawPrecision<SqrtTable, PositionBits<32>>{});
-    mode("draw_mode_exact_q16", DrawPrecision<SqrtExact, PositionBits<16>>{});
-    mode("draw_mode_newton_q16", DrawPrecision<SqrtNewton, PositionBits<16>>{});
-    mode("draw_mode_table_q16", DrawPrecision<SqrtTable, PositionBits<16>>{});
-    // The view transform, both fixed-point modes, on the cube array's 288 world corners.
-    {
-      static Point3 world[8 * kCubes * kCubes], screen[8 * kCubes * kCubes];
-      uint32_t nv = 0;
-      for (int32_t i = 0; i < kCubes; ++i)
-        for (int32_t j = 0; j < kCubes; ++j)
-          for (int k = 0; k < 8; ++k)
-            world[nv++] = Point3{i * 125 + (k & 1) * 100, j * 125 + ((k >> 1) & 1) * 100,
-                                 ((k >> 2) & 1) * 100};
-      const View view;
-      const uint64_t a = counter_ticks();
-      Status ps = project_points_with<16>(view, world, nv, screen);
-      const uint64_t b = counter_ticks();
-      if (ok(ps)) ps = project_points_with<30>(view, world, nv, screen);
-      const uint64_t c = counter_ticks();
-      if (!ok(ps)) fail("projection", ps);
-      stat("project_q16_instructions_per_vertex", ticks_to_instructions(b - a) / nv);
-      stat("project_q30_instructions_per_vertex", ticks_to_instructions(c - b) / nv);
-    }
-    hidden_lines_on_chip();
-  }
+// CUT and DRAW alone, for their instruction counts, then DRAW in every precision mode.
+void cut_and_draw_alone() {
+  CutPlan plan;
+  CutParams tight;
+  tight.compact_cells = false;  // 4 bytes per (cell, edge) pair: RAM is tight here
+  Status s = plan_cut(edges, kEdges, tight, &plan);
+  if (!ok(s)) fail("plan_cut", s);
+  // Borrow the job buffer (the job has not started): CUTSET first, then CUT's scratch,
+  // which DRAW reuses once CUT is done.
+  uint8_t* cutset_mem = job_buffer;
+  const size_t cutset_size = (cutset_bytes(kEdges, kCrossingCapacity) + 7) & ~size_t{7};
+  uint8_t* scratch = job_buffer + cutset_size;
+  const size_t scratch_size = sizeof job_buffer - cutset_size;
+  CutSet set;
+  CutStats st;
+  const uint64_t t0 = counter_ticks();
+  s = run_cut(plan, edges, scratch, scratch_size, cutset_mem, cutset_size, &set, &st);
+  const uint64_t t1 = counter_ticks();
+  if (!ok(s)) fail("run_cut", s);
+  uint64_t spans = 0;
+  const SpanSink count{[](void* c, const Span&) {
+                         ++*static_cast<uint64_t*>(c);
+                         return Status::kOk;
+                       },
+                       &spans};
+  s = draw(set, DrawParams{50, HaloMode::kPaper}, scratch, scratch_size, count, nullptr);
+  const uint64_t t2 = counter_ticks();
+  if (!ok(s)) fail("draw", s);
+  stat("edges", kEdges);
+  stat("crossings", set.n_crossings);
+  stat("spans", spans);
+  stat("cut_scratch_bytes", plan.scratch_bytes);
+  stat("cut_instructions", ticks_to_instructions(t1 - t0));
+  stat("draw_instructions", ticks_to_instructions(t2 - t1));
+  draw_modes(set, scratch, scratch_size, count);
+}
 
-  // The plot: the same job as scenes/ of the host test (see tests/firmware/).
+// The view transform, both fixed-point modes, on the cube array's 288 world corners.
+void projection_on_chip() {
+  static Point3 world[8 * kCubes * kCubes], screen[8 * kCubes * kCubes];
+  uint32_t nv = 0;
+  for (int32_t i = 0; i < kCubes; ++i)
+    for (int32_t j = 0; j < kCubes; ++j)
+      for (int k = 0; k < 8; ++k)
+        world[nv++] =
+            Point3{i * 125 + (k & 1) * 100, j * 125 + ((k >> 1) & 1) * 100, ((k >> 2) & 1) * 100};
+  const View view;
+  const uint64_t a = counter_ticks();
+  Status ps = project_points_with<16>(view, world, nv, screen);
+  const uint64_t b = counter_ticks();
+  if (ok(ps)) ps = project_points_with<30>(view, world, nv, screen);
+  const uint64_t c = counter_ticks();
+  if (!ok(ps)) fail("projection", ps);
+  stat("project_q16_instructions_per_vertex", ticks_to_instructions(b - a) / nv);
+  stat("project_q30_instructions_per_vertex", ticks_to_instructions(c - b) / nv);
+}
+
+// The plot: the same job as scenes/ of the host test (see tests/firmware/), prepared in the
+// job buffer and run through the planner, step prep and the step engine, its trace streamed.
+void plot_on_chip() {
   JobSpec spec;
   spec.drawing = DrawingEffect::kHaloed;
   spec.draw = DrawParams{50, HaloMode::kPaper};
   spec.machine.kinematics = Kinematics::kCoreXY;
   spec.cut.compact_cells = false;  // the same crossings, a quarter of the cell-list bytes
   JobBytes bytes;
-  s = job_bytes(spec, edges, kEdges, kCrossingCapacity, &bytes);
+  Status s = job_bytes(spec, edges, kEdges, kCrossingCapacity, &bytes);
   if (!ok(s)) fail("job_bytes", s);
   stat("job_bytes", bytes.total());
   PreparedJob job;
@@ -314,26 +336,42 @@ int main() {
   trace.finish(hal.now);
   stat("step_events", engine.events());
   stat("motion_instructions_with_trace", ticks_to_instructions(t6 - t5));
+}
 
-  // One step event alone: the host benchmark's workload (tests/bench/tick_workload.h) on a
-  // GPIO-like HAL.
-  {
-    GpioHal gpio;
-    SegmentQueue<64> q;
-    StepEngine<GpioHal, SegmentQueue<64>> e(gpio, q);
-    uint64_t spent = 0;
-    uint32_t delay = 0;
-    bool first = true;
-    while (e.events() < 200000) {
-      bench::fill_tick_workload(q, &first);
-      if (delay == 0) delay = e.start();
-      const uint64_t a = counter_ticks();
-      for (int k = 0; k < 800; ++k) delay = e.tick();  // 50 segments: the queue holds 64
-      spent += counter_ticks() - a;
-    }
-    stat("tick_events", e.events());
-    stat("tick_instructions_x100_per_event", ticks_to_instructions(spent * 100) / e.events());
+// One step event alone: the host benchmark's workload (tests/bench/tick_workload.h) on a
+// GPIO-like HAL.
+void step_event_alone() {
+  GpioHal gpio;
+  SegmentQueue<64> q;
+  StepEngine<GpioHal, SegmentQueue<64>> e(gpio, q);
+  uint64_t spent = 0;
+  uint32_t delay = 0;
+  bool first = true;
+  while (e.events() < 200000) {
+    bench::fill_tick_workload(q, &first);
+    if (delay == 0) delay = e.start();
+    const uint64_t a = counter_ticks();
+    for (int k = 0; k < 800; ++k) delay = e.tick();  // 50 segments: the queue holds 64
+    spent += counter_ticks() - a;
   }
+  stat("tick_events", e.events());
+  stat("tick_instructions_x100_per_event", ticks_to_instructions(spent * 100) / e.events());
+}
+
+}  // namespace
+
+int main() {
+  counter_start();
+  calibrate();
+  CubeArrayParams cp;
+  cp.cubes = kCubes;
+  const Status s = cube_array(cp, edges, kEdges);
+  if (!ok(s)) fail("cube array", s);
+  cut_and_draw_alone();
+  projection_on_chip();
+  hidden_lines_on_chip();
+  plot_on_chip();
+  step_event_alone();
   stat("stack_used_bytes", 16 * 1024 - stack_unused_bytes());
   console.flush();
   semihost_exit(0);

@@ -31,6 +31,52 @@ const char* config_name(ViewConfig c) {
   return "?";
 }
 
+// A visible part's ends, on its polygon edge.
+void visible_ends(const std::vector<Point2>& poly, const VisibleSpan& v, int32_t* ax, int32_t* ay,
+                  int32_t* bx, int32_t* by) {
+  const uint32_t n = uint32_t(poly.size());
+  visible_point(poly[v.edge], poly[(v.edge + 1) % n], v.s0, ax, ay);
+  visible_point(poly[v.edge], poly[(v.edge + 1) % n], v.s1, bx, by);
+}
+
+std::string write_spans(const std::string& path, const std::vector<Point2>& poly,
+                        const std::vector<VisibleSpan>& visible) {
+  return write_atomically(path, [&](std::ostream& out) {
+    out << "# haloplot view2d: visible parts, one per line: s EDGE X0 Y0 X1 Y1\n";
+    for (const VisibleSpan& v : visible) {
+      int32_t ax, ay, bx, by;
+      visible_ends(poly, v, &ax, &ay, &bx, &by);
+      out << "s " << v.edge << " " << ax << " " << ay << " " << bx << " " << by << "\n";
+    }
+    return true;
+  });
+}
+
+// The visible parts through the planner and the step tick, like any drawing: moved so the
+// polygon's lower-left corner sits at the plot's 400-step margin (plot steps are >= 0).
+int write_trace(const std::string& path, const std::vector<Point2>& poly,
+                const std::vector<VisibleSpan>& visible) {
+  int32_t x0 = poly[0].x, y0 = poly[0].y;
+  for (const Point2& q : poly) x0 = std::min(x0, q.x), y0 = std::min(y0, q.y);
+  std::vector<Edge3> lines;
+  for (const VisibleSpan& v : visible) {
+    int32_t ax, ay, bx, by;
+    visible_ends(poly, v, &ax, &ay, &bx, &by);
+    lines.push_back({{ax - x0 + 400, ay - y0 + 400, 0}, {bx - x0 + 400, by - y0 + 400, 0}});
+  }
+  JobSpec spec;
+  spec.drawing = DrawingEffect::kAllEdges;
+  SimReport report;
+  Status sim = Status::kOk;
+  const std::string error = write_atomically(path, [&](std::ostream& out) {
+    sim = simulate(spec, lines, &out, &report);
+    return ok(sim);
+  });
+  if (!ok(sim)) return view2d_fail(std::string("trace: ") + status_name(sim));
+  if (!error.empty()) return view2d_fail(error);
+  return 0;
+}
+
 }  // namespace
 
 int cmd_view2d(int argc, char** argv) {
@@ -77,42 +123,11 @@ int cmd_view2d(int argc, char** argv) {
   });
   if (!error.empty()) return view2d_fail(error);
   if (!o.get("--spans").empty()) {
-    error = write_atomically(o.get("--spans"), [&](std::ostream& out) {
-      out << "# haloplot view2d: visible parts, one per line: s EDGE X0 Y0 X1 Y1\n";
-      const uint32_t n = uint32_t(poly.size());
-      for (const VisibleSpan& v : visible) {
-        int32_t ax, ay, bx, by;
-        visible_point(poly[v.edge], poly[(v.edge + 1) % n], v.s0, &ax, &ay);
-        visible_point(poly[v.edge], poly[(v.edge + 1) % n], v.s1, &bx, &by);
-        out << "s " << v.edge << " " << ax << " " << ay << " " << bx << " " << by << "\n";
-      }
-      return true;
-    });
+    error = write_spans(o.get("--spans"), poly, visible);
     if (!error.empty()) return view2d_fail(error);
   }
   if (!o.get("--trace").empty()) {
-    // The visible parts through the planner and the step tick, like any drawing: moved so the
-    // polygon's lower-left corner sits at the plot's 400-step margin (plot steps are >= 0).
-    int32_t x0 = poly[0].x, y0 = poly[0].y;
-    for (const Point2& q : poly) x0 = std::min(x0, q.x), y0 = std::min(y0, q.y);
-    std::vector<Edge3> lines;
-    const uint32_t n = uint32_t(poly.size());
-    for (const VisibleSpan& v : visible) {
-      int32_t ax, ay, bx, by;
-      visible_point(poly[v.edge], poly[(v.edge + 1) % n], v.s0, &ax, &ay);
-      visible_point(poly[v.edge], poly[(v.edge + 1) % n], v.s1, &bx, &by);
-      lines.push_back({{ax - x0 + 400, ay - y0 + 400, 0}, {bx - x0 + 400, by - y0 + 400, 0}});
-    }
-    JobSpec spec;
-    spec.drawing = DrawingEffect::kAllEdges;
-    SimReport report;
-    Status sim = Status::kOk;
-    error = write_atomically(o.get("--trace"), [&](std::ostream& out) {
-      sim = simulate(spec, lines, &out, &report);
-      return ok(sim);
-    });
-    if (!ok(sim)) return view2d_fail(std::string("trace: ") + status_name(sim));
-    if (!error.empty()) return view2d_fail(error);
+    if (const int rc = write_trace(o.get("--trace"), poly, visible)) return rc;
   }
   if (o.has("--stats"))
     std::cout << "configuration=" << config_name(st.config) << "\nvertices=" << poly.size()

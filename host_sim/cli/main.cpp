@@ -61,6 +61,9 @@ const char* kUsage =
     "  haloplot replay IN.trace -o OUT.svg [--stats]\n"
     "  haloplot send JOB.job --port PATH [--replot W] [--corrupt-every K] [--truncate-every K]\n"
     "               [--test-exit]   (upload to a controller over its serial port or socket)\n"
+    "               [--reply-timeout MS]   (how long to wait for each reply before resending,\n"
+    "               20 tries in all; default 3000, ample on a serial link: raise it for a\n"
+    "               slow emulated controller)\n"
     "  haloplot view2d POLYGON.txt --from X,Y -o OUT.svg [--spans OUT.spans] [--trace OUT.trace]\n"
     "               [--stats]   (which parts of a polygon are visible from a point)\n";
 
@@ -494,25 +497,71 @@ void warn_if_slow(const JobSpec& spec, const SimReport& r) {
                  plotted, plotted / std::max(at_speed, 1e-9), at_speed, m.accel);
 }
 
+// --pause-at E1,E2,...: a feed hold once the plot has made E step events, resumed at rest.
+bool parse_pause_at(const std::string& list_text, std::vector<uint32_t>* pause_at) {
+  std::stringstream list(list_text);
+  std::string item;
+  while (std::getline(list, item, ',')) {
+    int64_t v = 0;
+    if (!parse_int(item, 0, UINT32_MAX, &v) || (!pause_at->empty() && v < pause_at->back()))
+      return false;
+    pause_at->push_back(uint32_t(v));
+  }
+  return true;
+}
+
+// The plot as a G-code and an HPGL file too, when asked for.
+int write_exports(const Options& o, const SimReport& r, const JobSpec& spec, const JobFile& jf) {
+  if (!o.get("--gcode").empty()) {
+    const std::string error = write_atomically(o.get("--gcode"), [&](std::ostream& out) {
+      write_gcode(out, r.points, spec.machine, jf.style);
+      return true;
+    });
+    if (!error.empty()) return fail(error);
+  }
+  if (!o.get("--hpgl").empty()) {
+    const std::string error = write_atomically(o.get("--hpgl"), [&](std::ostream& out) {
+      write_hpgl(out, r.points, jf.style);
+      return true;
+    });
+    if (!error.empty()) return fail(error);
+  }
+  return 0;
+}
+
+void print_sim_stats(const JobSpec& spec, const SimReport& r, size_t edges) {
+  const Machine& m = spec.machine;
+  auto rate = [&](int k) { return r.min_gap[k] == UINT64_MAX ? 0 : m.tick_hz / r.min_gap[k]; };
+  std::fprintf(
+      stderr,
+      "edges=%zu\nspans=%u\npolylines=%u\npen_down_length=%llu\npen_up_length=%llu\n"
+      "naive_pen_up_length=%llu\nplot_s=%s\nsteps_0=%llu\nsteps_1=%llu\n"
+      "peak_step_rate_0=%llu\npeak_step_rate_1=%llu\npen_lifts=%u\n"
+      "cut_runs=%u\ndraw_runs=%u\nplanner_replans=%llu\njunctions=%llu\n"
+      "dwell_ticks=%llu\nbacklash_takeups=%llu\nsegments=%llu\n"
+      "bytes_cut=%zu\nbytes_draw=%zu\nbytes_path=%zu\nbytes_planner=%zu\n",
+      edges, (unsigned)r.spans.size(), r.job.path.polylines,
+      (unsigned long long)r.job.path.pen_down_length, (unsigned long long)r.job.path.pen_up_length,
+      (unsigned long long)r.job.path.naive_pen_up_length,
+      thousandths(r.end_tick * 1000 / m.tick_hz).c_str(), (unsigned long long)r.steps[0],
+      (unsigned long long)r.steps[1], (unsigned long long)rate(0), (unsigned long long)rate(1),
+      r.pen_lifts, r.job.cut_runs, r.job.draw_runs, (unsigned long long)r.planner.replans,
+      (unsigned long long)r.planner.junctions, (unsigned long long)r.planner.dwell_ticks,
+      (unsigned long long)r.prep.backlash_takeups, (unsigned long long)r.prep.segments,
+      r.bytes.cut_scratch + r.bytes.cutset, r.bytes.draw_scratch, r.bytes.path + r.bytes.points,
+      r.planner_bytes);
+}
+
 int cmd_sim(int argc, char** argv) {
   const Options o = parse_options(
       argc, argv, 2, {"-o", "--gcode", "--hpgl", "--arena", "--pause-at", "--resume-at"},
       {"--stats", "--binary"});
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "sim");
-  // --pause-at E1,E2,...: a feed hold once the plot has made E step events, resumed at rest.
   std::vector<uint32_t> pause_at;
-  if (!o.get("--pause-at").empty()) {
-    std::stringstream list(o.get("--pause-at"));
-    std::string item;
-    while (std::getline(list, item, ',')) {
-      int64_t v = 0;
-      if (!parse_int(item, 0, UINT32_MAX, &v) || (!pause_at.empty() && v < pause_at.back()))
-        return fail("--pause-at needs ascending step-event counts, comma-separated: '" +
-                    o.get("--pause-at") + "'");
-      pause_at.push_back(uint32_t(v));
-    }
-  }
+  if (!o.get("--pause-at").empty() && !parse_pause_at(o.get("--pause-at"), &pause_at))
+    return fail("--pause-at needs ascending step-event counts, comma-separated: '" +
+                o.get("--pause-at") + "'");
   const TraceForm form = o.has("--binary") ? TraceForm::kBinary : TraceForm::kText;
   JobFile jf;
   InputError ie = read_job_file(o.positional[0], &jf);
@@ -564,42 +613,9 @@ int cmd_sim(int argc, char** argv) {
   if (!ok(s)) return fail_status("sim", s);
   warn_if_slow(spec, r);
   if (!error.empty()) return fail(error);
-  if (!o.get("--gcode").empty()) {
-    error = write_atomically(o.get("--gcode"), [&](std::ostream& out) {
-      write_gcode(out, r.points, spec.machine, jf.style);
-      return true;
-    });
-    if (!error.empty()) return fail(error);
-  }
-  if (!o.get("--hpgl").empty()) {
-    error = write_atomically(o.get("--hpgl"), [&](std::ostream& out) {
-      write_hpgl(out, r.points, jf.style);
-      return true;
-    });
-    if (!error.empty()) return fail(error);
-  }
+  if (const int rc = write_exports(o, r, spec, jf)) return rc;
   if (o.has("--stats")) {
-    const Machine& m = spec.machine;
-    auto rate = [&](int k) { return r.min_gap[k] == UINT64_MAX ? 0 : m.tick_hz / r.min_gap[k]; };
-    std::fprintf(stderr,
-                 "edges=%zu\nspans=%u\npolylines=%u\npen_down_length=%llu\npen_up_length=%llu\n"
-                 "naive_pen_up_length=%llu\nplot_s=%s\nsteps_0=%llu\nsteps_1=%llu\n"
-                 "peak_step_rate_0=%llu\npeak_step_rate_1=%llu\npen_lifts=%u\n"
-                 "cut_runs=%u\ndraw_runs=%u\nplanner_replans=%llu\njunctions=%llu\n"
-                 "dwell_ticks=%llu\nbacklash_takeups=%llu\nsegments=%llu\n"
-                 "bytes_cut=%zu\nbytes_draw=%zu\nbytes_path=%zu\nbytes_planner=%zu\n",
-                 edges.size(), (unsigned)r.spans.size(), r.job.path.polylines,
-                 (unsigned long long)r.job.path.pen_down_length,
-                 (unsigned long long)r.job.path.pen_up_length,
-                 (unsigned long long)r.job.path.naive_pen_up_length,
-                 thousandths(r.end_tick * 1000 / m.tick_hz).c_str(), (unsigned long long)r.steps[0],
-                 (unsigned long long)r.steps[1], (unsigned long long)rate(0),
-                 (unsigned long long)rate(1), r.pen_lifts, r.job.cut_runs, r.job.draw_runs,
-                 (unsigned long long)r.planner.replans, (unsigned long long)r.planner.junctions,
-                 (unsigned long long)r.planner.dwell_ticks,
-                 (unsigned long long)r.prep.backlash_takeups, (unsigned long long)r.prep.segments,
-                 r.bytes.cut_scratch + r.bytes.cutset, r.bytes.draw_scratch,
-                 r.bytes.path + r.bytes.points, r.planner_bytes);
+    print_sim_stats(spec, r, edges.size());
     if (!pause_at.empty()) std::fprintf(stderr, "holds=%llu\n", (unsigned long long)r.holds);
     if (jf.arena > 0) print_band_stats(r.bands, jf.arena);
   }

@@ -75,86 +75,80 @@ bool is_position(const std::string& s) {
   return true;
 }
 
-}  // namespace
+// e INDEX AX AY AZ BX BY BZ: the next edge, in index order.
+InputError read_edge_record(const std::vector<std::string>& f, const std::string& name, int line,
+                            LoadedCut* out) {
+  if (f.size() != 8) return {name, line, "an 'e' line needs an index and 6 integers"};
+  int64_t v[7];
+  if (!parse_int(f[1], 0, kMaxEdges, &v[0]) || v[0] != int64_t(out->edges.size()))
+    return {name, line,
+            "edge index '" + excerpt(f[1]) + "' out of order (expected " +
+                std::to_string(out->edges.size()) + ")"};
+  for (int i = 1; i < 7; ++i)
+    if (!parse_int(f[i + 1], 0, kCoordMax, &v[i]))
+      return {name, line, "'" + excerpt(f[i + 1]) + "' is not an integer in [0, 1048575]"};
+  out->edges.push_back(Edge3{{int32_t(v[1]), int32_t(v[2]), int32_t(v[3])},
+                             {int32_t(v[4]), int32_t(v[5]), int32_t(v[6])}});
+  return {};
+}
 
-InputError read_cut(std::istream& in, const std::string& name, LoadedCut* out) {
-  *out = LoadedCut{};
-  LineReader reader(in);
-  std::vector<std::string> f;
-  std::string comments;
-  bool in_crossings = false, near_records = false;
-  int64_t reach = 0;
-  while (reader.next(&f, &comments)) {
-    const int line = reader.line();
-    if (f[0] == "e") {
-      if (in_crossings) return {name, line, "'e' line after the first 'c' line"};
-      if (f.size() != 8) return {name, line, "an 'e' line needs an index and 6 integers"};
-      int64_t v[7];
-      if (!parse_int(f[1], 0, kMaxEdges, &v[0]) || v[0] != int64_t(out->edges.size()))
-        return {name, line,
-                "edge index '" + excerpt(f[1]) + "' out of order (expected " +
-                    std::to_string(out->edges.size()) + ")"};
-      for (int i = 1; i < 7; ++i)
-        if (!parse_int(f[i + 1], 0, kCoordMax, &v[i]))
-          return {name, line, "'" + excerpt(f[i + 1]) + "' is not an integer in [0, 1048575]"};
-      out->edges.push_back(Edge3{{int32_t(v[1]), int32_t(v[2]), int32_t(v[3])},
-                                 {int32_t(v[4]), int32_t(v[5]), int32_t(v[6])}});
-    } else if (f[0] == "c") {
-      in_crossings = true;
-      if (f.size() < 7) return {name, line, "a 'c' line needs BEHIND FRONT X Y T KIND"};
-      const int64_t n = int64_t(out->edges.size());
-      int64_t behind, front, t;
-      if (!parse_int(f[1], 0, n - 1, &behind))
-        return {name, line, "BEHIND '" + excerpt(f[1]) + "' is not an edge index"};
-      if (!parse_int(f[2], 0, n - 1, &front) || front == behind)
-        return {name, line, "FRONT '" + excerpt(f[2]) + "' is not another edge's index"};
-      if (!parse_int(f[5], 0, 0xffffffffLL, &t))
-        return {name, line, "T '" + excerpt(f[5]) + "' is not an integer in [0, 2^32)"};
-      if (f[6] != "cross" && f[6] != "near")
-        return {name, line, "KIND '" + excerpt(f[6]) + "' is neither 'cross' nor 'near'"};
-      if (f.size() != 7)
-        return {name, line, "a 'c' line has 7 fields, not " + std::to_string(f.size())};
-      for (int k : {3, 4})
-        if (!is_position(f[k]))
-          return {name, line,
-                  std::string(k == 3 ? "X" : "Y") + " '" + excerpt(f[k]) +
-                      "' is not a position in steps with three decimals"};
-      const Edge3& e = out->edges[size_t(behind)];
-      if (f[3] != decimal_position(e.a.x, e.b.x - e.a.x, uint32_t(t)) ||
-          f[4] != decimal_position(e.a.y, e.b.y - e.a.y, uint32_t(t)))
-        return {name, line,
-                "X Y " + f[3] + " " + f[4] + " is not where T " + f[5] + " lies on BEHIND"};
-      if (f[6] == "cross") {
-        const std::string why = check_cross(e, out->edges[size_t(front)], uint32_t(t));
-        if (!why.empty()) return {name, line, why};
-      } else {
-        near_records = true;
-      }
-      Crossing c{uint32_t(behind), uint32_t(front) | (f[6] == "near" ? Crossing::kNearBit : 0u),
-                 uint32_t(t)};
-      if (!out->crossings.empty()) {
-        const Crossing& p = out->crossings.back();
-        const bool ordered =
-            p.behind < c.behind ||
-            (p.behind == c.behind && (p.t < c.t || (p.t == c.t && p.front < c.front)));
-        if (!ordered)
-          return {name, line,
-                  "records must be grouped by BEHIND and ordered along it by (T, FRONT)"};
-      }
-      out->crossings.push_back(c);
-    } else {
-      return {name, line, "unknown record '" + excerpt(f[0]) + "' (expected 'e' or 'c')"};
-    }
+// c BEHIND FRONT X Y T KIND: a crossing, checked against the edges (X and Y where T lies on
+// BEHIND, a 'cross' where the two really cross) and against the record before it (grouped by
+// BEHIND, ordered along it). *near is set by a 'near' record.
+InputError read_crossing_record(const std::vector<std::string>& f, const std::string& name,
+                                int line, LoadedCut* out, bool* near) {
+  if (f.size() < 7) return {name, line, "a 'c' line needs BEHIND FRONT X Y T KIND"};
+  const int64_t n = int64_t(out->edges.size());
+  int64_t behind, front, t;
+  if (!parse_int(f[1], 0, n - 1, &behind))
+    return {name, line, "BEHIND '" + excerpt(f[1]) + "' is not an edge index"};
+  if (!parse_int(f[2], 0, n - 1, &front) || front == behind)
+    return {name, line, "FRONT '" + excerpt(f[2]) + "' is not another edge's index"};
+  if (!parse_int(f[5], 0, 0xffffffffLL, &t))
+    return {name, line, "T '" + excerpt(f[5]) + "' is not an integer in [0, 2^32)"};
+  if (f[6] != "cross" && f[6] != "near")
+    return {name, line, "KIND '" + excerpt(f[6]) + "' is neither 'cross' nor 'near'"};
+  if (f.size() != 7)
+    return {name, line, "a 'c' line has 7 fields, not " + std::to_string(f.size())};
+  for (int k : {3, 4})
+    if (!is_position(f[k]))
+      return {name, line,
+              std::string(k == 3 ? "X" : "Y") + " '" + excerpt(f[k]) +
+                  "' is not a position in steps with three decimals"};
+  const Edge3& e = out->edges[size_t(behind)];
+  if (f[3] != decimal_position(e.a.x, e.b.x - e.a.x, uint32_t(t)) ||
+      f[4] != decimal_position(e.a.y, e.b.y - e.a.y, uint32_t(t)))
+    return {name, line, "X Y " + f[3] + " " + f[4] + " is not where T " + f[5] + " lies on BEHIND"};
+  if (f[6] == "cross") {
+    const std::string why = check_cross(e, out->edges[size_t(front)], uint32_t(t));
+    if (!why.empty()) return {name, line, why};
+  } else {
+    *near = true;
   }
-  if (!reader.error().empty()) return {name, reader.line(), reader.error()};
-  if (in.bad()) return {name, 0, "read error"};
-  // The header: the format and its version first, then the reach the records were found with.
+  Crossing c{uint32_t(behind), uint32_t(front) | (f[6] == "near" ? Crossing::kNearBit : 0u),
+             uint32_t(t)};
+  if (!out->crossings.empty()) {
+    const Crossing& p = out->crossings.back();
+    const bool ordered = p.behind < c.behind ||
+                         (p.behind == c.behind && (p.t < c.t || (p.t == c.t && p.front < c.front)));
+    if (!ordered)
+      return {name, line, "records must be grouped by BEHIND and ordered along it by (T, FRONT)"};
+  }
+  out->crossings.push_back(c);
+  return {};
+}
+
+// The header: the format and its version first, then the reach the records were found with
+// (which 'near' records need), and the sub-step units.
+InputError read_cut_header(const std::string& comments, const std::string& name, bool near_records,
+                           LoadedCut* out) {
   const std::string kHeader = "# haloplot cutset v";
   if (comments.compare(0, kHeader.size(), kHeader) != 0)
     return {name, 1, "not a haloplot CUTSET: the first line must be '# haloplot cutset v1'"};
   const std::string version = comments.substr(kHeader.size(), comments.find('\n') - kHeader.size());
   if (version != "1")
     return {name, 1, "CUTSET version '" + excerpt(version) + "' is not one this tool reads (v1)"};
+  int64_t reach = 0;
   const size_t at = comments.find("# reach ");
   if (at != std::string::npos) {
     const std::string value = comments.substr(at + 8, comments.find('\n', at) - at - 8);
@@ -167,6 +161,36 @@ InputError read_cut(std::istream& in, const std::string& name, LoadedCut* out) {
   out->set.reach = int32_t(reach);
   std::string why;
   if (!read_substep_header(comments, &out->substep_bits, &why)) return {name, 0, why};
+  return {};
+}
+
+}  // namespace
+
+InputError read_cut(std::istream& in, const std::string& name, LoadedCut* out) {
+  *out = LoadedCut{};
+  LineReader reader(in);
+  std::vector<std::string> f;
+  std::string comments;
+  bool in_crossings = false, near_records = false;
+  while (reader.next(&f, &comments)) {
+    const int line = reader.line();
+    InputError e;
+    if (f[0] == "e") {
+      if (in_crossings) return {name, line, "'e' line after the first 'c' line"};
+      e = read_edge_record(f, name, line, out);
+    } else if (f[0] == "c") {
+      in_crossings = true;
+      e = read_crossing_record(f, name, line, out, &near_records);
+    } else {
+      return {name, line, "unknown record '" + excerpt(f[0]) + "' (expected 'e' or 'c')"};
+    }
+    if (e.failed()) return e;
+  }
+  if (!reader.error().empty()) return {name, reader.line(), reader.error()};
+  if (in.bad()) return {name, 0, "read error"};
+  const InputError header = read_cut_header(comments, name, near_records, out);
+  if (header.failed()) return header;
+  // The crossings are grouped by the edge behind: each edge's first record.
   out->first.assign(out->edges.size() + 1, 0);
   for (const Crossing& c : out->crossings) ++out->first[c.behind + 1];
   for (size_t e = 0; e < out->edges.size(); ++e) out->first[e + 1] += out->first[e];

@@ -97,148 +97,211 @@ InputError machine_problem(const std::string& path, const Machine& m, Status s,
   return {path, 0, std::string("machine settings rejected: ") + status_name(s)};
 }
 
-}  // namespace
+// One line of a job file: its fields, and where to report a problem with it.
+struct JobLine {
+  const std::string& path;
+  int line;
+  const std::vector<std::string>& f;
 
-InputError read_job_file(const std::string& path, JobFile* out) {
-  std::ifstream in(path);
-  if (!in) return {path, 0, "cannot open"};
-  *out = JobFile{};
-  JobSpec& j = out->spec;
-  LineReader reader(in);
-  std::vector<std::string> f;
-  std::map<std::string, int> key_lines;  // where each setting was last made
-  while (reader.next(&f)) {
-    const int line = reader.line();
-    const std::string& key = f[0];
-    key_lines[key] = line;
-    auto bad = [&](const std::string& what) { return InputError{path, line, what}; };
-    auto number = [&](int64_t lo, int64_t hi, uint32_t* dst) -> bool {
-      int64_t v;
-      if (f.size() != 2 || !parse_int(f[1], lo, hi, &v)) return false;
-      *dst = uint32_t(v);
-      return true;
-    };
-    uint32_t v32 = 0;
-    if (key == "scene" && f.size() == 2) {
-      const size_t slash = path.find_last_of('/');
-      out->scene_path =
-          (f[1][0] == '/' || slash == std::string::npos) ? f[1] : path.substr(0, slash + 1) + f[1];
-    } else if (key == "drawing" && f.size() == 2) {
-      if (f[1] == "all")
-        j.drawing = DrawingEffect::kAllEdges;
-      else if (f[1] == "haloed")
-        j.drawing = DrawingEffect::kHaloed;
-      else if (f[1] == "hidden-removed" || f[1] == "hidden-dashed") {
-        j.drawing =
-            f[1] == "hidden-removed" ? DrawingEffect::kHiddenRemoved : DrawingEffect::kHiddenDashed;
-        out->solid_options["--mode"] = f[1];
-      } else if (f[1] == "hatch")
-        return bad(
-            "hatching is the setting 'hatch SPACING ANGLE TURN' with drawing hidden-removed or "
-            "hidden-dashed");
-      else
-        return bad("drawing must be all, haloed, hidden-removed or hidden-dashed, not '" +
-                   excerpt(f[1]) + "'");
-    } else if (key == "hatch" && f.size() >= 2 && f.size() <= 4) {
-      std::string v = f[1];
-      for (size_t k = 2; k < f.size(); ++k) v += "," + f[k];
-      out->solid_options["--hatch"] = v;
-      Options o;
-      o.values = out->solid_options;
-      SolidOptions so;
-      std::string error;
-      if (!parse_solid_options(o, &so, &error)) return bad(error);
-    } else if ((key == "view" || key == "perspective" || key == "method" || key == "dash" ||
-                key == "up" || key == "substep") &&
-               f.size() == (key == "dash" ? 3u : 2u)) {
-      out->solid_options["--" + key] = key == "dash" ? f[1] + "," + f[2] : f[1];
-      // Checked here, so a bad value is reported with its line.
-      Options o;
-      o.values = out->solid_options;
-      SolidOptions so;
-      View view;
-      std::string error;
-      UpAxis up;
-      if (!parse_solid_options(o, &so, &error) || !parse_view(o, &view, &error) ||
-          !parse_up(o, &up, &error))
-        return bad(error);
-    } else if (key == "outline" && f.size() == 2 && (f[1] == "on" || f[1] == "off")) {
-      out->outline = f[1] == "on";
-    } else if (key == "intersections" && f.size() == 2 && (f[1] == "on" || f[1] == "off")) {
-      out->intersections = f[1] == "on";
-      j.hidden.intersections = out->intersections;
-    } else if (key == "halo") {
-      if (!number(0, 1048575, &v32)) return bad("halo needs a width in [0, 1048575] steps");
-      j.draw.halo = int32_t(v32);
-    } else if (key == "halo-mode" && f.size() == 2 && (f[1] == "paper" || f[1] == "exact")) {
-      j.draw.mode = f[1] == "exact" ? HaloMode::kExact : HaloMode::kPaper;
-    } else if (key == "effects" && f.size() >= 2) {
-      j.effects = PlotterEffects{false, false, false};
-      for (size_t i = 1; i < f.size(); ++i) {
-        if (f[i] == "acceleration")
-          j.effects.acceleration = true;
-        else if (f[i] == "pen-servo")
-          j.effects.pen_servo = true;
-        else if (f[i] == "backlash")
-          j.effects.backlash = true;
-        else if (f[i] != "none")
-          return bad("unknown effect '" + excerpt(f[i]) +
-                     "' (acceleration, pen-servo, backlash, none)");
-      }
-    } else if (key == "finish") {
-      if (f.size() != 2 || (f[1] != "home" && f[1] != "stay"))
-        return bad("finish is home (end pen up at the origin, the default) or stay");
-      j.finish_home = f[1] == "home";
-    } else if (key == "kinematics" && f.size() == 2 && (f[1] == "cartesian" || f[1] == "corexy")) {
-      j.machine.kinematics = f[1] == "corexy" ? Kinematics::kCoreXY : Kinematics::kCartesian;
-    } else if (key == "steps" && f.size() == 2) {
-      const size_t slash = f[1].find('/');
-      int64_t a, b;
-      if (slash == std::string::npos || !parse_int(f[1].substr(0, slash), 1, 1024, &a) ||
-          !parse_int(f[1].substr(slash + 1), 1, 1024, &b))
-        return bad("steps must be N/D, e.g. 1/1 or 16/5");
-      j.machine.steps_num = uint32_t(a);
-      j.machine.steps_den = uint32_t(b);
-    } else if (key == "backlash" && f.size() == 3) {
-      int64_t a, b;
-      if (!parse_int(f[1], 0, 1000, &a) || !parse_int(f[2], 0, 1000, &b))
-        return bad("backlash needs two step counts in [0, 1000]");
-      j.machine.backlash[0] = uint32_t(a);
-      j.machine.backlash[1] = uint32_t(b);
-    } else if (key == "tick-hz") {
-      if (!number(1, 16000000, &j.machine.tick_hz)) return bad("tick-hz in [1, 16000000]");
-    } else if (key == "min-interval") {
-      if (!number(1, 1000000, &j.machine.min_interval))
-        return bad("min-interval in [1, 1000000] ticks");
-    } else if (key == "max-step-rate") {
-      if (!number(1, 10000000, &j.machine.max_step_rate))
-        return bad("max-step-rate in [1, 10000000]");
-    } else if (key == "draw-speed") {
-      if (!number(1, 65535, &j.machine.draw_speed)) return bad("draw-speed in [1, 65535] steps/s");
-    } else if (key == "travel-speed") {
-      if (!number(1, 65535, &j.machine.travel_speed))
-        return bad("travel-speed in [1, 65535] steps/s");
-    } else if (key == "accel") {
-      if (!number(1, 4194303, &j.machine.accel)) return bad("accel in [1, 4194303] steps/s^2");
-    } else if (key == "junction-deviation") {
-      if (!number(0, 65535, &j.machine.junction_deviation))
-        return bad("junction-deviation in [0, 65535] steps");
-    } else if (key == "pen-travel-ticks") {
-      if (!number(0, 100000000, &j.machine.pen_travel_ticks))
-        return bad("pen-travel-ticks in [0, 10^8]");
-    } else if (key == "pen-settle-ticks") {
-      if (!number(0, 100000000, &j.machine.pen_settle_ticks))
-        return bad("pen-settle-ticks in [0, 10^8]");
-    } else if (key == "arena") {
-      if (!number(1024, 1 << 30, &out->arena))
-        return bad("arena needs the controller's job arena in bytes, in [1024, 2^30]");
-    } else if (key == "steps-per-mm") {
-      if (!number(1, 100000, &out->style.steps_per_mm)) return bad("steps-per-mm in [1, 100000]");
-    } else {
-      return bad(unknown_or_malformed(f));
-    }
+  InputError bad(const std::string& what) const { return {path, line, what}; }
+  // The line's one value, an integer in [lo, hi]; *dst is left alone when it is not one.
+  bool number(int64_t lo, int64_t hi, uint32_t* dst) const {
+    int64_t v;
+    if (f.size() != 2 || !parse_int(f[1], lo, hi, &v)) return false;
+    *dst = uint32_t(v);
+    return true;
   }
-  if (!reader.error().empty()) return {path, reader.line(), reader.error()};
+  bool on_off() const { return f.size() == 2 && (f[1] == "on" || f[1] == "off"); }
+};
+
+// The settings whose value is one bounded integer: where each goes, and what to say when the
+// value is missing or out of range.
+struct NumberSetting {
+  const char* key;
+  int64_t lo, hi;
+  uint32_t* (*field)(JobFile*);
+  const char* wrong;
+};
+const NumberSetting kNumberSettings[] = {
+    {"tick-hz", 1, 16000000, [](JobFile* j) { return &j->spec.machine.tick_hz; },
+     "tick-hz in [1, 16000000]"},
+    {"min-interval", 1, 1000000, [](JobFile* j) { return &j->spec.machine.min_interval; },
+     "min-interval in [1, 1000000] ticks"},
+    {"max-step-rate", 1, 10000000, [](JobFile* j) { return &j->spec.machine.max_step_rate; },
+     "max-step-rate in [1, 10000000]"},
+    {"draw-speed", 1, 65535, [](JobFile* j) { return &j->spec.machine.draw_speed; },
+     "draw-speed in [1, 65535] steps/s"},
+    {"travel-speed", 1, 65535, [](JobFile* j) { return &j->spec.machine.travel_speed; },
+     "travel-speed in [1, 65535] steps/s"},
+    {"accel", 1, 4194303, [](JobFile* j) { return &j->spec.machine.accel; },
+     "accel in [1, 4194303] steps/s^2"},
+    {"junction-deviation", 0, 65535, [](JobFile* j) { return &j->spec.machine.junction_deviation; },
+     "junction-deviation in [0, 65535] steps"},
+    {"pen-travel-ticks", 0, 100000000, [](JobFile* j) { return &j->spec.machine.pen_travel_ticks; },
+     "pen-travel-ticks in [0, 10^8]"},
+    {"pen-settle-ticks", 0, 100000000, [](JobFile* j) { return &j->spec.machine.pen_settle_ticks; },
+     "pen-settle-ticks in [0, 10^8]"},
+    {"arena", 1024, 1 << 30, [](JobFile* j) { return &j->arena; },
+     "arena needs the controller's job arena in bytes, in [1024, 2^30]"},
+    {"steps-per-mm", 1, 100000, [](JobFile* j) { return &j->style.steps_per_mm; },
+     "steps-per-mm in [1, 100000]"},
+};
+
+// drawing all | haloed | hidden-removed | hidden-dashed (the hidden-line ones also set the
+// solid drawing's --mode).
+InputError read_drawing(const JobLine& l, JobFile* out) {
+  const std::string& v = l.f[1];
+  if (v == "all") {
+    out->spec.drawing = DrawingEffect::kAllEdges;
+  } else if (v == "haloed") {
+    out->spec.drawing = DrawingEffect::kHaloed;
+  } else if (v == "hidden-removed" || v == "hidden-dashed") {
+    out->spec.drawing =
+        v == "hidden-removed" ? DrawingEffect::kHiddenRemoved : DrawingEffect::kHiddenDashed;
+    out->solid_options["--mode"] = v;
+  } else if (v == "hatch") {
+    return l.bad(
+        "hatching is the setting 'hatch SPACING ANGLE TURN' with drawing hidden-removed or "
+        "hidden-dashed");
+  } else {
+    return l.bad("drawing must be all, haloed, hidden-removed or hidden-dashed, not '" +
+                 excerpt(v) + "'");
+  }
+  return {};
+}
+
+// hatch SPACING [ANGLE [TURN]]: kept as the plot command's --hatch, checked here so a bad
+// value is reported with its line.
+InputError read_hatch(const JobLine& l, JobFile* out) {
+  std::string v = l.f[1];
+  for (size_t k = 2; k < l.f.size(); ++k) v += "," + l.f[k];
+  out->solid_options["--hatch"] = v;
+  Options o;
+  o.values = out->solid_options;
+  SolidOptions so;
+  std::string error;
+  if (!parse_solid_options(o, &so, &error)) return l.bad(error);
+  return {};
+}
+
+bool is_view_setting(const std::string& key) {
+  return key == "view" || key == "perspective" || key == "method" || key == "dash" || key == "up" ||
+         key == "substep";
+}
+
+// view, perspective, method, dash, up, substep: kept as the plot command's options.
+InputError read_view_setting(const JobLine& l, JobFile* out) {
+  const std::string& key = l.f[0];
+  out->solid_options["--" + key] = key == "dash" ? l.f[1] + "," + l.f[2] : l.f[1];
+  // Checked here, so a bad value is reported with its line.
+  Options o;
+  o.values = out->solid_options;
+  SolidOptions so;
+  View view;
+  std::string error;
+  UpAxis up;
+  if (!parse_solid_options(o, &so, &error) || !parse_view(o, &view, &error) ||
+      !parse_up(o, &up, &error))
+    return l.bad(error);
+  return {};
+}
+
+InputError read_effects(const JobLine& l, PlotterEffects* effects) {
+  *effects = PlotterEffects{false, false, false};
+  for (size_t i = 1; i < l.f.size(); ++i) {
+    if (l.f[i] == "acceleration")
+      effects->acceleration = true;
+    else if (l.f[i] == "pen-servo")
+      effects->pen_servo = true;
+    else if (l.f[i] == "backlash")
+      effects->backlash = true;
+    else if (l.f[i] != "none")
+      return l.bad("unknown effect '" + excerpt(l.f[i]) +
+                   "' (acceleration, pen-servo, backlash, none)");
+  }
+  return {};
+}
+
+// steps N/D: motor steps per plot step.
+InputError read_steps(const JobLine& l, Machine* m) {
+  const std::string& v = l.f[1];
+  const size_t slash = v.find('/');
+  int64_t a, b;
+  if (slash == std::string::npos || !parse_int(v.substr(0, slash), 1, 1024, &a) ||
+      !parse_int(v.substr(slash + 1), 1, 1024, &b))
+    return l.bad("steps must be N/D, e.g. 1/1 or 16/5");
+  m->steps_num = uint32_t(a);
+  m->steps_den = uint32_t(b);
+  return {};
+}
+
+InputError read_backlash(const JobLine& l, Machine* m) {
+  int64_t a, b;
+  if (!parse_int(l.f[1], 0, 1000, &a) || !parse_int(l.f[2], 0, 1000, &b))
+    return l.bad("backlash needs two step counts in [0, 1000]");
+  m->backlash[0] = uint32_t(a);
+  m->backlash[1] = uint32_t(b);
+  return {};
+}
+
+// One "key value..." line into the job. A key whose value has the wrong form falls through
+// to the end, which says what the key takes (or that the key is unknown).
+InputError read_setting(const JobLine& l, JobFile* out) {
+  const std::string& key = l.f[0];
+  const std::vector<std::string>& f = l.f;
+  JobSpec& j = out->spec;
+  if (key == "scene" && f.size() == 2) {  // relative to the job file's folder
+    const size_t slash = l.path.find_last_of('/');
+    out->scene_path =
+        (f[1][0] == '/' || slash == std::string::npos) ? f[1] : l.path.substr(0, slash + 1) + f[1];
+    return {};
+  }
+  if (key == "drawing" && f.size() == 2) return read_drawing(l, out);
+  if (key == "hatch" && f.size() >= 2 && f.size() <= 4) return read_hatch(l, out);
+  if (is_view_setting(key) && f.size() == (key == "dash" ? 3u : 2u))
+    return read_view_setting(l, out);
+  if (key == "outline" && l.on_off()) {
+    out->outline = f[1] == "on";
+    return {};
+  }
+  if (key == "intersections" && l.on_off()) {
+    out->intersections = f[1] == "on";
+    j.hidden.intersections = out->intersections;
+    return {};
+  }
+  if (key == "halo") {
+    uint32_t v32 = 0;
+    if (!l.number(0, 1048575, &v32)) return l.bad("halo needs a width in [0, 1048575] steps");
+    j.draw.halo = int32_t(v32);
+    return {};
+  }
+  if (key == "halo-mode" && f.size() == 2 && (f[1] == "paper" || f[1] == "exact")) {
+    j.draw.mode = f[1] == "exact" ? HaloMode::kExact : HaloMode::kPaper;
+    return {};
+  }
+  if (key == "effects" && f.size() >= 2) return read_effects(l, &j.effects);
+  if (key == "finish") {
+    if (f.size() != 2 || (f[1] != "home" && f[1] != "stay"))
+      return l.bad("finish is home (end pen up at the origin, the default) or stay");
+    j.finish_home = f[1] == "home";
+    return {};
+  }
+  if (key == "kinematics" && f.size() == 2 && (f[1] == "cartesian" || f[1] == "corexy")) {
+    j.machine.kinematics = f[1] == "corexy" ? Kinematics::kCoreXY : Kinematics::kCartesian;
+    return {};
+  }
+  if (key == "steps" && f.size() == 2) return read_steps(l, &j.machine);
+  if (key == "backlash" && f.size() == 3) return read_backlash(l, &j.machine);
+  for (const NumberSetting& s : kNumberSettings)
+    if (key == s.key) return l.number(s.lo, s.hi, s.field(out)) ? InputError{} : l.bad(s.wrong);
+  return l.bad(unknown_or_malformed(f));
+}
+
+// What no one line shows: that there is a scene, that it can make the drawing, and that the
+// machine's settings work together.
+InputError check_job(const std::string& path, const std::map<std::string, int>& key_lines,
+                     JobFile* out) {
+  JobSpec& j = out->spec;
   if (out->scene_path.empty()) return {path, 0, "no 'scene' line"};
   const bool obj = out->scene_path.size() > 4 &&
                    out->scene_path.compare(out->scene_path.size() - 4, 4, ".obj") == 0;
@@ -248,6 +311,24 @@ InputError read_job_file(const std::string& path, JobFile* out) {
   const Status s = validate(j.machine);
   if (!ok(s)) return machine_problem(path, j.machine, s, key_lines);
   return {};
+}
+
+}  // namespace
+
+InputError read_job_file(const std::string& path, JobFile* out) {
+  std::ifstream in(path);
+  if (!in) return {path, 0, "cannot open"};
+  *out = JobFile{};
+  LineReader reader(in);
+  std::vector<std::string> f;
+  std::map<std::string, int> key_lines;  // where each setting was last made
+  while (reader.next(&f)) {
+    key_lines[f[0]] = reader.line();
+    const InputError e = read_setting(JobLine{path, reader.line(), f}, out);
+    if (e.failed()) return e;
+  }
+  if (!reader.error().empty()) return {path, reader.line(), reader.error()};
+  return check_job(path, key_lines, out);
 }
 
 }  // namespace haloplot::host

@@ -29,6 +29,13 @@ qemu_linked() {
     -kernel "$2" > "$work/fw.out" 2> "$work/qemu.err" &
   qemu_pid=$!
 }
+# `haloplot send JOB [options]` to the controller that qemu_linked started. Each reply may take
+# up to 30 s, not the 3 s a serial link wants: on a loaded machine the emulated controller
+# can answer late, and a request resent 20 times unanswered would fail the test. Damaged
+# frames are still found at once (the controller NAKs them; the tests' damaged sessions see
+# no timeouts), and a dead controller still fails it: its socket closes and `send` gives up
+# at once, and qemu_linked's timeout ends a hung one.
+send_job() { "$tool" send "$1" --port "$work/link.sock" --reply-timeout 30000 "${@:2}"; }
 # A trace file's CRC-32 and length (gzip's trailer holds the CRC-32 of what it compressed),
 # as a test image prints them for its own trace: "CRC BYTES".
 trace_digest() {

@@ -120,7 +120,7 @@ qemu_linked 600 "$fw/fw_plotter_qemu.elf"
 
 # 1. Too large: refused by name (the controller keeps serving).
 start=$SECONDS
-if "$tool" send huge.job --port "$work/link.sock" > huge.out 2>&1; then
+if send_job huge.job > huge.out 2>&1; then
   bad "an oversized scene was accepted"
 elif grep -q "scene too large" huge.out; then
   ok
@@ -129,7 +129,7 @@ else
 fi
 # 2. Stop a plot by abort, then one by the limit switch, each after 20,000 step events.
 for how in abort limit; do
-  "$tool" send plot.job --port "$work/link.sock" --stop-after 20000 --stop "$how" > "stop_$how.out" 2>&1
+  send_job plot.job --stop-after 20000 --stop "$how" > "stop_$how.out" 2>&1
   rc=$?
   events=$(sed -n 's/^stopped by .* after \([0-9]*\) step events.*$/\1/p' "stop_$how.out")
   if [ "$rc" -eq 0 ] && [ -n "$events" ] && [ "$events" -lt 20100 ]; then
@@ -141,23 +141,23 @@ for how in abort limit; do
   [ "$how" = abort ] && aborted_at=$events
 done
 # 2b. Go on with the aborted plot from where it stopped (as after a reset).
-"$tool" send plot.job --port "$work/link.sock" --resume "${aborted_at:-1}" > resume.out 2>&1
+send_job plot.job --resume "${aborted_at:-1}" > resume.out 2>&1
 rc=$?
 if [ "$rc" -eq 0 ]; then ok; else bad "resume ($rc): $(cat resume.out)"; fi
 "$tool" sim plot.job -o host_resume.trace --resume-at "${aborted_at:-1}"
 if [ "$solids" = yes ]; then
 # 3. A solid model, hidden lines worked out on the controller.
-"$tool" send solid.job --port "$work/link.sock" > solid.out 2>&1
+send_job solid.job > solid.out 2>&1
 rc=$?
 if [ "$rc" -eq 0 ]; then ok; else bad "solid send failed ($rc): $(cat solid.out)"; fi
 # 3b. Solids that pass through each other.
-"$tool" send pierced.job --port "$work/link.sock" > pierced.out 2>&1
+send_job pierced.job > pierced.out 2>&1
 rc=$?
 if [ "$rc" -eq 0 ]; then ok; else bad "pierced send failed ($rc): $(cat pierced.out)"; fi
-"$tool" send torus_sphere.job --port "$work/link.sock" > torus_sphere.out 2>&1
+send_job torus_sphere.job > torus_sphere.out 2>&1
 rc=$?
 if [ "$rc" -eq 0 ]; then ok; else bad "sphere-through-torus send failed ($rc): $(cat torus_sphere.out)"; fi
-"$tool" send torus_sphere_bands.job --port "$work/link.sock" > torus_sphere_bands.out 2>&1
+send_job torus_sphere_bands.job > torus_sphere_bands.out 2>&1
 rc=$?
 if [ "$rc" -eq 0 ] && grep -q "^streamed [0-9]* bands" torus_sphere_bands.out; then
   ok
@@ -166,7 +166,7 @@ else
 fi
 fi
 # 4. A streamed plot, with damaged frames on the way.
-"$tool" send stream.job --port "$work/link.sock" --corrupt-every 7 --seed 3 > stream.out 2>&1
+send_job stream.job --corrupt-every 7 --seed 3 > stream.out 2>&1
 rc=$?
 if [ "$rc" -eq 0 ] && grep -q "^streamed $(sed -n 's/^bands=//p' stream_sim.txt) bands" stream.out; then
   ok
@@ -174,7 +174,7 @@ else
   bad "streamed send ($rc): $(cat stream.out)"
 fi
 # 5. A feed hold over the link, then resume.
-"$tool" send plot.job --port "$work/link.sock" --pause-after 20000 > pause.out 2>&1
+send_job plot.job --pause-after 20000 > pause.out 2>&1
 rc=$?
 if [ "$rc" -eq 0 ] && grep -q "^paused at rest after" pause.out; then
   ok
@@ -184,7 +184,7 @@ else
 fi
 # 6. Plot and re-plot with damaged frames on the way (a new connection: `send` reconnects if
 #    QEMU still holds the last one).
-"$tool" send plot.job --port "$work/link.sock" --replot 120 --corrupt-every 5 \
+send_job plot.job --replot 120 --corrupt-every 5 \
   --truncate-every 11 --seed 7 --test-exit > send.out 2>&1
 end_session $?
 

@@ -35,7 +35,7 @@ fi
 
 qemu_linked 1500 "$fw/fw_plotter_qemu.elf"
 start=$SECONDS
-"$tool" send demo.job --port "$work/link.sock" --trace-digest --test-exit > send.out 2>&1
+send_job demo.job --trace-digest --test-exit > send.out 2>&1
 end_session $?
 if same_digest fw.out "$host"; then
   ok
