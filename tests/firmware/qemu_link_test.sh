@@ -116,7 +116,7 @@ fi
 { cat plot.job; echo "arena 2048"; } > stream.job
 "$tool" sim stream.job -o host_stream.trace --stats 2> stream_sim.txt
 
-qemu_linked 600 "$fw/fw_plotter_qemu.elf"
+qemu_linked 3000 "$fw/fw_plotter_qemu.elf"
 
 # 1. Too large: refused by name (the controller keeps serving).
 start=$SECONDS

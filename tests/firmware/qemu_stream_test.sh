@@ -33,7 +33,7 @@ else
   host=$(demo_job_digest 65536 "steps 1/4")
 fi
 
-qemu_linked 1500 "$fw/fw_plotter_qemu.elf"
+qemu_linked 3000 "$fw/fw_plotter_qemu.elf"
 start=$SECONDS
 send_job demo.job --trace-digest --test-exit > send.out 2>&1
 end_session $?
