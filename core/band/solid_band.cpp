@@ -40,13 +40,15 @@ struct Run {
   bool hidden;
 };
 
-// The hidden-line run's sink for one band. Pieces are merged into runs of equal q here, the
-// way one unbanded run merges them, across the band's borders too: an edge's pieces are taken
-// from its lower end up (a falling edge's in reverse), the first continues the run carried
-// from below, the last is carried up. A piece too short to test takes the q of the run below
-// it, as in the unbanded run, except a sliver that the top border cut off a longer piece: its
-// q is the piece's above the border, so the run below it is carried up unfinished and the band
-// above decides where it ends.
+// The hidden-line run's sink for one band. Pieces are merged into runs here, of equal q (the
+// way one unbanded run merges them), and hidden-dashed, hidden ones whatever their q (a hidden
+// run's dashes are measured from its start, solid/modes.h: a change of q behind the front faces
+// starts no new pattern, in the whole-model plot either), across the band's borders too: an
+// edge's pieces are taken from its lower end up (a falling edge's in reverse), the first
+// continues the run carried from below, the last is carried up. A piece too short to test takes
+// the q of the run below it, as in the unbanded run, except a sliver that the top border cut
+// off a longer piece: its q is the piece's above the border, so the run below it is carried up
+// unfinished and the band above decides where it ends.
 struct SolidSink {
   BandConductor::Attempt* a;
   const StrokeStyle* style;
@@ -185,6 +187,7 @@ Status SolidSink::flush_edge() {
   const uint32_t id = a->g.id(local);
   const RowWindow w = row_window(e, a->y0, a->y1);
   const bool up = rising(e);
+  const bool dashed = style->mode == SolidMode::kHiddenDashed;  // hidden runs whatever their q
   Run cur{0, 0, 0, false};
   bool have = false;
   Status s = Status::kOk;
@@ -223,7 +226,7 @@ Status SolidSink::flush_edge() {
       p.q = have ? cur.q : 0;
       p.hidden = have ? cur.hidden : 0;
     }
-    if (have && cur.q == p.q && cur.hidden == (p.hidden != 0)) {
+    if (have && cur.hidden == (p.hidden != 0) && (cur.q == p.q || (cur.hidden && dashed))) {
       cur.upper = upper;
     } else {
       if (have) s = emit(local, up, cur);

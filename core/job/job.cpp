@@ -227,6 +227,7 @@ struct StrokeCollector {
   uint32_t capacity = 0, count = 0;
   StrokeStyle style;
   uint32_t n_drawn = 0;
+  DashedRuns runs;  // a hidden run's dashes from its start, across its pieces (solid/modes.h)
 
   Status add(const Span& s) {
     if (count == capacity) return Status::kSinkFull;
@@ -238,16 +239,24 @@ struct StrokeCollector {
     self->out = reinterpret_cast<Segment2*>(tail);
     const size_t n = bytes / sizeof(Segment2);
     self->capacity = n > 0x7fffffffu ? 0x7fffffffu : uint32_t(n);
+    self->runs.clear();
   }
   static Status piece(void* ctx, const HiddenPiece& p) {
     auto* self = static_cast<StrokeCollector*>(ctx);
-    return piece_strokes(*p.geometry, p.edge, p.edge >= self->n_drawn, p.t0, p.t1, p.hidden,
-                         self->style, [self](const Span& s) { return self->add(s); });
+    return self->runs.piece(*p.geometry, p.edge, p.edge >= self->n_drawn, p.t0, p.t1, p.hidden, p.q,
+                            self->style, Emit{self});
   }
   static Status outline(void* ctx, const HiddenPiece& p) {
     auto* self = static_cast<StrokeCollector*>(ctx);
-    return self->add(make_stroke(*p.geometry, p.edge, p.t0, p.t1));
+    const Status s = self->finish();
+    return ok(s) ? self->add(make_stroke(*p.geometry, p.edge, p.t0, p.t1)) : s;
   }
+  // The last hidden run's dashes.
+  Status finish() { return runs.finish(style, Emit{this}); }
+  struct Emit {
+    StrokeCollector* self;
+    Status operator()(const Span& s, int32_t) const { return self->add(s); }
+  };
 };
 
 }  // namespace
@@ -288,6 +297,7 @@ Status job_prepare_solid(const JobSpec& steps, const SolidInput& in, uint32_t cr
                    HiddenSink{&StrokeCollector::begin, &StrokeCollector::piece,
                               &StrokeCollector::outline, &collect},
                    report);
+  if (ok(s)) s = collect.finish();  // into the tail still: nothing else uses it now
   c.cut = report->cut;
   ++c.cut_runs;
   if (counters) *counters = c;

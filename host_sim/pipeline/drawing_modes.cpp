@@ -22,18 +22,21 @@ std::string qi_text(int32_t halves) {
 ModeDrawing make_mode_drawing(const SolidRun& run, const ModeSpec& spec) {
   ModeDrawing d;
   const StrokeStyle style{spec.mode, spec.dash_steps, spec.gap_steps};
+  // As the core's job strokes them: a hidden run's dashes from its start, across its pieces.
+  DashedRuns runs;
+  auto keep = [&](const Span& s, int32_t q) {
+    d.spans.push_back(s);
+    d.qi.push_back(q);
+    return Status::kOk;
+  };
   auto add = [&](const SolidPiece& p, bool diagonal) {
-    piece_strokes(run.edges[p.edge], p.edge, diagonal, p.t0, p.t1, p.hidden, style,
-                  [&](const Span& s) {
-                    d.spans.push_back(s);
-                    d.qi.push_back(p.q);
-                    return Status::kOk;
-                  });
+    runs.piece(run.edges[p.edge], p.edge, diagonal, p.t0, p.t1, p.hidden, p.q, style, keep);
   };
   for (const SolidPiece& p : run.pieces) add(p, false);
   for (const SolidPiece& p : run.contour_diagonals) add(p, true);
   // Intersection lines as the core's job draws them: visible parts only, like a contour diagonal.
   for (const SolidPiece& p : run.intersections) add(p, true);
+  runs.finish(style, keep);
   // Hatching likewise, after them (Span::edge = the polygon).
   for (size_t k = 0; k < run.hatch.size(); ++k) {
     const SolidPiece& p = run.hatch[k];

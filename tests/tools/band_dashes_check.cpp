@@ -1,0 +1,339 @@
+// band_dashes_check WHOLE.trace BANDED.trace: does a banded plot draw the whole-model plot's
+// strokes? Written from the trace format alone (docs/formats.md, text version 2), sharing nothing
+// with the code that plots: each trace is replayed move by move (a `b` line is one straight move
+// of the carriage; its `s` lines only time it), and the moves made with the pen down are kept,
+// in plot steps.
+//
+// A banded plot cuts strokes at the bands' borders and a whole-model plot may cut them where the
+// pieces of an edge meet, so neither trace's moves are the picture's strokes as such. Both sets
+// are cut at every stroke end of either trace that lies on a move (within a step of it, more
+// than a step from its ends): the two are then the same pieces, each with a piece of the other
+// trace whose ends lie within one step of its own, one to one. A dash that starts or ends
+// elsewhere in one plot (a short dash, a long gap, a phase restarted at a border) leaves a piece
+// without its partner, and so does a stroke drawn twice or left out.
+//
+// Prints the counts and the worst end distance; exit status 1 when the drawings differ.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace {
+
+struct Pt {
+  double x, y;
+};
+struct Seg {
+  Pt a, b;
+};
+
+struct Drawing {
+  std::vector<Seg> moves;  // pen-down moves, in plot steps
+  uint32_t pen_downs = 0;
+  std::string error;
+};
+
+Drawing read_trace(const std::string& path) {
+  Drawing d;
+  std::ifstream in(path);
+  std::string line;
+  if (!std::getline(in, line) || line != "haloplot-trace 2") {
+    d.error = path + ": not a text trace, version 2";
+    return d;
+  }
+  bool corexy = false, pen = false, in_move = false;
+  int64_t num = 1, den = 1;
+  int64_t m[2] = {0, 0};
+  int dom = 0, dir[2] = {1, 1};
+  int64_t major = 0, minor = 0, events = 0;
+  auto plot = [&](const int64_t* p) {
+    double x = double(p[0]), y = double(p[1]);
+    if (corexy) {  // motor 0 = x + y, motor 1 = x - y
+      x = double(p[0] + p[1]) / 2;
+      y = double(p[0] - p[1]) / 2;
+    }
+    return Pt{x * double(den) / double(num), y * double(den) / double(num)};
+  };
+  auto finish = [&]() {
+    if (!in_move) return;
+    in_move = false;
+    if (events != major) d.error = path + ": a move's events do not add up to MAJOR";
+    const Pt from = plot(m);
+    m[dom] += dir[dom] * major;
+    m[1 - dom] += dir[1 - dom] * minor;
+    const Pt to = plot(m);
+    if (pen && (from.x != to.x || from.y != to.y)) d.moves.push_back({from, to});
+  };
+  while (std::getline(in, line)) {
+    std::istringstream f(line);
+    std::string k;
+    f >> k;
+    if (k == "b") {
+      finish();
+      std::string dirs;
+      f >> dom >> major >> minor >> dirs;
+      if (!f || dom < 0 || dom > 1 || dirs.size() != 2) d.error = path + ": bad line: " + line;
+      dir[0] = dirs[0] == '-' ? -1 : 1;
+      dir[1] = dirs[1] == '-' ? -1 : 1;
+      events = 0;
+      in_move = true;
+    } else if (k == "s") {
+      int64_t count = 0;
+      f >> count;
+      events += count;
+    } else if (k == "p") {
+      finish();
+      std::string tick, state;
+      f >> tick >> state;
+      pen = state == "down";
+      if (pen) ++d.pen_downs;
+    } else if (k == "kinematics") {
+      std::string v;
+      f >> v;
+      corexy = v == "corexy";
+    } else if (k == "steps") {
+      char slash = 0;
+      f >> num >> slash >> den;
+      if (num < 1 || den < 1 || slash != '/') d.error = path + ": bad steps line";
+    } else if (k == "backlash") {
+      int64_t a = 0, b = 0;
+      f >> a >> b;
+      if (a != 0 || b != 0) d.error = path + ": backlash take-ups are not replayed here";
+    } else if (k == "end") {
+      finish();
+    }
+  }
+  finish();
+  // With `finish home` the plot ends at the origin: a check on this replay.
+  if (m[0] != 0 || m[1] != 0) d.error = path + ": the replay does not end at the origin";
+  return d;
+}
+
+double dist(Pt p, Pt q) { return std::hypot(p.x - q.x, p.y - q.y); }
+
+constexpr double kTol = 1.0;  // one plot step
+constexpr double kCell = 16;  // the grid of stroke ends
+
+int64_t cell_key(double x, double y) {
+  const int64_t cx = int64_t(std::floor(x / kCell)), cy = int64_t(std::floor(y / kCell));
+  return (cx + (int64_t{1} << 30)) * (int64_t{1} << 31) + (cy + (int64_t{1} << 30));
+}
+
+// Stroke ends, by grid cell.
+struct Ends {
+  std::vector<Pt> points;
+  std::unordered_map<int64_t, std::vector<uint32_t>> cells;
+  void add(Pt p) {
+    points.push_back(p);
+    cells[cell_key(p.x, p.y)].push_back(uint32_t(points.size() - 1));
+  }
+  bool near(Pt p) const {
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy) {
+        const auto c = cells.find(cell_key(p.x + dx * kCell, p.y + dy * kCell));
+        if (c == cells.end()) continue;
+        for (uint32_t j : c->second)
+          if (dist(points[j], p) <= kTol) return true;
+      }
+    return false;
+  }
+};
+
+Ends move_ends(const std::vector<Seg>& moves) {
+  Ends e;
+  for (const Seg& m : moves) {
+    e.add(m.a);
+    e.add(m.b);
+  }
+  return e;
+}
+
+// A drawing's strokes: its moves joined where exactly two of them meet, the other drawing has no
+// move ending within a step (a vertex both have stays a stroke end however straight the edges
+// run on through it), and the point, with every point joined before, lies within kBend of the
+// joined stroke's chord (a border's cut, rounded to a step: each end is within half a step of
+// the true line in x and y).
+constexpr double kBend = 1.5;
+
+double off_chord(Pt a, Pt b, Pt p) {
+  const double len = dist(a, b);
+  if (len == 0) return dist(a, p);
+  return std::fabs((p.y - a.y) * (b.x - a.x) - (p.x - a.x) * (b.y - a.y)) / len;
+}
+
+std::vector<Seg> joined(const std::vector<Seg>& moves, const Ends& other) {
+  struct Stroke {
+    Pt a, b;
+    std::vector<Pt> inside;
+    bool alive = true;
+  };
+  std::vector<Stroke> st;
+  std::map<std::pair<double, double>, std::vector<uint32_t>> at;  // strokes ending there
+  for (const Seg& m : moves) {
+    st.push_back({m.a, m.b, {}, true});
+    at[{m.a.x, m.a.y}].push_back(uint32_t(st.size() - 1));
+    at[{m.b.x, m.b.y}].push_back(uint32_t(st.size() - 1));
+  }
+  for (auto& [key, ids] : at) {
+    const Pt p{key.first, key.second};
+    if (ids.size() != 2 || ids[0] == ids[1] || other.near(p)) continue;
+    Stroke &s = st[ids[0]], &t = st[ids[1]];
+    const Pt from = s.a.x == p.x && s.a.y == p.y ? s.b : s.a;
+    const Pt to = t.a.x == p.x && t.a.y == p.y ? t.b : t.a;
+    bool straight = off_chord(from, to, p) <= kBend &&
+                    (to.x - p.x) * (p.x - from.x) + (to.y - p.y) * (p.y - from.y) > 0;
+    for (const Pt& q : s.inside) straight = straight && off_chord(from, to, q) <= kBend;
+    for (const Pt& q : t.inside) straight = straight && off_chord(from, to, q) <= kBend;
+    if (!straight) continue;
+    const uint32_t gone = ids[1], kept = ids[0];
+    s.inside.insert(s.inside.end(), t.inside.begin(), t.inside.end());
+    s.inside.push_back(p);
+    s.a = from;
+    s.b = to;
+    t.alive = false;
+    for (uint32_t& id : at[{to.x, to.y}])  // t's far end is s's now
+      if (id == gone) id = kept;
+    ids.clear();
+  }
+  std::vector<Seg> out;
+  for (const Stroke& s : st)
+    if (s.alive) out.push_back({s.a, s.b});
+  return out;
+}
+
+// The moves cut at every stroke end within a step of them (more than a step from their ends).
+std::vector<Seg> cut(const std::vector<Seg>& moves, const Ends& ends) {
+  std::vector<Seg> out;
+  std::vector<uint32_t> stamp(ends.points.size(), UINT32_MAX);
+  for (uint32_t i = 0; i < moves.size(); ++i) {
+    const Seg& s = moves[i];
+    const double len = dist(s.a, s.b), ux = (s.b.x - s.a.x) / len, uy = (s.b.y - s.a.y) / len;
+    std::vector<double> at;
+    const int samples = int(len / kCell) + 1;
+    for (int k = 0; k <= samples; ++k) {
+      const double u = len * k / samples;
+      const double x = s.a.x + ux * u, y = s.a.y + uy * u;
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy) {
+          const auto c = ends.cells.find(cell_key(x + dx * kCell, y + dy * kCell));
+          if (c == ends.cells.end()) continue;
+          for (uint32_t j : c->second) {
+            if (stamp[j] == i) continue;
+            stamp[j] = i;
+            const Pt p = ends.points[j];
+            const double along = (p.x - s.a.x) * ux + (p.y - s.a.y) * uy;
+            const double off = std::fabs((p.y - s.a.y) * ux - (p.x - s.a.x) * uy);
+            if (off <= kTol && along > kTol && along < len - kTol) at.push_back(along);
+          }
+        }
+    }
+    std::sort(at.begin(), at.end());
+    Pt from = s.a;
+    double last = 0;
+    for (double u : at) {
+      if (u - last <= kTol) continue;  // one cut for ends within a step of each other
+      const Pt p{s.a.x + ux * u, s.a.y + uy * u};
+      out.push_back({from, p});
+      from = p;
+      last = u;
+    }
+    out.push_back({from, s.b});
+  }
+  return out;
+}
+
+// Each piece of `a` paired with its own piece of `b` (ends within a step, either way round);
+// the unpaired ones of `a` listed, the worst paired distance in *worst. A piece no longer than a
+// step (a dot: a band's sliver of an edge by a vertex) pairs with nothing: both its ends must lie
+// within a step of a stroke end of the other drawing (`b_ends`); *dots counts them.
+std::vector<Seg> unpaired(const std::vector<Seg>& a, const std::vector<Seg>& b, const Ends& b_ends,
+                          double* worst, size_t* dots) {
+  std::unordered_map<int64_t, std::vector<uint32_t>> by_end;
+  for (uint32_t j = 0; j < b.size(); ++j) {
+    by_end[cell_key(b[j].a.x, b[j].a.y)].push_back(j);
+    by_end[cell_key(b[j].b.x, b[j].b.y)].push_back(j);
+  }
+  std::vector<bool> used(b.size(), false);
+  std::vector<Seg> left;
+  for (const Seg& s : a) {
+    if (dist(s.a, s.b) <= kTol) {
+      if (b_ends.near(s.a) && b_ends.near(s.b))
+        ++*dots;
+      else
+        left.push_back(s);
+      continue;
+    }
+    double best = 1e300;
+    uint32_t pick = UINT32_MAX;
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy) {
+        const auto c = by_end.find(cell_key(s.a.x + dx * kCell, s.a.y + dy * kCell));
+        if (c == by_end.end()) continue;
+        for (uint32_t j : c->second) {
+          if (used[j]) continue;
+          const Seg& t = b[j];
+          const double d = std::min(std::max(dist(s.a, t.a), dist(s.b, t.b)),
+                                    std::max(dist(s.a, t.b), dist(s.b, t.a)));
+          if (d < best) {
+            best = d;
+            pick = j;
+          }
+        }
+      }
+    if (pick != UINT32_MAX && best <= kTol) {
+      used[pick] = true;
+      *worst = std::max(*worst, best);
+    } else {
+      left.push_back(s);
+    }
+  }
+  return left;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    std::fprintf(stderr, "usage: band_dashes_check WHOLE.trace BANDED.trace\n");
+    return 2;
+  }
+  const Drawing w = read_trace(argv[1]), b = read_trace(argv[2]);
+  for (const Drawing* d : {&w, &b})
+    if (!d->error.empty()) {
+      std::fprintf(stderr, "band_dashes_check: %s\n", d->error.c_str());
+      return 2;
+    }
+  const std::vector<Seg> sw = joined(w.moves, move_ends(b.moves)),
+                         sb = joined(b.moves, move_ends(w.moves));
+  Ends ends;
+  for (const auto* strokes : {&sw, &sb})
+    for (const Seg& s : *strokes) {
+      ends.add(s.a);
+      ends.add(s.b);
+    }
+  const std::vector<Seg> pw = cut(sw, ends), pb = cut(sb, ends);
+  double worst = 0;
+  size_t dots = 0;
+  const std::vector<Seg> lw = unpaired(pw, pb, move_ends(sb), &worst, &dots),
+                         lb = unpaired(pb, pw, move_ends(sw), &worst, &dots);
+  std::printf(
+      "whole: %zu pen-down moves in %u pen-downs, %zu strokes; banded: %zu moves in %u "
+      "pen-downs, %zu strokes joined; %zu and %zu pieces cut at each other's ends (%zu dots); "
+      "unpaired: %zu whole, %zu banded; worst end distance %.2f steps\n",
+      w.moves.size(), w.pen_downs, sw.size(), b.moves.size(), b.pen_downs, sb.size(), pw.size(),
+      pb.size(), dots, lw.size(), lb.size(), worst);
+  int shown = 0;
+  for (const auto* list : {&lw, &lb})
+    for (const Seg& s : *list)
+      if (shown++ < 8)
+        std::printf("  only in the %s plot: (%.1f, %.1f) - (%.1f, %.1f)\n",
+                    list == &lw ? "whole-model" : "banded", s.a.x, s.a.y, s.b.x, s.b.y);
+  return lw.empty() && lb.empty() ? 0 : 1;
+}
