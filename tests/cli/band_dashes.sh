@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 32: a hidden-line plot in bands draws the whole-model plot, dash for dash. For each
+# A hidden-line plot in bands draws the whole-model plot, dash for dash. For each
 # solid (the 6 x 6 cubes of Figure 4, a torus, a sphere through a torus), hidden-dashed with
 # outlines and hatching (the cubes also without hatching, as reported), `haloplot sim` plots the
 # job whole and with arenas small enough for several bands; band_dashes_check
