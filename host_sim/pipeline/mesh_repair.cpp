@@ -225,4 +225,88 @@ void orient_shells(ObjModel* model, RepairReport* report) {
   }
 }
 
+namespace {
+
+using Normal = std::array<__int128, 3>;
+
+// Newell's normal: twice the area vector, exact for a planar polygon on integer vertices.
+Normal newell(const ObjModel& m, const std::vector<uint32_t>& c) {
+  Normal n = {0, 0, 0};
+  for (size_t i = 0; i < c.size(); ++i) {
+    const Point3& a = m.vertices[c[i]];
+    const Point3& b = m.vertices[c[(i + 1) % c.size()]];
+    n[0] += __int128(int64_t(a.y) - b.y) * (int64_t(a.z) + b.z);
+    n[1] += __int128(int64_t(a.z) - b.z) * (int64_t(a.x) + b.x);
+    n[2] += __int128(int64_t(a.x) - b.x) * (int64_t(a.y) + b.y);
+  }
+  return n;
+}
+
+bool planar(const ObjModel& m, const std::vector<uint32_t>& c, const Normal& n) {
+  const Point3& o = m.vertices[c[0]];
+  for (uint32_t v : c) {
+    const Point3& p = m.vertices[v];
+    if (n[0] * (int64_t(p.x) - o.x) + n[1] * (int64_t(p.y) - o.y) + n[2] * (int64_t(p.z) - o.z) !=
+        0)
+      return false;
+  }
+  return true;
+}
+
+bool is_zero(const Normal& n) { return n[0] == 0 && n[1] == 0 && n[2] == 0; }
+
+// Do faces f and g count as one flat surface across their shared side?
+bool flat_between(const ObjModel& m, const std::vector<Normal>& n, uint32_t f, uint32_t g,
+                  double crease_deg) {
+  const Normal& a = n[f];
+  const Normal& b = n[g];
+  if (is_zero(a) || is_zero(b)) return false;
+  if (crease_deg > 0) {
+    const double dot =
+        double(a[0]) * double(b[0]) + double(a[1]) * double(b[1]) + double(a[2]) * double(b[2]);
+    const double la = std::sqrt(double(a[0]) * double(a[0]) + double(a[1]) * double(a[1]) +
+                                double(a[2]) * double(a[2]));
+    const double lb = std::sqrt(double(b[0]) * double(b[0]) + double(b[1]) * double(b[1]) +
+                                double(b[2]) * double(b[2]));
+    const double cos_limit = std::cos(crease_deg * 3.14159265358979323846 / 180);
+    return dot > cos_limit * la * lb;
+  }
+  // Exactly: both planar, normals parallel and the same way (then, sharing a side, one plane).
+  // Each normal component is below 2^62 (vertices within 2^20), so the products fit.
+  const __int128 cx = a[1] * b[2] - a[2] * b[1];
+  const __int128 cy = a[2] * b[0] - a[0] * b[2];
+  const __int128 cz = a[0] * b[1] - a[1] * b[0];
+  const __int128 dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  return cx == 0 && cy == 0 && cz == 0 && dot > 0 && planar(m, m.faces[f], a) &&
+         planar(m, m.faces[g], b);
+}
+
+}  // namespace
+
+void drop_flat_edges(ObjModel* model, double crease_deg, RepairReport* report) {
+  if (crease_deg < 0) return;
+  std::unordered_map<uint64_t, std::vector<uint32_t>> faces_of;
+  for (uint32_t f = 0; f < model->faces.size(); ++f) {
+    const std::vector<uint32_t>& c = model->faces[f];
+    for (size_t i = 0; i < c.size(); ++i) {
+      std::vector<uint32_t>& list = faces_of[pair_key(c[i], c[(i + 1) % c.size()])];
+      if (list.empty() || list.back() != f) list.push_back(f);
+    }
+  }
+  std::vector<Normal> normals;
+  for (const std::vector<uint32_t>& c : model->faces) normals.push_back(newell(*model, c));
+  std::vector<uint32_t> kept;
+  for (size_t e = 0; e + 1 < model->edge_pairs.size(); e += 2) {
+    const uint32_t a = model->edge_pairs[e], b = model->edge_pairs[e + 1];
+    auto it = faces_of.find(pair_key(a, b));
+    if (it != faces_of.end() && it->second.size() == 2 &&
+        flat_between(*model, normals, it->second[0], it->second[1], crease_deg)) {
+      ++report->flat_edges;
+      continue;
+    }
+    kept.insert(kept.end(), {a, b});
+  }
+  model->edge_pairs = kept;
+}
+
 }  // namespace haloplot::host

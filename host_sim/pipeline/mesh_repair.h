@@ -27,6 +27,7 @@ struct RepairReport {
   uint32_t flipped_faces = 0;        // faces turned to agree with their shell
   uint32_t turned_shells = 0;        // closed shells turned outward (inside out before)
   uint32_t unorientable_shells = 0;  // left as given: non-manifold sides or a twist
+  uint32_t flat_edges = 0;           // drawn edges between faces within the crease angle
 };
 
 // Welds vertices within `tolerance` world units (0: the same position only). Faces, their
@@ -35,5 +36,13 @@ void weld_vertices(ObjModel* model, double tolerance, RepairReport* report);
 
 // Orients every shell's faces as above.
 void orient_shells(ObjModel* model, RepairReport* report);
+
+// Creases: a drawn edge between exactly two faces whose normals differ by less than
+// `crease_deg` degrees is no longer a drawn edge, so it is drawn only where it is a contour
+// (the core treats it as a diagonal inside a polygon). 0 degrees: only between two planar
+// faces in one plane facing the same way, decided exactly on the integer vertices (the
+// diagonals of a flat face split into triangles). Negative: every edge kept. Run it after
+// orient_shells (the normals of faces wound different ways point apart).
+void drop_flat_edges(ObjModel* model, double crease_deg, RepairReport* report);
 
 }  // namespace haloplot::host
