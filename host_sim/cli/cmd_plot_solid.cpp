@@ -92,7 +92,10 @@ int cmd_plot_solid(const Options& o) {
   SolidRun run;
   const Status s = run_solid_options(scene, so, &run);
   if (!ok(s)) return fail(o.positional[0] + ": hidden lines failed: " + status_name(s));
-  if (!run.fallback_reason.empty() && so.method == HiddenMethod::kAuto)
+  if (!run.fallback_reason.empty() && so.method == HiddenMethod::kAuto &&
+      !scene.repair_note.empty())
+    say_repair_note(scene);
+  else if (!run.fallback_reason.empty() && so.method == HiddenMethod::kAuto)
     std::cerr << "haloplot: " << o.positional[0] << ": " << run.fallback_reason
               << ": hidden lines by the topology-free fallback\n";
   // Decided in the scene's units (dashes and hatch spacing converted), drawn in steps.

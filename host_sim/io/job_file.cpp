@@ -7,6 +7,7 @@
 #include "cli/options.h"
 #include "cli/solid_options.h"
 #include "io/line_reader.h"
+#include "io/mesh_file.h"
 #include "pipeline/scene_input.h"
 
 namespace haloplot::host {
@@ -15,13 +16,15 @@ namespace {
 // Every key a job file may hold, with the form of its value (for the message when a value is
 // malformed, and for a suggestion when a key is misspelt).
 const std::map<std::string, std::string> kKeys = {
-    {"scene", "FILE (.edges or .obj)"},
+    {"scene", "FILE (.edges, .obj, .stl or .ply)"},
     {"drawing", "all | haloed | hidden-removed | hidden-dashed"},
     {"hatch", "SPACING ANGLE TURN (mm, degrees)"},
     {"view", "AZ,EL (degrees)"},
     {"perspective", "D (world units)"},
     {"substep", "S (sub-step bits for an .obj scene)"},
     {"up", "y | z (the OBJ file's up axis)"},
+    {"weld", "EPS | off (weld a model's vertices within EPS)"},
+    {"crease", "DEG | off (edges between faces within DEG drawn only as contours)"},
     {"method", "auto | qi | fallback"},
     {"dash", "DASH GAP (mm)"},
     {"outline", "on | off"},
@@ -186,7 +189,7 @@ InputError read_hatch(const JobLine& l, JobFile* out) {
 
 bool is_view_setting(const std::string& key) {
   return key == "view" || key == "perspective" || key == "method" || key == "dash" || key == "up" ||
-         key == "substep";
+         key == "substep" || key == "weld" || key == "crease";
 }
 
 // view, perspective, method, dash, up, substep: kept as the plot command's options.
@@ -303,10 +306,9 @@ InputError check_job(const std::string& path, const std::map<std::string, int>& 
                      JobFile* out) {
   JobSpec& j = out->spec;
   if (out->scene_path.empty()) return {path, 0, "no 'scene' line"};
-  const bool obj = out->scene_path.size() > 4 &&
-                   out->scene_path.compare(out->scene_path.size() - 4, 4, ".obj") == 0;
-  if (out->solid_options.count("--mode") != 0 && !obj)
-    return {path, 0, "drawing " + out->solid_options["--mode"] + " needs an .obj scene (faces)"};
+  if (out->solid_options.count("--mode") != 0 && !is_mesh_path(out->scene_path))
+    return {path, 0,
+            "drawing " + out->solid_options["--mode"] + " needs a model scene (.obj, .stl, .ply)"};
   if (j.draw.mode == HaloMode::kExact) j.cut.reach = j.draw.halo;
   const Status s = validate(j.machine);
   if (!ok(s)) return machine_problem(path, j.machine, s, key_lines);

@@ -80,22 +80,40 @@ InputError read_obj(std::istream& in, const std::string& name, ObjModel* out) {
   if (!reader.error().empty()) return {name, reader.line(), reader.error()};
   if (in.bad()) return {name, 0, "read error"};
   if (xyz.empty()) return {name, reader.line(), "no vertices"};
+  place_vertices(xyz, out);
+  return {};
+}
+
+void place_vertices(const std::vector<double>& xyz, ObjModel* out) {
   // Centre and scale uniformly: the largest extent spans 2^19 world units.
-  double lo[3], hi[3];
-  for (int a = 0; a < 3; ++a) {
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  for (int a = 0; a < 3 && !xyz.empty(); ++a) {
     lo[a] = hi[a] = xyz[size_t(a)];
     for (size_t i = size_t(a); i < xyz.size(); i += 3)
       lo[a] = std::min(lo[a], xyz[i]), hi[a] = std::max(hi[a], xyz[i]);
   }
   const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
   const double scale = extent > 0 ? double(1 << 19) / extent : 1.0;
+  out->scale = scale;
+  out->vertices.clear();
   for (size_t i = 0; i < xyz.size(); i += 3) {
     int32_t c[3];
     for (int a = 0; a < 3; ++a)
       c[a] = int32_t(std::lround((xyz[i + size_t(a)] - (lo[a] + hi[a]) / 2) * scale));
     out->vertices.push_back(Point3{c[0], c[1], c[2]});
   }
-  return {};
+}
+
+void edges_from_faces(ObjModel* model) {
+  model->edge_pairs.clear();
+  std::unordered_set<uint64_t> seen;
+  for (const std::vector<uint32_t>& f : model->faces)
+    for (size_t i = 0; i < f.size(); ++i) {
+      const uint32_t a = f[i], b = f[(i + 1) % f.size()];
+      const uint64_t key = uint64_t(std::min(a, b)) << 32 | std::max(a, b);
+      if (a != b && seen.insert(key).second)
+        model->edge_pairs.insert(model->edge_pairs.end(), {a, b});
+    }
 }
 
 InputError read_obj_file(const std::string& path, ObjModel* out) {

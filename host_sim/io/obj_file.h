@@ -25,9 +25,17 @@ struct ObjModel {
   std::vector<std::vector<uint32_t>> faces;  // vertex indices per face, as given
   std::vector<uint32_t> face_lines;          // the line each face was read from
   uint32_t lines = 0;                        // `l` statements read
+  double scale = 1;                          // world units per unit of the file
 };
 
 InputError read_obj(std::istream& in, const std::string& name, ObjModel* out);
+
+// The file's coordinates (x y z per vertex) into out->vertices, centred on their bounding box
+// and scaled as above (out->scale: world units per file unit). Every reader ends with it.
+void place_vertices(const std::vector<double>& xyz, ObjModel* out);
+// out->edge_pairs anew from the faces' sides, in the order they first appear (formats with no
+// lines: STL, PLY; and after welding).
+void edges_from_faces(ObjModel* model);
 
 // Which axis of the file points up. Most OBJ files are Y-up (Blender's and Maya's export
 // default, LightWave's files); haloplot's world is Z-up (the view's convention, core/view).

@@ -1,12 +1,17 @@
 #include "pipeline/scene_input.h"
 
+#include <cstdlib>
+#include <iostream>
+
 #include "cli/solid_options.h"
 #include "io/atomic_file.h"
 #include "io/edges_file.h"
 #include "io/job_file.h"
 #include "io/line_reader.h"
+#include "io/mesh_file.h"
 #include "io/obj_file.h"
 #include "io/substep_header.h"
+#include "pipeline/mesh_repair.h"
 #include "pipeline/surface_pipeline.h"
 #include "pipeline/units.h"
 #include "view/facing.h"
@@ -14,8 +19,8 @@
 
 namespace haloplot::host {
 
-const char* const kSceneOptions[5] = {"--view", "--perspective", "--dump-edges", "--up",
-                                      "--substep"};
+const char* const kSceneOptions[7] = {"--view",    "--perspective", "--dump-edges", "--up",
+                                      "--substep", "--weld",        "--crease"};
 
 namespace {
 
@@ -34,10 +39,6 @@ bool parse_mdeg(const std::string& s, int32_t* out) {
   return true;
 }
 
-bool ends_with(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
 }  // namespace
 
 bool parse_up(const Options& o, UpAxis* up, std::string* error) {
@@ -48,19 +49,64 @@ bool parse_up(const Options& o, UpAxis* up, std::string* error) {
 
 namespace {
 
-// Reads and projects an OBJ model; on failure *error is complete.
+// --weld EPS (file units; 0: the same position only) or off. Default: exact for STL and PLY
+// (triangle soups, vertices repeated per face), off for OBJ (its vertex ids are kept as given).
+bool weld_tolerance(const Options& o, const std::string& path, double* tolerance,
+                    std::string* error) {
+  MeshFormat format = MeshFormat::kObj;
+  mesh_format_of(path, &format);
+  const std::string w = o.get("--weld", format == MeshFormat::kObj ? "off" : "0");
+  *tolerance = -1;
+  if (w == "off") return true;
+  char* end = nullptr;
+  const double eps = std::strtod(w.c_str(), &end);
+  if (w.empty() || end != w.c_str() + w.size() || !(eps >= 0) || eps > 1e300) {
+    *error = "--weld '" + w +
+             "' must be a distance in the model's units (0: the same position) "
+             "or off";
+    return false;
+  }
+  *tolerance = eps;
+  return true;
+}
+
+// --crease DEG (0 to 180; default 0: only edges between coplanar faces are left out) or off.
+bool crease_angle(const Options& o, double* deg, std::string* error) {
+  const std::string c = o.get("--crease", "0");
+  *deg = -1;
+  if (c == "off") return true;
+  char* end = nullptr;
+  *deg = std::strtod(c.c_str(), &end);
+  if (c.empty() || end != c.c_str() + c.size() || !(*deg >= 0 && *deg <= 180)) {
+    *error = "--crease '" + c + "' must be an angle in degrees in [0, 180], or off";
+    return false;
+  }
+  return true;
+}
+
+// Reads a model, welds and orients it (mesh_repair.h) and projects it; on failure *error is
+// complete. *repair (may be null) says what the cleaning did.
 bool project_obj(const Options& o, const std::string& path, ObjModel* model,
-                 std::vector<Point3>* screen, View* view_out, std::string* error) {
+                 std::vector<Point3>* screen, View* view_out, std::string* error,
+                 RepairReport* repair = nullptr) {
   View view;
   if (!parse_view(o, &view, error)) return false;
   *view_out = view;
   UpAxis up;
-  if (!parse_up(o, &up, error)) return false;
-  const InputError ie = read_obj_file(path, model);
+  double tolerance = -1, crease = 0;
+  if (!parse_up(o, &up, error) || !weld_tolerance(o, path, &tolerance, error) ||
+      !crease_angle(o, &crease, error))
+    return false;
+  const InputError ie = read_mesh_file(path, model);
   if (ie.failed()) {
     *error = ie.message();
     return false;
   }
+  RepairReport report;
+  if (tolerance >= 0) weld_vertices(model, tolerance * model->scale, &report);
+  orient_shells(model, &report);
+  drop_flat_edges(model, crease, &report);
+  if (repair != nullptr) *repair = report;
   make_z_up(model, up);
   screen->resize(model->vertices.size());
   const Status s =
@@ -154,11 +200,15 @@ bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* e
                 std::string* error, int32_t* substep_bits) {
   int32_t units = 0;
   if (substep_bits != nullptr) *substep_bits = 0;
-  if (!ends_with(path, ".obj")) {
+  if (!is_mesh_path(path)) {
     if (!o.get("--substep").empty()) {
       *error =
           "--substep is for .obj models: an .edges file is in steps, or says its units in "
           "a '# substep S' header";
+      return false;
+    }
+    if (!o.get("--weld").empty()) {
+      *error = "--weld is for models (.obj, .stl, .ply): an .edges file has no vertices to weld";
       return false;
     }
     const InputError ie = read_edges_file(path, edges, &units);
@@ -187,8 +237,9 @@ bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* e
 std::string not_simple_message(const std::string& path, const ObjModel& model,
                                const TriangulateStats& stats) {
   const size_t f = size_t(stats.first_not_simple);
-  const std::string line = f < model.face_lines.size() ? std::to_string(model.face_lines[f]) : "?";
-  return path + ":" + line +
+  const bool known = f < model.face_lines.size() && model.face_lines[f] > 0;
+  return path +
+         (known ? ":" + std::to_string(model.face_lines[f]) : ": face " + std::to_string(f)) +
          ": this face's boundary crosses itself, so no triangulation of it is right (" +
          std::to_string(stats.not_simple) + " such face" + (stats.not_simple > 1 ? "s" : "") +
          " in the model); split it into simple polygons";
@@ -196,13 +247,20 @@ std::string not_simple_message(const std::string& path, const ObjModel& model,
 
 bool load_solid_scene(const Options& o, const std::string& path, SolidScene* scene,
                       TriangulateStats* stats, std::string* error) {
-  if (!ends_with(path, ".obj")) {
-    *error = path + ": hidden-line modes need faces: give a Wavefront .obj model";
+  if (!is_mesh_path(path)) {
+    *error = path + ": hidden-line modes need faces: give a model (.obj, .stl or .ply)";
     return false;
   }
   ObjModel model;
   View view;
-  if (!project_obj(o, path, &model, &scene->vertices, &view, error)) return false;
+  RepairReport repair;
+  if (!project_obj(o, path, &model, &scene->vertices, &view, error, &repair)) return false;
+  scene->repair_note.clear();
+  if (repair.unorientable_shells > 0)
+    scene->repair_note = path + ": " + std::to_string(repair.unorientable_shells) + " of " +
+                         std::to_string(repair.shells) +
+                         " shells cannot be oriented (sides on three or more faces, or a "
+                         "twist like a Moebius strip's)";
   scene->substep_bits = view.substep_bits;
   scene->edge_pairs = model.edge_pairs;
   TriangulateStats ts;
@@ -249,6 +307,12 @@ Options job_options(const JobFile& jf) {
 
 }  // namespace
 
+void say_repair_note(const SolidScene& scene) {
+  if (!scene.repair_note.empty())
+    std::cerr << "haloplot: " << scene.repair_note
+              << ": hidden lines by the method that needs no orientation\n";
+}
+
 bool job_solid_settings(const JobFile& jf, SolidOptions* so, View* view, std::string* error) {
   const Options o = job_options(jf);
   return parse_solid_options(o, so, error) && parse_view(o, view, error);
@@ -272,7 +336,9 @@ bool load_solid_job_scene(const JobFile& jf, SolidScene* scene, HiddenJob* hidde
   SolidOptions so;
   if (!parse_solid_options(o, &so, error)) return false;
   *hidden = hidden_job(so);
-  return load_solid_scene(o, jf.scene_path, scene, nullptr, error);
+  if (!load_solid_scene(o, jf.scene_path, scene, nullptr, error)) return false;
+  say_repair_note(*scene);
+  return true;
 }
 
 bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* error,
@@ -286,6 +352,7 @@ bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* e
   if (!parse_solid_options(o, &so, error)) return false;
   SolidScene scene;
   if (!load_solid_scene(o, jf.scene_path, &scene, nullptr, error)) return false;
+  say_repair_note(scene);
   SolidRun run;
   const Status s = run_solid_options(scene, so, &run);
   if (!ok(s)) {

@@ -18,8 +18,12 @@ namespace haloplot::host {
 // decimals; default 30,40), --perspective D (world units after the OBJ's scaling to 2^19;
 // default orthographic), --dump-edges FILE (the projected scene, in the order all outputs use).
 // --up y|z: the OBJ file's up axis (default y, what most OBJ files use). --substep S: fit the
-// projected scene in units of 2^-S steps (core/view/projection.h).
-extern const char* const kSceneOptions[5];
+// projected scene in units of 2^-S steps (core/view/projection.h). --weld EPS|off: weld a
+// model's vertices within EPS (its file's units; 0: at the same position) or not
+// (pipeline/mesh_repair.h); the default welds STL and PLY at the same position, not OBJ.
+// --crease DEG|off: edges between faces within DEG degrees are drawn only as contours (default
+// 0: coplanar faces).
+extern const char* const kSceneOptions[7];
 
 // --up from the options (default y); false with *error naming the value.
 bool parse_up(const Options& o, UpAxis* up, std::string* error);
@@ -67,5 +71,9 @@ std::string not_simple_message(const std::string& path, const ObjModel& model,
 // (in the order every output uses) and the polygons split into triangles.
 bool load_solid_scene(const Options& o, const std::string& path, SolidScene* scene,
                       TriangulateStats* stats, std::string* error);
+
+// scene.repair_note, if any, as one line on stderr ("haloplot: NOTE: hidden lines by the
+// method that needs no orientation").
+void say_repair_note(const SolidScene& scene);
 
 }  // namespace haloplot::host

@@ -23,6 +23,9 @@ struct SolidScene {
   std::vector<Triangle> triangles;
   int32_t substep_bits = 0;     // the vertices' units: 2^-S steps (View::substep_bits)
   std::vector<uint8_t> facing;  // per triangle from the model (empty: the projected area)
+  // "FILE: N of M shells cannot be oriented (...)" when the model's cleaning left some shells
+  // as given (pipeline/mesh_repair.h): why the method needing no orientation draws it.
+  std::string repair_note;
 };
 
 // The core's view of a scene (pointers into it: the scene must outlive the input).
