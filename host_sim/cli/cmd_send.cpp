@@ -15,6 +15,7 @@
 #include "io/edges_file.h"
 #include "io/job_file.h"
 #include "io/line_reader.h"
+#include "io/mesh_file.h"
 #include "io/obj_file.h"
 #include "link/job_client.h"
 #include "link/serial_port.h"
@@ -82,21 +83,15 @@ bool load_obj(const std::string& job_path, SendScene* sc, std::string* error) {
     return false;
   }
   jf.spec.substep_bits = sc->view.substep_bits;  // the controller projects in these units
-  const InputError ie = read_obj_file(jf.scene_path, &sc->model);
-  if (ie.failed()) {
-    *error = ie.message();
+  // Read and cleaned (welded, oriented, Z-up) as `sim` and `plot` read it (scene_input.h): the
+  // controller projects the same world.
+  Options model_options;
+  model_options.values = jf.solid_options;
+  std::string model_error;
+  if (!read_model(model_options, jf.scene_path, &sc->model, nullptr, &model_error)) {
+    *error = model_error.find(jf.scene_path) == 0 ? model_error : job_path + ": " + model_error;
     return false;
   }
-  // The world the controller projects is Z-up, as the host's (scene_input.h).
-  Options up_option;
-  up_option.values = jf.solid_options;
-  UpAxis up;
-  std::string up_error;
-  if (!parse_up(up_option, &up, &up_error)) {
-    *error = job_path + ": " + up_error;
-    return false;
-  }
-  make_z_up(&sc->model, up);
   jf.spec.hidden = hidden_job(so);
   if (hidden_line_drawing(jf.spec)) {
     TriangulateStats ts;
@@ -116,7 +111,7 @@ bool load_scene(const std::string& job_path, SendScene* sc, std::string* error) 
     return false;
   }
   const std::string& scene = sc->jf.scene_path;
-  sc->obj = scene.size() > 4 && scene.compare(scene.size() - 4, 4, ".obj") == 0;
+  sc->obj = is_mesh_path(scene);
   if (sc->obj) return load_obj(job_path, sc, error);
   ie = read_edges_file(scene, &sc->edges, &sc->jf.spec.substep_bits);
   if (ie.failed()) *error = ie.message();

@@ -84,14 +84,10 @@ bool crease_angle(const Options& o, double* deg, std::string* error) {
   return true;
 }
 
-// Reads a model, welds and orients it (mesh_repair.h) and projects it; on failure *error is
-// complete. *repair (may be null) says what the cleaning did.
-bool project_obj(const Options& o, const std::string& path, ObjModel* model,
-                 std::vector<Point3>* screen, View* view_out, std::string* error,
-                 RepairReport* repair = nullptr) {
-  View view;
-  if (!parse_view(o, &view, error)) return false;
-  *view_out = view;
+}  // namespace
+
+bool read_model(const Options& o, const std::string& path, ObjModel* model, RepairReport* repair,
+                std::string* error) {
   UpAxis up;
   double tolerance = -1, crease = 0;
   if (!parse_up(o, &up, error) || !weld_tolerance(o, path, &tolerance, error) ||
@@ -108,6 +104,20 @@ bool project_obj(const Options& o, const std::string& path, ObjModel* model,
   drop_flat_edges(model, crease, &report);
   if (repair != nullptr) *repair = report;
   make_z_up(model, up);
+  return true;
+}
+
+namespace {
+
+// Reads a model, welds and orients it (mesh_repair.h) and projects it; on failure *error is
+// complete. *repair (may be null) says what the cleaning did.
+bool project_obj(const Options& o, const std::string& path, ObjModel* model,
+                 std::vector<Point3>* screen, View* view_out, std::string* error,
+                 RepairReport* repair = nullptr) {
+  View view;
+  if (!parse_view(o, &view, error)) return false;
+  *view_out = view;
+  if (!read_model(o, path, model, repair, error)) return false;
   screen->resize(model->vertices.size());
   const Status s =
       project_points(view, model->vertices.data(), uint32_t(screen->size()), screen->data());

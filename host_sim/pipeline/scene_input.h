@@ -8,6 +8,7 @@
 #include "geometry/contract.h"
 #include "io/obj_file.h"
 #include "job/job.h"
+#include "pipeline/mesh_repair.h"
 #include "pipeline/solid_pipeline.h"
 #include "pipeline/triangulate.h"
 #include "view/projection.h"
@@ -27,6 +28,12 @@ extern const char* const kSceneOptions[7];
 
 // --up from the options (default y); false with *error naming the value.
 bool parse_up(const Options& o, UpAxis* up, std::string* error);
+
+// A model file (.obj, .stl, .ply) read and cleaned as every command draws it: welded
+// (--weld), each shell oriented, coplanar edges dropped (--crease), turned Z-up (--up).
+// *repair (may be null) says what the cleaning did.
+bool read_model(const Options& o, const std::string& path, ObjModel* model, RepairReport* repair,
+                std::string* error);
 
 // Loads and, for OBJ, projects. On failure *error is a complete message (file:line: reason,
 // or the option or projection problem).

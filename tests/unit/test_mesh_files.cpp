@@ -1,5 +1,5 @@
 // STL and PLY models, welding and orientation repair, checked against independent copies of
-// the same model (issue 31).
+// the same model.
 //
 // `mesh_files assimp`: assimp's STL and PLY test models (Debian's assimp-testmodels, not
 // written here) each plotted hidden-removed, compared with the same model as assimp ships it
