@@ -8,6 +8,7 @@
 # dash's included, within one step.
 #   band_dashes.sh HALOPLOT BAND_DASHES_CHECK
 set -u
+here=$(cd "$(dirname "$0")" && pwd)
 tool="$1"
 check="$2"
 work=$(mktemp -d)
@@ -19,45 +20,9 @@ cd "$work"
 
 "$tool" demo-scene --cubes 6 -o cubes6.obj || bad "demo-scene --cubes 6"
 # A torus of 12 x 6 facets; the sphere through a torus of the firmware tests (10 x 5 and 6 x 5).
-awk 'BEGIN {
-  pi = 3.14159265358979; R = 1.5; r = 0.6; nu = 12; nv = 6
-  for (i = 0; i < nu; i++) for (j = 0; j < nv; j++) {
-    u = 2 * pi * i / nu; v = 2 * pi * j / nv
-    printf "v %.6f %.6f %.6f\n", (R + r * cos(v)) * cos(u), r * sin(v), (R + r * cos(v)) * sin(u)
-  }
-  for (i = 0; i < nu; i++) for (j = 0; j < nv; j++) {
-    a = i * nv + j + 1; b = ((i + 1) % nu) * nv + j + 1
-    c = ((i + 1) % nu) * nv + (j + 1) % nv + 1; d = i * nv + (j + 1) % nv + 1
-    printf "f %d %d %d %d\n", a, d, c, b
-  }
-}' > torus.obj
-awk 'BEGIN {
-  pi = 3.14159265358979
-  R = 1.5; r = 0.5; nu = 10; nv = 5
-  for (i = 0; i < nu; i++) for (j = 0; j < nv; j++) {
-    u = 2 * pi * i / nu; v = 2 * pi * j / nv
-    printf "v %.6f %.6f %.6f\n", (R + r * cos(v)) * cos(u), r * sin(v), (R + r * cos(v)) * sin(u)
-  }
-  for (i = 0; i < nu; i++) for (j = 0; j < nv; j++) {
-    a = i * nv + j + 1; b = ((i + 1) % nu) * nv + j + 1
-    c = ((i + 1) % nu) * nv + (j + 1) % nv + 1; d = i * nv + (j + 1) % nv + 1
-    printf "f %d %d %d %d\n", a, d, c, b
-  }
-  base = nu * nv; cx = 1.5; cy = 0.1; cz = 0; s = 0.8; ns = 6; nt = 5
-  printf "v %.6f %.6f %.6f\n", cx, cy + s, cz
-  for (t = 1; t < nt; t++) for (k = 0; k < ns; k++) {
-    th = pi * t / nt; ph = 2 * pi * k / ns
-    printf "v %.6f %.6f %.6f\n", cx + s * sin(th) * cos(ph), cy + s * cos(th), cz + s * sin(th) * sin(ph)
-  }
-  printf "v %.6f %.6f %.6f\n", cx, cy - s, cz
-  top = base + 1; bot = base + 2 + (nt - 1) * ns
-  for (k = 0; k < ns; k++) printf "f %d %d %d\n", top, base + 2 + (k + 1) % ns, base + 2 + k
-  for (t = 0; t < nt - 2; t++) for (k = 0; k < ns; k++) {
-    a = base + 2 + t * ns + k; b = base + 2 + t * ns + (k + 1) % ns
-    printf "f %d %d %d %d\n", a, b, b + ns, a + ns
-  }
-  for (k = 0; k < ns; k++) printf "f %d %d %d\n", bot, base + 2 + (nt - 2) * ns + k, base + 2 + (nt - 2) * ns + (k + 1) % ns
-}' > torus_sphere.obj
+source "$here/../support/model_files.sh"
+torus_obj 1.5 0.6 12 6 > torus.obj
+torus_sphere_obj > torus_sphere.obj
 
 # NAME SCENE EXTRA-KEYS ARENA...: the whole-model trace, then one banded trace per arena.
 run() {
