@@ -82,7 +82,9 @@ printf 'scene torus_sphere.obj\ndrawing hidden-removed\nview 30,25\nkinematics c
 { cat torus_sphere.job; echo "arena 16384"; } > torus_sphere_bands.job
 "$tool" sim torus_sphere_bands.job -o host_torus_sphere_bands.trace
 fi
-"$tool" sim plot.job -o host_plot.trace
+"$tool" sim plot.job -o host_plot.trace --stats 2> plot_sim.txt
+# Every step event moves at least one motor, so the whole plot has fewer events than this.
+plot_steps=$(($(sed -n 's/^steps_0=//p' plot_sim.txt) + $(sed -n 's/^steps_1=//p' plot_sim.txt)))
 "$tool" sim replot.job -o host_replot.trace
 # Streamed: 2 x 2 cubes in a 2 KB band arena take 8 bands.
 { cat plot.job; echo "arena 2048"; } > stream.job
@@ -99,12 +101,15 @@ elif grep -q "scene too large" huge.out; then
 else
   bad "oversized scene: $(cat huge.out)"
 fi
-# 2. Stop a plot by abort, then one by the limit switch, each after 20,000 step events.
+# 2. Stop a plot by abort, then one by the limit switch, each after 20,000 step events. The
+# host asks once it has seen 20,000; how many more the controller makes before the request
+# arrives depends on the host's load (a loaded CI machine saw 644), so the check is that the
+# plot stopped at or after 20,000 and well before its end, not how soon.
 for how in abort limit; do
   send_job plot.job --stop-after 20000 --stop "$how" > "stop_$how.out" 2>&1
   rc=$?
   events=$(sed -n 's/^stopped by .* after \([0-9]*\) step events.*$/\1/p' "stop_$how.out")
-  if [ "$rc" -eq 0 ] && [ -n "$events" ] && [ "$events" -lt 20100 ]; then
+  if [ "$rc" -eq 0 ] && [ -n "$events" ] && [ "$events" -ge 20000 ] && [ "$events" -lt $((plot_steps / 2)) ]; then
     ok
     echo "stopped by $how after $events step events"
   else
