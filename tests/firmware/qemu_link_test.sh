@@ -39,15 +39,19 @@ solids=yes
 cd "$work"
 "$tool" demo-scene --cubes 2 -o scene.edges
 "$tool" demo-scene --cubes 40 -o huge.edges
+# A quarter of a motor step per plot step: the same edges, bands, link traffic and stops, a
+# quarter of the step interrupts, where QEMU's time goes (the whole session took 440 s on a
+# loaded 2-core machine with whole steps).
 job() {  # job NAME SCENE HALO
-  printf 'scene %s\ndrawing haloed\nhalo %s\nhalo-mode paper\nkinematics corexy\n' "$2" "$3" > "$1"
+  printf 'scene %s\ndrawing haloed\nhalo %s\nhalo-mode paper\nkinematics corexy\nsteps 1/4\n' \
+    "$2" "$3" > "$1"
 }
 job plot.job scene.edges 50
 job replot.job scene.edges 120
 job huge.job huge.edges 50
 if [ "$solids" = yes ]; then
 cp "$(dirname "$0")/../../scenes/pair_of_cubes.obj" cubes.obj
-printf 'scene cubes.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\nkinematics corexy\n' > solid.job
+printf 'scene cubes.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\nkinematics corexy\nsteps 1/4\n' > solid.job
 "$tool" sim solid.job -o host_solid.trace
 # Two boxes that pass through each other: the QI finds conflicts and the fallback cuts three
 # edges where they pierce a face, on the controller, in the default sub-step units.
@@ -76,7 +80,8 @@ fi
 # A sphere through a torus (10 x 5 and 6 x 5 facets), its intersection lines too.
 source "$repo_root/tests/support/model_files.sh"
 torus_sphere_obj > torus_sphere.obj
-printf 'scene torus_sphere.obj\ndrawing hidden-removed\nview 30,25\nkinematics corexy\n' > torus_sphere.job
+printf 'scene torus_sphere.obj\ndrawing hidden-removed\nview 30,25\nkinematics corexy\nsteps 1/4\n' \
+  > torus_sphere.job
 "$tool" sim torus_sphere.job -o host_torus_sphere.trace
 # The same streamed in bands (16 KB: 9 bands), the lines cut at the bands' borders.
 { cat torus_sphere.job; echo "arena 16384"; } > torus_sphere_bands.job

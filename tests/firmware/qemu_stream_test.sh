@@ -19,18 +19,19 @@ source "$(dirname "$0")/qemu_common.sh" "firmware_stream ($kind)" "$1" "$2" fw_p
 cd "$work"
 if [ "$kind" = solid ]; then
   "$tool" demo-scene --cubes 10 -o cubes10.obj
-  # Half a motor step per plot step: the same bands and hidden lines, half the step interrupts
-  # (QEMU's time goes to them: 100 s instead of 200).
-  printf 'scene cubes10.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\nkinematics corexy\nsteps 1/2\narena 65536\n' \
+  # A quarter of a motor step per plot step: the same bands and hidden lines, a quarter of the
+  # step interrupts (QEMU's time goes to them).
+  printf 'scene cubes10.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\nkinematics corexy\nsteps 1/4\narena 65536\n' \
     > demo.job
   "$tool" sim demo.job -o host.trace --stats 2> host.stats
   host=$(trace_digest host.trace)
   rm -f host.trace
 else
-  # A quarter of a motor step per plot step: the same bands, edges and link traffic, a quarter
-  # of the step interrupts, where QEMU's time goes. Figure 4's whole steps on the chip in 64 KB
-  # are firmware_bands' (the band self-test, no link).
-  host=$(demo_job_digest 65536 "steps 1/4")
+  # A sixteenth of a motor step per plot step: the same bands, edges and link traffic, a
+  # sixteenth of the step interrupts, where QEMU's time goes (128 s at a quarter, 52 s at a
+  # sixteenth, alone on a 2-core machine: the step events of an 83-minute plot). Figure 4's
+  # whole steps on the chip in 64 KB are firmware_bands' (the band self-test, no link).
+  host=$(demo_job_digest 65536 "steps 1/16")
 fi
 
 qemu_linked 3000 "$fw/fw_plotter_qemu.elf"

@@ -13,7 +13,7 @@
 //     within a tick of the exact interval), plus, where the other motor steps faster, that
 //     motor's interval (Bresenham puts the slower motor's steps on the faster one's ticks).
 //     Where the pen path turns (a junction) the motors' speeds may jump by design (grbl's
-//     junction deviation). Given the path's vertices (Limits::path), a jump within 3 steps of
+//     junction deviation). Given the path's vertices (Limits::path), a jump within 3 motor steps of
 //     a vertex may exceed the bound by v_j |u_out - u_in| per motor, where u are the motor's
 //     parts of the unit directions in and out and v_j^2 = a delta s / (1 - s), s = sin(theta/2)
 //     (grbl's junction speed, 5 % slack for the planner's integers); anywhere else it fails.
@@ -256,16 +256,20 @@ struct Junctions {
       cells.insert({{p[k].first >> 3, p[k].second >> 3}, k});
     }
   }
-  // The largest allowance of a vertex within 3 steps of (x, y), or -1 when there is none.
-  double allowance(int m, double x, double y) const {
+  // The largest allowance of a vertex within 3 motor steps of (x, y) (plot steps; `scale` plot
+  // steps to a motor step: a vertex lies between motor positions, so with a quarter of a motor
+  // step per plot step the nearest one may be 4 plot steps away), or -1 when there is none.
+  double allowance(int m, double x, double y, double scale) const {
     double best = -1;
+    const double radius = 3.0 * std::max(1.0, scale);
+    const int64_t reach = int64_t(std::ceil(radius / 8));
     const int64_t cx = int64_t(std::floor(x)) >> 3, cy = int64_t(std::floor(y)) >> 3;
-    for (int64_t gx = cx - 1; gx <= cx + 1; ++gx)
-      for (int64_t gy = cy - 1; gy <= cy + 1; ++gy) {
+    for (int64_t gx = cx - reach; gx <= cx + reach; ++gx)
+      for (int64_t gy = cy - reach; gy <= cy + reach; ++gy) {
         auto range = cells.equal_range({gx, gy});
         for (auto it = range.first; it != range.second; ++it) {
           const auto& v = at[it->second];
-          if (std::hypot(double(v.first) - x, double(v.second) - y) <= 3.0)
+          if (std::hypot(double(v.first) - x, double(v.second) - y) <= radius)
             best = std::max(best, extra[m][it->second]);
         }
       }
@@ -302,9 +306,9 @@ inline void check_step_speeds(const CheckedTrace& t, const Limits& lim, CheckRes
         continue;
       }
       const size_t e = path.event_of[m][k];
-      if (lim.path.empty()
-              ? path_turns_near(path, e, 24)
-              : gap <= allowed + junctions.allowance(m, path.x[e] * scale, path.y[e] * scale)) {
+      if (lim.path.empty() ? path_turns_near(path, e, 24)
+                           : gap <= allowed + junctions.allowance(m, path.x[e] * scale,
+                                                                  path.y[e] * scale, scale)) {
         ++r->junctions_excused;
         continue;
       }
