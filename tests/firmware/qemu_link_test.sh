@@ -8,8 +8,8 @@
 #     identical (the stored job was never damaged);
 #   - a scene too large for the controller is refused by name, and the next job still plots;
 #   - an abort request, and a limit switch (its interrupt set pending: QEMU models neither
-#     the pin nor EXTI's software trigger), each stop a plot within a few step events and
-#     are reported as how the plot ended;
+#     the pin nor EXTI's software trigger), each stop a plot once asked (how many step events
+#     later depends on the host's load), and are reported as how the plot ended;
 #   - a solid model (world vertices, edge pairs and triangles) plotted hidden-dashed, hatched
 #     (Franklin's regions) and with its outline pass is drawn by the controller's own hidden-line run exactly as `haloplot sim`
 #     draws it on the host;
