@@ -12,6 +12,10 @@
 // elsewhere in one plot (a short dash, a long gap, a phase restarted at a border) leaves a piece
 // without its partner, and so does a stroke drawn twice or left out.
 //
+// "A step" is a plot step, or a motor step where that is coarser (`steps 1/4`): the motors put
+// the pen on their own whole steps only, and an end a plot step away in the other plot may round
+// to the next motor step.
+//
 // Prints the counts and the worst end distance; exit status 1 when the drawings differ.
 #include <algorithm>
 #include <cmath>
@@ -37,6 +41,7 @@ struct Seg {
 struct Drawing {
   std::vector<Seg> moves;  // pen-down moves, in plot steps
   uint32_t pen_downs = 0;
+  int64_t steps_num = 1, steps_den = 1;  // the `steps` line: motor steps per plot step
   std::string error;
 };
 
@@ -102,6 +107,8 @@ Drawing read_trace(const std::string& path) {
       char slash = 0;
       f >> num >> slash >> den;
       if (num < 1 || den < 1 || slash != '/') d.error = path + ": bad steps line";
+      d.steps_num = num;
+      d.steps_den = den;
     } else if (k == "backlash") {
       int64_t a = 0, b = 0;
       f >> a >> b;
@@ -118,11 +125,17 @@ Drawing read_trace(const std::string& path) {
 
 double dist(Pt p, Pt q) { return std::hypot(p.x - q.x, p.y - q.y); }
 
-constexpr double kTol = 1.0;  // one plot step
-constexpr double kCell = 16;  // the grid of stroke ends
+// A step, in plot steps: 1, or den / num with `steps num/den` below 1 (main sets it from the
+// traces). Two ends a plot step apart can round to positions a motor step apart on each motor:
+// on CoreXY both motors one step over moves the pen den / num plot steps in x or in y. The
+// tolerances, in steps:
+double step = 1.0;
+double end_tol = 1.0;   // one step
+double cell_size = 16;  // the grid of stroke ends: 16 steps
+double bend_tol = 1.5;  // joined(), below
 
 int64_t cell_key(double x, double y) {
-  const int64_t cx = int64_t(std::floor(x / kCell)), cy = int64_t(std::floor(y / kCell));
+  const int64_t cx = int64_t(std::floor(x / cell_size)), cy = int64_t(std::floor(y / cell_size));
   return (cx + (int64_t{1} << 30)) * (int64_t{1} << 31) + (cy + (int64_t{1} << 30));
 }
 
@@ -137,10 +150,10 @@ struct Ends {
   bool near(Pt p) const {
     for (int dx = -1; dx <= 1; ++dx)
       for (int dy = -1; dy <= 1; ++dy) {
-        const auto c = cells.find(cell_key(p.x + dx * kCell, p.y + dy * kCell));
+        const auto c = cells.find(cell_key(p.x + dx * cell_size, p.y + dy * cell_size));
         if (c == cells.end()) continue;
         for (uint32_t j : c->second)
-          if (dist(points[j], p) <= kTol) return true;
+          if (dist(points[j], p) <= end_tol) return true;
       }
     return false;
   }
@@ -157,10 +170,9 @@ Ends move_ends(const std::vector<Seg>& moves) {
 
 // A drawing's strokes: its moves joined where exactly two of them meet, the other drawing has no
 // move ending within a step (a vertex both have stays a stroke end however straight the edges
-// run on through it), and the point, with every point joined before, lies within kBend of the
-// joined stroke's chord (a border's cut, rounded to a step: each end is within half a step of
-// the true line in x and y).
-constexpr double kBend = 1.5;
+// run on through it), and the point, with every point joined before, lies within bend_tol (1.5
+// steps) of the joined stroke's chord (a border's cut, rounded to a step: each end is within
+// half a step of the true line in x and y).
 
 double off_chord(Pt a, Pt b, Pt p) {
   const double len = dist(a, b);
@@ -187,10 +199,10 @@ std::vector<Seg> joined(const std::vector<Seg>& moves, const Ends& other) {
     Stroke &s = st[ids[0]], &t = st[ids[1]];
     const Pt from = s.a.x == p.x && s.a.y == p.y ? s.b : s.a;
     const Pt to = t.a.x == p.x && t.a.y == p.y ? t.b : t.a;
-    bool straight = off_chord(from, to, p) <= kBend &&
+    bool straight = off_chord(from, to, p) <= bend_tol &&
                     (to.x - p.x) * (p.x - from.x) + (to.y - p.y) * (p.y - from.y) > 0;
-    for (const Pt& q : s.inside) straight = straight && off_chord(from, to, q) <= kBend;
-    for (const Pt& q : t.inside) straight = straight && off_chord(from, to, q) <= kBend;
+    for (const Pt& q : s.inside) straight = straight && off_chord(from, to, q) <= bend_tol;
+    for (const Pt& q : t.inside) straight = straight && off_chord(from, to, q) <= bend_tol;
     if (!straight) continue;
     const uint32_t gone = ids[1], kept = ids[0];
     s.inside.insert(s.inside.end(), t.inside.begin(), t.inside.end());
@@ -216,13 +228,13 @@ std::vector<Seg> cut(const std::vector<Seg>& moves, const Ends& ends) {
     const Seg& s = moves[i];
     const double len = dist(s.a, s.b), ux = (s.b.x - s.a.x) / len, uy = (s.b.y - s.a.y) / len;
     std::vector<double> at;
-    const int samples = int(len / kCell) + 1;
+    const int samples = int(len / cell_size) + 1;
     for (int k = 0; k <= samples; ++k) {
       const double u = len * k / samples;
       const double x = s.a.x + ux * u, y = s.a.y + uy * u;
       for (int dx = -1; dx <= 1; ++dx)
         for (int dy = -1; dy <= 1; ++dy) {
-          const auto c = ends.cells.find(cell_key(x + dx * kCell, y + dy * kCell));
+          const auto c = ends.cells.find(cell_key(x + dx * cell_size, y + dy * cell_size));
           if (c == ends.cells.end()) continue;
           for (uint32_t j : c->second) {
             if (stamp[j] == i) continue;
@@ -230,7 +242,7 @@ std::vector<Seg> cut(const std::vector<Seg>& moves, const Ends& ends) {
             const Pt p = ends.points[j];
             const double along = (p.x - s.a.x) * ux + (p.y - s.a.y) * uy;
             const double off = std::fabs((p.y - s.a.y) * ux - (p.x - s.a.x) * uy);
-            if (off <= kTol && along > kTol && along < len - kTol) at.push_back(along);
+            if (off <= end_tol && along > end_tol && along < len - end_tol) at.push_back(along);
           }
         }
     }
@@ -238,7 +250,7 @@ std::vector<Seg> cut(const std::vector<Seg>& moves, const Ends& ends) {
     Pt from = s.a;
     double last = 0;
     for (double u : at) {
-      if (u - last <= kTol) continue;  // one cut for ends within a step of each other
+      if (u - last <= end_tol) continue;  // one cut for ends within a step of each other
       const Pt p{s.a.x + ux * u, s.a.y + uy * u};
       out.push_back({from, p});
       from = p;
@@ -263,7 +275,7 @@ std::vector<Seg> unpaired(const std::vector<Seg>& a, const std::vector<Seg>& b, 
   std::vector<bool> used(b.size(), false);
   std::vector<Seg> left;
   for (const Seg& s : a) {
-    if (dist(s.a, s.b) <= kTol) {
+    if (dist(s.a, s.b) <= end_tol) {
       if (b_ends.near(s.a) && b_ends.near(s.b))
         ++*dots;
       else
@@ -274,7 +286,7 @@ std::vector<Seg> unpaired(const std::vector<Seg>& a, const std::vector<Seg>& b, 
     uint32_t pick = UINT32_MAX;
     for (int dx = -1; dx <= 1; ++dx)
       for (int dy = -1; dy <= 1; ++dy) {
-        const auto c = by_end.find(cell_key(s.a.x + dx * kCell, s.a.y + dy * kCell));
+        const auto c = by_end.find(cell_key(s.a.x + dx * cell_size, s.a.y + dy * cell_size));
         if (c == by_end.end()) continue;
         for (uint32_t j : c->second) {
           if (used[j]) continue;
@@ -287,7 +299,7 @@ std::vector<Seg> unpaired(const std::vector<Seg>& a, const std::vector<Seg>& b, 
           }
         }
       }
-    if (pick != UINT32_MAX && best <= kTol) {
+    if (pick != UINT32_MAX && best <= end_tol) {
       used[pick] = true;
       *worst = std::max(*worst, best);
     } else {
@@ -310,6 +322,14 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "band_dashes_check: %s\n", d->error.c_str());
       return 2;
     }
+  if (w.steps_num * b.steps_den != b.steps_num * w.steps_den) {
+    std::fprintf(stderr, "band_dashes_check: the traces' motor steps per plot step differ\n");
+    return 2;
+  }
+  step = std::max(1.0, double(w.steps_den) / double(w.steps_num));
+  end_tol = step;
+  cell_size = 16 * step;
+  bend_tol = 1.5 * step;
   const std::vector<Seg> sw = joined(w.moves, move_ends(b.moves)),
                          sb = joined(b.moves, move_ends(w.moves));
   Ends ends;
@@ -326,9 +346,9 @@ int main(int argc, char** argv) {
   std::printf(
       "whole: %zu pen-down moves in %u pen-downs, %zu strokes; banded: %zu moves in %u "
       "pen-downs, %zu strokes joined; %zu and %zu pieces cut at each other's ends (%zu dots); "
-      "unpaired: %zu whole, %zu banded; worst end distance %.2f steps\n",
+      "unpaired: %zu whole, %zu banded; worst end distance %.2f plot steps (a step: %g)\n",
       w.moves.size(), w.pen_downs, sw.size(), b.moves.size(), b.pen_downs, sb.size(), pw.size(),
-      pb.size(), dots, lw.size(), lb.size(), worst);
+      pb.size(), dots, lw.size(), lb.size(), worst, step);
   int shown = 0;
   for (const auto* list : {&lw, &lb})
     for (const Seg& s : *list)
