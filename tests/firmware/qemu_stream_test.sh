@@ -1,22 +1,38 @@
 #!/usr/bin/env bash
 # A scene the controller never holds, plotted by the controller image from `haloplot send` in
-# bands into a 64 KB band arena. JOB is
-#   demo   the README's demo: Figure 4 (9408 edges, halo 50, the demo machine at a quarter of a
-#          motor step per plot step), its edges
-#          streamed band by band;
-#   solid  a 10 x 10 solid cube array (800 vertices, 1200 edges, 1200 triangles) hidden-dashed
-#          with outlines and hatching, each band's vertices, edges and triangles streamed, its
-#          hidden lines, outlines and hatch lines worked out on the controller band by band.
-# Checks that the controller's step trace equals `haloplot sim` of the same job with
-# `arena 65536`, byte for byte (the image sums its trace to a CRC-32 and a length, a test hook;
-# gzip's trailer gives the host's), that it took more than one band, and that the image exits 0.
-# The plot may wait for a band (an underrun): the trace must not show it. Slow under QEMU
-# (millions of step interrupts: minutes), so the sanitizer build skips it.
-# Usage: qemu_stream_test.sh FIRMWARE_DIR HALOPLOT_TOOL [demo|solid]
+# bands into its band arena. JOB is
+#   demo    the README's demo: Figure 4 (9408 edges, halo 50, the demo machine at a quarter of a
+#           motor step per plot step), its edges
+#           streamed band by band into 64 KB;
+#   solid   a 10 x 10 solid cube array (800 vertices, 1200 edges, 1200 triangles) hidden-dashed
+#           with outlines and hatching, each band's vertices, edges and triangles streamed into
+#           64 KB, its hidden lines, outlines and hatch lines worked out on the controller band
+#           by band;
+#   dashed  the 6 x 6 solid cubes of band_dashes (tests/cli/band_dashes.sh), hidden-dashed with
+#           outlines and hatching, streamed into 48 KB (13 bands), the controller's whole trace
+#           read back (not its digest).
+# Checks that the controller's step trace equals `haloplot sim` of the same job (the same
+# arena), byte for byte (for demo and solid the image sums its trace to a CRC-32 and a length, a
+# test hook; gzip's trailer gives the host's), that it took more than one band (dashed: five or
+# more), and that the image exits 0. The plot may wait for a band (an underrun): the trace must
+# not show it. For dashed also that the controller draws the whole-model plot (`sim` of the job
+# without its arena), stroke for stroke with every dash end within a step, by band_dashes_check
+# (tests/tools/band_dashes_check.cpp, which reads the traces alone), and that the check fails
+# against the whole-model plot with other gaps between the dashes. Slow under QEMU (millions of
+# step interrupts: minutes), so the sanitizer build skips it.
+# Usage: qemu_stream_test.sh FIRMWARE_DIR HALOPLOT_TOOL [demo|solid|dashed] [BAND_DASHES_CHECK]
 kind=${3:-demo}
+check=${4:-}
 source "$(dirname "$0")/qemu_common.sh" "firmware_stream ($kind)" "$1" "$2" fw_plotter_qemu.elf
+if [ "$kind" = dashed ] && [ ! -x "$check" ]; then
+  echo "FAILED: no band_dashes_check at '$check' (the fourth argument)"
+  echo "$test_name: 0 passed, 1 failed"
+  exit 1
+fi
 
 cd "$work"
+min_bands=2
+send_opts=(--trace-digest)
 if [ "$kind" = solid ]; then
   "$tool" demo-scene --cubes 10 -o cubes10.obj
   # A quarter of a motor step per plot step: the same bands and hidden lines, a quarter of the
@@ -26,6 +42,26 @@ if [ "$kind" = solid ]; then
   "$tool" sim demo.job -o host.trace --stats 2> host.stats
   host=$(trace_digest host.trace)
   rm -f host.trace
+elif [ "$kind" = dashed ]; then
+  "$tool" demo-scene --cubes 6 -o cubes6.obj
+  # band_dashes' hatched cubes (its keys; `dash 2 1` is the default, written out for the other
+  # gaps below) at an eighth of a motor step per plot step: the same strokes, an eighth of the
+  # step interrupts (64 s at a quarter, 36 to 41 s at an eighth, on a 2-core machine with other
+  # builds running). The check's step is then a motor step, 8 plot steps (0.1 mm). 48 KB: 13
+  # bands.
+  printf 'scene cubes6.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\neffects acceleration pen-servo\nkinematics corexy\nsteps 1/8\n' \
+    > whole.job
+  { cat whole.job; echo "arena 49152"; } > demo.job
+  "$tool" sim whole.job -o whole.trace
+  "$tool" sim demo.job -o host.trace --stats 2> host.stats
+  # The same job's whole-model plot with gaps of 1.05 mm, not 1 (4 plot steps longer, half a
+  # motor step): the check must tell it apart.
+  sed 's/^dash 2 1$/dash 2 1.05/' whole.job > other_gaps.job
+  "$tool" sim other_gaps.job -o other_gaps.trace
+  # Borders for the dashes to run across.
+  min_bands=5
+  # The whole trace: the strokes are read from it, not only its digest.
+  send_opts=()
 else
   # A sixteenth of a motor step per plot step: the same bands, edges and link traffic, a
   # sixteenth of the step interrupts, where QEMU's time goes (128 s at a quarter, 52 s at a
@@ -36,19 +72,37 @@ fi
 
 qemu_linked 3000 "$fw/fw_plotter_qemu.elf"
 start=$SECONDS
-send_job demo.job --trace-digest --test-exit > send.out 2>&1
+send_job demo.job "${send_opts[@]}" --test-exit > send.out 2>&1
 end_session $?
-if same_digest fw.out "$host"; then
+if [ "$kind" = dashed ]; then
+  awk '/^haloplot-trace 2$/ { on = 1 } on { print > "fw.trace" } /^end / { on = 0 }' fw.out
+  if [ -s fw.trace ] && cmp -s fw.trace host.trace; then
+    ok
+    echo "trace identical to haloplot sim of the banded job: $(wc -c < host.trace) bytes"
+  else
+    bad "controller trace ($(wc -c < fw.trace 2>/dev/null) bytes) differs from haloplot sim of the banded job ($(wc -c < host.trace) bytes)"
+  fi
+  out=$("$check" whole.trace fw.trace)
+  rc=$?
+  echo "against the whole-model plot: $out"
+  if [ "$rc" -eq 0 ]; then ok; else bad "the controller's banded plot draws another picture than the whole-model plot"; fi
+  # Exit status 1 is "the drawings differ"; 2 would be a trace the check could not read.
+  out=$("$check" other_gaps.trace fw.trace)
+  rc=$?
+  echo "against the whole-model plot with 1.05 mm gaps (must differ): $out"
+  if [ "$rc" -eq 1 ]; then ok; else bad "the check did not tell 1.05 mm gaps from 1 mm ones (exit status $rc)"; fi
+elif same_digest fw.out "$host"; then
   ok
   echo "traces identical (CRC-32 and bytes): $host"
 else
   bad "controller trace ($(grep '^fw trace_' fw.out | tr '\n' ' ')) differs from haloplot sim ($host)"
 fi
 bands=$(sed -n 's/^bands=//p' host.stats)
-if [ "${bands:-0}" -gt 1 ] && grep -q "^streamed $bands bands" send.out; then
+arena=$(sed -n 's/^arena //p' demo.job)
+if [ "${bands:-0}" -ge "$min_bands" ] && grep -q "^streamed $bands bands" send.out; then
   ok
-  echo "$bands bands, peak $(sed -n 's/^band_peak_bytes=//p' host.stats) bytes of the 64 KB arena"
+  echo "$bands bands, peak $(sed -n 's/^band_peak_bytes=//p' host.stats) bytes of the $arena-byte arena"
 else
-  bad "bands: sim $bands, send: $(grep '^streamed' send.out)"
+  bad "bands (at least $min_bands): sim $bands, send: $(grep '^streamed' send.out)"
 fi
 finish
