@@ -171,7 +171,7 @@ Status HiddenRun::build_edges() {
   if (s != Status::kOk) return fail(s);
   r.bytes_topology = topo.kept_bytes;
   arena.take(topo.kept_bytes);
-  const size_t build_high = arena.used + topology_scratch_bytes(in);
+  const size_t build_high = arena.used + topo.scratch_bytes;
   if (arena.high < build_high && build_high <= arena.size) arena.high = build_high;
   r.check = topo.check;
   r.n_drawn = topo.n_drawn;
