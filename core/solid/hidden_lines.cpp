@@ -190,12 +190,16 @@ Status HiddenRun::cut_and_touches() {
   Status s = cut_step(edges, topo.n_edges, params, &arena, &cutset, &r);
   if (s == Status::kWorkspaceTooSmall) return out_of_room();
   if (s != Status::kOk) return fail(s);
-  r.bytes_incidence = incidence_bytes(topo, params.incidence_capacity);
+  // A band's fallback uses no V.C. table: it needs the incidences by edge only.
+  const bool by_vertex = !params.band;
+  r.bytes_incidence = incidence_bytes(topo, params.incidence_capacity, by_vertex);
   uint8_t* inc_mem = arena.take(r.bytes_incidence);
   if (inc_mem == nullptr) return out_of_room();
   s = find_incidences(topo, params.incidence_capacity, inc_mem, r.bytes_incidence, &inc,
-                      &r.incidences_needed);
+                      &r.incidences_needed, by_vertex);
   if (s != Status::kOk) return fail(s);
+  // The search's scratch ends the block, and its 8 bytes of alignment slack: both free again.
+  arena.used -= incidence_scratch_bytes(topo) + 8;
   r.incidences = inc.n;
   r.coincident_vertices = inc.coincident_vertices;
   return Status::kOk;
