@@ -253,7 +253,7 @@ Status HiddenRun::qi_method(bool* gave_up) {
   }
   crossing_grid = state.grid;  // the lines ask the QI's grid of every face
   if (sink.begin != nullptr)
-    sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);
+    sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used, edges);
   r.used_qi = true;
   s = emit_qi_pieces(topo, front, cutset, inc, state, QiSink{&qi_piece, &adapter});
   if (s == Status::kOk) s = lines(front);
@@ -286,7 +286,7 @@ Status HiddenRun::fallback_method(bool manifold) {
   if (fb_mem == nullptr || !carve_shared_grid(topo, params, &arena, &crossing_grid, &r))
     return out_of_room();
   if (sink.begin != nullptr)
-    sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);
+    sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used, edges);
   Status s = run_fallback(topo, front, cutset, inc, fp, fb_mem, r.bytes_fallback,
                           FallbackSink{&fallback_piece, &adapter, &fallback_outline}, &r.fallback,
                           share ? &crossing_grid : nullptr);
