@@ -206,6 +206,7 @@ class BandConductor {
   Status next_streamed_band();
   Status draw_band(Attempt& a);
   Status gather_solid(Attempt& a);  // solid_band.cpp
+  Status gather_vertices(Attempt& a, uint32_t* pairs, Triangle* tris, uint32_t* vids);
   Status hide_band(Attempt& a);
   Status commit_band(Attempt& a);
   uint32_t defer_joined(const Attempt& a, Segment2* u, uint32_t n_own, uint32_t nu, uint8_t* free);

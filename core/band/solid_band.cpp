@@ -55,7 +55,7 @@ struct SolidSink {
   RawPiece* raw_top = nullptr;  // the current edge's pieces, stacked down from the tail's end
   uint32_t n_raw = 0, raw_edge = 0;
 
-  static void begin(void* ctx, uint8_t* tail, size_t bytes);
+  static void begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3* edges);
   static Status piece(void* ctx, const HiddenPiece& p);
   static Status outline(void* ctx, const HiddenPiece& p);
   Status finish() { return n_raw > 0 ? flush_edge() : Status::kOk; }
@@ -74,10 +74,12 @@ struct SolidSink {
 }  // namespace
 
 // The carry and the pieces take the run's free tail, once every stage of it has carved; the
-// current edge's raw pieces stack down from its end.
-void SolidSink::begin(void* ctx, uint8_t* tail, size_t bytes) {
+// current edge's raw pieces stack down from its end. The run's edges stay below the tail until
+// the band is committed.
+void SolidSink::begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3* edges) {
   SolidSink& self = *static_cast<SolidSink*>(ctx);
   BandConductor::Attempt& a = *self.a;
+  a.g.edges = const_cast<Edge3*>(edges);  // the band's drawn edges are the run's first ones
   uint8_t* end = align_down(tail + bytes);
   uint8_t* carry = align_up(tail);
   uint8_t* runs = carry + carve_round(size_t{a.carry_capacity} * sizeof(a.carry_out[0]));
@@ -295,16 +297,17 @@ Status BandConductor::begin_streamed_solid(const BandSpec& spec, bool closed, Ba
 // The band's drawn edges (those meeting its rows), its faces (meeting its rows or the row
 // above: the outline pass asks just beyond each border) and the vertices they use, with
 // local vertex indices: one read of the model to count, one to fill, then the vertices.
-//   [front | edges (Edge3) | pairs | triangles | vertex ids | vertices | free ... | edge ids]
+//   [front | pairs | triangles | vertices | free ... | (vertex ids) | edge ids]
+// The band keeps no Edge3 of its own: its edges are the hidden-line run's (SolidSink::begin).
 Status BandConductor::gather_solid(Attempt& a) {
   const SolidSource& src = solid_;
   const int64_t lo = a.y0, hi = a.y1 - 1;
   auto read_vertex = [&](uint32_t v, Point3* p) { return src.vertex(src.ctx, v, p); };
   uint32_t m = 0, nt = 0;
+  uint32_t* pairs = nullptr;
+  Triangle* tris = nullptr;
+  uint32_t* vids = nullptr;
   for (int pass = 0; pass < 2; ++pass) {
-    uint32_t* pairs = reinterpret_cast<uint32_t*>(a.g.free_lo);
-    Triangle* tris = reinterpret_cast<Triangle*>(reinterpret_cast<uint8_t*>(pairs) +
-                                                 carve_round(size_t{m} * 2 * sizeof(uint32_t)));
     uint32_t k = 0;
     for (uint32_t i = 0; i < src.n_edges; ++i) {
       uint32_t v0, v1;
@@ -315,7 +318,6 @@ Status BandConductor::gather_solid(Attempt& a) {
       if (!ok(s)) return s;
       if (!edge_meets_rows(Edge3{p0, p1}, lo, hi)) continue;
       if (pass == 1) {
-        a.g.edges[k] = Edge3{p0, p1};
         a.g.ids_end[-1 - int64_t{k}] = stream_ids_ != nullptr ? stream_ids_[i] : i;
         pairs[2 * k] = v0;
         pairs[2 * k + 1] = v1;
@@ -340,32 +342,39 @@ Status BandConductor::gather_solid(Attempt& a) {
     if (pass == 0) nt = k;
     stats_.edge_reads += src.n_edges;
     if (pass == 1) break;
-    // The layout, now that the counts are known.
+    // The layout, now that the counts are known: the vertex ids (every end and corner) are
+    // scratch below the edge ids, dead once the indices are local.
     uint8_t* base = arena_ + front_bytes();
     uint8_t* top = arena_ + arena_bytes_;
-    const size_t ids = size_t{2} * m + size_t{3} * nt;
-    const size_t front = carve_round(size_t{m} * sizeof(Edge3)) +
-                         carve_round(size_t{m} * 2 * sizeof(uint32_t)) +
-                         carve_round(size_t{nt} * sizeof(Triangle)) +
-                         carve_round(ids * sizeof(uint32_t)) + carve_round(ids * sizeof(Point3));
+    const size_t front =
+        carve_round(size_t{m} * 2 * sizeof(uint32_t)) + carve_round(size_t{nt} * sizeof(Triangle));
+    const size_t ids = carve_round((size_t{2} * m + size_t{3} * nt) * sizeof(uint32_t));
     const size_t back = carve_round(size_t{m} * sizeof(uint32_t));
-    if (top < base || front + back + 64 > size_t(top - base)) {
-      a.need = front_bytes() + front + back + 64;
-      a.g.n = m;
+    a.g.n = m;
+    if (top < base || front + ids + back + 64 > size_t(top - base)) {
+      a.need = front_bytes() + front + ids + back + 64;
       return Status::kWorkspaceTooSmall;
     }
-    a.g.edges = reinterpret_cast<Edge3*>(base);
+    a.g.edges = nullptr;  // the hidden-line run's, once it has them
     a.g.ids_end = reinterpret_cast<uint32_t*>(top);
-    a.g.n = m;
-    a.g.free_lo = base + carve_round(size_t{m} * sizeof(Edge3));
+    a.g.free_lo = base;
     a.g.free_hi = top - back;
+    pairs = reinterpret_cast<uint32_t*>(base);
+    tris = reinterpret_cast<Triangle*>(base + carve_round(size_t{m} * 2 * sizeof(uint32_t)));
+    vids = reinterpret_cast<uint32_t*>(a.g.free_hi - ids);
   }
-  // The vertices they use, sorted and once each; then local indices.
-  uint32_t* pairs = reinterpret_cast<uint32_t*>(a.g.free_lo);
-  Triangle* tris = reinterpret_cast<Triangle*>(reinterpret_cast<uint8_t*>(pairs) +
-                                               carve_round(size_t{m} * 2 * sizeof(uint32_t)));
-  uint32_t* vids = reinterpret_cast<uint32_t*>(reinterpret_cast<uint8_t*>(tris) +
-                                               carve_round(size_t{nt} * sizeof(Triangle)));
+  a.in.edge_pairs = pairs;
+  a.in.n_edges = m;
+  a.in.triangles = tris;
+  a.in.n_triangles = nt;
+  return gather_vertices(a, pairs, tris, vids);
+}
+
+// The vertices the band's edges and triangles use, sorted and once each, read right after its
+// triangles (the ids at `vids` lie above them); then its local indices.
+Status BandConductor::gather_vertices(Attempt& a, uint32_t* pairs, Triangle* tris, uint32_t* vids) {
+  const SolidSource& src = solid_;
+  const uint32_t m = a.in.n_edges, nt = a.in.n_triangles;
   uint32_t nv = 0;
   for (uint32_t k = 0; k < 2 * m; ++k) vids[nv++] = pairs[k];
   for (uint32_t k = 0; k < nt; ++k)
@@ -374,9 +383,15 @@ Status BandConductor::gather_solid(Attempt& a) {
   uint32_t unique = 0;
   for (uint32_t k = 0; k < nv; ++k)
     if (unique == 0 || vids[unique - 1] != vids[k]) vids[unique++] = vids[k];
-  // The vertices right after the unique ids: they only overwrite ids past those.
-  Point3* verts = reinterpret_cast<Point3*>(reinterpret_cast<uint8_t*>(vids) +
-                                            carve_round(size_t{unique} * sizeof(uint32_t)));
+  Point3* verts = reinterpret_cast<Point3*>(reinterpret_cast<uint8_t*>(tris) +
+                                            carve_round(size_t{nt} * sizeof(Triangle)));
+  uint8_t* verts_end =
+      reinterpret_cast<uint8_t*>(verts) + carve_round(size_t{unique} * sizeof(Point3));
+  if (verts_end + 64 > reinterpret_cast<uint8_t*>(vids)) {  // the band's bytes so far, and 64
+    a.need = size_t(verts_end - arena_) +
+             size_t(arena_ + arena_bytes_ - reinterpret_cast<uint8_t*>(vids)) + 64;
+    return Status::kWorkspaceTooSmall;
+  }
   for (uint32_t k = 0; k < unique; ++k) {
     const Status s = src.vertex(src.ctx, vids[k], &verts[k]);
     if (!ok(s)) return s;
@@ -386,11 +401,7 @@ Status BandConductor::gather_solid(Attempt& a) {
     for (int c = 0; c < 3; ++c) tris[k].v[c] = local_vertex(vids, unique, tris[k].v[c]);
   a.in.vertices = verts;
   a.in.n_vertices = unique;
-  a.in.edge_pairs = pairs;
-  a.in.n_edges = m;
-  a.in.triangles = tris;
-  a.in.n_triangles = nt;
-  a.after = align_up(reinterpret_cast<uint8_t*>(verts + unique));
+  a.after = verts_end;
   return Status::kOk;
 }
 
@@ -398,8 +409,10 @@ Status BandConductor::gather_solid(Attempt& a) {
 // records or incidences is run again with the counts it reported; one short of bytes means the
 // band does not fit.
 Status BandConductor::hide_band(Attempt& a) {
-  for (uint32_t k = 0; k < a.g.n; ++k)
-    if (edge_row_min(a.g.edges[k]) < a.y1 && edge_row_max(a.g.edges[k]) >= a.y1) ++a.carry_capacity;
+  for (uint32_t k = 0; k < a.in.n_edges; ++k) {
+    const Edge3 e{a.in.vertices[a.in.edge_pairs[2 * k]], a.in.vertices[a.in.edge_pairs[2 * k + 1]]};
+    if (edge_row_min(e) < a.y1 && edge_row_max(e) >= a.y1) ++a.carry_capacity;
+  }
   a.carry_in = reinterpret_cast<const Carry*>(arena_);
   a.carry_runs_in = carry_runs(arena_, n_carry_);
   a.n_carry_in = n_carry_;

@@ -234,7 +234,7 @@ struct StrokeCollector {
     out[count++] = Segment2{s.x0, s.y0, s.x1, s.y1};
     return Status::kOk;
   }
-  static void begin(void* ctx, uint8_t* tail, size_t bytes) {
+  static void begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3*) {
     auto* self = static_cast<StrokeCollector*>(ctx);
     self->out = reinterpret_cast<Segment2*>(tail);
     const size_t n = bytes / sizeof(Segment2);

@@ -199,7 +199,8 @@ void place_fronts(const Topology& topo, const CutSet& cutset, uint32_t* front_fi
 void start_vc(const Topology& topo, const uint8_t* front, const Incidences& inc, bool use_vc,
               uint8_t* vc, FallbackStats& st) {
   for (uint32_t v = 0; v < topo.n_vertices; ++v) {
-    const bool singular = inc.same_next[v] != v || inc.vertex_first[v] != inc.vertex_first[v + 1];
+    const bool singular =
+        use_vc && (inc.same_next[v] != v || inc.vertex_first[v] != inc.vertex_first[v + 1]);
     vc[v] = (use_vc && !singular) ? kVcUnknown : kVcUnusable;
   }
   if (!use_vc) return;

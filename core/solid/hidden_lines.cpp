@@ -171,7 +171,7 @@ Status HiddenRun::build_edges() {
   if (s != Status::kOk) return fail(s);
   r.bytes_topology = topo.kept_bytes;
   arena.take(topo.kept_bytes);
-  const size_t build_high = arena.used + topology_scratch_bytes(in);
+  const size_t build_high = arena.used + topo.scratch_bytes;
   if (arena.high < build_high && build_high <= arena.size) arena.high = build_high;
   r.check = topo.check;
   r.n_drawn = topo.n_drawn;
@@ -190,12 +190,16 @@ Status HiddenRun::cut_and_touches() {
   Status s = cut_step(edges, topo.n_edges, params, &arena, &cutset, &r);
   if (s == Status::kWorkspaceTooSmall) return out_of_room();
   if (s != Status::kOk) return fail(s);
-  r.bytes_incidence = incidence_bytes(topo, params.incidence_capacity);
+  // A band's fallback uses no V.C. table: it needs the incidences by edge only.
+  const bool by_vertex = !params.band;
+  r.bytes_incidence = incidence_bytes(topo, params.incidence_capacity, by_vertex);
   uint8_t* inc_mem = arena.take(r.bytes_incidence);
   if (inc_mem == nullptr) return out_of_room();
   s = find_incidences(topo, params.incidence_capacity, inc_mem, r.bytes_incidence, &inc,
-                      &r.incidences_needed);
+                      &r.incidences_needed, by_vertex);
   if (s != Status::kOk) return fail(s);
+  // The search's scratch ends the block, and its 8 bytes of alignment slack: both free again.
+  arena.used -= incidence_scratch_bytes(topo) + 8;
   r.incidences = inc.n;
   r.coincident_vertices = inc.coincident_vertices;
   return Status::kOk;
@@ -249,7 +253,7 @@ Status HiddenRun::qi_method(bool* gave_up) {
   }
   crossing_grid = state.grid;  // the lines ask the QI's grid of every face
   if (sink.begin != nullptr)
-    sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);
+    sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used, edges);
   r.used_qi = true;
   s = emit_qi_pieces(topo, front, cutset, inc, state, QiSink{&qi_piece, &adapter});
   if (s == Status::kOk) s = lines(front);
@@ -282,7 +286,7 @@ Status HiddenRun::fallback_method(bool manifold) {
   if (fb_mem == nullptr || !carve_shared_grid(topo, params, &arena, &crossing_grid, &r))
     return out_of_room();
   if (sink.begin != nullptr)
-    sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used);
+    sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used, edges);
   Status s = run_fallback(topo, front, cutset, inc, fp, fb_mem, r.bytes_fallback,
                           FallbackSink{&fallback_piece, &adapter, &fallback_outline}, &r.fallback,
                           share ? &crossing_grid : nullptr);

@@ -101,8 +101,10 @@ struct HiddenPiece {
 
 struct HiddenSink {
   // Called once, before the first piece: [tail, tail + tail_bytes) of the buffer is free
-  // until hidden_lines() returns. May be null.
-  void (*begin)(void* context, uint8_t* tail, size_t tail_bytes);
+  // until hidden_lines() returns. `edges` are every edge of the run as projected (the drawn
+  // ones first, in input order), in the buffer below the tail: they stay there after the run
+  // until the buffer is used again, so a caller keeps no copy of its own. May be null.
+  void (*begin)(void* context, uint8_t* tail, size_t tail_bytes, const Edge3* edges);
   Status (*piece)(void* context, const HiddenPiece& piece);
   Status (*outline)(void* context, const HiddenPiece& segment);  // may be null
   void* context;

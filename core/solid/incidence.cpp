@@ -11,44 +11,27 @@ namespace {
 // About one vertex per cell: side = extent / ceil(sqrt(V)), so at most (sqrt(V) + 2)^2 cells.
 uint32_t grid_side_cells(uint32_t n_vertices) { return isqrt_u64(n_vertices) + 2; }
 
+// The arrays the Incidences keep, then the search's scratch (last, so a caller can give it
+// back once the search is done).
 template <typename C>
-void count_arrays(C& c, const Topology& topo, uint32_t capacity) {
-  const uint32_t side = grid_side_cells(topo.n_vertices);
+void count_arrays(C& c, const Topology& topo, uint32_t capacity, bool by_vertex) {
   c.template take<Incidence>(capacity);
   c.template take<uint32_t>(topo.n_edges + 1);
+  if (!by_vertex) return;
   c.template take<uint32_t>(capacity);
   c.template take<uint32_t>(topo.n_vertices + 1);
-  c.template take<uint32_t>(topo.n_vertices);          // same_next
+  c.template take<uint32_t>(topo.n_vertices);  // same_next
+}
+template <typename C>
+void count_scratch(C& c, const Topology& topo) {
+  const uint32_t side = grid_side_cells(topo.n_vertices);
   c.template take<uint32_t>(size_t{side} * side + 1);  // cell_first (grid scratch)
   c.template take<uint32_t>(topo.n_vertices);          // cell_vertices / sort order
 }
 
-}  // namespace
-
-size_t incidence_bytes(const Topology& topo, uint32_t capacity) {
-  ByteCounter c;
-  count_arrays(c, topo, capacity);
-  return c.total + 8;
-}
-
-Status find_incidences(const Topology& topo, uint32_t capacity, void* buffer, size_t bytes,
-                       Incidences* out, uint32_t* needed) {
-  const uint32_t nv = topo.n_vertices;
-  const uint32_t side = grid_side_cells(nv);
-  Carver carve(buffer, bytes);
-  Incidences r;
-  r.by_edge = carve.take<Incidence>(capacity);
-  r.edge_first = carve.take<uint32_t>(topo.n_edges + 1);
-  r.by_vertex = carve.take<uint32_t>(capacity);
-  r.vertex_first = carve.take<uint32_t>(nv + 1);
-  r.same_next = carve.take<uint32_t>(nv);
-  uint32_t* cell_first = carve.take<uint32_t>(size_t{side} * side + 1);
-  uint32_t* order = carve.take<uint32_t>(nv);
-  if (carve.short_) return Status::kWorkspaceTooSmall;
-  *needed = 0;
-
-  // Vertices at the same point: sort by (x, y, index), link each run into a ring.
-  const Point3* p = topo.vertices;
+// Vertices at the same point: sorted by (x, y, index) in `order`, each run linked into a ring.
+void link_coincident(const Point3* p, uint32_t nv, uint32_t* order, Incidences* out) {
+  Incidences& r = *out;
   for (uint32_t v = 0; v < nv; ++v) order[v] = v;
   heap_sort(order, nv, [p](uint32_t a, uint32_t b) {
     if (p[a].x != p[b].x) return p[a].x < p[b].x;
@@ -62,6 +45,55 @@ Status find_incidences(const Topology& topo, uint32_t capacity, void* buffer, si
     if (j - i > 1) r.coincident_vertices += j - i;
     i = j;
   }
+}
+
+// The records grouped by vertex.
+void group_by_vertex(uint32_t nv, Incidences* out) {
+  Incidences& r = *out;
+  const uint32_t n = r.n;
+  for (uint32_t v = 0; v <= nv; ++v) r.vertex_first[v] = 0;
+  for (uint32_t i = 0; i < n; ++i) ++r.vertex_first[r.by_edge[i].vertex + 1];
+  for (uint32_t v = 0; v < nv; ++v) r.vertex_first[v + 1] += r.vertex_first[v];
+  for (uint32_t i = 0; i < n; ++i) r.by_vertex[r.vertex_first[r.by_edge[i].vertex]++] = i;
+  for (uint32_t v = nv; v > 0; --v) r.vertex_first[v] = r.vertex_first[v - 1];
+  r.vertex_first[0] = 0;
+}
+
+}  // namespace
+
+size_t incidence_bytes(const Topology& topo, uint32_t capacity, bool by_vertex) {
+  ByteCounter c;
+  count_arrays(c, topo, capacity, by_vertex);
+  count_scratch(c, topo);
+  return c.total + 8;
+}
+
+size_t incidence_scratch_bytes(const Topology& topo) {
+  ByteCounter c;
+  count_scratch(c, topo);
+  return c.total;
+}
+
+Status find_incidences(const Topology& topo, uint32_t capacity, void* buffer, size_t bytes,
+                       Incidences* out, uint32_t* needed, bool by_vertex) {
+  const uint32_t nv = topo.n_vertices;
+  const uint32_t side = grid_side_cells(nv);
+  Carver carve(buffer, bytes);
+  Incidences r;
+  r.by_edge = carve.take<Incidence>(capacity);
+  r.edge_first = carve.take<uint32_t>(topo.n_edges + 1);
+  if (by_vertex) {
+    r.by_vertex = carve.take<uint32_t>(capacity);
+    r.vertex_first = carve.take<uint32_t>(nv + 1);
+    r.same_next = carve.take<uint32_t>(nv);
+  }
+  uint32_t* cell_first = carve.take<uint32_t>(size_t{side} * side + 1);
+  uint32_t* order = carve.take<uint32_t>(nv);
+  if (carve.short_) return Status::kWorkspaceTooSmall;
+  *needed = 0;
+
+  const Point3* p = topo.vertices;
+  if (by_vertex) link_coincident(p, nv, order, &r);
 
   // The vertex grid.
   const Grid g = grid_over(p, nv, side - 2);
@@ -115,13 +147,7 @@ Status find_incidences(const Topology& topo, uint32_t capacity, void* buffer, si
                   [](const Incidence& x, const Incidence& y) {
                     return x.t < y.t || (x.t == y.t && x.vertex < y.vertex);
                   });
-  // The same records grouped by vertex.
-  for (uint32_t v = 0; v <= nv; ++v) r.vertex_first[v] = 0;
-  for (uint32_t i = 0; i < n; ++i) ++r.vertex_first[r.by_edge[i].vertex + 1];
-  for (uint32_t v = 0; v < nv; ++v) r.vertex_first[v + 1] += r.vertex_first[v];
-  for (uint32_t i = 0; i < n; ++i) r.by_vertex[r.vertex_first[r.by_edge[i].vertex]++] = i;
-  for (uint32_t v = nv; v > 0; --v) r.vertex_first[v] = r.vertex_first[v - 1];
-  r.vertex_first[0] = 0;
+  if (by_vertex) group_by_vertex(nv, &r);
   *out = r;
   return Status::kOk;
 }

@@ -32,10 +32,15 @@ struct Incidences {
   uint32_t coincident_vertices = 0;  // vertices sharing their point with another
 };
 
-size_t incidence_bytes(const Topology& topo, uint32_t capacity);
+// `by_vertex` false: only the records by edge (by_edge, edge_first); by_vertex, vertex_first and
+// same_next stay null (the topology-free method asks them only for Kira's V.C. table).
+size_t incidence_bytes(const Topology& topo, uint32_t capacity, bool by_vertex = true);
+// Of those, the search's scratch: the buffer's last bytes (before the 8 of alignment), free
+// again once find_incidences() returns.
+size_t incidence_scratch_bytes(const Topology& topo);
 
 // kIncidenceCapacity when more than `capacity` incidences exist (`*needed` says how many).
 Status find_incidences(const Topology& topo, uint32_t capacity, void* buffer, size_t bytes,
-                       Incidences* out, uint32_t* needed);
+                       Incidences* out, uint32_t* needed, bool by_vertex = true);
 
 }  // namespace haloplot

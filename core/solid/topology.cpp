@@ -6,10 +6,10 @@
 namespace haloplot {
 namespace {
 
-// An undirected side keyed by (smaller vertex, larger vertex), and where it came from.
+// A drawn edge keyed by (smaller vertex, larger vertex), and its index.
 struct SideKey {
   uint64_t key;
-  uint32_t ref;  // drawn edge index, or 3 * triangle + corner
+  uint32_t ref;  // drawn edge index
 };
 
 uint64_t key_of(uint32_t a, uint32_t b) {
@@ -45,14 +45,15 @@ void count_kept(C& c, const SolidInput& in, size_t n) {
 }
 
 // The build's scratch, dead once it returns: carved from the top of the buffer so the kept
-// arrays below it end where the caller's next stage may begin.
+// arrays below it end where the caller's next stage may begin. The drawn edges' keys, then the
+// keys of the undrawn sides that become diagonals (n_side of them, counted before they are
+// stored: at most every side) and the faces of each edge. A triangle side's edge is looked up
+// when it is needed, not stored: a band of a large model holds many sides for few edges.
 template <typename C>
-void count_scratch(C& c, const SolidInput& in) {
-  const size_t sides = size_t{in.n_triangles} * 3;
-  c.template take<SideKey>(in.n_edges);          // drawn keys
-  c.template take<SideKey>(sides);               // side keys
-  c.template take<uint8_t>(in.n_edges + sides);  // faces per edge
-  c.template take<uint32_t>(sides);              // the edge of each triangle side
+void count_scratch(C& c, size_t n_drawn, size_t n_side) {
+  c.template take<SideKey>(n_drawn);           // drawn keys
+  c.template take<uint64_t>(n_side);           // undrawn side keys
+  c.template take<uint8_t>(n_drawn + n_side);  // faces per edge
 }
 
 // Every vertex in range and every index in its array; no edge or triangle repeats a vertex.
@@ -73,33 +74,35 @@ Status check_input(const SolidInput& in) {
   return Status::kOk;
 }
 
-// Triangle sides that are not drawn edges (the diagonals to be), sorted by key so they are
-// numbered independently of the triangle order; a band keeps only those meeting its rows.
+// Does side a-b meet the rows the topology keeps (all of them unless options.rows)?
+bool side_in_rows(const SolidInput& in, const TopologyOptions& options, uint32_t a, uint32_t b) {
+  const int32_t ya = in.vertices[a].y, yb = in.vertices[b].y;
+  return !options.rows ||
+         ((ya < yb ? yb : ya) >= options.row_lo && (ya < yb ? ya : yb) <= options.row_hi);
+}
+
+// The triangle sides that are not drawn edges (the diagonals to be), as keys; a band keeps only
+// those meeting its rows. With `side` null they are only counted; otherwise stored and sorted,
+// so the diagonals are numbered independently of the triangle order.
 uint32_t undrawn_sides(const SolidInput& in, const TopologyOptions& options, const SideKey* drawn,
-                       SideKey* side) {
+                       uint64_t* side) {
   const uint32_t sides = in.n_triangles * 3;
   uint32_t n_side = 0;
-  auto in_rows = [&](uint32_t a, uint32_t b) {
-    const int32_t ya = in.vertices[a].y, yb = in.vertices[b].y;
-    return !options.rows ||
-           ((ya < yb ? yb : ya) >= options.row_lo && (ya < yb ? ya : yb) <= options.row_hi);
-  };
   for (uint32_t s = 0; s < sides; ++s) {
     const Triangle& tri = in.triangles[s / 3];
     const uint32_t a = tri.v[s % 3], b = tri.v[(s % 3 + 1) % 3];
     const uint64_t k = key_of(a, b);
-    if (find_key(drawn, in.n_edges, k) == in.n_edges && in_rows(a, b))
-      side[n_side++] = SideKey{k, s};
+    if (find_key(drawn, in.n_edges, k) != in.n_edges || !side_in_rows(in, options, a, b)) continue;
+    if (side != nullptr) side[n_side] = k;
+    ++n_side;
   }
-  heap_sort(side, n_side, key_less);
+  if (side != nullptr) heap_sort(side, n_side, [](uint64_t x, uint64_t y) { return x < y; });
   return n_side;
 }
 
-// The edges: the drawn ones in input order, then one diagonal per distinct undrawn side; and
-// for each triangle side the edge it lies on (kNoFace for a band's side beyond its rows).
-void number_edges(const SolidInput& in, const SideKey* drawn, const SideKey* side, uint32_t n_side,
-                  uint32_t* side_edge, Topology& t) {
-  const uint32_t sides = in.n_triangles * 3;
+// The edges: the drawn ones in input order, then one diagonal per distinct undrawn side, in
+// the order of their keys (each diagonal runs from its lesser vertex).
+void number_edges(const SolidInput& in, const uint64_t* side, uint32_t n_side, Topology& t) {
   for (uint32_t e = 0; e < in.n_edges; ++e)
     t.edges[e] = SolidEdge{in.edge_pairs[2 * e],
                            in.edge_pairs[2 * e + 1],
@@ -107,36 +110,52 @@ void number_edges(const SolidInput& in, const SideKey* drawn, const SideKey* sid
                            EdgeClass::kLoose,
                            true,
                            false};
-  for (uint32_t s = 0; s < sides; ++s) {
-    const Triangle& tri = in.triangles[s / 3];
-    const uint32_t d = find_key(drawn, in.n_edges, key_of(tri.v[s % 3], tri.v[(s % 3 + 1) % 3]));
-    side_edge[s] = d < in.n_edges ? drawn[d].ref : kNoFace;  // diagonals below
-  }
   uint32_t n = in.n_edges;
   for (uint32_t i = 0; i < n_side; ++i) {
-    if (i == 0 || side[i].key != side[i - 1].key) {
-      const uint32_t a = static_cast<uint32_t>(side[i].key >> 32);
-      const uint32_t b = static_cast<uint32_t>(side[i].key & 0xffffffffu);
-      t.edges[n++] = SolidEdge{a, b, {kNoFace, kNoFace}, EdgeClass::kLoose, false, false};
-    }
-    side_edge[side[i].ref] = n - 1;
+    if (i > 0 && side[i] == side[i - 1]) continue;
+    const uint32_t a = static_cast<uint32_t>(side[i] >> 32);
+    const uint32_t b = static_cast<uint32_t>(side[i] & 0xffffffffu);
+    t.edges[n++] = SolidEdge{a, b, {kNoFace, kNoFace}, EdgeClass::kLoose, false, false};
   }
   t.n_edges = n;
   t.n_drawn = in.n_edges;
 }
 
+// The edge triangle side s lies on: a drawn edge, a diagonal (found among t's diagonals, which
+// are in key order), or kNoFace for a band's side beyond its rows.
+uint32_t side_edge(const SolidInput& in, const TopologyOptions& options, const SideKey* drawn,
+                   const Topology& t, uint32_t s) {
+  const Triangle& tri = in.triangles[s / 3];
+  const uint32_t a = tri.v[s % 3], b = tri.v[(s % 3 + 1) % 3];
+  const uint64_t k = key_of(a, b);
+  const uint32_t d = find_key(drawn, in.n_edges, k);
+  if (d < in.n_edges) return drawn[d].ref;
+  if (!side_in_rows(in, options, a, b)) return kNoFace;
+  uint32_t lo = t.n_drawn, hi = t.n_edges;
+  while (lo < hi) {
+    const uint32_t mid = lo + (hi - lo) / 2;
+    if (key_of(t.edges[mid].v0, t.edges[mid].v1) < k)
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return lo;  // every such side's key is a diagonal's
+}
+
 // Attach faces: a side running v0 -> v1 takes slot 0, v1 -> v0 slot 1. Then each edge is
 // checked: loose, a boundary, non-manifold, or two faces that agree (regular) or not.
-void attach_faces(const SolidInput& in, const uint32_t* side_edge, uint8_t* nfaces, Topology& t) {
+void attach_faces(const SolidInput& in, const TopologyOptions& options, const SideKey* drawn,
+                  uint8_t* nfaces, Topology& t) {
   const uint32_t sides = in.n_triangles * 3, n = t.n_edges;
   for (uint32_t e = 0; e < n; ++e) nfaces[e] = 0;
   for (uint32_t s = 0; s < sides; ++s) {
-    if (side_edge[s] == kNoFace) continue;  // a band's side beyond its rows
+    const uint32_t edge = side_edge(in, options, drawn, t, s);
+    if (edge == kNoFace) continue;  // a band's side beyond its rows
     const Triangle& tri = in.triangles[s / 3];
     const uint32_t a = tri.v[s % 3];
-    SolidEdge& e = t.edges[side_edge[s]];
+    SolidEdge& e = t.edges[edge];
     const int slot = a == e.v0 ? 0 : 1;
-    if (nfaces[side_edge[s]] < 255) ++nfaces[side_edge[s]];
+    if (nfaces[edge] < 255) ++nfaces[edge];
     if (e.face[slot] == kNoFace)
       e.face[slot] = s / 3;
     else if (e.face[1 - slot] == kNoFace)
@@ -197,15 +216,14 @@ void build_stars(const SolidInput& in, Topology& t) {
 }  // namespace
 
 size_t topology_bytes(const SolidInput& in) {
-  ByteCounter kept, scratch;
+  ByteCounter kept;
   count_kept(kept, in, size_t{in.n_edges} + size_t{in.n_triangles} * 3);  // at most this many
-  count_scratch(scratch, in);
-  return kept.total + scratch.total + 8;
+  return kept.total + topology_scratch_bytes(in) + 8;
 }
 
 size_t topology_scratch_bytes(const SolidInput& in) {
   ByteCounter scratch;
-  count_scratch(scratch, in);
+  count_scratch(scratch, in.n_edges, size_t{in.n_triangles} * 3);  // at most every side
   return scratch.total;
 }
 
@@ -214,21 +232,17 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
   const Status checked = check_input(in);
   if (checked != Status::kOk) return checked;
   const uint32_t sides = in.n_triangles * 3;
-  // Scratch from the top of the buffer (8-byte aligned), the kept arrays from the bottom once
-  // the number of edges is known.
-  ByteCounter scratch_size;
-  count_scratch(scratch_size, in);
+  // Scratch from the top of the buffer (8-byte aligned): the drawn keys first, then, once the
+  // undrawn sides are counted, their keys and the face counts below them; the kept arrays from
+  // the bottom once the number of edges is known.
   uint8_t* lo =
       reinterpret_cast<uint8_t*>((reinterpret_cast<uintptr_t>(buffer) + 7) & ~uintptr_t{7});
   uint8_t* hi = reinterpret_cast<uint8_t*>(
       (reinterpret_cast<uintptr_t>(static_cast<uint8_t*>(buffer) + bytes)) & ~uintptr_t{7});
-  if (buffer == nullptr || hi < lo || size_t(hi - lo) < scratch_size.total)
+  const size_t drawn_bytes = carve_round(size_t{in.n_edges} * sizeof(SideKey));
+  if (buffer == nullptr || hi < lo || size_t(hi - lo) < drawn_bytes)
     return Status::kWorkspaceTooSmall;
-  Carver scratch(hi - scratch_size.total, scratch_size.total);
-  SideKey* drawn = scratch.take<SideKey>(in.n_edges);
-  SideKey* side = scratch.take<SideKey>(sides);
-  uint8_t* nfaces = scratch.take<uint8_t>(in.n_edges + size_t{sides});
-  uint32_t* side_edge = scratch.take<uint32_t>(sides);  // triangle t's side k at [3t + k]
+  SideKey* drawn = reinterpret_cast<SideKey*>(hi - drawn_bytes);
   Topology t;
   t.vertices = in.vertices;
   t.n_vertices = in.n_vertices;
@@ -243,10 +257,17 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
     if (drawn[i].key == drawn[i - 1].key) return Status::kBadParameter;
 
   // The diagonals' keys come first, so the kept arrays are carved for the exact number of edges.
-  const uint32_t n_side = undrawn_sides(in, options, drawn, side);
+  const uint32_t n_side = undrawn_sides(in, options, drawn, nullptr);
+  ByteCounter scratch_size;
+  count_scratch(scratch_size, in.n_edges, n_side);
+  if (size_t(hi - lo) < scratch_size.total) return Status::kWorkspaceTooSmall;
+  Carver scratch(hi - scratch_size.total, scratch_size.total - drawn_bytes);
+  uint64_t* side = scratch.take<uint64_t>(n_side);
+  uint8_t* nfaces = scratch.take<uint8_t>(size_t{in.n_edges} + n_side);
+  undrawn_sides(in, options, drawn, side);
   uint32_t n_diagonals = 0;
   for (uint32_t i = 0; i < n_side; ++i)
-    if (i == 0 || side[i].key != side[i - 1].key) ++n_diagonals;
+    if (i == 0 || side[i] != side[i - 1]) ++n_diagonals;
   Carver carve(lo, size_t(hi - lo) - scratch_size.total);
   t.edges = carve.take<SolidEdge>(size_t{in.n_edges} + n_diagonals);
   if (options.stars) {
@@ -257,8 +278,9 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
   }
   if (carve.short_) return Status::kWorkspaceTooSmall;
   t.kept_bytes = size_t(carve.next - static_cast<uint8_t*>(buffer));
-  number_edges(in, drawn, side, n_side, side_edge, t);
-  attach_faces(in, side_edge, nfaces, t);
+  t.scratch_bytes = scratch_size.total;
+  number_edges(in, side, n_side, t);
+  attach_faces(in, options, drawn, nfaces, t);
   if (options.stars) build_stars(in, t);
   *out = t;
   return Status::kOk;

@@ -38,14 +38,16 @@ struct Topology {
   uint32_t* vertex_face_first = nullptr;
   uint32_t* vertex_faces = nullptr;
   MeshCheck check;
-  size_t kept_bytes = 0;  // the buffer's first bytes the topology lives in (the rest is free)
+  size_t kept_bytes = 0;     // the buffer's first bytes the topology lives in (the rest is free)
+  size_t scratch_bytes = 0;  // the build's scratch, at the buffer's top while it ran
 
   Edge3 edge3(uint32_t e) const { return Edge3{vertices[edges[e].v0], vertices[edges[e].v1]}; }
 };
 
 // Bytes build_topology() needs for this input, at most: the arrays it keeps (sized by the
 // number of edges, found by the build) from the buffer's start, and its scratch at the top.
-// Once it returns, the Topology lives in the first kept_bytes and the rest is free again.
+// Once it returns, the Topology lives in the first kept_bytes and the rest is free again; the
+// build says how much scratch it took (Topology::scratch_bytes, at most this query's).
 size_t topology_bytes(const SolidInput& in);
 size_t topology_scratch_bytes(const SolidInput& in);  // of those, the scratch at the top
 

@@ -114,7 +114,7 @@ void hatched_table(const std::vector<size_t>& arenas) {
   hp.spacing = 240;
   hp.angle_mdeg = 30000;
   hp.min_length = 1;
-  for (int n : {3, 10, 14, 20}) {
+  for (int n : {3, 10, 14, 20, 28}) {
     SolidScene scene;
     if (!cube_array_scene(n, &scene)) return;
     const SolidInput in = solid_input(scene);

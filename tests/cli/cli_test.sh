@@ -254,7 +254,7 @@ expect '[ $rc -eq 0 ] && [ "$(sed -n "s/^bands=//p" solid_hatch.txt)" -gt 1 ] &&
 rc=$?
 expect '[ $rc -ne 0 ] && grep -q "arena BYTES" err.txt && [ ! -e solid_arena.svg ]' "plot --arena of a solid is refused by name, not ignored: $(cat err.txt)"
 # Intersection lines in bands too: the boxes through each other, with and without them.
-printf 'scene boxes.obj\ndrawing hidden-removed\nview 30,25\narena 6144\n' > lines_arena.job
+printf 'scene boxes.obj\ndrawing hidden-removed\nview 30,25\narena 4096\n' > lines_arena.job
 { cat lines_arena.job; echo "intersections off"; } > nolines_arena.job
 "$tool" sim lines_arena.job -o lines_arena.trace --stats 2> lines_arena.txt
 rc=$?
