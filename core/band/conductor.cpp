@@ -265,10 +265,17 @@ Status BandConductor::draw_band(Attempt& a) {
 // the plot), and the planner (motion/path_plan.h: greedy, then 2-opt) orders each column's
 // pieces from where the pen is to where it goes next: the column's far side, or after the
 // band's last column the band above. Planning a column at a time also bounds the path's
-// memory by the largest column, not the band. Measured on Figure 4 in 64 KB against the
-// one-band plan's pen-up travel: greedy alone in columns as wide as tall 1.36x; with 2-opt
-// 1.28x; with the exit known 1.22x (one band tall), 1.16x (two), 1.14x (three, the choice,
-// still 20 bands); whole bands (no columns) 1.40x with 11 more bands.
+// memory by the largest column, not the band. Measured on Figure 4 in 64 KB against the one-band
+// plan's pen-up travel: greedy alone in columns as wide as tall 1.36x; with 2-opt 1.28x; with the
+// exit known 1.22x (one band tall), 1.16x (two), 1.14x (three, the choice, still 20 bands); whole
+// bands (no columns) 1.40x with 11 more bands. A solid's bands are far thinner: 10 x 10
+// hidden-dashed cubes in 64 KB take 24 bands, some 180 steps tall where the cubes are dense, and
+// each band's pen crosses the plot's 20,400 steps, against 375,044 steps of pen-up travel for the
+// whole-model plot. There the serpentine itself is the cost (1.88x; hatched 2.31x, with outlines
+// too 2.43x, tests/cli/band_pen_up.sh), and the column's shape hardly matters: as wide as tall
+// 2.29x, twice 2.03x, four times 1.88x, six 1.85x, ten 1.84x (but Figure 4 worse: 1.17x, 1.19x),
+// whole bands 2.22x. Keying a column by a segment's lower end rather than its middle is worse
+// everywhere.
 int64_t BandConductor::column_of(int64_t x_sum) const {
   const int64_t c = x_sum / 2 / column_side_;  // x >= 0: truncation is floor
   return leftward_ ? -c : c;
