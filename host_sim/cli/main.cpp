@@ -11,9 +11,11 @@
 #include <sstream>
 
 #include "cli/options.h"
+#include "cli/plot_outputs.h"
 #include "demo/cube_array.h"
 #include "demo/random_scene.h"
 #include "export/exporters.h"
+#include "export/plotter_outputs.h"
 #include "io/atomic_file.h"
 #include "io/cut_file.h"
 #include "io/edges_file.h"
@@ -422,6 +424,7 @@ int cmd_plot(int argc, char** argv) {
   valued.insert({"--halo", "--spans", "--cut", "--mode", "--dash", "--steps-per-mm", "--method",
                  "--hatch", "--arena"});
   valued.insert(std::begin(kSceneOptions), std::end(kSceneOptions));
+  valued.insert(std::begin(kPlotterOutputOptions), std::end(kPlotterOutputOptions));
   const Options o = parse_options(argc, argv, 2, valued,
                                   {"--exact-halo", "--stats", "--outline", "--no-intersections"});
   if (!o.error.empty()) return fail(o.error);
@@ -445,6 +448,21 @@ int cmd_plot(int argc, char** argv) {
   std::vector<Edge3> edges;
   int32_t units = 0;
   if (!load_scene(o, o.positional[0], &edges, &error, &units)) return fail(error);
+  if (wants_plotter_outputs(o)) {
+    if (!o.get("--arena").empty())
+      return fail(
+          "--gcode and --hpgl plot the whole drawing's path: drop --arena, or give the "
+          "job 'arena BYTES' and run `haloplot sim JOB.job --gcode ...`");
+    // The job `sim` runs for this drawing: CUT and DRAW in the core's job, then its path.
+    JobSpec spec;
+    spec.drawing = DrawingEffect::kHaloed;
+    spec.draw = dp;
+    spec.cut = cp;
+    spec.substep_bits = units;
+    ExportStyle style;
+    if (!export_style_of(o, &style, &spec.machine, &error)) return fail(error);
+    if (const int rc = write_plot_outputs(o, spec, edges, style)) return rc;
+  }
   if (!o.get("--arena").empty()) return plot_in_bands(o, edges, cp, dp, units);
   HostCut c;
   Status s = host_cut(std::move(edges), cut_in_units(cp, units), &c);
@@ -517,21 +535,9 @@ bool parse_pause_at(const std::string& list_text, std::vector<uint32_t>* pause_a
 
 // The plot as a G-code and an HPGL file too, when asked for.
 int write_exports(const Options& o, const SimReport& r, const JobSpec& spec, const JobFile& jf) {
-  if (!o.get("--gcode").empty()) {
-    const std::string error = write_atomically(o.get("--gcode"), [&](std::ostream& out) {
-      write_gcode(out, r.points, spec.machine, jf.style);
-      return true;
-    });
-    if (!error.empty()) return fail(error);
-  }
-  if (!o.get("--hpgl").empty()) {
-    const std::string error = write_atomically(o.get("--hpgl"), [&](std::ostream& out) {
-      write_hpgl(out, r.points, jf.style);
-      return true;
-    });
-    if (!error.empty()) return fail(error);
-  }
-  return 0;
+  const std::string error =
+      write_plotter_outputs(o.get("--gcode"), o.get("--hpgl"), r.points, spec.machine, jf.style);
+  return error.empty() ? 0 : fail(error);
 }
 
 void print_sim_stats(const JobSpec& spec, const SimReport& r, size_t edges) {

@@ -372,9 +372,7 @@ bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* e
   // Decided in the scene's units, drawn in steps: the strokes come out rounded (units 0).
   ModeDrawing d = make_mode_drawing(run, mode_in_units(so.spec, scene.substep_bits));
   drawing_to_steps(&d, scene.substep_bits);
-  edges->clear();
-  for (const std::vector<Span>* part : {&d.spans, &d.hatch, &d.outline})
-    for (const Span& x : *part) edges->push_back(Edge3{{x.x0, x.y0, 0}, {x.x1, x.y1, 0}});
+  *edges = mode_strokes(d);
   return true;
 }
 
