@@ -425,10 +425,14 @@ int cmd_plot(int argc, char** argv) {
                  "--hatch", "--arena"});
   valued.insert(std::begin(kSceneOptions), std::end(kSceneOptions));
   valued.insert(std::begin(kPlotterOutputOptions), std::end(kPlotterOutputOptions));
+  valued.insert(std::begin(kPenOptions), std::end(kPenOptions));
   const Options o = parse_options(argc, argv, 2, valued,
                                   {"--exact-halo", "--stats", "--outline", "--no-intersections"});
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "plot");
+  for (const char* pen : kPenOptions)
+    if (!o.get(pen).empty() && o.get("--gcode").empty())
+      return fail(std::string(pen) + " sets the G-code's pen or feeds: add --gcode OUT.gcode");
   if (o.get("--mode", "haloed") != "haloed") return cmd_plot_solid(o);
   for (const char* solid_flag : {"--outline", "--no-intersections"})
     if (o.has(solid_flag))
