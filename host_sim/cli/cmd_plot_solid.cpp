@@ -80,6 +80,14 @@ int cmd_plot_solid(const Options& o) {
   std::string error;
   SolidOptions so;
   if (!parse_solid_options(o, &so, &error)) return fail(error);
+  // Options the mode has no use for are refused, never ignored.
+  if (so.spec.mode == SolidMode::kAll && !o.get("--hatch").empty())
+    return fail(
+        "--hatch shades the visible faces: use it with --mode hidden-removed or "
+        "hidden-dashed (--mode all hides nothing)");
+  if (so.spec.mode != SolidMode::kHiddenDashed && !o.get("--dash").empty())
+    return fail("--dash sets the hidden lines' dashes: use it with --mode hidden-dashed (--mode " +
+                o.get("--mode") + " draws no dashes)");
   if (!o.get("--halo").empty() || o.has("--exact-halo"))
     return fail("--halo belongs to --mode haloed (HALO needs no faces)");
   // Not silently ignored: a solid's bands are a job's (the same strokes in any arena).

@@ -49,7 +49,8 @@ const char* kUsage =
     "  haloplot draw SCENE.cut --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans] [--stats]\n"
     "               [--steps-per-mm N]   (the SVG's size in mm; default 80)\n"
     "  haloplot plot SCENE.edges|MODEL --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans]\n"
-    "               [--cut OUT.cut] [cut options] [--arena BYTES] [--steps-per-mm N] [--stats]\n"
+    "               [--cut OUT.cut] [--arena BYTES] [--steps-per-mm N] [--stats]\n"
+    "               [--lambda X] [--cell G] [--cover exact|bbox] [--reach R]   (as cut's)\n"
     "               [--view AZ,EL] [--perspective D] [--up y|z] [--dump-edges OUT.edges]\n"
     "               [--substep S] [--weld EPS|off] [--crease DEG|off]   (MODEL: .obj, .stl or\n"
     "               .ply; --up: the file's up axis, default y as most OBJ files, most STL files\n"
@@ -60,6 +61,13 @@ const char* kUsage =
     "               [--hatch SPACING[,ANGLE[,TURN]]] [--spans OUT.spans] [--view AZ,EL]\n"
     "               [--perspective D] [--up y|z] [--substep S] [--weld EPS|off]\n"
     "               [--crease DEG|off] [--stats]\n"
+    "  haloplot plot SCENE.edges|MODEL ... [--gcode OUT.gcode] [--hpgl OUT.hpgl]   (either form\n"
+    "               above: the plotter's files from the planned path, no step simulation, and\n"
+    "               the plot time on stderr; the same bytes `sim` writes for the same job)\n"
+    "               [--pen servo|z|custom] [--servo-down S] [--z-up MM] [--z-down MM]\n"
+    "               [--z-feed MM/MIN] [--pen-up-gcode TEXT] [--pen-down-gcode TEXT]\n"
+    "               [--draw-feed MM/MIN] [--travel-feed MM/MIN] [--pen-dwell SECONDS]\n"
+    "               (the G-code's pen commands and feeds; TEXT: G-code, \\n between lines)\n"
     "  haloplot sim JOB.job -o OUT.trace [--gcode OUT.gcode] [--hpgl OUT.hpgl] [--arena BYTES]\n"
     "               [--binary] [--stats]   (--binary: the compact binary trace)\n"
     "               [--pause-at E1,E2,...] [--resume-at E]   (feed holds; go on from event E)\n"
@@ -371,6 +379,7 @@ int cmd_draw(int argc, char** argv) {
                                   {"--exact-halo", "--stats"});
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "draw");
+  if (const std::string bad = svg_output_problem(o.get("-o")); !bad.empty()) return fail(bad);
   DrawParams dp;
   std::string error;
   if (!draw_params(o, &dp, &error)) return fail(error);
@@ -430,6 +439,7 @@ int cmd_plot(int argc, char** argv) {
                                   {"--exact-halo", "--stats", "--outline", "--no-intersections"});
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "plot");
+  if (const std::string bad = svg_output_problem(o.get("-o")); !bad.empty()) return fail(bad);
   for (const char* pen : kPenOptions)
     if (!o.get(pen).empty() && o.get("--gcode").empty())
       return fail(std::string(pen) + " sets the G-code's pen or feeds: add --gcode OUT.gcode");
@@ -641,8 +651,9 @@ int cmd_replay(int argc, char** argv) {
   const Options o = parse_options(argc, argv, 2, {"-o"}, {"--stats"});
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "replay");
+  if (const std::string bad = svg_output_problem(o.get("-o")); !bad.empty()) return fail(bad);
   std::ifstream in(o.positional[0]);
-  if (!in) return fail(o.positional[0] + ": cannot open");
+  if (const InputError e = open_problem(o.positional[0], in); e.failed()) return fail(e.message());
   Trace t;
   const InputError ie = read_trace(in, o.positional[0], &t);
   if (ie.failed()) return fail(ie.message());

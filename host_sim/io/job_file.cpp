@@ -366,7 +366,7 @@ InputError check_job(const std::string& path, const std::map<std::string, int>& 
 
 InputError read_job_file(const std::string& path, JobFile* out) {
   std::ifstream in(path);
-  if (!in) return {path, 0, "cannot open"};
+  if (const InputError e = open_problem(path, in); e.failed()) return e;
   *out = JobFile{};
   LineReader reader(in);
   std::vector<std::string> f;

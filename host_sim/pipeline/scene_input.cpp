@@ -221,6 +221,14 @@ bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* e
       *error = "--weld is for models (.obj, .stl, .ply): an .edges file has no vertices to weld";
       return false;
     }
+    // An .edges file is projected already: the view options have nothing to act on.
+    for (const char* view : {"--view", "--perspective", "--up", "--crease", "--dump-edges"})
+      if (!o.get(view).empty()) {
+        *error = std::string(view) +
+                 " is for models (.obj, .stl, .ply): an .edges file is a scene projected "
+                 "already, drawn as it is";
+        return false;
+      }
     const InputError ie = read_edges_file(path, edges, &units);
     if (ie.failed()) *error = ie.message();
     if (substep_bits != nullptr) *substep_bits = units;
