@@ -354,6 +354,13 @@ InputError check_job(const std::string& path, const std::map<std::string, int>& 
   if (out->solid_options.count("--mode") != 0 && !is_mesh_path(out->scene_path))
     return {path, 0,
             "drawing " + out->solid_options["--mode"] + " needs a model scene (.obj, .stl, .ply)"};
+  // An .edges scene is projected already: a view setting would be ignored, so it is refused.
+  if (!is_mesh_path(out->scene_path))
+    for (const char* key : {"view", "perspective", "up", "crease", "weld", "substep"})
+      if (key_lines.count(key) != 0)
+        return {path, key_lines.at(key),
+                std::string(key) + " is for a model scene (.obj, .stl, .ply): " + out->scene_path +
+                    " is an .edges scene, projected already"};
   if (j.draw.mode == HaloMode::kExact) j.cut.reach = j.draw.halo;
   const InputError pen = read_pen_settings(path, key_lines, out);
   if (pen.failed()) return pen;

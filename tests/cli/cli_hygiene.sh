@@ -43,6 +43,8 @@ refused "--dash" a.svg plot cubes.obj --mode all --dash 2,1 -o a.svg
 for opt in "--view 30,25" "--perspective 1000" "--up z" "--crease 10" "--dump-edges d.edges"; do
   refused "${opt%% *}" a.svg plot scene.edges --halo 5 $opt -o a.svg
 done
+printf 'scene scene.edges\nhalo 5\nview 30,25\n' > view.job
+refused "view.job:3: view is for a model scene" v.trace sim view.job -o v.trace
 "$tool" plot cubes.obj --mode hidden-dashed --dash 2,1 --hatch 2 -o ok.svg
 expect '[ $? -eq 0 ]' "--dash and --hatch still work with hidden-dashed"
 
