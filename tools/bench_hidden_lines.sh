@@ -29,9 +29,10 @@ compose() {  # compose OUT.svg LABEL FILE LABEL FILE ...
 }
 for model in pair_of_cubes linked_tori; do
   for mode in all hidden-removed hidden-dashed; do
-    outline=""
+    outline="" dash=""
     [ "$mode" = hidden-removed ] && outline="--outline"
-    "$tool" plot scenes/$model.obj --view 30,25 --mode $mode $outline --dash 1.5,1 -o "$work/$model-$mode.svg"
+    [ "$mode" = hidden-dashed ] && dash="--dash 1.5,1"  # the other modes draw no dashes
+    "$tool" plot scenes/$model.obj --view 30,25 --mode $mode $outline $dash -o "$work/$model-$mode.svg"
   done
   "$tool" plot scenes/$model.obj --view 30,25 --halo 250 -o "$work/$model-haloed.svg"
   compose "docs/modes-$model.svg" "all edges" "$work/$model-all.svg" \

@@ -47,6 +47,8 @@ cgal=$(dpkg-query -W -f='${Version}' libcgal-dev 2>/dev/null || echo "not instal
         printf "| %d | %.2f | %d | %d | %.0f | %.2f | %s |\n", $3, $4 / 1e6, $6, $7, $7 / $3, $7 / 168000, paper[++i]
       }'
   fi
+  echo
+  bash tools/bench_plot_gcode.sh
 } > "$out/performance.md"
 rm -f "$out/performance.body.md"
 if command -v rsvg-convert >/dev/null 2>&1; then

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli/options.h"
+#include "cli/plot_outputs.h"
 #include "cli/solid_options.h"
 #include "io/atomic_file.h"
 #include "io/line_reader.h"
@@ -79,6 +80,14 @@ int cmd_plot_solid(const Options& o) {
   std::string error;
   SolidOptions so;
   if (!parse_solid_options(o, &so, &error)) return fail(error);
+  // Options the mode has no use for are refused, never ignored.
+  if (so.spec.mode == SolidMode::kAll && !o.get("--hatch").empty())
+    return fail(
+        "--hatch shades the visible faces: use it with --mode hidden-removed or "
+        "hidden-dashed (--mode all hides nothing)");
+  if (so.spec.mode != SolidMode::kHiddenDashed && !o.get("--dash").empty())
+    return fail("--dash sets the hidden lines' dashes: use it with --mode hidden-dashed (--mode " +
+                o.get("--mode") + " draws no dashes)");
   if (!o.get("--halo").empty() || o.has("--exact-halo"))
     return fail("--halo belongs to --mode haloed (HALO needs no faces)");
   // Not silently ignored: a solid's bands are a job's (the same strokes in any arena).
@@ -102,6 +111,24 @@ int cmd_plot_solid(const Options& o) {
   const int32_t units = scene.substep_bits;
   ModeDrawing d = make_mode_drawing(run, mode_in_units(so.spec, units));
   drawing_to_steps(&d, units);
+  if (wants_plotter_outputs(o)) {
+    // The job `sim` runs for this drawing: a hidden-line drawing's strokes, decided here; in
+    // mode all the model's edges whole (the same lines, not split where others cross them).
+    JobSpec spec;
+    spec.drawing = DrawingEffect::kAllEdges;
+    ExportStyle style;
+    if (!export_style_of(o, &style, &spec.machine, &error)) return fail(error);
+    std::vector<Edge3> edges;
+    if (so.spec.mode != SolidMode::kAll) {
+      edges = mode_strokes(d);
+    } else {
+      Options edge_options = o;
+      edge_options.values.erase("--dump-edges");  // written once, above
+      if (!load_scene(edge_options, o.positional[0], &edges, &error, &spec.substep_bits))
+        return fail(error);
+    }
+    if (const int rc = write_plot_outputs(o, spec, edges, style)) return rc;
+  }
   SvgStyle style;
   style.second_pen = &d.outline;
   style.steps_per_mm = so.steps_per_mm;

@@ -83,6 +83,8 @@ int cmd_view2d(int argc, char** argv) {
   const Options o =
       parse_options(argc, argv, 2, {"--from", "-o", "--spans", "--trace"}, {"--stats"});
   if (!o.error.empty()) return view2d_fail(o.error);
+  if (const std::string bad = svg_output_problem(o.get("-o")); !bad.empty())
+    return view2d_fail(bad);
   if (o.positional.size() != 1 || o.get("--from").empty() || o.get("-o").empty())
     return view2d_fail(
         "usage: haloplot view2d POLYGON.txt --from X,Y -o OUT.svg [--spans OUT.spans] "

@@ -11,9 +11,11 @@
 #include <sstream>
 
 #include "cli/options.h"
+#include "cli/plot_outputs.h"
 #include "demo/cube_array.h"
 #include "demo/random_scene.h"
 #include "export/exporters.h"
+#include "export/plotter_outputs.h"
 #include "io/atomic_file.h"
 #include "io/cut_file.h"
 #include "io/edges_file.h"
@@ -47,7 +49,8 @@ const char* kUsage =
     "  haloplot draw SCENE.cut --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans] [--stats]\n"
     "               [--steps-per-mm N]   (the SVG's size in mm; default 80)\n"
     "  haloplot plot SCENE.edges|MODEL --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans]\n"
-    "               [--cut OUT.cut] [cut options] [--arena BYTES] [--steps-per-mm N] [--stats]\n"
+    "               [--cut OUT.cut] [--arena BYTES] [--steps-per-mm N] [--stats]\n"
+    "               [--lambda X] [--cell G] [--cover exact|bbox] [--reach R]   (as cut's)\n"
     "               [--view AZ,EL] [--perspective D] [--up y|z] [--dump-edges OUT.edges]\n"
     "               [--substep S] [--weld EPS|off] [--crease DEG|off]   (MODEL: .obj, .stl or\n"
     "               .ply; --up: the file's up axis, default y as most OBJ files, most STL files\n"
@@ -58,6 +61,13 @@ const char* kUsage =
     "               [--hatch SPACING[,ANGLE[,TURN]]] [--spans OUT.spans] [--view AZ,EL]\n"
     "               [--perspective D] [--up y|z] [--substep S] [--weld EPS|off]\n"
     "               [--crease DEG|off] [--stats]\n"
+    "  haloplot plot SCENE.edges|MODEL ... [--gcode OUT.gcode] [--hpgl OUT.hpgl]   (either form\n"
+    "               above: the plotter's files from the planned path, no step simulation, and\n"
+    "               the plot time on stderr; the same bytes `sim` writes for the same job)\n"
+    "               [--pen servo|z|custom] [--servo-down S] [--z-up MM] [--z-down MM]\n"
+    "               [--z-feed MM/MIN] [--pen-up-gcode TEXT] [--pen-down-gcode TEXT]\n"
+    "               [--draw-feed MM/MIN] [--travel-feed MM/MIN] [--pen-dwell SECONDS]\n"
+    "               (the G-code's pen commands and feeds; TEXT: G-code, \\n between lines)\n"
     "  haloplot sim JOB.job -o OUT.trace [--gcode OUT.gcode] [--hpgl OUT.hpgl] [--arena BYTES]\n"
     "               [--binary] [--stats]   (--binary: the compact binary trace)\n"
     "               [--pause-at E1,E2,...] [--resume-at E]   (feed holds; go on from event E)\n"
@@ -369,6 +379,7 @@ int cmd_draw(int argc, char** argv) {
                                   {"--exact-halo", "--stats"});
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "draw");
+  if (const std::string bad = svg_output_problem(o.get("-o")); !bad.empty()) return fail(bad);
   DrawParams dp;
   std::string error;
   if (!draw_params(o, &dp, &error)) return fail(error);
@@ -422,10 +433,16 @@ int cmd_plot(int argc, char** argv) {
   valued.insert({"--halo", "--spans", "--cut", "--mode", "--dash", "--steps-per-mm", "--method",
                  "--hatch", "--arena"});
   valued.insert(std::begin(kSceneOptions), std::end(kSceneOptions));
+  valued.insert(std::begin(kPlotterOutputOptions), std::end(kPlotterOutputOptions));
+  valued.insert(std::begin(kPenOptions), std::end(kPenOptions));
   const Options o = parse_options(argc, argv, 2, valued,
                                   {"--exact-halo", "--stats", "--outline", "--no-intersections"});
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "plot");
+  if (const std::string bad = svg_output_problem(o.get("-o")); !bad.empty()) return fail(bad);
+  for (const char* pen : kPenOptions)
+    if (!o.get(pen).empty() && o.get("--gcode").empty())
+      return fail(std::string(pen) + " sets the G-code's pen or feeds: add --gcode OUT.gcode");
   if (o.get("--mode", "haloed") != "haloed") return cmd_plot_solid(o);
   for (const char* solid_flag : {"--outline", "--no-intersections"})
     if (o.has(solid_flag))
@@ -445,6 +462,21 @@ int cmd_plot(int argc, char** argv) {
   std::vector<Edge3> edges;
   int32_t units = 0;
   if (!load_scene(o, o.positional[0], &edges, &error, &units)) return fail(error);
+  if (wants_plotter_outputs(o)) {
+    if (!o.get("--arena").empty())
+      return fail(
+          "--gcode and --hpgl plot the whole drawing's path: drop --arena, or give the "
+          "job 'arena BYTES' and run `haloplot sim JOB.job --gcode ...`");
+    // The job `sim` runs for this drawing: CUT and DRAW in the core's job, then its path.
+    JobSpec spec;
+    spec.drawing = DrawingEffect::kHaloed;
+    spec.draw = dp;
+    spec.cut = cp;
+    spec.substep_bits = units;
+    ExportStyle style;
+    if (!export_style_of(o, &style, &spec.machine, &error)) return fail(error);
+    if (const int rc = write_plot_outputs(o, spec, edges, style)) return rc;
+  }
   if (!o.get("--arena").empty()) return plot_in_bands(o, edges, cp, dp, units);
   HostCut c;
   Status s = host_cut(std::move(edges), cut_in_units(cp, units), &c);
@@ -517,21 +549,9 @@ bool parse_pause_at(const std::string& list_text, std::vector<uint32_t>* pause_a
 
 // The plot as a G-code and an HPGL file too, when asked for.
 int write_exports(const Options& o, const SimReport& r, const JobSpec& spec, const JobFile& jf) {
-  if (!o.get("--gcode").empty()) {
-    const std::string error = write_atomically(o.get("--gcode"), [&](std::ostream& out) {
-      write_gcode(out, r.points, spec.machine, jf.style);
-      return true;
-    });
-    if (!error.empty()) return fail(error);
-  }
-  if (!o.get("--hpgl").empty()) {
-    const std::string error = write_atomically(o.get("--hpgl"), [&](std::ostream& out) {
-      write_hpgl(out, r.points, jf.style);
-      return true;
-    });
-    if (!error.empty()) return fail(error);
-  }
-  return 0;
+  const std::string error =
+      write_plotter_outputs(o.get("--gcode"), o.get("--hpgl"), r.points, spec.machine, jf.style);
+  return error.empty() ? 0 : fail(error);
 }
 
 void print_sim_stats(const JobSpec& spec, const SimReport& r, size_t edges) {
@@ -631,8 +651,9 @@ int cmd_replay(int argc, char** argv) {
   const Options o = parse_options(argc, argv, 2, {"-o"}, {"--stats"});
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "replay");
+  if (const std::string bad = svg_output_problem(o.get("-o")); !bad.empty()) return fail(bad);
   std::ifstream in(o.positional[0]);
-  if (!in) return fail(o.positional[0] + ": cannot open");
+  if (const InputError e = open_problem(o.positional[0], in); e.failed()) return fail(e.message());
   Trace t;
   const InputError ie = read_trace(in, o.positional[0], &t);
   if (ie.failed()) return fail(ie.message());

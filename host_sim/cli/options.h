@@ -26,9 +26,14 @@ size_t edit_distance(const std::string& a, const std::string& b);
 // The candidate nearest to `word` within two edits, or "" (for "did you mean" suggestions).
 std::string nearest(const std::string& word, const std::vector<std::string>& candidates);
 
-// valued: options that take a value ("-o", "--halo"); boolean: options that do not. An unknown
-// option is an error that suggests the nearest known one.
+// valued: options that take a value ("-o", "--halo"), as "--halo 5" or "--halo=5"; boolean:
+// options that do not. An unknown option is an error that suggests the nearest known one and
+// lists them all.
 Options parse_options(int argc, char** argv, int first, const std::set<std::string>& valued,
                       const std::set<std::string>& boolean);
+
+// Why an SVG output path cannot be written as named ("-o x.png": an image format the tool does
+// not write), or "" when it can (.svg, no extension, "-", a device).
+std::string svg_output_problem(const std::string& path);
 
 }  // namespace haloplot::host

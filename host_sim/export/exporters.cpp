@@ -16,18 +16,50 @@ std::string mm_text(int64_t steps, uint32_t per_mm) {
          frac;
 }
 
+bool apply_feeds(const ExportStyle& s, Machine* m, std::string* error) {
+  const auto speed = [&](int64_t feed_milli, const char* name, uint32_t* out) {
+    if (feed_milli == 0) return true;
+    // mm/min to plot steps/s: feed / 1000 * steps_per_mm / 60, rounded to the nearest.
+    const int64_t v = (feed_milli * s.steps_per_mm + 30000) / 60000;
+    if (v < 1 || v > 65535) {
+      *error = std::string(name) + " " + mm_text(feed_milli, 1000) + " mm/min is " +
+               std::to_string(v) + " steps/s at " + std::to_string(s.steps_per_mm) +
+               " steps/mm: the machine takes 1 to 65535";
+      return false;
+    }
+    *out = uint32_t(v);
+    return true;
+  };
+  return speed(s.draw_feed_milli, "draw-feed", &m->draw_speed) &&
+         speed(s.travel_feed_milli, "travel-feed", &m->travel_speed);
+}
+
 void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Machine& m,
                  const ExportStyle& s) {
   const auto seconds = [&](uint32_t ticks) { return mm_text(ticks, m.tick_hz); };  // 3 places
   const std::string dwell = seconds(m.pen_travel_ticks + m.pen_settle_ticks);
-  // Feeds in mm/min.
-  const std::string draw_feed = mm_text(int64_t(m.draw_speed) * 60, s.steps_per_mm);
-  const std::string travel_feed = mm_text(int64_t(m.travel_speed) * 60, s.steps_per_mm);
+  // Feeds in mm/min: as given, or the machine's speeds.
+  const auto feed = [&](int64_t given, uint32_t speed) {
+    return given != 0 ? mm_text(given, 1000) : mm_text(int64_t(speed) * 60, s.steps_per_mm);
+  };
+  const std::string draw_feed = feed(s.draw_feed_milli, m.draw_speed);
+  const std::string travel_feed = feed(s.travel_feed_milli, m.travel_speed);
   out << "; haloplot G-code\nG21\nG90\n";
   auto pen = [&](bool down) {
-    if (s.pen_by_z)
-      out << "G1 Z" << mm_text(down ? s.z_down_um : s.z_up_um, 1000) << " F" << travel_feed << '\n';
-    else if (down)
+    if (s.pen == PenProfile::kZ) {
+      if (down)
+        out << "G1 Z" << mm_text(s.z_down_um, 1000) << " F" << mm_text(s.z_feed_milli, 1000)
+            << '\n';
+      else
+        out << "G0 Z" << mm_text(s.z_up_um, 1000) << '\n';
+      return;
+    }
+    if (s.pen == PenProfile::kCustom) {
+      const std::string& text = down ? s.pen_down_text : s.pen_up_text;
+      if (!text.empty()) out << text << '\n';
+      return;
+    }
+    if (down)
       out << "M3 S" << s.pen_down_s << '\n';
     else
       out << "M5\n";

@@ -1,11 +1,16 @@
 // Exporters for plotters that run other firmware. Both take the planned path (pen-up travel
 // and pen-down strokes, in plot steps) and a scale in plot steps per millimetre.
 //
-// G-code (grbl-style pen plotters): G21 G90, pen by "M3 S<value>" / "M5" or by "G1 Z<z>",
-// "G4 P<seconds>" dwells after each pen move, G0 travel, G1 drawing at the draw feed.
+// G-code (grbl-style pen plotters): G21 G90, G0 travel and G1 drawing at feeds in mm/min, and
+// the pen by one of three profiles:
+//   servo   "M3 S<value>" down, "M5" up, each followed by "G4 P<seconds>" (the machine's pen
+//           travel and settle time)
+//   z       "G0 Z<up>" up, "G1 Z<down> F<z feed>" down (a Z axis waits for itself: no dwell)
+//   custom  the given text for each change, line by line, nothing added
 // HPGL: IN; SP1; then PU x,y; / PD x,y,...; in plotter units of 0.025 mm (40 per mm).
 #pragma once
 #include <iosfwd>
+#include <string>
 #include <vector>
 
 #include "motion/machine.h"
@@ -13,12 +18,23 @@
 
 namespace haloplot::host {
 
+enum class PenProfile : uint8_t { kServo, kZ, kCustom };
+
 struct ExportStyle {
   uint32_t steps_per_mm = 80;  // plot steps per millimetre
-  bool pen_by_z = false;       // G1 Z pen instead of M3/M5
-  int32_t pen_down_s = 1000;   // M3 S value
-  int32_t z_up_um = 2000, z_down_um = 0;
+  PenProfile pen = PenProfile::kServo;
+  int32_t pen_down_s = 1000;               // servo: the M3 S value
+  int32_t z_up_um = 2000, z_down_um = 0;   // z: pen heights, micrometres
+  int64_t z_feed_milli = 1000000;          // z: the pen-down feed, thousandths of mm/min
+  std::string pen_up_text, pen_down_text;  // custom: G-code lines, '\n' between them
+  // Feeds in thousandths of mm/min as given (0: the machine's speeds in mm/min); the machine's
+  // speeds are set from them too (apply_feeds), so a plot runs as its G-code says.
+  int64_t draw_feed_milli = 0, travel_feed_milli = 0;
 };
+
+// The machine's draw and travel speeds (plot steps/s) from the style's feeds, when given.
+// False with *error when a feed is out of the machine's range.
+bool apply_feeds(const ExportStyle& s, Machine* m, std::string* error);
 
 void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Machine& m,
                  const ExportStyle& s);

@@ -200,7 +200,7 @@ InputError read_cut(std::istream& in, const std::string& name, LoadedCut* out) {
 
 InputError read_cut_file(const std::string& path, LoadedCut* out) {
   std::ifstream in(path);
-  if (!in) return {path, 0, "cannot open"};
+  if (const InputError e = open_problem(path, in); e.failed()) return e;
   return read_cut(in, path, out);
 }
 

@@ -40,7 +40,7 @@ InputError read_edges(std::istream& in, const std::string& name, std::vector<Edg
 InputError read_edges_file(const std::string& path, std::vector<Edge3>* edges,
                            int32_t* substep_bits) {
   std::ifstream in(path);
-  if (!in) return {path, 0, "cannot open"};
+  if (const InputError e = open_problem(path, in); e.failed()) return e;
   return read_edges(in, path, edges, substep_bits);
 }
 

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "cli/options.h"
+#include "cli/plot_outputs.h"
 #include "cli/solid_options.h"
 #include "io/line_reader.h"
 #include "io/mesh_file.h"
@@ -47,6 +48,16 @@ const std::map<std::string, std::string> kKeys = {
     {"pen-settle-ticks", "TICKS"},
     {"arena", "BYTES"},
     {"steps-per-mm", "STEPS"},
+    {"pen", "servo | z | custom (the G-code's pen commands)"},
+    {"servo-down", "S (the M3 S value)"},
+    {"z-up", "MM"},
+    {"z-down", "MM"},
+    {"z-feed", "MM/MIN"},
+    {"pen-up-gcode", "TEXT (G-code lines, \\n between them)"},
+    {"pen-down-gcode", "TEXT (G-code lines, \\n between them)"},
+    {"draw-feed", "MM/MIN"},
+    {"travel-feed", "MM/MIN"},
+    {"pen-dwell", "SECONDS"},
 };
 
 // What is wrong with a line whose key no branch took.
@@ -192,6 +203,34 @@ bool is_view_setting(const std::string& key) {
          key == "substep" || key == "weld" || key == "crease";
 }
 
+// The G-code's pen profile and feeds (cli/plot_outputs.h kPenOptions), checked together once
+// the whole file is read.
+bool is_pen_setting(const std::string& key) {
+  for (const char* option : kPenOptions)
+    if (key == option + 2) return true;
+  return false;
+}
+
+// The pen settings into the exporters' style and the machine (the feeds set its speeds).
+InputError read_pen_settings(const std::string& path, const std::map<std::string, int>& key_lines,
+                             JobFile* out) {
+  for (const auto& [ours, theirs] : {std::pair<const char*, const char*>{"draw-feed", "draw-speed"},
+                                     {"travel-feed", "travel-speed"},
+                                     {"pen-dwell", "pen-travel-ticks"}})
+    if (key_lines.count(ours) != 0 && key_lines.count(theirs) != 0)
+      return {path, key_lines.at(ours),
+              std::string(ours) + " and " + theirs + " set the same thing: give one"};
+  Options o;
+  o.values = out->pen_options;
+  o.values["--steps-per-mm"] = std::to_string(out->style.steps_per_mm);
+  std::string error;
+  if (export_style_of(o, &out->style, &out->spec.machine, &error, "")) return {};
+  int line = 0;
+  for (const auto& [key, at] : key_lines)
+    if (is_pen_setting(key) && error.rfind(key + " ", 0) == 0) line = at;
+  return {path, line, error};
+}
+
 // view, perspective, method, dash, up, substep: kept as the plot command's options.
 InputError read_view_setting(const JobLine& l, JobFile* out) {
   const std::string& key = l.f[0];
@@ -263,6 +302,12 @@ InputError read_setting(const JobLine& l, JobFile* out) {
   if (key == "hatch" && f.size() >= 2 && f.size() <= 4) return read_hatch(l, out);
   if (is_view_setting(key) && f.size() == (key == "dash" ? 3u : 2u))
     return read_view_setting(l, out);
+  if (is_pen_setting(key) && f.size() >= 2) {
+    std::string v = f[1];  // a custom command's words, as the line gives them
+    for (size_t k = 2; k < f.size(); ++k) v += " " + f[k];
+    out->pen_options["--" + key] = v;
+    return {};
+  }
   if (key == "outline" && l.on_off()) {
     out->outline = f[1] == "on";
     return {};
@@ -309,7 +354,16 @@ InputError check_job(const std::string& path, const std::map<std::string, int>& 
   if (out->solid_options.count("--mode") != 0 && !is_mesh_path(out->scene_path))
     return {path, 0,
             "drawing " + out->solid_options["--mode"] + " needs a model scene (.obj, .stl, .ply)"};
+  // An .edges scene is projected already: a view setting would be ignored, so it is refused.
+  if (!is_mesh_path(out->scene_path))
+    for (const char* key : {"view", "perspective", "up", "crease", "weld", "substep"})
+      if (key_lines.count(key) != 0)
+        return {path, key_lines.at(key),
+                std::string(key) + " is for a model scene (.obj, .stl, .ply): " + out->scene_path +
+                    " is an .edges scene, projected already"};
   if (j.draw.mode == HaloMode::kExact) j.cut.reach = j.draw.halo;
+  const InputError pen = read_pen_settings(path, key_lines, out);
+  if (pen.failed()) return pen;
   const Status s = validate(j.machine);
   if (!ok(s)) return machine_problem(path, j.machine, s, key_lines);
   return {};
@@ -319,7 +373,7 @@ InputError check_job(const std::string& path, const std::map<std::string, int>& 
 
 InputError read_job_file(const std::string& path, JobFile* out) {
   std::ifstream in(path);
-  if (!in) return {path, 0, "cannot open"};
+  if (const InputError e = open_problem(path, in); e.failed()) return e;
   *out = JobFile{};
   LineReader reader(in);
   std::vector<std::string> f;

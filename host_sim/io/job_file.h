@@ -22,6 +22,10 @@
 //   draw-speed 6000   travel-speed 12000   accel 60000   junction-deviation 4
 //   pen-travel-ticks 150000   pen-settle-ticks 50000   backlash 0 0
 //   steps-per-mm 80           for the G-code and HPGL exporters
+//   pen servo                 the G-code's pen: servo | z | custom, with servo-down S, z-up MM,
+//                             z-down MM, z-feed MM/MIN, pen-up-gcode TEXT, pen-down-gcode TEXT
+//   draw-feed 4500            feeds in mm/min (instead of draw-speed, travel-speed), and
+//   travel-feed 9000          pen-dwell SECONDS (instead of pen-travel-ticks): as `plot` takes
 //   arena 65536               plot in bands in a job arena of this many bytes, as a controller
 //                             with that arena does (haloed and all; default: one band); `send`
 //                             then streams the scene band by band
@@ -42,6 +46,8 @@ struct JobFile {
   // Hidden-line settings, as the plot command's options (--mode, --view, --dash, ...): the
   // simulator hands them to the same parser.
   std::map<std::string, std::string> solid_options;
+  // The G-code's pen profile and feeds, as the plot command's options (--pen, --z-up, ...).
+  std::map<std::string, std::string> pen_options;
   bool outline = false;
   bool intersections = true;
   uint32_t arena = 0;  // bytes; 0: the whole scene in one job buffer

@@ -221,7 +221,7 @@ InputError read_mesh_file(const std::string& path, ObjModel* out) {
   if (!mesh_format_of(path, &format))
     return {path, 0, "not a model file: the name must end in .obj, .stl or .ply"};
   std::ifstream in(path, std::ios::binary);
-  if (!in) return {path, 0, "cannot open"};
+  if (const InputError e = open_problem(path, in); e.failed()) return e;
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) return {path, 0, "read error"};
   const std::string mismatch = content_mismatch(format, bytes);

@@ -118,7 +118,7 @@ void edges_from_faces(ObjModel* model) {
 
 InputError read_obj_file(const std::string& path, ObjModel* out) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return {path, 0, "cannot open"};
+  if (const InputError e = open_problem(path, in); e.failed()) return e;
   return read_obj(in, path, out);
 }
 

@@ -32,7 +32,7 @@ InputError read_polygon(std::istream& in, const std::string& name, std::vector<P
 
 InputError read_polygon_file(const std::string& path, std::vector<Point2>* out) {
   std::ifstream in(path);
-  if (!in) return {path, 0, "cannot open"};
+  if (const InputError e = open_problem(path, in); e.failed()) return e;
   return read_polygon(in, path, out);
 }
 

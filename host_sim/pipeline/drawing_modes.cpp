@@ -52,4 +52,11 @@ ModeDrawing make_mode_drawing(const SolidRun& run, const ModeSpec& spec) {
   return d;
 }
 
+std::vector<Edge3> mode_strokes(const ModeDrawing& d) {
+  std::vector<Edge3> edges;
+  for (const std::vector<Span>* part : {&d.spans, &d.hatch, &d.outline})
+    for (const Span& x : *part) edges.push_back(Edge3{{x.x0, x.y0, 0}, {x.x1, x.y1, 0}});
+  return edges;
+}
+
 }  // namespace haloplot::host

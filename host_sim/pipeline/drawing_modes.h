@@ -32,6 +32,10 @@ bool parse_solid_mode(const std::string& s, SolidMode* out);
 
 ModeDrawing make_mode_drawing(const SolidRun& run, const ModeSpec& spec);
 
+// The drawing's strokes as the edges a job draws whole (drawing all): the first pen's spans,
+// the hatching, then the outline pass. A hidden-line job and `plot --gcode` plan these.
+std::vector<Edge3> mode_strokes(const ModeDrawing& d);
+
 // "0", "1", "0.5": a QI counted in halves, as the .spans file writes it.
 std::string qi_text(int32_t halves);
 

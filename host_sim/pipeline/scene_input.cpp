@@ -221,6 +221,14 @@ bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* e
       *error = "--weld is for models (.obj, .stl, .ply): an .edges file has no vertices to weld";
       return false;
     }
+    // An .edges file is projected already: the view options have nothing to act on.
+    for (const char* view : {"--view", "--perspective", "--up", "--crease", "--dump-edges"})
+      if (!o.get(view).empty()) {
+        *error = std::string(view) +
+                 " is for models (.obj, .stl, .ply): an .edges file is a scene projected "
+                 "already, drawn as it is";
+        return false;
+      }
     const InputError ie = read_edges_file(path, edges, &units);
     if (ie.failed()) *error = ie.message();
     if (substep_bits != nullptr) *substep_bits = units;
@@ -372,9 +380,7 @@ bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* e
   // Decided in the scene's units, drawn in steps: the strokes come out rounded (units 0).
   ModeDrawing d = make_mode_drawing(run, mode_in_units(so.spec, scene.substep_bits));
   drawing_to_steps(&d, scene.substep_bits);
-  edges->clear();
-  for (const std::vector<Span>* part : {&d.spans, &d.hatch, &d.outline})
-    for (const Span& x : *part) edges->push_back(Edge3{{x.x0, x.y0, 0}, {x.x1, x.y1, 0}});
+  *edges = mode_strokes(d);
   return true;
 }
 

@@ -2,9 +2,9 @@
 
 #include <memory>
 
+#include "export/plotter_outputs.h"
 #include "motion/step_engine.h"
 #include "motion/virtual_run.h"
-#include "pipeline/host_memory.h"
 #include "sim/trace.h"
 #include "trace/traced_queue.h"
 
@@ -36,24 +36,17 @@ struct RecordingHal {
   }
 };
 
-// The path for the planner: the whole scene's from one job buffer (job_prepare), the points
-// kept in `buffer`.
-Status prepare_whole(const JobSpec& spec, const std::vector<Edge3>& edges,
-                     std::vector<uint64_t>* buffer, SimReport* r) {
-  const uint32_t n = uint32_t(edges.size());
-  // The job buffer from the core's own query; a second run if CUT needs more records.
-  StageNeeds needs;
-  needs.crossings = 4 * n + 1024;
-  PreparedJob job;
-  EdgeJobStage stage{&spec, edges.data(), n, &job, &r->job, &r->bytes};
-  HostMemory memory;
-  int rounds = 0;
-  const Status s = run_sized(stage, memory.memory(), &needs, &rounds);
-  *buffer = std::move(memory.words);  // a move keeps the storage the points lie in
-  r->retries = rounds - 1;
+// The path for the planner: the whole scene's from one job buffer (the job stage the
+// exporters of `plot` plan with too).
+Status prepare_whole(const JobSpec& spec, const std::vector<Edge3>& edges, SimReport* r) {
+  PlannedJob planned;
+  const Status s = plan_job_path(spec, edges, &planned);
+  r->job = planned.counters;
+  r->bytes = planned.bytes;
+  r->retries = planned.retries;
   if (!ok(s)) return s;
-  r->points.assign(job.points, job.points + job.n_points);
-  r->spans.assign(job.spans, job.spans + job.n_spans);
+  r->points = std::move(planned.points);
+  r->spans = std::move(planned.spans);
   return Status::kOk;
 }
 
@@ -117,9 +110,7 @@ Status run_motion(const JobSpec& spec, BandConductor* conductor, std::ostream* t
   r->final_motors[0] = engine.position(0);
   r->final_motors[1] = engine.position(1);
   // The travel home is the plan's last point too (the exporters' G-code and HPGL end there).
-  if (spec.finish_home && !r->points.empty() &&
-      (r->points.back().x != 0 || r->points.back().y != 0))
-    r->points.push_back(PathPoint{0, 0, 0});
+  add_travel_home(spec, &r->points);
   if (conductor != nullptr) {
     r->bands = conductor->stats();
     r->job.path = r->bands.path;
@@ -145,7 +136,7 @@ Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostre
   if (!ok(s)) return s;
   std::vector<uint64_t> buffer;
   if (arena_bytes == 0) {
-    s = prepare_whole(spec, edges, &buffer, r);
+    s = prepare_whole(spec, edges, r);
     return ok(s) ? run_motion(spec, nullptr, trace, r, form, pause_at, resume_at) : s;
   }
   if (!edge_drawing(spec)) return Status::kBadParameter;

@@ -39,7 +39,7 @@ int main() {
   CHECK(error_is(parse("1.5 2 3 4 5 6\n", &e), 1, "field 1"));
   CHECK(error_is(parse("99999999999999999999 2 3 4 5 6\n", &e), 1, "field 1"));
   CHECK(read_edges_file("/nonexistent/x.edges", &e).message() ==
-        "/nonexistent/x.edges: cannot open");
+        "/nonexistent/x.edges: cannot open: no such file");
 
   // .cut round trip: write a real CUTSET, read it back, get the same records and index.
   const auto edges = scenes::paper_random(1500, 50000, 4);

@@ -166,7 +166,7 @@ int main() {
     const auto pts = plan(s, &st);
     for (bool by_z : {false, true}) {
       ExportStyle style;
-      style.pen_by_z = by_z;
+      style.pen = by_z ? PenProfile::kZ : PenProfile::kServo;
       std::ostringstream g;
       write_gcode(g, pts, Machine{}, style);
       // Reader: pen state from M3/M5 or Z, positions from X/Y on G0/G1, in mm -> steps.

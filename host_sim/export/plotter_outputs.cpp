@@ -1,0 +1,89 @@
+#include "export/plotter_outputs.h"
+
+#include <cmath>
+
+#include "io/atomic_file.h"
+#include "memory/sized_stage.h"
+#include "motion/planner.h"
+#include "pipeline/host_memory.h"
+
+namespace haloplot::host {
+
+Status plan_job_path(const JobSpec& spec, const std::vector<Edge3>& edges, PlannedJob* out) {
+  *out = PlannedJob{};
+  const uint32_t n = uint32_t(edges.size());
+  // The job buffer from the core's own query; a second run if CUT needs more records.
+  StageNeeds needs;
+  needs.crossings = 4 * n + 1024;
+  PreparedJob job;
+  EdgeJobStage stage{&spec, edges.data(), n, &job, &out->counters, &out->bytes};
+  HostMemory memory;
+  int rounds = 0;
+  const Status s = run_sized(stage, memory.memory(), &needs, &rounds);
+  out->retries = rounds - 1;
+  if (!ok(s)) return s;
+  out->points.assign(job.points, job.points + job.n_points);
+  out->spans.assign(job.spans, job.spans + job.n_spans);
+  return Status::kOk;
+}
+
+void add_travel_home(const JobSpec& spec, std::vector<PathPoint>* points) {
+  if (spec.finish_home && !points->empty() && (points->back().x != 0 || points->back().y != 0))
+    points->push_back(PathPoint{0, 0, 0});
+}
+
+namespace {
+
+// Seconds one committed move takes: the trapezoid from its entry to its exit speed through its
+// top speed, the top lowered to the peak the length allows (step_prep.cpp set_profile).
+double move_seconds(const MotionItem& it) {
+  const double length = double(it.length_q8) / 256;
+  const double top2 = double(it.top_v2) / 256;
+  if (length <= 0 || top2 <= 0) return 0;
+  if (it.accel == 0) return length / std::sqrt(top2);
+  const double a = it.accel, entry2 = double(it.entry_v2) / 256, exit2 = double(it.exit_v2) / 256;
+  const double peak2 = std::max(std::min(top2, (2 * a * length + entry2 + exit2) / 2), entry2);
+  const double exit2_reached = std::min(exit2, peak2);
+  const double accel_len = (peak2 - entry2) / (2 * a),
+               brake_len = (peak2 - exit2_reached) / (2 * a);
+  const double cruise = std::max(0.0, length - accel_len - brake_len);
+  const double peak = std::sqrt(peak2);
+  return (peak - std::sqrt(entry2)) / a + (peak - std::sqrt(exit2_reached)) / a + cruise / peak;
+}
+
+}  // namespace
+
+double estimate_plot_seconds(const JobSpec& spec, const std::vector<PathPoint>& points) {
+  std::vector<uint64_t> workspace(MotionPlanner::workspace_bytes(spec.effects) / 8 + 1);
+  PreparedJob job;
+  job.points = points.data();
+  job.n_points = uint32_t(points.size());
+  MotionPlanner planner;
+  if (!ok(init_planner(&planner, spec, job, workspace.data(), workspace.size() * 8))) return 0;
+  double seconds = 0;
+  MotionItem it;
+  while (planner.next(&it))
+    seconds += it.kind == MotionItem::kPen ? double(it.dwell_ticks) / spec.machine.tick_hz
+                                           : move_seconds(it);
+  return seconds;
+}
+
+std::string write_plotter_outputs(const std::string& gcode_path, const std::string& hpgl_path,
+                                  const std::vector<PathPoint>& points, const Machine& m,
+                                  const ExportStyle& style) {
+  if (!gcode_path.empty()) {
+    const std::string error = write_atomically(gcode_path, [&](std::ostream& out) {
+      write_gcode(out, points, m, style);
+      return true;
+    });
+    if (!error.empty()) return error;
+  }
+  if (!hpgl_path.empty())
+    return write_atomically(hpgl_path, [&](std::ostream& out) {
+      write_hpgl(out, points, style);
+      return true;
+    });
+  return "";
+}
+
+}  // namespace haloplot::host

@@ -1,0 +1,44 @@
+// A job's plotter outputs (G-code, HPGL) and its plot time, from the planned path alone: the
+// core's job stage plans the path as `sim` plans it before stepping, and no motor step is
+// simulated. `plot --gcode` and `sim --gcode` both write through here, so for the same job
+// they write the same bytes.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "export/exporters.h"
+#include "job/job.h"
+
+namespace haloplot::host {
+
+// The path the job plans for these edges: the core's job stage (CUT and DRAW when the drawing
+// needs them, then the path planner) in a buffer sized by the stage's own query, as the
+// simulator and the controller run it. *retries: runs beyond the first (a CUT that needed more
+// records). The travel home is not in *points (the motion planner adds it; add_travel_home).
+struct PlannedJob {
+  std::vector<PathPoint> points;
+  std::vector<Segment2> spans;  // what DRAW emitted
+  JobCounters counters;
+  JobBytes bytes;
+  int retries = 0;
+};
+Status plan_job_path(const JobSpec& spec, const std::vector<Edge3>& edges, PlannedJob* out);
+
+// The travel home as the path's last point when the job ends at the origin (spec.finish_home)
+// and the path does not end there already: the exporters' G-code and HPGL end where the plot does.
+void add_travel_home(const JobSpec& spec, std::vector<PathPoint>* points);
+
+// How long the plot of `points` (without the travel home) takes by the motion planner's own
+// model: its committed moves (entry, top and exit speeds, the junction speeds between them) as
+// trapezoids, as the step generator times them, plus the pen dwells; no step is made. The
+// travel home is included when the job asks for it. A step simulation's end time differs from
+// this by the timing of whole steps only (tests/cli/plot_gcode.sh bounds the difference).
+double estimate_plot_seconds(const JobSpec& spec, const std::vector<PathPoint>& points);
+
+// Writes the G-code to `gcode_path` and the HPGL to `hpgl_path` (each when not empty), through
+// the command's output set (io/atomic_file.h). "" or the error.
+std::string write_plotter_outputs(const std::string& gcode_path, const std::string& hpgl_path,
+                                  const std::vector<PathPoint>& points, const Machine& m,
+                                  const ExportStyle& style);
+
+}  // namespace haloplot::host

@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# What a new user runs into on the command line, each refused or accepted as a user expects:
+# an image format -o cannot write is refused by name; options the mode or the input has no
+# use for are refused by name, never ignored; --opt=value works for every option; every
+# command's --help lists every option its parser takes; "cannot open" says why.
+set -u
+tool="$1"
+work=$(mktemp -d)
+trap 'chmod -R u+rwx "$work"; rm -rf "$work"' EXIT
+pass=0 fail=0
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAILED: $*" >&2; }
+expect() { if eval "$1"; then ok; else bad "$2"; fi; }
+# refused CMD... : non-zero exit, the message names $want, and no $out was left behind.
+refused() {
+  local want="$1" out="$2"
+  shift 2
+  "$tool" "$@" 2> err.txt
+  local rc=$?
+  expect '[ $rc -ne 0 ] && grep -qF -- "$want" err.txt && [ ! -e "$out" ]' \
+    "'$*' is refused naming '$want' (rc $rc): $(head -c 300 err.txt)"
+}
+
+cd "$work"
+"$tool" demo-scene --cubes 3 -o scene.edges
+"$tool" demo-scene --cubes 2 -o cubes.obj
+
+# -o with an image format the tool does not write: refused, by the extension.
+for ext in png PDF jpg eps; do
+  refused ".$ext" "x.$ext" plot scene.edges --halo 5 -o "x.$ext"
+done
+refused ".png" x.png plot cubes.obj --mode hidden-removed -o x.png
+refused "--gcode" x.gcode plot scene.edges --halo 5 -o x.gcode
+"$tool" cut scene.edges -o scene.cut
+refused ".pdf" y.pdf draw scene.cut --halo 5 -o y.pdf
+"$tool" plot scene.edges --halo 5 -o fine.svg
+expect '[ $? -eq 0 ] && grep -q "<svg" fine.svg' "-o fine.svg still writes an SVG"
+
+# Options the chosen mode or input cannot use.
+refused "--hatch" a.svg plot cubes.obj --mode all --hatch 2 -o a.svg
+refused "--dash" a.svg plot cubes.obj --mode hidden-removed --dash 2,1 -o a.svg
+refused "--dash" a.svg plot cubes.obj --mode all --dash 2,1 -o a.svg
+for opt in "--view 30,25" "--perspective 1000" "--up z" "--crease 10" "--dump-edges d.edges"; do
+  refused "${opt%% *}" a.svg plot scene.edges --halo 5 $opt -o a.svg
+done
+printf 'scene scene.edges\nhalo 5\nview 30,25\n' > view.job
+refused "view.job:3: view is for a model scene" v.trace sim view.job -o v.trace
+"$tool" plot cubes.obj --mode hidden-dashed --dash 2,1 --hatch 2 -o ok.svg
+expect '[ $? -eq 0 ]' "--dash and --hatch still work with hidden-dashed"
+
+# --opt=value is --opt value, for every valued option of plot (same bytes).
+"$tool" plot cubes.obj --mode hidden-dashed --view 30,25 --dash 1,0.5 -o spaced.svg
+"$tool" plot cubes.obj --mode=hidden-dashed --view=30,25 --dash=1,0.5 -o eq.svg
+expect 'cmp -s spaced.svg eq.svg' "--opt=value draws what --opt value draws"
+"$tool" plot scene.edges --halo=5 --steps-per-mm=40 -o h1.svg
+"$tool" plot scene.edges --halo 5 --steps-per-mm 40 -o h2.svg
+expect 'cmp -s h1.svg h2.svg' "--halo=5 is --halo 5"
+"$tool" plot scene.edges --halo 5 --stats=yes -o h3.svg 2> err.txt
+rc=$?
+expect '[ $rc -ne 0 ] && grep -q "takes no value" err.txt' "a flag given a value is refused: $(cat err.txt)"
+
+# Every command's --help lists every option its parser knows (the list an unknown option
+# prints), so nothing the tool takes is missing from its help.
+for cmd in demo-scene random-scene cut draw plot sim replay send view2d; do
+  "$tool" "$cmd" --help > help.txt
+  "$tool" "$cmd" x --zzzz-not-an-option -o y 2> err.txt
+  known=$(sed -n 's/^known options: //p' err.txt)
+  expect '[ -n "$known" ]' "$cmd: an unknown option lists the known ones: $(cat err.txt)"
+  for opt in $known; do
+    expect 'grep -qe "$opt\\b" help.txt' "$cmd --help lists $opt"
+  done
+done
+for opt in --pause-at --resume-at; do
+  "$tool" sim --help | grep -q -- "$opt"
+  expect '[ $? -eq 0 ]' "sim --help lists $opt"
+done
+for opt in --stop-after --resume; do
+  "$tool" send --help | grep -q -- "$opt"
+  expect '[ $? -eq 0 ]' "send --help lists $opt"
+done
+
+# "cannot open" says why, for every kind of input.
+mkdir adir.edges adir.obj adir.job adir.cut adir.trace
+printf '1 2 3 4 5 6\n' > locked.edges
+chmod 000 locked.edges
+refused "no such file" a.svg plot missing.edges --halo 5 -o a.svg
+refused "a directory" a.svg plot adir.edges --halo 5 -o a.svg
+refused "a directory" a.svg plot adir.obj --mode hidden-removed -o a.svg
+refused "a directory" t.trace sim adir.job -o t.trace
+refused "a directory" a.svg draw adir.cut --halo 5 -o a.svg
+refused "a directory" a.svg replay adir.trace -o a.svg
+refused "no such file" a.svg replay missing.trace -o a.svg
+if [ "$(id -u)" != 0 ]; then  # root reads a mode-000 file anyway
+  refused "permission denied" a.svg plot locked.edges --halo 5 -o a.svg
+fi
+for f in adir.edges adir.obj; do
+  "$tool" plot "$f" --halo 5 -o a.svg 2> err.txt
+  expect '! grep -q "read error" err.txt' "a directory is not a read error: $(cat err.txt)"
+done
+
+echo "cli_hygiene: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]
