@@ -14,6 +14,7 @@ Status BandConductor::begin(const BandSpec& spec, EdgeSource source, void* arena
   *this = BandConductor{};
   observer_ = observer;
   clock_ = clock;
+  if (buffer_misaligned(arena)) return Status::kMisalignedBuffer;
   if (source.n > 0 && source.read == nullptr) return Status::kBadParameter;
   if (spec.substep_bits < 0 || spec.substep_bits > kMaxSubstepBits) return Status::kBadParameter;
   if (spec.haloed && (spec.draw.halo < 0 || spec.draw.halo > kCoordMax || spec.cut.reach < 0 ||
@@ -27,9 +28,8 @@ Status BandConductor::begin(const BandSpec& spec, EdgeSource source, void* arena
   spec_.cut.progress = nullptr;
   spec_.cut.phase = nullptr;
   source_ = source;
-  arena_ = align_up(static_cast<uint8_t*>(arena));
-  const size_t lost = size_t(arena_ - static_cast<uint8_t*>(arena));
-  arena_bytes_ = arena == nullptr || arena_bytes < lost ? 0 : (arena_bytes - lost) & ~size_t{7};
+  arena_ = static_cast<uint8_t*>(arena);
+  arena_bytes_ = arena == nullptr ? 0 : arena_bytes & ~size_t{7};
   // One read of the scene: its rows, and every coordinate in range.
   int32_t lo = kCoordLimit, hi = -1;
   bool in_range_all = true;

@@ -148,7 +148,8 @@ class BandConductor {
   // this arena cut them; `closed` is the whole model's check, which no band can make.
   Status begin_streamed_solid(const BandSpec& spec, bool closed, BandStream stream, void* arena,
                               size_t arena_bytes);
-  // Checks the scene (one read) and the settings; nothing is cut yet.
+  // Checks the scene (one read) and the settings; nothing is cut yet. Every begin takes an
+  // arena that starts on a kBufferAlignment (8) boundary, or returns kMisalignedBuffer.
   Status begin(const BandSpec& spec, EdgeSource source, void* arena, size_t arena_bytes);
   // The same plot from streamed bands, with the margin the host's run measured: no margin
   // pass, no retries (the host's bands fit this arena, or kArenaTooSmall says they do not).

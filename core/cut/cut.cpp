@@ -227,6 +227,8 @@ Status run_cut(const CutPlan& plan, const Edge3* edges, void* scratch, size_t sc
   CutStats st;
   const uint32_t n = plan.n_edges;
   const uint32_t cells = plan.grid.cells();
+  if (buffer_misaligned(scratch) || buffer_misaligned(cutset_storage))
+    return Status::kMisalignedBuffer;
   if (scratch_bytes < plan.scratch_bytes) return Status::kWorkspaceTooSmall;
   if (cutset_storage_bytes < cutset_bytes(n, 0)) return Status::kCutsetStorageTooSmall;
 

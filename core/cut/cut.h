@@ -4,7 +4,9 @@
 // Memory: nothing is allocated. plan_cut() measures the scene and says how many scratch
 // bytes run_cut() needs; the caller also hands run_cut() the storage the CUTSET lives in
 // (cutset_bytes()). Scratch can be reused once run_cut() returns; the CUTSET storage must
-// live as long as DRAW runs on it (it is what lets DRAW rerun with a new halo width).
+// live as long as DRAW runs on it (it is what lets DRAW rerun with a new halo width). Both
+// buffers start on a kBufferAlignment (8) boundary, or run_cut() returns kMisalignedBuffer and
+// touches neither (status/status.h); the sizes asked are exact for aligned buffers.
 #pragma once
 #include <stddef.h>
 #include <stdint.h>

@@ -55,6 +55,7 @@ Status draw_with(const CutSet& cs, const DrawParams& params, void* scratch, size
                  SpanSink sink, DrawStats* stats) {
   DrawStats st;
   if (params.halo < 0 || params.halo > kCoordMax) return Status::kBadParameter;
+  if (buffer_misaligned(scratch)) return Status::kMisalignedBuffer;
   if (scratch_bytes < draw_scratch_bytes(cs)) return Status::kWorkspaceTooSmall;
   st.reach_short = params.mode == HaloMode::kExact && params.halo > cs.reach;
   Gap* gaps = static_cast<Gap*>(scratch);

@@ -54,7 +54,8 @@ Status draw_with(const CutSet& cutset, const DrawParams& params, void* scratch,
 template <typename Precision = DefaultDrawPrecision>
 Gap record_gap(const CutSet& cutset, const Crossing& record, const DrawParams& params);
 
-// DRAW in the default precision: exact roots, Q0.32 positions.
+// DRAW in the default precision: exact roots, Q0.32 positions. `scratch` starts on a
+// kBufferAlignment (8) boundary, or DRAW returns kMisalignedBuffer (status/status.h).
 Status draw(const CutSet& cutset, const DrawParams& params, void* scratch, size_t scratch_bytes,
             SpanSink sink, DrawStats* stats);
 

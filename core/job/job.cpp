@@ -168,6 +168,7 @@ Status job_prepare(const JobSpec& steps, const Edge3* edges, uint32_t n, uint32_
                    void* buffer, size_t buffer_bytes, PreparedJob* out, JobCounters* counters) {
   JobCounters c;
   if (needs_faces(steps.drawing) || !units_ok(steps)) return Status::kBadParameter;
+  if (buffer_misaligned(buffer)) return Status::kMisalignedBuffer;
   const JobSpec spec = in_units(steps);
   Status s = validate(spec.machine);
   if (!ok(s)) return s;
@@ -205,6 +206,7 @@ Status job_redraw(const JobSpec& steps, uint32_t n, uint32_t crossing_capacity, 
                   size_t buffer_bytes, PreparedJob* job, JobCounters* counters) {
   if (steps.drawing != DrawingEffect::kHaloed || job->cutset.edges == nullptr || !units_ok(steps))
     return Status::kBadParameter;
+  if (buffer_misaligned(buffer)) return Status::kMisalignedBuffer;
   const JobSpec spec = in_units(steps);
   Status s = validate(spec.machine);
   if (!ok(s)) return s;
@@ -265,18 +267,14 @@ Status job_prepare_solid(const JobSpec& steps, const SolidInput& in, uint32_t cr
                          uint32_t incidence_capacity, void* buffer, size_t buffer_bytes,
                          PreparedJob* out, JobCounters* counters, HiddenReport* report) {
   if (!hidden_line_drawing(steps.drawing) || !units_ok(steps)) return Status::kBadParameter;
+  if (buffer_misaligned(buffer)) return Status::kMisalignedBuffer;
   const JobSpec spec = in_units(steps);
   if (spec.hidden.dash < 1 || spec.hidden.gap < 1 || spec.hidden.dash > kCoordMax ||
       spec.hidden.gap > kCoordMax)
     return Status::kBadParameter;
   Status s = validate(spec.machine);
   if (!ok(s)) return s;
-  // The path stage wants 8-byte alignment from the front of the buffer.
-  uint8_t* base =
-      reinterpret_cast<uint8_t*>((reinterpret_cast<uintptr_t>(buffer) + 7) & ~uintptr_t{7});
-  const size_t lost = size_t(base - static_cast<uint8_t*>(buffer));
-  if (buffer_bytes < lost) return Status::kWorkspaceTooSmall;
-  buffer_bytes -= lost;
+  uint8_t* base = static_cast<uint8_t*>(buffer);
   HiddenParams hp;
   hp.method = spec.hidden.method;
   hp.outline = spec.hidden.outline;

@@ -61,7 +61,9 @@ struct JobSpec {
 //   [CUTSET | spans | DRAW scratch             ]   while DRAW runs (CUT's scratch is dead)
 //   [CUTSET | spans | points | path workspace  ]   while the path is planned
 // job_bytes() bounds every stage with K = crossing_capacity; job_prepare() checks each stage
-// against the real K, so a smaller buffer works whenever the scene's crossings allow.
+// against the real K, so a smaller buffer works whenever the scene's crossings allow. Every
+// buffer and workspace below starts on a kBufferAlignment (8) boundary, or the call returns
+// kMisalignedBuffer before it touches it (status/status.h).
 struct JobBytes {
   size_t cut_scratch = 0, cutset = 0, draw_scratch = 0, spans = 0, path = 0, points = 0;
   size_t peak = 0;

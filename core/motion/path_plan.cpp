@@ -400,6 +400,7 @@ size_t path_plan_bytes(uint32_t n_spans) {
 Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t start_y,
                  void* workspace, size_t workspace_bytes, PathPoint* out, uint32_t out_capacity,
                  uint32_t* out_count, PathStats* stats, PathEnd end) {
+  if (buffer_misaligned(workspace)) return Status::kMisalignedBuffer;
   Carver front(workspace, workspace_bytes), grid = front;
   const Workspace ws = carve_workspace(&front, &grid, n);
   if (front.short_ || grid.short_) return Status::kWorkspaceTooSmall;

@@ -42,6 +42,7 @@ struct PathEnd {
 };
 
 // Plan from pen position (start_x, start_y). `out` must hold path_points_max(n) points.
+// `workspace` starts on a kBufferAlignment (8) boundary, or the plan returns kMisalignedBuffer.
 Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t start_y,
                  void* workspace, size_t workspace_bytes, PathPoint* out, uint32_t out_capacity,
                  uint32_t* out_count, PathStats* stats, PathEnd end = PathEnd{});

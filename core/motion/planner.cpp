@@ -20,6 +20,7 @@ Status MotionPlanner::init(const Machine& m, const PlotterEffects& fx, const Pat
   const Status s = validate(m);
   if (!ok(s)) return s;
   if (fx.acceleration && lookahead < 2) return Status::kBadParameter;
+  if (buffer_misaligned(workspace)) return Status::kMisalignedBuffer;
   if (workspace_bytes_given < workspace_bytes(fx, lookahead)) return Status::kWorkspaceTooSmall;
   *this = MotionPlanner{};
   m_ = m;

@@ -54,7 +54,8 @@ struct PointFeed {
 class MotionPlanner {
  public:
   static constexpr uint32_t kDefaultLookahead = 16;
-  // Workspace for the look-ahead buffer: zero without the acceleration effect.
+  // Workspace for the look-ahead buffer: zero without the acceleration effect (then null will
+  // do). It starts on a kBufferAlignment (8) boundary, or init() returns kMisalignedBuffer.
   static size_t workspace_bytes(const PlotterEffects& fx, uint32_t lookahead = kDefaultLookahead);
 
   Status init(const Machine& m, const PlotterEffects& fx, const PathPoint* points, uint32_t n,

@@ -25,11 +25,15 @@ bool hidden_line_drawing(DrawingEffect d) {
 
 JobServer::JobServer(uint8_t* arena, size_t arena_bytes, uint8_t* rx_buffer, size_t rx_bytes,
                      ByteOutput out, MotionPort motion)
-    : arena_(arena),
-      arena_bytes_(arena_bytes),
-      decoder_(rx_buffer, rx_bytes, kMaxPayload),
-      out_(out),
-      motion_(motion) {}
+    : decoder_(rx_buffer, rx_bytes, kMaxPayload), out_(out), motion_(motion) {
+  // A constructor has no status to return: the server uses its arena from the first
+  // kBufferAlignment boundary on (the scene and job layouts need it), losing up to 7 bytes.
+  const uintptr_t p = reinterpret_cast<uintptr_t>(arena);
+  const size_t lost =
+      size_t((kBufferAlignment - (p & (kBufferAlignment - 1))) & (kBufferAlignment - 1));
+  arena_ = arena == nullptr || arena_bytes < lost ? nullptr : arena + lost;
+  arena_bytes_ = arena_ == nullptr ? 0 : arena_bytes - lost;
+}
 
 size_t JobServer::job_offset() const {
   // The indexed format keeps the world vertices and the pairs (a new view re-projects them)

@@ -69,7 +69,8 @@ class JobServer {
     Status (*handle)(void* ctx, const Frame& f) = nullptr;
   };
   static constexpr uint16_t kMaxPayload = 1024;
-  // rx_buffer holds the frame decoder's bytes: at least kMaxPayload + kFrameOverhead.
+  // rx_buffer holds the frame decoder's bytes: at least kMaxPayload + kFrameOverhead. The
+  // arena may start anywhere: the server uses it from its first kBufferAlignment boundary on.
   JobServer(uint8_t* arena, size_t arena_bytes, uint8_t* rx_buffer, size_t rx_bytes, ByteOutput out,
             MotionPort motion);
 

@@ -299,6 +299,7 @@ Status HiddenRun::fallback_method(bool manifold) {
 Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buffer, size_t bytes,
                     HiddenSink sink, HiddenReport* report) {
   HiddenRun run(in, params, buffer, bytes, sink, report);
+  if (buffer_misaligned(buffer)) return run.fail(Status::kMisalignedBuffer);
   if (params.hatch && (params.hatch_params.spacing < 1 || params.hatch_params.spacing > kCoordMax))
     return run.fail(Status::kBadParameter);  // before any piece is emitted
   Status s = run.build_edges();

@@ -110,6 +110,8 @@ struct HiddenSink {
   void* context;
 };
 
+// `buffer` starts on a kBufferAlignment (8) boundary, or the run returns kMisalignedBuffer
+// before it touches it (status/status.h).
 Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buffer, size_t bytes,
                     HiddenSink sink, HiddenReport* report);
 

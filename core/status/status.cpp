@@ -70,6 +70,8 @@ const char* status_name(Status s) {
       return "a piece carried across a band border was lost";
     case Status::kNotPlotting:
       return "no plot in motion";
+    case Status::kMisalignedBuffer:
+      return "buffer not on an 8-byte boundary";
   }
   return "unknown status";
 }

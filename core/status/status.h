@@ -39,7 +39,19 @@ enum class Status : uint8_t {
   kArenaTooSmall,           // a band one step high does not fit the arena (see the bytes needed)
   kBandCarryLost,           // a piece carried across a band border found no continuation (a bug)
   kNotPlotting,             // pause or resume with no plot in motion
+  kMisalignedBuffer,        // a caller buffer does not start on a kBufferAlignment boundary
 };
+
+// Every buffer a caller hands the core (scratch, storage, workspace, arena) must start on this
+// boundary: the core stores 64-bit fields there, which a Cortex-M reads with LDRD/STRD, and
+// those fault on an address that is not a multiple of 4 (and x86 hides the mistake). An entry
+// given a buffer off this boundary returns kMisalignedBuffer before it touches it; the sizes
+// the *_bytes() queries give hold for aligned buffers, exactly. `alignas(8)` on a static array,
+// or any malloc/new result, is enough.
+constexpr uintptr_t kBufferAlignment = 8;
+inline bool buffer_misaligned(const void* buffer) {
+  return (reinterpret_cast<uintptr_t>(buffer) & (kBufferAlignment - 1)) != 0;
+}
 
 // A short, stable, human-readable name, e.g. "crossing capacity exceeded".
 const char* status_name(Status s);

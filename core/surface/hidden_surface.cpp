@@ -54,6 +54,7 @@ Status hidden_surface(const SolidInput& in, const FranklinParams& fp, const Hatc
                       uint32_t crossing_capacity, uint32_t incidence_capacity,
                       uint32_t segment_capacity, void* buffer, size_t bytes, FranklinSink lines,
                       HatchSink hatch, HiddenSurfaceStats* stats) {
+  if (buffer_misaligned(buffer)) return Status::kMisalignedBuffer;
   HiddenSurfaceStats st;
   Carver carve(buffer, bytes);
   // Short of what the capacities take: the query's bytes are what a run needs.

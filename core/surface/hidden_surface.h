@@ -29,7 +29,8 @@ size_t hidden_surface_bytes(const SolidInput& in, const FranklinParams& fp,
                             uint32_t segment_capacity);
 
 // `lines` receives the hidden-line pieces (runs of equal visibility, as franklin_hidden_lines
-// gives them); `hatch` the strokes filling the visible regions.
+// gives them); `hatch` the strokes filling the visible regions. `buffer` starts on a
+// kBufferAlignment (8) boundary, or the run returns kMisalignedBuffer (status/status.h).
 Status hidden_surface(const SolidInput& in, const FranklinParams& fp, const HatchParams& hp,
                       uint32_t crossing_capacity, uint32_t incidence_capacity,
                       uint32_t segment_capacity, void* buffer, size_t bytes, FranklinSink lines,

@@ -306,6 +306,7 @@ Status view2d(const Point2* poly, uint32_t n, Point2 eye, void* scratch, size_t 
               VisibleSink sink, View2dStats* stats, uint32_t bad_edges[2]) {
   View2dStats st;
   if (n < 3) return Status::kBadParameter;
+  if (buffer_misaligned(scratch)) return Status::kMisalignedBuffer;
   if (scratch_bytes < view2d_scratch_bytes(n)) return Status::kWorkspaceTooSmall;
   Point2* v = static_cast<Point2*>(scratch);
   uint32_t* order = reinterpret_cast<uint32_t*>(v + n);

@@ -69,7 +69,8 @@ size_t view2d_scratch_bytes(uint32_t n);
 // two edges meeting except consecutive ones at their shared vertex, E not on the boundary)
 // and reports the visible parts. Errors: kBadParameter (fewer than 3 vertices, or E on the
 // polygon), kCoordinateOutOfRange, kSelfIntersecting (with *bad_edges set to the pair),
-// kWorkspaceTooSmall, or the sink's own status.
+// kWorkspaceTooSmall, kMisalignedBuffer (scratch not on a kBufferAlignment boundary), or the
+// sink's own status.
 Status view2d(const Point2* polygon, uint32_t n, Point2 eye, void* scratch, size_t scratch_bytes,
               VisibleSink sink, View2dStats* stats, uint32_t bad_edges[2] = nullptr);
 

@@ -2,7 +2,7 @@
 // .data from flash, zero .bss, paint the stack below the current frame (for the high-water
 // mark, platform/c_runtime.cpp stack_unused_bytes()), run the static constructors. The linker
 // script defines the symbols. A board's reset handler calls it, adds what its chip needs
-// (a CCM zeroed, the FPU enabled) and calls main().
+// (a CCM zeroed, say) and calls main().
 #pragma once
 #include <stdint.h>
 

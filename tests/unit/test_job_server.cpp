@@ -29,9 +29,11 @@ struct Controller {
   std::deque<uint8_t> replies;
   test::VirtualMotion motion;
   JobServer server;
-  explicit Controller(size_t arena_bytes)
-      : arena(arena_bytes),
-        server(arena.data(), arena.size(), rx.data(), rx.size(),
+  // `offset`: the arena starts that many bytes into the vector (an integrator's buffer off an
+  // 8-byte boundary).
+  explicit Controller(size_t arena_bytes, size_t offset = 0)
+      : arena(arena_bytes + offset),
+        server(arena.data() + offset, arena_bytes, rx.data(), rx.size(),
                ByteOutput{this,
                           [](void* c, const uint8_t* b, uint32_t n) {
                             static_cast<Controller*>(c)->replies.insert(
@@ -118,6 +120,29 @@ void clean_plot_and_replot() {
   CHECK_EQ(r.draw_runs, 2u);
   CHECK(c.motion.traces.size() == 2 && c.motion.traces[1] == simulated(demo_spec(120), edges));
   CHECK(c.motion.traces.size() == 2 && c.motion.traces[1] != c.motion.traces[0]);
+}
+
+// The arena at offsets 1 to 7 from an 8-byte boundary: the server uses it from the next
+// boundary on (the stages it calls refuse misaligned buffers), so the plot and re-plot are the
+// simulator's, as with an aligned arena.
+void misaligned_arena() {
+  const auto edges = cubes(2);
+  const std::string want = simulated(demo_spec(50), edges);
+  const std::string want_replot = simulated(demo_spec(120), edges);
+  for (size_t offset = 1; offset <= 7; ++offset) {
+    Controller c(1 << 16, offset);
+    Loopback link(c);
+    JobClient client(link);
+    const Status s = plot_job(client, demo_spec(50), edges);
+    CHECK_MSG(ok(s), "offset " + std::to_string(offset) + ": " + status_name(s));
+    CHECK(c.motion.traces.size() == 1 && c.motion.traces[0] == want);
+    std::vector<uint8_t> halo(kHaloBytes);
+    encode_halo(DrawParams{120, HaloMode::kPaper}, halo.data());
+    Status r;
+    StatusReport report;
+    CHECK(client.request(FrameType::kReplot, halo, &r) && ok(r) && client.wait_idle(&report, 0));
+    CHECK(c.motion.traces.size() == 2 && c.motion.traces[1] == want_replot);
+  }
 }
 
 void damaged_frames() {
@@ -410,6 +435,7 @@ void solid_scene() {
 
 int main() {
   clean_plot_and_replot();
+  misaligned_arena();
   damaged_frames();
   lost_ack();
   errors_leave_job_intact();

@@ -1,6 +1,7 @@
 // Reset and the vector table for the STM32F405 (Cortex-M4F): the portable C runtime start,
-// then .ccm zeroed and the FPU enabled (the core needs none, but compiler-generated code for
-// other parts may), then main().
+// then .ccm zeroed, then main(). The FPU stays off, as it is at reset: the core and the
+// firmware are compiled to use no FPU register, and every image's link is gated on it
+// (cmake/check_no_fpu.cmake), so the step interrupt never stacks FPU state either.
 #include <stdint.h>
 
 #include "platform/c_runtime.h"
@@ -26,8 +27,6 @@ extern "C" void default_handler() {
 extern "C" void reset_handler() {
   haloplot::fw::start_c_runtime();  // .data, .bss, the stack's paint (platform/c_runtime.h)
   for (uint32_t* p = &__ccm_start; p < &__ccm_end; ++p) *p = 0;
-  // CPACR: full access to CP10/CP11 (the FPU), as RM0090 / the Cortex-M4 TRM describe.
-  *reinterpret_cast<volatile uint32_t*>(0xE000ED88u) |= (0xFu << 20);
   haloplot::fw::run_static_constructors();
   main();
   for (;;) {
