@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli/options.h"
+#include "cli/page_options.h"
 #include "cli/solid_options.h"
 #include "io/atomic_file.h"
 #include "io/line_reader.h"
@@ -102,15 +103,9 @@ int cmd_plot_solid(const Options& o) {
   const int32_t units = scene.substep_bits;
   ModeDrawing d = make_mode_drawing(run, mode_in_units(so.spec, units));
   drawing_to_steps(&d, units);
-  SvgStyle style;
-  style.second_pen = &d.outline;
-  style.steps_per_mm = so.steps_per_mm;
-  error = write_atomically(o.get("-o"), [&](std::ostream& out) {
-    std::vector<Span> first = d.spans;
-    first.insert(first.end(), d.hatch.begin(), d.hatch.end());
-    write_svg(out, first, style);
-    return true;
-  });
+  PlotSvgStyle style;
+  if (!parse_plot_svg_style(o, true, so.steps_per_mm, &style, &error)) return fail(error);
+  error = write_plot_page(o.get("-o"), mode_layers(d), true, &style);
   if (!error.empty()) return fail(error);
   if (!o.get("--spans").empty()) {
     error = write_atomically(o.get("--spans"), [&](std::ostream& out) {

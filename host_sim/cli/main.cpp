@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "cli/options.h"
+#include "cli/page_options.h"
 #include "demo/cube_array.h"
 #include "demo/random_scene.h"
 #include "export/exporters.h"
@@ -19,6 +20,7 @@
 #include "io/edges_file.h"
 #include "io/job_file.h"
 #include "io/line_reader.h"
+#include "io/mesh_file.h"
 #include "io/spans_file.h"
 #include "io/substep_header.h"
 #include "pipeline/host_pipeline.h"
@@ -220,18 +222,17 @@ void print_draw_stats(const HostDraw& d) {
                (unsigned long long)d.stats.hidden_edges, d.scratch_bytes);
 }
 
-// Writes the SVG and, if asked, the spans. Returns 0 or 1 after reporting.
-int write_drawing(const Options& o, const HostDraw& d) {
-  SvgStyle style;
+// Writes the SVG and, if asked, the spans. `model`: the scene was a model the projection
+// fitted (centred on the page). Returns 0 or 1 after reporting.
+int write_drawing(const Options& o, const HostDraw& d, bool model) {
   int64_t per_mm = 80;
   if (!o.get("--steps-per-mm").empty() && !parse_int(o.get("--steps-per-mm"), 1, 10000, &per_mm))
     return fail("--steps-per-mm '" + o.get("--steps-per-mm") +
                 "' must be an integer in [1, 10000]");
-  style.steps_per_mm = double(per_mm);
-  std::string err = write_atomically(o.get("-o"), [&](std::ostream& out) {
-    write_svg(out, d.spans, style);
-    return true;
-  });
+  PlotSvgStyle style;
+  std::string err;
+  if (!parse_plot_svg_style(o, model, uint32_t(per_mm), &style, &err)) return fail(err);
+  err = write_plot_page(o.get("-o"), {StrokeLayer{"1 visible", d.spans, 1}}, model, &style);
   if (!err.empty()) return fail(err);
   if (!o.get("--spans").empty()) {
     err = write_atomically(o.get("--spans"), [&](std::ostream& out) {
@@ -365,8 +366,11 @@ int cmd_cut(int argc, char** argv) {
 }
 
 int cmd_draw(int argc, char** argv) {
-  const Options o = parse_options(argc, argv, 2, {"-o", "--halo", "--spans", "--steps-per-mm"},
-                                  {"--exact-halo", "--stats"});
+  std::set<std::string> valued = {"-o", "--halo", "--spans", "--steps-per-mm"},
+                        flags = {"--exact-halo", "--stats"};
+  valued.insert(std::begin(kPageValued), std::end(kPageValued));
+  flags.insert(std::begin(kPageFlags), std::end(kPageFlags));
+  const Options o = parse_options(argc, argv, 2, valued, flags);
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "draw");
   DrawParams dp;
@@ -380,7 +384,7 @@ int cmd_draw(int argc, char** argv) {
   if (!ok(s)) return fail_status("DRAW", s);
   warn_reach(d, dp.halo, lc.set.reach >> lc.substep_bits);
   spans_to_steps(&d.spans, lc.substep_bits);
-  if (const int rc = write_drawing(o, d)) return rc;
+  if (const int rc = write_drawing(o, d, false)) return rc;
   if (o.has("--stats")) {
     std::fprintf(stderr, "edges=%u\ncrossings=%u\ncut_ran=0\ncut_ms=0\n", lc.set.n_edges,
                  lc.set.n_crossings);
@@ -408,7 +412,7 @@ int plot_in_bands(const Options& o, const std::vector<Edge3>& edges, const CutPa
                 "high needs " + std::to_string(bands.need_bytes));
   if (!ok(s)) return fail_status("bands", s);
   spans_to_steps(&d.spans, units);
-  if (const int rc = write_drawing(o, d)) return rc;
+  if (const int rc = write_drawing(o, d, is_mesh_path(o.positional[0]))) return rc;
   if (o.has("--stats")) {
     std::fprintf(stderr, "edges=%zu\nspans=%zu\nband_ms=%.3f\n", edges.size(), d.spans.size(),
                  d.draw_ms);
@@ -422,8 +426,10 @@ int cmd_plot(int argc, char** argv) {
   valued.insert({"--halo", "--spans", "--cut", "--mode", "--dash", "--steps-per-mm", "--method",
                  "--hatch", "--arena"});
   valued.insert(std::begin(kSceneOptions), std::end(kSceneOptions));
-  const Options o = parse_options(argc, argv, 2, valued,
-                                  {"--exact-halo", "--stats", "--outline", "--no-intersections"});
+  valued.insert(std::begin(kPageValued), std::end(kPageValued));
+  std::set<std::string> flags = {"--exact-halo", "--stats", "--outline", "--no-intersections"};
+  flags.insert(std::begin(kPageFlags), std::end(kPageFlags));
+  const Options o = parse_options(argc, argv, 2, valued, flags);
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "plot");
   if (o.get("--mode", "haloed") != "haloed") return cmd_plot_solid(o);
@@ -461,7 +467,7 @@ int cmd_plot(int argc, char** argv) {
     if (!error.empty()) return fail(error);
   }
   spans_to_steps(&d.spans, units);
-  if (const int rc = write_drawing(o, d)) return rc;
+  if (const int rc = write_drawing(o, d, is_mesh_path(o.positional[0]))) return rc;
   if (o.has("--stats")) {
     print_cut_stats(c);
     print_draw_stats(d);
@@ -515,18 +521,32 @@ bool parse_pause_at(const std::string& list_text, std::vector<uint32_t>* pause_a
   return true;
 }
 
-// The plot as a G-code and an HPGL file too, when asked for.
-int write_exports(const Options& o, const SimReport& r, const JobSpec& spec, const JobFile& jf) {
+// The plot as a G-code and an HPGL file too, when asked for: a model's drawing centred on the
+// job's page as `plot` centres it (export/page.h); the travel home still ends at the origin.
+int write_exports(const Options& o, const SimReport& r, const JobSpec& spec, JobFile jf) {
+  std::vector<PathPoint> points = r.points;
+  if (is_mesh_path(jf.scene_path)) {
+    Options page_options;
+    page_options.values = jf.solid_options;
+    if (jf.landscape) page_options.flags.insert("--landscape");
+    Page page;
+    std::string error;
+    if (!parse_page(page_options, &page, &error)) return fail(error);
+    centring_offset(page, jf.style.steps_per_mm, points, &jf.style.offset_x, &jf.style.offset_y);
+    if (spec.finish_home && !points.empty() && points.back().pen_down == 0 &&
+        points.back().x == 0 && points.back().y == 0)
+      points.back() = PathPoint{-jf.style.offset_x, -jf.style.offset_y, 0};
+  }
   if (!o.get("--gcode").empty()) {
     const std::string error = write_atomically(o.get("--gcode"), [&](std::ostream& out) {
-      write_gcode(out, r.points, spec.machine, jf.style);
+      write_gcode(out, points, spec.machine, jf.style);
       return true;
     });
     if (!error.empty()) return fail(error);
   }
   if (!o.get("--hpgl").empty()) {
     const std::string error = write_atomically(o.get("--hpgl"), [&](std::ostream& out) {
-      write_hpgl(out, r.points, jf.style);
+      write_hpgl(out, points, jf.style);
       return true;
     });
     if (!error.empty()) return fail(error);

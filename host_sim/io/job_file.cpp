@@ -47,6 +47,10 @@ const std::map<std::string, std::string> kKeys = {
     {"pen-settle-ticks", "TICKS"},
     {"arena", "BYTES"},
     {"steps-per-mm", "STEPS"},
+    {"page", "a4 | a3 | a5 | letter | legal | tabloid | WxH (mm)"},
+    {"landscape", "on | off"},
+    {"margin", "MM"},
+    {"scale", "fit | S (mm on paper per model unit)"},
 };
 
 // What is wrong with a line whose key no branch took.
@@ -189,16 +193,21 @@ InputError read_hatch(const JobLine& l, JobFile* out) {
 
 bool is_view_setting(const std::string& key) {
   return key == "view" || key == "perspective" || key == "method" || key == "dash" || key == "up" ||
-         key == "substep" || key == "weld" || key == "crease";
+         key == "substep" || key == "weld" || key == "crease" || key == "page" || key == "margin" ||
+         key == "scale";
 }
 
 // view, perspective, method, dash, up, substep: kept as the plot command's options.
 InputError read_view_setting(const JobLine& l, JobFile* out) {
   const std::string& key = l.f[0];
-  out->solid_options["--" + key] = key == "dash" ? l.f[1] + "," + l.f[2] : l.f[1];
+  if (key == "scale" && l.f[1] == "fit")
+    out->solid_options.erase("--scale");
+  else
+    out->solid_options["--" + key] = key == "dash" ? l.f[1] + "," + l.f[2] : l.f[1];
   // Checked here, so a bad value is reported with its line.
   Options o;
   o.values = out->solid_options;
+  if (out->landscape) o.flags.insert("--landscape");
   SolidOptions so;
   View view;
   std::string error;
@@ -265,6 +274,10 @@ InputError read_setting(const JobLine& l, JobFile* out) {
     return read_view_setting(l, out);
   if (key == "outline" && l.on_off()) {
     out->outline = f[1] == "on";
+    return {};
+  }
+  if (key == "landscape" && l.on_off()) {
+    out->landscape = f[1] == "on";
     return {};
   }
   if (key == "intersections" && l.on_off()) {

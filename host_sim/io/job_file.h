@@ -22,6 +22,12 @@
 //   draw-speed 6000   travel-speed 12000   accel 60000   junction-deviation 4
 //   pen-travel-ticks 150000   pen-settle-ticks 50000   backlash 0 0
 //   steps-per-mm 80           for the G-code and HPGL exporters
+//   page a4                   the paper (export/page.h): a4 | a3 | a5 | letter | legal |
+//                             tabloid | WxH in mm; default A4 landscape
+//   landscape on              the page's longer side across (on | off)
+//   margin 10                 mm on every side of the page (default 10)
+//   scale fit                 a model: fit and centre it on the page (the default), or S mm on
+//                             paper per unit of the model file
 //   arena 65536               plot in bands in a job arena of this many bytes, as a controller
 //                             with that arena does (haloed and all; default: one band); `send`
 //                             then streams the scene band by band
@@ -44,7 +50,8 @@ struct JobFile {
   std::map<std::string, std::string> solid_options;
   bool outline = false;
   bool intersections = true;
-  uint32_t arena = 0;  // bytes; 0: the whole scene in one job buffer
+  bool landscape = false;  // `landscape on` (the page options are kept in solid_options)
+  uint32_t arena = 0;      // bytes; 0: the whole scene in one job buffer
 };
 
 InputError read_job_file(const std::string& path, JobFile* out);
