@@ -64,7 +64,9 @@ def subpaths(d):
 
 def load_svg(path):
     root = ET.parse(path).getroot()
-    svg = {"root": root, "layers": [], "rects": 0}
+    svg = {"root": root, "layers": [], "rects": 0, "all": []}
+    for p in root.iter(SVG_NS + "path"):
+        svg["all"].extend(subpaths(p.get("d")))
     for el in root.iter():
         if el.tag == SVG_NS + "rect":
             svg["rects"] += 1
@@ -79,7 +81,10 @@ def load_svg(path):
 
 
 def all_strokes(svg, label=None):
-    return [s for (_, l, strokes) in svg["layers"] if label is None or l == label for s in strokes]
+    """Every subpath of the document in order, or those of one layer."""
+    if label is None:
+        return svg["all"]
+    return [s for (_, l, strokes) in svg["layers"] if l == label for s in strokes]
 
 
 def page_height(svg):
