@@ -33,6 +33,27 @@ bool parse_plot_svg_style(const Options& o, bool model, uint32_t steps_per_mm, P
   return true;
 }
 
+namespace {
+
+// An .edges or .cut scene is drawn where its steps say: one that leaves the page is most likely
+// meant for another page or steps-per-mm, so say so (the SVG is still written, as asked).
+void warn_off_page(const std::vector<PathPoint>& path, const PlotSvgStyle& style) {
+  const int64_t per = style.placement.steps_per_mm;
+  const int64_t w = style.page.width_um * per / 1000, h = style.page.height_um * per / 1000;
+  for (size_t i = 1; i < path.size(); ++i)
+    for (const PathPoint* p : {&path[i - 1], &path[i]})
+      if (path[i].pen_down != 0 && (p->x < 0 || p->y < 0 || p->x > w || p->y > h)) {
+        std::cerr << "haloplot: warning: the drawing reaches beyond the "
+                  << um_text(style.page.width_um) << " x " << um_text(style.page.height_um)
+                  << " mm page (a point at " << mm_text(p->x, uint32_t(per)) << ", "
+                  << mm_text(p->y, uint32_t(per))
+                  << " mm): give a larger --page or another --steps-per-mm\n";
+        return;
+      }
+}
+
+}  // namespace
+
 std::string write_plot_page(const std::string& path, const std::vector<StrokeLayer>& layers,
                             bool model, PlotSvgStyle* style, std::vector<PathPoint>* joined) {
   std::vector<PlannedLayer> planned;
@@ -42,6 +63,7 @@ std::string write_plot_page(const std::string& path, const std::vector<StrokeLay
   if (model)
     centring_offset(style->page, style->placement.steps_per_mm, all, &style->placement.offset_x,
                     &style->placement.offset_y);
+  if (!model) warn_off_page(all, *style);
   if (joined != nullptr) *joined = all;
   return write_atomically(path, [&](std::ostream& out) {
     write_plot_svg(out, planned, *style);
