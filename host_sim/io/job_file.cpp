@@ -322,6 +322,10 @@ InputError check_job(const std::string& path, const std::map<std::string, int>& 
   if (out->solid_options.count("--mode") != 0 && !is_mesh_path(out->scene_path))
     return {path, 0,
             "drawing " + out->solid_options["--mode"] + " needs a model scene (.obj, .stl, .ply)"};
+  if (out->solid_options.count("--scale") != 0 && !is_mesh_path(out->scene_path))
+    return {path, key_lines.at("scale"),
+            "scale is for a model scene (.obj, .stl, .ply): an .edges scene is in plot steps "
+            "already"};
   if (j.draw.mode == HaloMode::kExact) j.cut.reach = j.draw.halo;
   const Status s = validate(j.machine);
   if (!ok(s)) return machine_problem(path, j.machine, s, key_lines);

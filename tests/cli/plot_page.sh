@@ -78,6 +78,9 @@ expect '[ ! -e x.svg ] && grep -q "larger than the page" err.txt' "a scale too l
 "$tool" demo-scene --cubes 2 -o two.edges
 "$tool" plot two.edges --halo 5 --scale 1 -o x.svg 2> err.txt
 expect '[ ! -e x.svg ] && grep -q -- "--scale is for models" err.txt' "--scale on an .edges scene is refused"
+printf 'scene two.edges\nhalo 5\nscale 2\n' > two.job
+"$tool" sim two.job -o x.trace 2> err.txt
+expect '[ ! -e x.trace ] && grep -q "two.job:3: scale is for a model scene" err.txt' "a job's scale on an .edges scene is refused"
 "$tool" plot two.edges --halo 5 --steps-per-mm 40 -o off.svg 2> err.txt
 expect 'grep -q "warning: the drawing reaches beyond the 297 x 210 mm page" err.txt' "an .edges scene off the page is said"
 "$tool" plot cubes.obj --mode hidden-removed --background -o bg.svg
