@@ -20,7 +20,7 @@ compose() {  # compose OUT.svg LABEL FILE LABEL FILE ...
     echo '<rect width="1600" height="340" fill="white"/>'
     while [ $# -gt 0 ]; do
       echo "<text x=\"$((x + 200))\" y=\"326\" font-family=\"sans-serif\" font-size=\"18\" text-anchor=\"middle\">$1</text>"
-      grep -v '^<?xml' "$2" | sed "s|<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"[0-9.]*mm\" height=\"[0-9.]*mm\"|<svg x=\"$x\" y=\"0\" width=\"400\" height=\"300\"|"
+      grep -v '^<?xml' "$2" | sed "s|<svg xmlns=\"http://www.w3.org/2000/svg\"\( xmlns:inkscape=\"[^\"]*\"\)\{0,1\} width=\"[0-9.]*mm\" height=\"[0-9.]*mm\"|<svg x=\"$x\" y=\"0\" width=\"400\" height=\"300\"\1|"
       x=$((x + 400))
       shift 2
     done

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli/options.h"
+#include "cli/page_options.h"
 #include "cli/plot_outputs.h"
 #include "cli/solid_options.h"
 #include "io/atomic_file.h"
@@ -111,13 +112,17 @@ int cmd_plot_solid(const Options& o) {
   const int32_t units = scene.substep_bits;
   ModeDrawing d = make_mode_drawing(run, mode_in_units(so.spec, units));
   drawing_to_steps(&d, units);
+  PlotSvgStyle style;
+  if (!parse_plot_svg_style(o, true, so.steps_per_mm, &style, &error)) return fail(error);
+  error = write_plot_page(o.get("-o"), mode_layers(d), true, &style);
+  if (!error.empty()) return fail(error);
   if (wants_plotter_outputs(o)) {
     // The job `sim` runs for this drawing: a hidden-line drawing's strokes, decided here; in
     // mode all the model's edges whole (the same lines, not split where others cross them).
     JobSpec spec;
     spec.drawing = DrawingEffect::kAllEdges;
-    ExportStyle style;
-    if (!export_style_of(o, &style, &spec.machine, &error)) return fail(error);
+    ExportStyle export_style;
+    if (!export_style_of(o, &export_style, &spec.machine, &error)) return fail(error);
     std::vector<Edge3> edges;
     if (so.spec.mode != SolidMode::kAll) {
       edges = mode_strokes(d);
@@ -127,17 +132,8 @@ int cmd_plot_solid(const Options& o) {
       if (!load_scene(edge_options, o.positional[0], &edges, &error, &spec.substep_bits))
         return fail(error);
     }
-    if (const int rc = write_plot_outputs(o, spec, edges, style)) return rc;
+    if (const int rc = write_plot_outputs(o, spec, edges, export_style, true)) return rc;
   }
-  SvgStyle style;
-  style.second_pen = &d.outline;
-  style.steps_per_mm = so.steps_per_mm;
-  error = write_atomically(o.get("-o"), [&](std::ostream& out) {
-    std::vector<Span> first = d.spans;
-    first.insert(first.end(), d.hatch.begin(), d.hatch.end());
-    write_svg(out, first, style);
-    return true;
-  });
   if (!error.empty()) return fail(error);
   if (!o.get("--spans").empty()) {
     error = write_atomically(o.get("--spans"), [&](std::ostream& out) {

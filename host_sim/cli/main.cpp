@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "cli/options.h"
+#include "cli/page_options.h"
 #include "cli/plot_outputs.h"
 #include "demo/cube_array.h"
 #include "demo/random_scene.h"
@@ -21,6 +22,7 @@
 #include "io/edges_file.h"
 #include "io/job_file.h"
 #include "io/line_reader.h"
+#include "io/mesh_file.h"
 #include "io/spans_file.h"
 #include "io/substep_header.h"
 #include "pipeline/host_pipeline.h"
@@ -47,7 +49,9 @@ const char* kUsage =
     "  haloplot cut SCENE.edges -o SCENE.cut [--lambda X] [--cell G] [--cover exact|bbox]\n"
     "               [--reach R] [--stats]\n"
     "  haloplot draw SCENE.cut --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans] [--stats]\n"
-    "               [--steps-per-mm N]   (the SVG's size in mm; default 80)\n"
+    "               [--steps-per-mm N]   (plot steps per mm on the page; default 80)\n"
+    "               [page options: --page, --landscape, --margin, --pen-width, --background;\n"
+    "               --fit and --scale place a model, and a .cut scene is in steps: refused]\n"
     "  haloplot plot SCENE.edges|MODEL --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans]\n"
     "               [--cut OUT.cut] [--arena BYTES] [--steps-per-mm N] [--stats]\n"
     "               [--lambda X] [--cell G] [--cover exact|bbox] [--reach R]   (as cut's)\n"
@@ -68,6 +72,12 @@ const char* kUsage =
     "               [--z-feed MM/MIN] [--pen-up-gcode TEXT] [--pen-down-gcode TEXT]\n"
     "               [--draw-feed MM/MIN] [--travel-feed MM/MIN] [--pen-dwell SECONDS]\n"
     "               (the G-code's pen commands and feeds; TEXT: G-code, \\n between lines)\n"
+    "  page options (plot, draw): [--page a4|a3|a5|letter|legal|tabloid|WxH] [--landscape]\n"
+    "               [--margin MM] [--fit | --scale S] [--pen-width MM] [--background]\n"
+    "               (the SVG is the page, default A4 landscape, 10 mm margins; a model is\n"
+    "               fitted and centred, or drawn at S mm per model unit; named pages are\n"
+    "               portrait; --pen-width: stroke width, default 0.3; --background: a white\n"
+    "               page rectangle, for viewing only)\n"
     "  haloplot sim JOB.job -o OUT.trace [--gcode OUT.gcode] [--hpgl OUT.hpgl] [--arena BYTES]\n"
     "               [--binary] [--stats]   (--binary: the compact binary trace)\n"
     "               [--pause-at E1,E2,...] [--resume-at E]   (feed holds; go on from event E)\n"
@@ -230,18 +240,17 @@ void print_draw_stats(const HostDraw& d) {
                (unsigned long long)d.stats.hidden_edges, d.scratch_bytes);
 }
 
-// Writes the SVG and, if asked, the spans. Returns 0 or 1 after reporting.
-int write_drawing(const Options& o, const HostDraw& d) {
-  SvgStyle style;
+// Writes the SVG and, if asked, the spans. `model`: the scene was a model the projection
+// fitted (centred on the page). Returns 0 or 1 after reporting.
+int write_drawing(const Options& o, const HostDraw& d, bool model) {
   int64_t per_mm = 80;
   if (!o.get("--steps-per-mm").empty() && !parse_int(o.get("--steps-per-mm"), 1, 10000, &per_mm))
     return fail("--steps-per-mm '" + o.get("--steps-per-mm") +
                 "' must be an integer in [1, 10000]");
-  style.steps_per_mm = double(per_mm);
-  std::string err = write_atomically(o.get("-o"), [&](std::ostream& out) {
-    write_svg(out, d.spans, style);
-    return true;
-  });
+  PlotSvgStyle style;
+  std::string err;
+  if (!parse_plot_svg_style(o, model, uint32_t(per_mm), &style, &err)) return fail(err);
+  err = write_plot_page(o.get("-o"), {StrokeLayer{"1 visible", d.spans, 1}}, model, &style);
   if (!err.empty()) return fail(err);
   if (!o.get("--spans").empty()) {
     err = write_atomically(o.get("--spans"), [&](std::ostream& out) {
@@ -375,8 +384,11 @@ int cmd_cut(int argc, char** argv) {
 }
 
 int cmd_draw(int argc, char** argv) {
-  const Options o = parse_options(argc, argv, 2, {"-o", "--halo", "--spans", "--steps-per-mm"},
-                                  {"--exact-halo", "--stats"});
+  std::set<std::string> valued = {"-o", "--halo", "--spans", "--steps-per-mm"},
+                        flags = {"--exact-halo", "--stats"};
+  valued.insert(std::begin(kPageValued), std::end(kPageValued));
+  flags.insert(std::begin(kPageFlags), std::end(kPageFlags));
+  const Options o = parse_options(argc, argv, 2, valued, flags);
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "draw");
   if (const std::string bad = svg_output_problem(o.get("-o")); !bad.empty()) return fail(bad);
@@ -391,7 +403,7 @@ int cmd_draw(int argc, char** argv) {
   if (!ok(s)) return fail_status("DRAW", s);
   warn_reach(d, dp.halo, lc.set.reach >> lc.substep_bits);
   spans_to_steps(&d.spans, lc.substep_bits);
-  if (const int rc = write_drawing(o, d)) return rc;
+  if (const int rc = write_drawing(o, d, false)) return rc;
   if (o.has("--stats")) {
     std::fprintf(stderr, "edges=%u\ncrossings=%u\ncut_ran=0\ncut_ms=0\n", lc.set.n_edges,
                  lc.set.n_crossings);
@@ -419,7 +431,7 @@ int plot_in_bands(const Options& o, const std::vector<Edge3>& edges, const CutPa
                 "high needs " + std::to_string(bands.need_bytes));
   if (!ok(s)) return fail_status("bands", s);
   spans_to_steps(&d.spans, units);
-  if (const int rc = write_drawing(o, d)) return rc;
+  if (const int rc = write_drawing(o, d, is_mesh_path(o.positional[0]))) return rc;
   if (o.has("--stats")) {
     std::fprintf(stderr, "edges=%zu\nspans=%zu\nband_ms=%.3f\n", edges.size(), d.spans.size(),
                  d.draw_ms);
@@ -435,8 +447,10 @@ int cmd_plot(int argc, char** argv) {
   valued.insert(std::begin(kSceneOptions), std::end(kSceneOptions));
   valued.insert(std::begin(kPlotterOutputOptions), std::end(kPlotterOutputOptions));
   valued.insert(std::begin(kPenOptions), std::end(kPenOptions));
-  const Options o = parse_options(argc, argv, 2, valued,
-                                  {"--exact-halo", "--stats", "--outline", "--no-intersections"});
+  valued.insert(std::begin(kPageValued), std::end(kPageValued));
+  std::set<std::string> flags = {"--exact-halo", "--stats", "--outline", "--no-intersections"};
+  flags.insert(std::begin(kPageFlags), std::end(kPageFlags));
+  const Options o = parse_options(argc, argv, 2, valued, flags);
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "plot");
   if (const std::string bad = svg_output_problem(o.get("-o")); !bad.empty()) return fail(bad);
@@ -475,7 +489,8 @@ int cmd_plot(int argc, char** argv) {
     spec.substep_bits = units;
     ExportStyle style;
     if (!export_style_of(o, &style, &spec.machine, &error)) return fail(error);
-    if (const int rc = write_plot_outputs(o, spec, edges, style)) return rc;
+    if (const int rc = write_plot_outputs(o, spec, edges, style, is_mesh_path(o.positional[0])))
+      return rc;
   }
   if (!o.get("--arena").empty()) return plot_in_bands(o, edges, cp, dp, units);
   HostCut c;
@@ -493,7 +508,7 @@ int cmd_plot(int argc, char** argv) {
     if (!error.empty()) return fail(error);
   }
   spans_to_steps(&d.spans, units);
-  if (const int rc = write_drawing(o, d)) return rc;
+  if (const int rc = write_drawing(o, d, is_mesh_path(o.positional[0]))) return rc;
   if (o.has("--stats")) {
     print_cut_stats(c);
     print_draw_stats(d);
@@ -547,10 +562,21 @@ bool parse_pause_at(const std::string& list_text, std::vector<uint32_t>* pause_a
   return true;
 }
 
-// The plot as a G-code and an HPGL file too, when asked for.
-int write_exports(const Options& o, const SimReport& r, const JobSpec& spec, const JobFile& jf) {
+// The plot as a G-code and an HPGL file too, when asked for: a model's drawing centred on the
+// job's page as `plot` centres it (export/page.h); the travel home ends at the paper's origin.
+int write_exports(const Options& o, const SimReport& r, const JobSpec& spec, JobFile jf) {
+  std::vector<PathPoint> points = r.points;
+  if (is_mesh_path(jf.scene_path)) {
+    Options page_options;
+    page_options.values = jf.solid_options;
+    if (jf.landscape) page_options.flags.insert("--landscape");
+    Page page;
+    std::string error;
+    if (!parse_page(page_options, &page, &error)) return fail(error);
+    centre_on_page(page, spec.finish_home, &points, &jf.style);
+  }
   const std::string error =
-      write_plotter_outputs(o.get("--gcode"), o.get("--hpgl"), r.points, spec.machine, jf.style);
+      write_plotter_outputs(o.get("--gcode"), o.get("--hpgl"), points, spec.machine, jf.style);
   return error.empty() ? 0 : fail(error);
 }
 

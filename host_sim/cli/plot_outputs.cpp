@@ -123,7 +123,13 @@ bool export_style_of(const Options& o, ExportStyle* style, Machine* machine, std
 }
 
 int write_plot_outputs(const Options& o, const JobSpec& spec, const std::vector<Edge3>& edges,
-                       const ExportStyle& style) {
+                       ExportStyle style, bool model) {
+  Page page;
+  std::string page_error;
+  if (model && !parse_page(o, &page, &page_error)) {
+    std::cerr << "haloplot: " << page_error << "\n";
+    return 1;
+  }
   PlannedJob planned;
   const Status s = plan_job_path(spec, edges, &planned);
   if (!ok(s)) {
@@ -132,6 +138,7 @@ int write_plot_outputs(const Options& o, const JobSpec& spec, const std::vector<
   }
   const double seconds = estimate_plot_seconds(spec, planned.points);
   add_travel_home(spec, &planned.points);
+  if (model) centre_on_page(page, spec.finish_home, &planned.points, &style);
   const std::string error =
       write_plotter_outputs(o.get("--gcode"), o.get("--hpgl"), planned.points, spec.machine, style);
   if (!error.empty()) {

@@ -29,8 +29,10 @@ bool export_style_of(const Options& o, ExportStyle* style, Machine* machine, std
                      const std::string& dashes = "--");
 
 // Plans the job's path for these edges, writes the G-code and HPGL the options name and says
-// on stderr how long the plot takes. Returns 0 or 1 after reporting.
+// on stderr how long the plot takes. `model`: the scene is a model the projection fitted, its
+// drawing centred on the page the options give (as the SVG and `sim` place it). Returns 0 or 1
+// after reporting.
 int write_plot_outputs(const Options& o, const JobSpec& spec, const std::vector<Edge3>& edges,
-                       const ExportStyle& style);
+                       ExportStyle style, bool model);
 
 }  // namespace haloplot::host

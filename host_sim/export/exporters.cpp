@@ -72,8 +72,9 @@ void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Ma
       down = p.pen_down != 0;
       pen(down);
     }
-    out << (down ? "G1 X" : "G0 X") << mm_text(p.x, s.steps_per_mm) << " Y"
-        << mm_text(p.y, s.steps_per_mm) << " F" << (down ? draw_feed : travel_feed) << '\n';
+    out << (down ? "G1 X" : "G0 X") << mm_text(int64_t(p.x) + s.offset_x, s.steps_per_mm) << " Y"
+        << mm_text(int64_t(p.y) + s.offset_y, s.steps_per_mm) << " F"
+        << (down ? draw_feed : travel_feed) << '\n';
   }
   if (down) pen(false);
   out << "M2\n";
@@ -81,8 +82,8 @@ void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Ma
 
 void write_hpgl(std::ostream& out, const std::vector<PathPoint>& path, const ExportStyle& s) {
   // 40 plotter units per mm: units = steps * 40 / steps_per_mm, rounded.
-  const auto unit = [&](int32_t v) {
-    return floor_div(int64_t(v) * 80 + s.steps_per_mm, 2 * int64_t(s.steps_per_mm));
+  const auto unit = [&](int64_t v) {
+    return floor_div(v * 80 + s.steps_per_mm, 2 * int64_t(s.steps_per_mm));
   };
   out << "IN;SP1;";
   bool down = false;
@@ -96,7 +97,7 @@ void write_hpgl(std::ostream& out, const std::vector<PathPoint>& path, const Exp
     } else {
       out << ',';
     }
-    out << unit(p.x) << ',' << unit(p.y);
+    out << unit(int64_t(p.x) + s.offset_x) << ',' << unit(int64_t(p.y) + s.offset_y);
   }
   out << (open ? ";" : "") << "PU;SP0;\n";
 }

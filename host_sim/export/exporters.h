@@ -8,6 +8,8 @@
 //   z       "G0 Z<up>" up, "G1 Z<down> F<z feed>" down (a Z axis waits for itself: no dwell)
 //   custom  the given text for each change, line by line, nothing added
 // HPGL: IN; SP1; then PU x,y; / PD x,y,...; in plotter units of 0.025 mm (40 per mm).
+// Both write paper coordinates (export/page.h): a path point plus the style's offset, from the
+// page's lower-left corner, y up; the SVG of the same plot places every point at the same spot.
 #pragma once
 #include <iosfwd>
 #include <string>
@@ -30,6 +32,8 @@ struct ExportStyle {
   // Feeds in thousandths of mm/min as given (0: the machine's speeds in mm/min); the machine's
   // speeds are set from them too (apply_feeds), so a plot runs as its G-code says.
   int64_t draw_feed_milli = 0, travel_feed_milli = 0;
+  // The page placement (export/page.h): added to every point, in plot steps.
+  int32_t offset_x = 0, offset_y = 0;
 };
 
 // The machine's draw and travel speeds (plot steps/s) from the style's feeds, when given.

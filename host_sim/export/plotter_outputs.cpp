@@ -68,6 +68,14 @@ double estimate_plot_seconds(const JobSpec& spec, const std::vector<PathPoint>& 
   return seconds;
 }
 
+void centre_on_page(const Page& page, bool finish_home, std::vector<PathPoint>* points,
+                    ExportStyle* style) {
+  centring_offset(page, style->steps_per_mm, *points, &style->offset_x, &style->offset_y);
+  if (finish_home && !points->empty() && points->back().pen_down == 0 && points->back().x == 0 &&
+      points->back().y == 0)
+    points->back() = PathPoint{-style->offset_x, -style->offset_y, 0};
+}
+
 std::string write_plotter_outputs(const std::string& gcode_path, const std::string& hpgl_path,
                                   const std::vector<PathPoint>& points, const Machine& m,
                                   const ExportStyle& style) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "export/exporters.h"
+#include "export/page.h"
 #include "job/job.h"
 
 namespace haloplot::host {
@@ -34,6 +35,12 @@ void add_travel_home(const JobSpec& spec, std::vector<PathPoint>* points);
 // travel home is included when the job asks for it. A step simulation's end time differs from
 // this by the timing of whole steps only (tests/cli/plot_gcode.sh bounds the difference).
 double estimate_plot_seconds(const JobSpec& spec, const std::vector<PathPoint>& points);
+
+// A model's drawing centred on the page as the plot's SVG centres it (export/page.h): the
+// style's offset from the path's pen-down box, and a travel home (the path's last point, pen up
+// at the origin, when the job ends there) moved to the paper's origin, where the plotter began.
+void centre_on_page(const Page& page, bool finish_home, std::vector<PathPoint>* points,
+                    ExportStyle* style);
 
 // Writes the G-code to `gcode_path` and the HPGL to `hpgl_path` (each when not empty), through
 // the command's output set (io/atomic_file.h). "" or the error.

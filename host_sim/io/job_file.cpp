@@ -58,6 +58,10 @@ const std::map<std::string, std::string> kKeys = {
     {"draw-feed", "MM/MIN"},
     {"travel-feed", "MM/MIN"},
     {"pen-dwell", "SECONDS"},
+    {"page", "a4 | a3 | a5 | letter | legal | tabloid | WxH (mm)"},
+    {"landscape", "on | off"},
+    {"margin", "MM"},
+    {"scale", "fit | S (mm on paper per model unit)"},
 };
 
 // What is wrong with a line whose key no branch took.
@@ -200,7 +204,8 @@ InputError read_hatch(const JobLine& l, JobFile* out) {
 
 bool is_view_setting(const std::string& key) {
   return key == "view" || key == "perspective" || key == "method" || key == "dash" || key == "up" ||
-         key == "substep" || key == "weld" || key == "crease";
+         key == "substep" || key == "weld" || key == "crease" || key == "page" || key == "margin" ||
+         key == "scale";
 }
 
 // The G-code's pen profile and feeds (cli/plot_outputs.h kPenOptions), checked together once
@@ -234,10 +239,14 @@ InputError read_pen_settings(const std::string& path, const std::map<std::string
 // view, perspective, method, dash, up, substep: kept as the plot command's options.
 InputError read_view_setting(const JobLine& l, JobFile* out) {
   const std::string& key = l.f[0];
-  out->solid_options["--" + key] = key == "dash" ? l.f[1] + "," + l.f[2] : l.f[1];
+  if (key == "scale" && l.f[1] == "fit")
+    out->solid_options.erase("--scale");
+  else
+    out->solid_options["--" + key] = key == "dash" ? l.f[1] + "," + l.f[2] : l.f[1];
   // Checked here, so a bad value is reported with its line.
   Options o;
   o.values = out->solid_options;
+  if (out->landscape) o.flags.insert("--landscape");
   SolidOptions so;
   View view;
   std::string error;
@@ -312,6 +321,10 @@ InputError read_setting(const JobLine& l, JobFile* out) {
     out->outline = f[1] == "on";
     return {};
   }
+  if (key == "landscape" && l.on_off()) {
+    out->landscape = f[1] == "on";
+    return {};
+  }
   if (key == "intersections" && l.on_off()) {
     out->intersections = f[1] == "on";
     j.hidden.intersections = out->intersections;
@@ -361,6 +374,10 @@ InputError check_job(const std::string& path, const std::map<std::string, int>& 
         return {path, key_lines.at(key),
                 std::string(key) + " is for a model scene (.obj, .stl, .ply): " + out->scene_path +
                     " is an .edges scene, projected already"};
+  if (out->solid_options.count("--scale") != 0 && !is_mesh_path(out->scene_path))
+    return {path, key_lines.at("scale"),
+            "scale is for a model scene (.obj, .stl, .ply): an .edges scene is in plot steps "
+            "already"};
   if (j.draw.mode == HaloMode::kExact) j.cut.reach = j.draw.halo;
   const InputError pen = read_pen_settings(path, key_lines, out);
   if (pen.failed()) return pen;

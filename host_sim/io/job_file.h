@@ -26,6 +26,12 @@
 //                             z-down MM, z-feed MM/MIN, pen-up-gcode TEXT, pen-down-gcode TEXT
 //   draw-feed 4500            feeds in mm/min (instead of draw-speed, travel-speed), and
 //   travel-feed 9000          pen-dwell SECONDS (instead of pen-travel-ticks): as `plot` takes
+//   page a4                   the paper (export/page.h): a4 | a3 | a5 | letter | legal |
+//                             tabloid | WxH in mm; default A4 landscape
+//   landscape on              the page's longer side across (on | off)
+//   margin 10                 mm on every side of the page (default 10)
+//   scale fit                 a model: fit and centre it on the page (the default), or S mm on
+//                             paper per unit of the model file
 //   arena 65536               plot in bands in a job arena of this many bytes, as a controller
 //                             with that arena does (haloed and all; default: one band); `send`
 //                             then streams the scene band by band
@@ -50,7 +56,8 @@ struct JobFile {
   std::map<std::string, std::string> pen_options;
   bool outline = false;
   bool intersections = true;
-  uint32_t arena = 0;  // bytes; 0: the whole scene in one job buffer
+  bool landscape = false;  // `landscape on` (the page options are kept in solid_options)
+  uint32_t arena = 0;      // bytes; 0: the whole scene in one job buffer
 };
 
 InputError read_job_file(const std::string& path, JobFile* out);

@@ -29,14 +29,24 @@ ModeDrawing make_mode_drawing(const SolidRun& run, const ModeSpec& spec) {
     d.qi.push_back(q);
     return Status::kOk;
   };
-  auto add = [&](const SolidPiece& p, bool diagonal) {
+  // A piece's call first strokes the hidden run held before it (dashes), then the piece's own
+  // stroke, if it makes one now (one span: a visible piece, or any piece in mode all).
+  auto add = [&](const SolidPiece& p, bool diagonal, bool intersection) {
     runs.piece(run.edges[p.edge], p.edge, diagonal, p.t0, p.t1, p.hidden, p.q, style, keep);
+    const bool all = spec.mode == SolidMode::kAll;
+    const bool own = !(all && diagonal) && (!p.hidden || all);
+    const size_t before = d.kind.size();
+    d.kind.resize(d.spans.size(), LineKind::kHidden);
+    if (own && d.kind.size() > before)
+      d.kind.back() = intersection ? LineKind::kIntersection
+                                   : (p.hidden ? LineKind::kHidden : LineKind::kVisible);
   };
-  for (const SolidPiece& p : run.pieces) add(p, false);
-  for (const SolidPiece& p : run.contour_diagonals) add(p, true);
+  for (const SolidPiece& p : run.pieces) add(p, false, false);
+  for (const SolidPiece& p : run.contour_diagonals) add(p, true, false);
   // Intersection lines as the core's job draws them: visible parts only, like a contour diagonal.
-  for (const SolidPiece& p : run.intersections) add(p, true);
+  for (const SolidPiece& p : run.intersections) add(p, true, true);
   runs.finish(style, keep);
+  d.kind.resize(d.spans.size(), LineKind::kHidden);
   // Hatching likewise, after them (Span::edge = the polygon).
   for (size_t k = 0; k < run.hatch.size(); ++k) {
     const SolidPiece& p = run.hatch[k];

@@ -20,11 +20,16 @@ struct ModeSpec {
   bool intersections = true;  // the visible parts of the lines where faces cross
 };
 
+// What a first-pen span draws: a visible piece (a contour diagonal too), a hidden one (a dash,
+// or a whole hidden edge in mode all), or a visible part of a line where faces cross.
+enum class LineKind : uint8_t { kVisible = 0, kHidden = 1, kIntersection = 2 };
+
 struct ModeDrawing {
-  std::vector<Span> spans;    // first pen, in edge order then along each edge
-  std::vector<int32_t> qi;    // QI of each span, in halves (kQiUnknown when not counted)
-  std::vector<Span> outline;  // second pass
-  std::vector<Span> hatch;    // hatching of the visible faces (Span::edge = polygon)
+  std::vector<Span> spans;     // first pen, in edge order then along each edge
+  std::vector<int32_t> qi;     // QI of each span, in halves (kQiUnknown when not counted)
+  std::vector<LineKind> kind;  // of each span (the SVG's layers)
+  std::vector<Span> outline;   // second pass
+  std::vector<Span> hatch;     // hatching of the visible faces (Span::edge = polygon)
 };
 
 // "all", "hidden-removed", "hidden-dashed"; false for anything else.

@@ -1,9 +1,11 @@
 #include "pipeline/scene_input.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 
 #include "cli/solid_options.h"
+#include "export/page.h"
 #include "io/atomic_file.h"
 #include "io/edges_file.h"
 #include "io/job_file.h"
@@ -116,8 +118,9 @@ bool project_obj(const Options& o, const std::string& path, ObjModel* model,
                  RepairReport* repair = nullptr) {
   View view;
   if (!parse_view(o, &view, error)) return false;
+  if (!read_model(o, path, model, repair, error) || !scale_view(o, *model, &view, error))
+    return false;
   *view_out = view;
-  if (!read_model(o, path, model, repair, error)) return false;
   screen->resize(model->vertices.size());
   const Status s =
       project_points(view, model->vertices.data(), uint32_t(screen->size()), screen->data());
@@ -148,6 +151,44 @@ bool dump_edges(const Options& o, const std::string& path, const std::vector<Edg
 
 }  // namespace
 
+bool scale_view(const Options& o, const ObjModel& model, View* view, std::string* error) {
+  Page page;
+  if (!parse_page(o, &page, error)) return false;
+  if (page.scale <= 0 || model.vertices.empty()) return true;
+  // The projected extents in world units, as core/view/projection.h projects (in doubles: a
+  // scale needs no exactness, the fit itself stays the core's).
+  const double pi = 3.14159265358979323846;
+  const double az = view->azimuth_mdeg * pi / 180000, el = view->elevation_mdeg * pi / 180000;
+  double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
+  for (const Point3& p : model.vertices) {
+    const double x = p.x * std::cos(az) - p.y * std::sin(az);
+    const double y1w = p.x * std::sin(az) + p.y * std::cos(az);
+    double y = p.z * std::cos(el) + y1w * std::sin(el);
+    const double d = p.z * std::sin(el) - y1w * std::cos(el);
+    const double k = view->perspective > 0 ? view->perspective / (view->perspective - d) : 1;
+    x0 = std::min(x0, x * k), x1 = std::max(x1, x * k);
+    y0 = std::min(y0, y * k), y1 = std::max(y1, y * k);
+  }
+  // Steps per world unit: S mm per file unit, the model's world units per file unit.
+  int64_t per_mm = 80;
+  parse_int(o.get("--steps-per-mm", "80"), 1, 100000, &per_mm);
+  const double per_world = page.scale * double(per_mm) / model.scale;
+  const double w = (x1 - x0) * per_world, h = (y1 - y0) * per_world;
+  if (w > view->width || h > view->height) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "--scale %s draws the model %.1f x %.1f mm, larger than the page's drawable "
+                  "area, %.1f x %.1f mm",
+                  o.get("--scale").c_str(), w / double(per_mm), h / double(per_mm),
+                  view->width / double(per_mm), view->height / double(per_mm));
+    *error = text;
+    return false;
+  }
+  // Both sides the larger extent: the core's fit fills it, at exactly this scale.
+  view->width = view->height = std::max<int32_t>(1, int32_t(std::lround(std::max(w, h))));
+  return true;
+}
+
 bool parse_view(const Options& o, View* out, std::string* error) {
   View view;
   const std::string v = o.get("--view", "30,40");
@@ -164,6 +205,19 @@ bool parse_view(const Options& o, View* out, std::string* error) {
       return false;
     }
     view.perspective = int32_t(d);
+  }
+  // The plot area is the page's drawable area (export/page.h).
+  Page page;
+  int64_t per_mm = 80;
+  if (!parse_page(o, &page, error)) return false;
+  if (!o.get("--steps-per-mm").empty() && !parse_int(o.get("--steps-per-mm"), 1, 100000, &per_mm)) {
+    *error = "--steps-per-mm '" + o.get("--steps-per-mm") + "' must be an integer in [1, 100000]";
+    return false;
+  }
+  if (!page_area(page, uint32_t(per_mm), &view.margin, &view.width, &view.height)) {
+    *error = "the page's drawable area at " + std::to_string(per_mm) +
+             " steps/mm leaves the plotter's coordinate range";
+    return false;
   }
   // Without --substep, the default where the plot area leaves room for it, else the most that
   // fits (a plot area near 2^20 steps has no bits to spare).
@@ -320,6 +374,7 @@ Options job_options(const JobFile& jf) {
   o.values["--steps-per-mm"] = std::to_string(jf.style.steps_per_mm);
   if (jf.outline) o.flags.insert("--outline");
   if (!jf.intersections) o.flags.insert("--no-intersections");
+  if (jf.landscape) o.flags.insert("--landscape");
   return o;
 }
 

@@ -37,11 +37,19 @@ bool read_model(const Options& o, const std::string& path, ObjModel* model, Repa
 
 // Loads and, for OBJ, projects. On failure *error is a complete message (file:line: reason,
 // or the option or projection problem).
-// --view and --perspective into a View; false with *error saying what is wrong.
+// --view and --perspective into a View, its plot area the page's drawable area (--page,
+// --landscape, --margin, --steps-per-mm: export/page.h); false with *error saying what is
+// wrong.
 bool parse_view(const Options& o, View* out, std::string* error);
 
 // *substep_bits (may be null): the edges' units, 2^-S steps (an OBJ's view; an .edges file's
 // '# substep S' header).
+// --scale S (mm on paper per unit of the model file): the view's plot area shrunk so the
+// fit draws the model at that scale; an error if it then leaves the page's drawable area.
+// Nothing without --scale.
+struct ObjModel;
+bool scale_view(const Options& o, const ObjModel& model, View* view, std::string* error);
+
 bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* edges,
                 std::string* error, int32_t* substep_bits = nullptr);
 

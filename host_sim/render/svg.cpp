@@ -5,9 +5,59 @@
 #include <ostream>
 #include <string>
 
+#include "geometry/fraction.h"
+
 namespace haloplot::host {
 
 namespace {
+
+// Thousandths as "-12.345" (exactly three decimals).
+std::string thousandths_text(int64_t v) {
+  const bool neg = v < 0;
+  const int64_t a = neg ? -v : v;
+  const std::string f = std::to_string(a % 1000);
+  return (neg ? "-" : "") + std::to_string(a / 1000) + "." + std::string(3 - f.size(), '0') + f;
+}
+
+// One path point on the page, in micrometres, rounded as the G-code's mm_text rounds.
+struct PagePoint {
+  const PlotSvgStyle& s;
+  int64_t um(int64_t steps, int32_t offset) const {
+    const int64_t per = s.placement.steps_per_mm;
+    return floor_div((steps + offset) * 2000 + per, 2 * per);
+  }
+  std::string text(const PathPoint& p) const {
+    return thousandths_text(um(p.x, s.placement.offset_x)) + "," +
+           thousandths_text(s.page.height_um - um(p.y, s.placement.offset_y));
+  }
+};
+
+// One layer: a <path> per pen-down stroke, from the point the pen went down at.
+void write_layer(std::ostream& out, const PlannedLayer& l, size_t index, const PlotSvgStyle& s) {
+  char width[32];
+  std::snprintf(width, sizeof width, "%.3f", s.pen_width_mm * l.pen_width);
+  out << "<g inkscape:groupmode=\"layer\" inkscape:label=\"" << l.label << "\" id=\"layer"
+      << index + 1 << "\" fill=\"none\" stroke=\"black\" stroke-width=\"" << width
+      << "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+  const PagePoint page{s};
+  PathPoint at{l.start_x, l.start_y, 0};
+  bool open = false;
+  for (const PathPoint& p : l.path) {
+    if (p.pen_down != 0 && !open) {
+      out << "<path d=\"M" << page.text(at) << " L";
+      open = true;
+    } else if (p.pen_down != 0) {
+      out << ' ';
+    } else if (open) {
+      out << "\"/>\n";
+      open = false;
+    }
+    if (p.pen_down != 0) out << page.text(p);
+    at = p;
+  }
+  if (open) out << "\"/>\n";
+  out << "</g>\n";
+}
 
 // Millimetres to three decimals (a micrometre), without a locale's comma.
 std::string mm_text(double mm) {
@@ -17,6 +67,19 @@ std::string mm_text(double mm) {
 }
 
 }  // namespace
+
+void write_plot_svg(std::ostream& out, const std::vector<PlannedLayer>& layers,
+                    const PlotSvgStyle& style) {
+  const std::string w = um_text(style.page.width_um), h = um_text(style.page.height_um);
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" "
+      << "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" width=\"" << w
+      << "mm\" height=\"" << h << "mm\" viewBox=\"0 0 " << w << ' ' << h << "\">\n";
+  if (style.background)
+    out << "<rect x=\"0\" y=\"0\" width=\"" << w << "\" height=\"" << h << "\" fill=\"white\"/>\n";
+  for (size_t i = 0; i < layers.size(); ++i) write_layer(out, layers[i], i, style);
+  out << "</svg>\n";
+}
 
 void write_svg(std::ostream& out, const std::vector<Span>& spans, const SvgStyle& style) {
   int32_t xmin = 0, ymin = 0, xmax = 1, ymax = 1;

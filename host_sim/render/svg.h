@@ -1,14 +1,35 @@
-// SVG of visible spans. Plotter y grows upward, SVG y downward: the picture is flipped so it
-// looks as it will on paper. The viewBox is in steps, so the SVG measures like the plot, and
-// the width and height are in millimetres at the plotter's steps per mm, so plotter tools
-// (vpype, Inkscape's AxiDraw extension) and printers draw it at its real size.
+// SVG of a drawing. Plotter y grows upward, SVG y downward: the picture is flipped so it looks
+// as it will on paper.
+//
+// write_plot_svg: the plot as a plotter takes it (vpype, the AxiDraw Inkscape extension). The
+// page is the SVG (width and height in mm, viewBox in mm, so a user unit is a millimetre); each
+// pen layer is an Inkscape layer (<g inkscape:groupmode="layer" inkscape:label="1 visible">),
+// each pen-down stroke one <path> of one subpath, in the planned order; point (x, y) of the
+// path is at (x + offset_x, page height - (y + offset_y)) in mm, to three decimals, exactly
+// the G-code's X and page height - Y (export/page.h). No background unless asked for.
+//
+// write_svg: the older cropped picture (the drawing's bounding box plus a border, a white
+// background), for `replay`.
 #pragma once
 #include <iosfwd>
 #include <vector>
 
 #include "draw/draw.h"
+#include "export/exporters.h"
+#include "export/page.h"
+#include "export/plot_layers.h"
 
 namespace haloplot::host {
+
+struct PlotSvgStyle {
+  Page page;
+  ExportStyle placement;      // steps_per_mm and the page offset, as the G-code's
+  double pen_width_mm = 0.3;  // --pen-width: the stroke width (outlines: times their factor)
+  bool background = false;    // --background: a white page-sized rectangle, for viewing
+};
+
+void write_plot_svg(std::ostream& out, const std::vector<PlannedLayer>& layers,
+                    const PlotSvgStyle& style);
 
 struct SvgStyle {
   double steps_per_mm = 80;  // the plotter's scale: the SVG's size in mm is steps / this

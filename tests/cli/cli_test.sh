@@ -3,6 +3,7 @@
 # nothing half-written on failure, cut + draw equal to plot, and re-drawing from a .cut file.
 set -u
 tool="$1"
+here="$(cd "$(dirname "$0")" && pwd)"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 pass=0 fail=0
@@ -379,12 +380,12 @@ start=$(date +%s)
 rc=$?
 expect '[ $rc -ne 0 ] && [ $(( $(date +%s) - start )) -lt 5 ] && grep -q "no such serial device" err.txt' "send to a missing device fails at once: $(cat err.txt)"
 
-# The SVG's size is the plot's, in millimetres at the plotter's steps per mm.
+# The SVG is the page (A4 landscape by default, in mm); an .edges scene's steps land at the
+# plotter's steps per mm: at 40 the drawing is twice as wide as at 80.
 "$tool" plot scene.edges --halo 5 -o mm80.svg && "$tool" plot scene.edges --halo 5 --steps-per-mm 40 -o mm40.svg
-w80=$(sed -n 's/.*<svg[^>]* width="\([0-9.]*\)mm".*/\1/p' mm80.svg)
-w40=$(sed -n 's/.*<svg[^>]* width="\([0-9.]*\)mm".*/\1/p' mm40.svg)
-vb=$(sed -n 's/.*viewBox="[-0-9]* [-0-9]* \([0-9]*\) .*/\1/p' mm80.svg)
-expect '[ -n "$w80" ] && python3 -c "import sys; w80, w40, vb = map(float, sys.argv[1:]); sys.exit(not (abs(w80 - vb / 80) < 0.001 and abs(w40 - 2 * w80) < 0.002))" "$w80" "$w40" "$vb"' "SVG width in mm: $w80 at 80 steps/mm, $w40 at 40, viewBox width $vb"
+w80=$(python3 "$here/svg_page_check.py" extent mm80.svg)
+w40=$(python3 "$here/svg_page_check.py" extent mm40.svg)
+expect 'grep -q "width=\"297mm\" height=\"210mm\" viewBox=\"0 0 297 210\"" mm80.svg && python3 -c "import sys; w80, w40 = map(float, sys.argv[1:]); sys.exit(not (w80 > 1 and abs(w40 - 2 * w80) < 0.002))" "$w80" "$w40"' "SVG page A4 landscape, drawing width in mm: $w80 at 80 steps/mm, $w40 at 40"
 
 # Nothing to draw is an error, not an empty picture.
 : > empty.edges

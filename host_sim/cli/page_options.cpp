@@ -1,0 +1,74 @@
+#include "cli/page_options.h"
+
+#include <cstdlib>
+#include <iostream>
+
+#include "io/atomic_file.h"
+
+namespace haloplot::host {
+
+const char* const kPageValued[4] = {"--page", "--margin", "--scale", "--pen-width"};
+const char* const kPageFlags[3] = {"--landscape", "--fit", "--background"};
+
+bool parse_plot_svg_style(const Options& o, bool model, uint32_t steps_per_mm, PlotSvgStyle* style,
+                          std::string* error) {
+  PlotSvgStyle s;
+  if (!parse_page(o, &s.page, error)) return false;
+  if (!model && s.page.placed) {
+    *error = std::string(o.has("--fit") ? "--fit" : "--scale") +
+             " is for models (.obj, .stl, .ply): an .edges or .cut scene is in plot steps "
+             "already, drawn where its coordinates say";
+    return false;
+  }
+  const std::string w = o.get("--pen-width", "0.3");
+  char* end = nullptr;
+  s.pen_width_mm = std::strtod(w.c_str(), &end);
+  if (w.empty() || end != w.c_str() + w.size() || !(s.pen_width_mm > 0) || s.pen_width_mm > 100) {
+    *error = "--pen-width '" + w + "' must be a width in mm in (0, 100]";
+    return false;
+  }
+  s.background = o.has("--background");
+  s.placement.steps_per_mm = steps_per_mm;
+  *style = s;
+  return true;
+}
+
+namespace {
+
+// An .edges or .cut scene is drawn where its steps say: one that leaves the page is most likely
+// meant for another page or steps-per-mm, so say so (the SVG is still written, as asked).
+void warn_off_page(const std::vector<PathPoint>& path, const PlotSvgStyle& style) {
+  const int64_t per = style.placement.steps_per_mm;
+  const int64_t w = style.page.width_um * per / 1000, h = style.page.height_um * per / 1000;
+  for (size_t i = 1; i < path.size(); ++i)
+    for (const PathPoint* p : {&path[i - 1], &path[i]})
+      if (path[i].pen_down != 0 && (p->x < 0 || p->y < 0 || p->x > w || p->y > h)) {
+        std::cerr << "haloplot: warning: the drawing reaches beyond the "
+                  << um_text(style.page.width_um) << " x " << um_text(style.page.height_um)
+                  << " mm page (a point at " << mm_text(p->x, uint32_t(per)) << ", "
+                  << mm_text(p->y, uint32_t(per))
+                  << " mm): give a larger --page or another --steps-per-mm\n";
+        return;
+      }
+}
+
+}  // namespace
+
+std::string write_plot_page(const std::string& path, const std::vector<StrokeLayer>& layers,
+                            bool model, PlotSvgStyle* style, std::vector<PathPoint>* joined) {
+  std::vector<PlannedLayer> planned;
+  const Status s = plan_layers(layers, &planned);
+  if (!ok(s)) return path + ": planning the pen path failed: " + status_name(s);
+  const std::vector<PathPoint> all = joined_path(planned);
+  if (model)
+    centring_offset(style->page, style->placement.steps_per_mm, all, &style->placement.offset_x,
+                    &style->placement.offset_y);
+  if (!model) warn_off_page(all, *style);
+  if (joined != nullptr) *joined = all;
+  return write_atomically(path, [&](std::ostream& out) {
+    write_plot_svg(out, planned, *style);
+    return true;
+  });
+}
+
+}  // namespace haloplot::host

@@ -1,0 +1,47 @@
+#include "export/plot_layers.h"
+
+#include <cstdint>
+
+namespace haloplot::host {
+
+Status plan_layers(const std::vector<StrokeLayer>& layers, std::vector<PlannedLayer>* out) {
+  out->clear();
+  int32_t x = 0, y = 0;
+  for (const StrokeLayer& l : layers) {
+    if (l.spans.empty()) continue;
+    const uint32_t n = uint32_t(l.spans.size());
+    std::vector<Segment2> segs(n);
+    for (uint32_t i = 0; i < n; ++i)
+      segs[i] = Segment2{l.spans[i].x0, l.spans[i].y0, l.spans[i].x1, l.spans[i].y1};
+    std::vector<uint64_t> work((path_plan_bytes(n) + 7) / 8 + 1);
+    PlannedLayer p{l.label, std::vector<PathPoint>(path_points_max(n)), l.pen_width, x, y};
+    uint32_t count = 0;
+    PathStats stats;
+    const Status s = plan_path(segs.data(), n, x, y, work.data(), work.size() * 8, p.path.data(),
+                               uint32_t(p.path.size()), &count, &stats);
+    if (!ok(s)) return s;
+    p.path.resize(count);
+    if (!p.path.empty()) x = p.path.back().x, y = p.path.back().y;
+    out->push_back(std::move(p));
+  }
+  return Status::kOk;
+}
+
+std::vector<PathPoint> joined_path(const std::vector<PlannedLayer>& layers) {
+  std::vector<PathPoint> all;
+  for (const PlannedLayer& l : layers) all.insert(all.end(), l.path.begin(), l.path.end());
+  return all;
+}
+
+std::vector<StrokeLayer> mode_layers(const ModeDrawing& d) {
+  std::vector<StrokeLayer> layers = {{"1 visible", {}, 1},
+                                     {"2 hidden", {}, 1},
+                                     {"3 intersections", {}, 1},
+                                     {"4 hatching", d.hatch, 1},
+                                     {"5 outlines", d.outline, 2.5}};
+  for (size_t i = 0; i < d.spans.size(); ++i)
+    layers[i < d.kind.size() ? size_t(d.kind[i]) : 0].spans.push_back(d.spans[i]);
+  return layers;
+}
+
+}  // namespace haloplot::host

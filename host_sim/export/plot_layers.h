@@ -1,0 +1,41 @@
+// A plot as pen layers: each kind of line (visible edges, hidden dashes, intersection lines,
+// hatching, outlines) planned on its own by the core's path planner (motion/path_plan.h: the
+// same joins and order the controller and the G-code use), so a pen change between layers
+// never mixes kinds. The SVG writes each layer as an Inkscape layer, one subpath per pen-down
+// stroke; the joined path is what a G-code or HPGL of the same plot draws.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "draw/draw.h"
+#include "motion/path_plan.h"
+#include "pipeline/drawing_modes.h"
+
+namespace haloplot::host {
+
+struct StrokeLayer {
+  std::string label;        // "1 visible", ...: the AxiDraw extension plots layer N by its number
+  std::vector<Span> spans;  // in whole steps
+  double pen_width = 1;     // times --pen-width in the SVG (outlines: a wider pen)
+};
+
+struct PlannedLayer {
+  std::string label;
+  std::vector<PathPoint> path;  // pen-up travel and pen-down strokes, plot steps
+  double pen_width = 1;
+  int32_t start_x = 0, start_y = 0;  // where the pen is before path[0]
+};
+
+// Plans each non-empty layer, in order, the first from (0, 0) (where the controller's job
+// starts), each next from where the previous one ended. A single layer's path is the one the
+// controller plans for the same spans.
+// A planner failure (a coordinate out of its range) is returned as its status.
+Status plan_layers(const std::vector<StrokeLayer>& layers, std::vector<PlannedLayer>* out);
+
+// The layers' paths one after the other: the plot as one pen path (for G-code or HPGL).
+std::vector<PathPoint> joined_path(const std::vector<PlannedLayer>& layers);
+
+// The layers of a hidden-line drawing (by ModeDrawing::kind), then hatching and outlines.
+std::vector<StrokeLayer> mode_layers(const ModeDrawing& d);
+
+}  // namespace haloplot::host
