@@ -1,0 +1,109 @@
+// Crossings of projected cubic Bézier edges with each other, with themselves (a knot crosses
+// itself) and with straight edges: the HALO paper's section 5, items 2-4.
+//
+// How:
+//  1. Every curve is halved (curve/bezier.h, exact) until each piece is flat within
+//     flat_tol or at max_depth: these pieces and their boxes are what CUT's grid will hold.
+//  2. Pieces are paired by box overlap with a sweep over their boxes sorted by left edge.
+//     (CUT's grid is built for many short straight edges of similar length; here a few curves
+//     give a few hundred pieces per curve, and the sweep needs no cell size. Putting pieces in
+//     the grid comes with curves in CUT.) Segment-segment pairs are skipped: CUT has them.
+//  3. A box-overlapping pair is refined by halving the less flat piece until one of:
+//     - the boxes are apart, or one piece's control points lie strictly outside the other's
+//       fat line (the strip parallel to its chord holding its control points): no crossing;
+//     - the chords cross properly and the bound below is within t_tol on both curves: a
+//       crossing, at the chords' crossing;
+//     - both pieces are at max_depth (or straight) without a proper chord crossing, boxes
+//       still overlapping: a touch (the curves come within the max-depth flatness of each
+//       other; tangency is reported this way, deterministically, not as a crossing).
+//       At max_depth a chord crossing is a crossing even if its bound exceeds t_tol.
+//  4. Raw records of one pair of curves whose parameter intervals overlap on both curves are
+//     one cluster (the same crossing seen by neighbouring pieces, or a tangency seen as two
+//     chord crossings): an odd number of crossings in it is one crossing, an even number
+//     (or only touches) is a touch.
+//
+// Parameter bound of a crossing. Pieces A, B with chords L_A(s) = A0 + s dA, L_B(u) and
+// per-coordinate flatness e_A, e_B (|B_A(s) - L_A(s)| <= e_A coordinate-wise). At the true
+// crossing B_A(s*) = B_B(u*), so L_A(s*) - L_B(u*) = r with |r.x| <= e_A.x + e_B.x, likewise y;
+// at the chord crossing L_A(s') = L_B(u'). Subtracting, dA (s* - s') - dB (u* - u') = r, and
+// Cramer's rule gives |s* - s'| <= (|r.x| |dB.y| + |r.y| |dB.x|) / |cross(dA, dB)|, and |u* - u'|
+// the same with dA. On the whole curve that is divided by 2^level; 2 more units of Q0.32 cover
+// rounding. It holds for the true crossing inside the two pieces. Front/back: the depth
+// chords at s', u' differ from the true depths by at most e_A.z + |dA.z| |s* - s'| (and the
+// same for B); when the depth difference does not exceed both errors, `front` is 0.
+//
+// Shared endpoints. Two pieces with a common end point (consecutive pieces of a curve, curves
+// joined end to start, a curve ending on another) are not tested: a meeting there is never a
+// crossing. The cost: two curves that cross exactly at a dyadic parameter of both (an end of
+// a piece on each) are not reported; and a loop smaller than flat_tol is not resolved.
+//
+// Memory: plan_curve_cross() counts the pieces and says how many scratch bytes
+// run_curve_cross() needs; the hits go into the caller's array. Recursion: refinement goes at
+// most 2 * max_depth calls deep (about 250 bytes of stack each).
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "curve/bezier.h"
+#include "status/status.h"
+
+namespace haloplot {
+
+// Curves and segments together, and pieces, are counted in 31 bits.
+inline constexpr uint32_t kMaxCurveCount = 0x7fffffffu;
+
+struct CurveCrossParams {
+  // Initial pieces: flat within this, per coordinate, Q20.42 (default 1/16 unit).
+  uint64_t flat_tol = uint64_t{1} << (kCurveFracBits - 4);
+  // A crossing is refined until its parameter bound is within this on both curves, Q0.32
+  // (default 2^-24 of the curve's parameter range), or max_depth is reached.
+  uint64_t t_tol = uint64_t{1} << 8;
+  uint8_t max_depth = kCurveMaxDepth;  // at most kCurveMaxDepth
+};
+
+enum class CurveHitKind : uint8_t { kCrossing, kTouch };
+
+// One crossing or touch as seen from `curve`. Every crossing appears twice, once from each
+// curve (a self-crossing twice on the same curve). Parameters are Q0.32 (kCurveParamOne is
+// t = 1); curves are numbered BezierEdge3 first, then the segments.
+struct CurveHit {
+  uint64_t t = 0;          // on `curve`
+  uint64_t other_t = 0;    // on `other`
+  uint64_t t_err = 0;      // the true parameter is within t +/- t_err
+  uint64_t other_err = 0;  // and other_t +/- other_err
+  uint32_t curve = 0, other = 0;
+  CurveHitKind kind = CurveHitKind::kCrossing;
+  // +1: `curve` is in front of `other` here; -1: behind; 0: the depths are too close to call
+  // (within their error bound), or a touch.
+  int8_t front = 0;
+};
+
+struct CurveCrossPlan {
+  uint32_t n_curves = 0, n_segments = 0;
+  uint32_t pieces = 0;
+  size_t scratch_bytes = 0;
+  CurveCrossParams params;
+};
+
+struct CurveCrossStats {
+  uint32_t pieces = 0;
+  uint64_t box_pairs = 0;    // piece pairs from the sweep with overlapping boxes
+  uint64_t pair_visits = 0;  // refinement calls
+  uint64_t raw = 0;          // raw crossing and touch records (before clustering)
+  uint32_t crossings = 0, touches = 0;
+  uint64_t needed = 0;  // on kCrossingCapacity: the hit capacity a retry needs
+};
+
+// Check the input (every control point and endpoint in range, params in range) and count the
+// pieces: O(pieces), nothing stored.
+Status plan_curve_cross(const BezierEdge3* curves, uint32_t n_curves, const Edge3* segments,
+                        uint32_t n_segments, const CurveCrossParams& params, CurveCrossPlan* plan);
+
+// Find every crossing and touch. Hits are sorted by (curve, t, other). A hit array too small
+// for the raw records, or for the final hits, is kCrossingCapacity with stats->needed set;
+// *n_hits is then 0.
+Status run_curve_cross(const CurveCrossPlan& plan, const BezierEdge3* curves, const Edge3* segments,
+                       void* scratch, size_t scratch_bytes, CurveHit* hits, uint32_t capacity,
+                       uint32_t* n_hits, CurveCrossStats* stats);
+
+}  // namespace haloplot
