@@ -53,24 +53,61 @@ uint64_t clamp62(uint64_t v) {
 
 // ---- the run ----
 
+struct PiecePair {
+  CurvePiece a, b;
+};
+inline constexpr uint32_t kPairStack = 2 * kCurveMaxDepth + 2;
+
 struct Run {
   CurveCrossParams params;
   CurveHit* hits;
   uint32_t capacity;
   CurveCrossStats* stats;
+  PiecePair* stack;  // kPairStack entries
 };
 
-bool same_xy(const FixPoint3& a, const FixPoint3& b) { return a.x == b.x && a.y == b.y; }
-bool shares_end(const CurvePiece& a, const CurvePiece& b) {
-  return same_xy(a.p[0], b.p[0]) || same_xy(a.p[0], b.p[3]) || same_xy(a.p[3], b.p[0]) ||
-         same_xy(a.p[3], b.p[3]);
+// Ties: a chord end exactly on the other chord's line (or on the edge of a fat line) is
+// decided by Simulation of Simplicity: one of the two curves is moved by an infinitesimal
+// delta * w, w = (1, epsilon) with epsilon infinitesimal against delta. The moved one is the
+// higher-numbered curve, or on one curve the piece later along it (so the pieces around one
+// self-crossing all move the same way). Moving a whole curve is a real configuration, so the
+// four pieces around a crossing at piece ends on both curves see it exactly once, and two
+// collinear chords (an overlap) become parallel: no crossing.
+// sign(cross(d, w)) = -sign(d.y), or sign(d.x) when d.y = 0 (0 for a zero chord).
+int tie_sign(int64_t dx, int64_t dy) {
+  if (dy != 0) return dy > 0 ? -1 : 1;
+  return (dx > 0) - (dx < 0);
+}
+// +1 when b is the moved piece of the pair, -1 when a is.
+int moved(const CurvePiece& a, const CurvePiece& b) {
+  if (a.curve != b.curve) return a.curve < b.curve ? 1 : -1;
+  return a.t_lo() < b.t_lo() ? 1 : -1;
+}
+
+// Pieces that meet at an end point are not tested when that point is either curve's own end
+// (curves joined end to start, a curve ending on another: never a crossing) or the same
+// point of one curve (consecutive pieces). Other meetings are left to the tie rule.
+bool skip_shared_end(const CurvePiece& a, const CurvePiece& b) {
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      const FixPoint3 &pa = a.p[3 * i], &pb = b.p[3 * j];
+      if (pa.x != pb.x || pa.y != pb.y) continue;
+      const bool a_end = i == 0 ? a.starts_curve() : a.ends_curve();
+      const bool b_end = j == 0 ? b.starts_curve() : b.ends_curve();
+      const uint64_t ta = i == 0 ? a.t_lo() : a.t_hi(), tb = j == 0 ? b.t_lo() : b.t_hi();
+      if (a_end || b_end || (a.curve == b.curve && ta == tb)) return true;
+    }
+  }
+  return false;
 }
 
 // True when every control point of b lies strictly on one side of a's fat line: the strip
-// parallel to a's chord that holds all of a's control points.
-bool fat_line_apart(const CurvePiece& a, const CurvePiece& b) {
+// parallel to a's chord that holds all of a's control points. `shift` (+1 or -1) says how b
+// moves against a under the tie rule.
+bool fat_line_apart(const CurvePiece& a, const CurvePiece& b, int shift) {
   const int64_t dx = a.p[3].x - a.p[0].x, dy = a.p[3].y - a.p[0].y;
   if (dx == 0 && dy == 0) return false;
+  const int tie = shift * tie_sign(dx, dy);
   Wide lo, hi;  // the chord's ends are at 0
   for (int i = 1; i < 3; ++i) {
     const Wide d = cross_w(dx, dy, a.p[i].x - a.p[0].x, a.p[i].y - a.p[0].y);
@@ -80,19 +117,18 @@ bool fat_line_apart(const CurvePiece& a, const CurvePiece& b) {
   bool all_above = true, all_below = true;
   for (int i = 0; i < 4; ++i) {
     const Wide d = cross_w(dx, dy, b.p[i].x - a.p[0].x, b.p[i].y - a.p[0].y);
-    if (!(hi < d)) all_above = false;
-    if (!(d < lo)) all_below = false;
+    if (!(hi < d || (d == hi && tie > 0))) all_above = false;
+    if (!(d < lo || (d == lo && tie < 0))) all_below = false;
   }
   return all_above || all_below;
 }
 
-// The side of a chord end from the other chord's line. A zero counts as the positive side
-// (a fixed tie rule, so a curve through the other's line at a piece end crosses in exactly
-// one of the two pieces), except at the curve's own end, where it is no side at all: a curve
-// ending on another is a T-junction, not a crossing.
-int side_of(Wide v, bool curve_end) {
+// The side of a chord end from the other chord's line, ties broken by the tie rule (`tie`),
+// except at the curve's own end, where a zero is no side at all: a curve ending on another is
+// a T-junction, not a crossing.
+int side_of(Wide v, bool curve_end, int tie) {
   const int s = sign_w(v);
-  return s != 0 ? s : (curve_end ? 0 : 1);
+  return s != 0 ? s : (curve_end ? 0 : tie);
 }
 
 struct ChordCrossing {
@@ -108,10 +144,15 @@ bool chord_cross(const CurvePiece& a, const CurvePiece& b, const Flatness& fa, c
   const int64_t dax = a1.x - a0.x, day = a1.y - a0.y, dbx = b1.x - b0.x, dby = b1.y - b0.y;
   const Wide sa0 = cross_w(dbx, dby, a0.x - b0.x, a0.y - b0.y);
   const Wide sa1 = cross_w(dbx, dby, a1.x - b0.x, a1.y - b0.y);
-  if (side_of(sa0, a.starts_curve()) * side_of(sa1, a.ends_curve()) >= 0) return false;
+  // b moves by shift * delta * w against a: a's ends, seen from b's line, move the other way.
+  const int shift = moved(a, b);
+  const int tie_a = -shift * tie_sign(dbx, dby), tie_b = shift * tie_sign(dax, day);
+  if (side_of(sa0, a.starts_curve(), tie_a) * side_of(sa1, a.ends_curve(), tie_a) >= 0)
+    return false;
   const Wide sb0 = cross_w(dax, day, b0.x - a0.x, b0.y - a0.y);
   const Wide sb1 = cross_w(dax, day, b1.x - a0.x, b1.y - a0.y);
-  if (side_of(sb0, b.starts_curve()) * side_of(sb1, b.ends_curve()) >= 0) return false;
+  if (side_of(sb0, b.starts_curve(), tie_b) * side_of(sb1, b.ends_curve(), tie_b) >= 0)
+    return false;
   // The side value falls linearly from sa0 to sa1 along A: s' = sa0 / (sa0 - sa1). Both
   // denominators are +/- cross(dA, dB), nonzero here.
   const Wide den_a = abs_w(sa0 - sa1), den_b = abs_w(sb0 - sb1);
@@ -241,30 +282,53 @@ bool can_split(const Run& run, const CurvePiece& p) {
   return !p.straight && p.level < run.params.max_depth;
 }
 
-void refine(Run& run, const CurvePiece& a, const CurvePiece& b) {
+// One refinement step on (a, b): false when the pair is settled (nothing, a crossing or a
+// touch recorded), true when it must be halved (*halve_a says which piece).
+bool refine_step(Run& run, const CurvePiece& a, const CurvePiece& b, bool* halve_a) {
   ++run.stats->pair_visits;
-  if (!overlap(box_of(a), box_of(b)) || shares_end(a, b)) return;
-  if (fat_line_apart(a, b) || fat_line_apart(b, a)) return;
+  if (!overlap(box_of(a), box_of(b)) || skip_shared_end(a, b)) return false;
+  const int shift = moved(a, b);
+  if (fat_line_apart(a, b, shift) || fat_line_apart(b, a, -shift)) return false;
   const Flatness fa = flatness(a), fb = flatness(b);
   const bool split_a = can_split(run, a), split_b = can_split(run, b);
   ChordCrossing c;
   if (chord_cross(a, b, fa, fb, &c)) {
     const bool tight =
         global_err(a, c.ds) <= run.params.t_tol && global_err(b, c.du) <= run.params.t_tol;
-    if (tight || (!split_a && !split_b)) return record_crossing(run, a, b, c);
+    if (tight || (!split_a && !split_b)) {
+      record_crossing(run, a, b, c);
+      return false;
+    }
   } else if (!split_a && !split_b) {
-    return record_touch(run, a, b);
+    record_touch(run, a, b);
+    return false;
   }
   const uint64_t wa = fa.ex > fa.ey ? fa.ex : fa.ey, wb = fb.ex > fb.ey ? fb.ex : fb.ey;
-  CurvePiece l, r;
-  if (split_a && (!split_b || wa >= wb)) {
-    halve(a, &l, &r);
-    refine(run, l, b);
-    refine(run, r, b);
-  } else {
-    halve(b, &l, &r);
-    refine(run, a, l);
-    refine(run, a, r);
+  *halve_a = split_a && (!split_b || wa >= wb);
+  return true;
+}
+
+// Depth-first over the pair tree with an explicit stack (in scratch, not on the call stack):
+// every halving raises one piece's level, so a path has at most 2 * max_depth halvings and
+// the stack never holds more than kPairStack pairs.
+void refine(Run& run, const CurvePiece& a, const CurvePiece& b) {
+  PiecePair* stack = run.stack;
+  uint32_t top = 0;
+  stack[top++] = PiecePair{a, b};
+  while (top > 0) {
+    const PiecePair pair = stack[--top];
+    bool halve_a = false;
+    if (!refine_step(run, pair.a, pair.b, &halve_a)) continue;
+    CurvePiece l, r;
+    if (halve_a) {
+      halve(pair.a, &l, &r);
+      stack[top++] = PiecePair{r, pair.b};
+      stack[top++] = PiecePair{l, pair.b};
+    } else {
+      halve(pair.b, &l, &r);
+      stack[top++] = PiecePair{pair.a, r};
+      stack[top++] = PiecePair{pair.a, l};
+    }
   }
 }
 
@@ -292,10 +356,12 @@ void for_each_piece(const BezierEdge3* curves, uint32_t nc, const Edge3* segment
 }
 
 template <typename Carve>
-void carve(Carve& c, uint32_t pieces, CurvePiece** p, FixBox** box, uint32_t** order) {
+void carve(Carve& c, uint32_t pieces, CurvePiece** p, FixBox** box, uint32_t** order,
+           PiecePair** stack) {
   *p = c.template take<CurvePiece>(pieces);
   *box = c.template take<FixBox>(pieces);
   *order = c.template take<uint32_t>(pieces);
+  *stack = c.template take<PiecePair>(kPairStack);
 }
 
 // Pair boxes by a sweep in x: each piece meets the pieces whose left edge is not past its
@@ -426,7 +492,8 @@ Status plan_curve_cross(const BezierEdge3* curves, uint32_t n_curves, const Edge
   CurvePiece* p;
   FixBox* box;
   uint32_t* order;
-  carve(bytes, plan->pieces, &p, &box, &order);
+  PiecePair* stack;
+  carve(bytes, plan->pieces, &p, &box, &order, &stack);
   plan->scratch_bytes = bytes.total;
   return Status::kOk;
 }
@@ -440,7 +507,8 @@ Status run_curve_cross(const CurveCrossPlan& plan, const BezierEdge3* curves, co
   CurvePiece* p;
   FixBox* box;
   uint32_t* order;
-  carve(carver, plan.pieces, &p, &box, &order);
+  PiecePair* stack;
+  carve(carver, plan.pieces, &p, &box, &order, &stack);
   if (carver.short_) return Status::kWorkspaceTooSmall;
   uint32_t n = 0;
   auto keep = [&](const CurvePiece& piece) {
@@ -453,7 +521,7 @@ Status run_curve_cross(const CurveCrossPlan& plan, const BezierEdge3* curves, co
   sort_in_place(order, n, [box](uint32_t a, uint32_t b) {
     return box[a].x0 != box[b].x0 ? box[a].x0 < box[b].x0 : a < b;
   });
-  Run run{plan.params, hits, capacity, stats};
+  Run run{plan.params, hits, capacity, stats, stack};
   sweep(run, p, box, order, n);
   if (stats->raw > capacity) {
     stats->needed = stats->raw;

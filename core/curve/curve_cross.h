@@ -38,8 +38,9 @@
 // a piece on each) are not reported; and a loop smaller than flat_tol is not resolved.
 //
 // Memory: plan_curve_cross() counts the pieces and says how many scratch bytes
-// run_curve_cross() needs; the hits go into the caller's array. Recursion: refinement goes at
-// most 2 * max_depth calls deep (about 250 bytes of stack each).
+// run_curve_cross() needs (the pieces, their boxes, the sweep order and a refinement stack of
+// 2 * kCurveMaxDepth + 2 piece pairs); the hits go into the caller's array. No recursion
+// but the flattening's, at most max_depth calls deep.
 #pragma once
 #include <stddef.h>
 #include <stdint.h>
