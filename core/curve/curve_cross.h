@@ -32,10 +32,19 @@
 // chords at s', u' differ from the true depths by at most e_A.z + |dA.z| |s* - s'| (and the
 // same for B); when the depth difference does not exceed both errors, `front` is 0.
 //
-// Shared endpoints. Two pieces with a common end point (consecutive pieces of a curve, curves
-// joined end to start, a curve ending on another) are not tested: a meeting there is never a
-// crossing. The cost: two curves that cross exactly at a dyadic parameter of both (an end of
-// a piece on each) are not reported; and a loop smaller than flat_tol is not resolved.
+// A cluster's crossing keeps the bound of its tightest record, widened to cover every record
+// in the cluster: when touch records join it (max_depth pieces next to a crossing that sits
+// exactly at a piece end), the bound grows to a max_depth piece, 2^-14 of the parameter.
+//
+// Ties. A chord end exactly on the other chord's line, or exactly on a fat line's edge, is
+// decided by Simulation of Simplicity (one curve moved by an infinitesimal), so a crossing at
+// piece ends of both curves (a dyadic parameter on each: easy to build with symmetric
+// curves) is found once, and collinear chords (an overlap) do not cross.
+//
+// Shared end points. Pieces that meet at an end point are not tested when that point is a
+// curve's own end (curves joined end to start, a curve ending on another: HALO ignores
+// crossings at end points) or the same point of one curve (consecutive pieces). The cost: a
+// loop of one curve smaller than flat_tol, folded back at a piece end, is not resolved.
 //
 // Memory: plan_curve_cross() counts the pieces and says how many scratch bytes
 // run_curve_cross() needs (the pieces, their boxes, the sweep order and a refinement stack of
@@ -54,8 +63,11 @@ namespace haloplot {
 inline constexpr uint32_t kMaxCurveCount = 0x7fffffffu;
 
 struct CurveCrossParams {
-  // Initial pieces: flat within this, per coordinate, Q20.42 (default 1/16 unit).
-  uint64_t flat_tol = uint64_t{1} << (kCurveFracBits - 4);
+  // Initial pieces: flat within this, per coordinate, Q20.42 (default 1/4 unit). They only
+  // pair curves up (and will be CUT's grid entries): a crossing's precision comes from the
+  // refinement, so a coarser tolerance means fewer pieces, the same crossings and bounds
+  // (docs/curves.md has the measurements).
+  uint64_t flat_tol = uint64_t{1} << (kCurveFracBits - 2);
   // A crossing is refined until its parameter bound is within this on both curves, Q0.32
   // (default 2^-24 of the curve's parameter range), or max_depth is reached.
   uint64_t t_tol = uint64_t{1} << 8;

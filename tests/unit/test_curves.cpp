@@ -241,9 +241,10 @@ int compare(const std::vector<CurveHit>& hits, const std::vector<RefCrossing>& r
 // which must then fail (CTest curves_planted expects the failure).
 bool g_plant = false;
 
-void check_scene(const char* name, const CurveScene& s, int m, int expected, int touches = -1) {
+void check_scene(const char* name, const CurveScene& s, int m, int expected, int touches = -1,
+                 const CurveCrossParams& params = CurveCrossParams()) {
   const std::vector<RefCrossing> ref = reference(s, m);
-  CoreRun run = run_core(s);
+  CoreRun run = run_core(s, params);
   if (g_plant)
     for (auto& h : run.hits)
       if (h.kind == CurveHitKind::kCrossing) {
@@ -384,6 +385,16 @@ void test_scenes() {
   big.size = kCoordMax;
   big.margin = 0;
   check_scene("trefoil, full range", host::trefoil_knot(12, big), 128, 3);
+  // The initial pieces' tolerance changes the pairing, not the answer.
+  for (int shift : {-6, 4}) {
+    CurveCrossParams p;
+    p.flat_tol = uint64_t{1} << (kCurveFracBits + shift);
+    const std::string tol = " (pieces 2^" + std::to_string(shift) + ")";
+    check_scene(("trefoil" + tol).c_str(), host::trefoil_knot(24, top), 64, 3, 0, p);
+    check_scene(("torus knot (3,4)" + tol).c_str(), host::torus_knot(3, 4, 50, top), 64, 8, 0, p);
+    check_scene(("helix + axis" + tol).c_str(), host::helix(4, 1.0, 24, true, tilted), 64, -1, 0,
+                p);
+  }
 }
 
 // ---- hard cases ----
