@@ -483,7 +483,10 @@ Status plan_curve_cross(const BezierEdge3* curves, uint32_t n_curves, const Edge
   uint64_t pieces = 0;
   auto count = [&pieces](const CurvePiece&) { ++pieces; };
   for_each_piece(curves, n_curves, segments, n_segments, params, count);
-  if (pieces > kMaxCurveCount) return Status::kTooManyEdges;
+  // The scratch size must fit size_t on a 32-bit target too.
+  const uint64_t per_piece = sizeof(CurvePiece) + sizeof(FixBox) + sizeof(uint32_t) + 24;
+  if (pieces > kMaxCurveCount || pieces > (SIZE_MAX - (uint64_t{1} << 16)) / per_piece)
+    return Status::kTooManyEdges;
   plan->n_curves = n_curves;
   plan->n_segments = n_segments;
   plan->pieces = static_cast<uint32_t>(pieces);
