@@ -57,13 +57,15 @@ struct PiecePair {
   CurvePiece a, b;
 };
 inline constexpr uint32_t kPairStack = 2 * kCurveMaxDepth + 2;
+inline constexpr uint32_t kSelfStack = kCurveMaxDepth + 2;
 
 struct Run {
   CurveCrossParams params;
   CurveHit* hits;
   uint32_t capacity;
   CurveCrossStats* stats;
-  PiecePair* stack;  // kPairStack entries
+  PiecePair* stack;        // kPairStack entries
+  CurvePiece* self_stack;  // kSelfStack entries
 };
 
 // Ties: a chord end exactly on the other chord's line (or on the edge of a fat line) is
@@ -84,10 +86,17 @@ int moved(const CurvePiece& a, const CurvePiece& b) {
   return a.t_lo() < b.t_lo() ? 1 : -1;
 }
 
-// Pieces that meet at an end point are not tested when that point is either curve's own end
-// (curves joined end to start, a curve ending on another: never a crossing) or the same
-// point of one curve (consecutive pieces). Other meetings are left to the tie rule.
-bool skip_shared_end(const CurvePiece& a, const CurvePiece& b) {
+// Pieces that meet at an end point V (a's end ia, b's end jb: 0 the start, 1 the end) where
+// V is either curve's own end (curves joined end to start, a curve ending on another) or the
+// same point of one curve (consecutive pieces). The meeting at V is never a crossing, but the
+// pieces may still cross elsewhere (a curve folding back alongside a segment it ends on, a
+// loop over consecutive pieces): such a pair is settled when the path through V is monotone,
+// else halved until it is, or dropped at max_depth. Other meetings are left to the tie rule.
+struct Shared {
+  bool found = false;
+  int ia = 0, jb = 0;
+};
+Shared shared_end(const CurvePiece& a, const CurvePiece& b) {
   for (int i = 0; i < 2; ++i) {
     for (int j = 0; j < 2; ++j) {
       const FixPoint3 &pa = a.p[3 * i], &pb = b.p[3 * j];
@@ -95,10 +104,33 @@ bool skip_shared_end(const CurvePiece& a, const CurvePiece& b) {
       const bool a_end = i == 0 ? a.starts_curve() : a.ends_curve();
       const bool b_end = j == 0 ? b.starts_curve() : b.ends_curve();
       const uint64_t ta = i == 0 ? a.t_lo() : a.t_hi(), tb = j == 0 ? b.t_lo() : b.t_hi();
-      if (a_end || b_end || (a.curve == b.curve && ta == tb)) return true;
+      if (a_end || b_end || (a.curve == b.curve && ta == tb)) return Shared{true, i, j};
     }
   }
-  return false;
+  return Shared{};
+}
+
+// True when the path along a to its end ia, then along b from its end jb, is strictly monotone
+// along the direction w from the path's first point to its last: every control vector
+// P[i+1] - P[i] of both hodographs, taken in the path's direction, has a positive dot product
+// with w (the derivative is a convex combination of them), so the path cannot cross itself.
+// monotone_path(q, q, 1, 0) asks it of one piece.
+bool monotone_path(const CurvePiece& a, const CurvePiece& b, int ia, int jb) {
+  const FixPoint3& from = ia == 1 ? a.p[0] : a.p[3];
+  const FixPoint3& to = jb == 0 ? b.p[3] : b.p[0];
+  const int64_t wx = to.x - from.x, wy = to.y - from.y;
+  const CurvePiece* both[2] = {&a, &b};
+  const int64_t dir[2] = {ia == 1 ? 1 : -1, jb == 0 ? 1 : -1};
+  for (int k = 0; k < 2; ++k) {
+    const CurvePiece& p = *both[k];
+    for (int i = 0; i < 3; ++i) {
+      const int64_t dx = p.p[i + 1].x - p.p[i].x, dy = p.p[i + 1].y - p.p[i].y;
+      if (p.straight && dx == 0 && dy == 0) continue;  // a segment's repeated points
+      const Wide d = mul_i64(dir[k] * dx, wx) + mul_i64(dir[k] * dy, wy);
+      if (d.negative() || d.is_zero()) return false;
+    }
+  }
+  return true;
 }
 
 // True when every control point of b lies strictly on one side of a's fat line: the strip
@@ -135,6 +167,7 @@ struct ChordCrossing {
   uint64_t s = 0, u = 0;            // along the pieces, Q0.32 (floor)
   uint64_t ds = 0, du = 0;          // the bounds |s* - s'|, |u* - u'|, Q0.32 (ceiling, saturated)
   int64_t za = 0, zb = 0;           // depth chords at s, u (Q20.42)
+  int8_t sense = 0;                 // sign of cross(dA, dB): which way B crosses A
   uint64_t zerr_a = 0, zerr_b = 0;  // their error bounds
 };
 
@@ -172,6 +205,7 @@ bool chord_cross(const CurvePiece& a, const CurvePiece& b, const Flatness& fa, c
   };
   c->zerr_a = clamp62(fa.ez + slope_err(daz, c->ds + 1));
   c->zerr_b = clamp62(fb.ez + slope_err(dbz, c->du + 1));
+  c->sense = static_cast<int8_t>(sign_w(cross_w(dax, day, dbx, dby)));
   return true;
 }
 
@@ -192,6 +226,7 @@ CurveHit normalized(const CurveHit& h) {
   m.t_err = h.other_err;
   m.other_err = h.t_err;
   m.front = static_cast<int8_t>(-h.front);
+  m.sense = static_cast<int8_t>(-h.sense);
   return m;
 }
 
@@ -213,6 +248,7 @@ void record_crossing(Run& run, const CurvePiece& a, const CurvePiece& b, const C
   const int64_t dz = c.za - c.zb;  // both in [0, 2^62): no overflow
   const uint64_t margin = c.zerr_a + c.zerr_b;
   h.front = abs_u(dz) <= margin ? 0 : (dz > 0 ? 1 : -1);
+  h.sense = c.sense;
   store(run, h);
 }
 
@@ -282,11 +318,28 @@ bool can_split(const Run& run, const CurvePiece& p) {
   return !p.straight && p.level < run.params.max_depth;
 }
 
+// Pieces meeting at V (shared_end): settled when the path through V is monotone; else the less
+// flat one is halved, so only the sub-pair at V stays a meeting pair, and the others are tested
+// as usual. At max_depth a meeting pair is dropped: a fold or loop within a max_depth piece of
+// V is not resolved.
+bool shared_step(Run& run, const CurvePiece& a, const CurvePiece& b, const Shared& v,
+                 bool* halve_a) {
+  if (monotone_path(a, b, v.ia, v.jb)) return false;
+  const bool split_a = can_split(run, a), split_b = can_split(run, b);
+  if (!split_a && !split_b) return false;
+  const Flatness fa = flatness(a), fb = flatness(b);
+  const uint64_t wa = fa.ex > fa.ey ? fa.ex : fa.ey, wb = fb.ex > fb.ey ? fb.ex : fb.ey;
+  *halve_a = split_a && (!split_b || wa >= wb);
+  return true;
+}
+
 // One refinement step on (a, b): false when the pair is settled (nothing, a crossing or a
 // touch recorded), true when it must be halved (*halve_a says which piece).
 bool refine_step(Run& run, const CurvePiece& a, const CurvePiece& b, bool* halve_a) {
   ++run.stats->pair_visits;
-  if (!overlap(box_of(a), box_of(b)) || skip_shared_end(a, b)) return false;
+  if (!overlap(box_of(a), box_of(b))) return false;
+  const Shared shared = shared_end(a, b);
+  if (shared.found) return shared_step(run, a, b, shared, halve_a);
   const int shift = moved(a, b);
   if (fat_line_apart(a, b, shift) || fat_line_apart(b, a, -shift)) return false;
   const Flatness fa = flatness(a), fb = flatness(b);
@@ -332,6 +385,24 @@ void refine(Run& run, const CurvePiece& a, const CurvePiece& b) {
   }
 }
 
+// A piece flat within flat_tol may still hold a loop smaller than that. A piece that is not
+// monotone along its chord is halved, its halves refined as consecutive pieces, and each half
+// checked the same way (depth first, on a stack of kSelfStack pieces in scratch).
+void refine_self(Run& run, const CurvePiece& piece) {
+  CurvePiece* stack = run.self_stack;
+  uint32_t top = 0;
+  stack[top++] = piece;
+  while (top > 0) {
+    const CurvePiece q = stack[--top];
+    if (q.straight || monotone_path(q, q, 1, 0) || !can_split(run, q)) continue;
+    CurvePiece l, r;
+    halve(q, &l, &r);
+    refine(run, l, r);
+    stack[top++] = r;
+    stack[top++] = l;
+  }
+}
+
 // ---- pieces ----
 
 template <typename Emit>
@@ -357,16 +428,20 @@ void for_each_piece(const BezierEdge3* curves, uint32_t nc, const Edge3* segment
 
 template <typename Carve>
 void carve(Carve& c, uint32_t pieces, CurvePiece** p, FixBox** box, uint32_t** order,
-           PiecePair** stack) {
+           PiecePair** stack, CurvePiece** self_stack) {
   *p = c.template take<CurvePiece>(pieces);
   *box = c.template take<FixBox>(pieces);
   *order = c.template take<uint32_t>(pieces);
   *stack = c.template take<PiecePair>(kPairStack);
+  *self_stack = c.template take<CurvePiece>(kSelfStack);
 }
 
 // Pair boxes by a sweep in x: each piece meets the pieces whose left edge is not past its
 // right edge.
 void sweep(Run& run, const CurvePiece* p, const FixBox* box, const uint32_t* order, uint32_t n) {
+  // A piece flat within flat_tol may still hold a loop smaller than that: one that is not
+  // monotone along its chord is halved and its halves refined as consecutive pieces.
+  for (uint32_t i = 0; i < n; ++i) refine_self(run, p[i]);
   for (uint32_t i = 0; i < n; ++i) {
     const uint32_t a = order[i];
     for (uint32_t j = i + 1; j < n && box[order[j]].x0 <= box[a].x1; ++j) {
@@ -391,10 +466,14 @@ bool pair_less(const CurveHit& x, const CurveHit& y) {
   return x.other_t < y.other_t;
 }
 
-// The clusters of step 4, as they close.
+// The clusters of step 4, as they close. Crossing records are taken in order along the first
+// curve; one with the same sense as the previous one is the same crossing seen again (two
+// distinct crossings of two curves next to each other cross opposite ways), so only a change
+// of sense counts a new crossing.
 struct Cluster {
   uint64_t lo_a = 0, hi_a = 0, lo_b = 0, hi_b = 0;
   uint32_t crossings = 0;
+  int8_t last_sense = 0;
   bool fronts_agree = true;
   CurveHit rep;  // the crossing with the smallest bound, or the first touch
 
@@ -406,6 +485,7 @@ struct Cluster {
     lo_b = h.other_t > h.other_err ? h.other_t - h.other_err : 0;
     hi_b = h.other_t + h.other_err;
     crossings = h.kind == CurveHitKind::kCrossing ? 1 : 0;
+    last_sense = h.kind == CurveHitKind::kCrossing ? h.sense : 0;
   }
   bool takes(const CurveHit& h) const {
     return h.curve == rep.curve && h.other == rep.other && h.t <= hi_a + h.t_err &&
@@ -420,7 +500,8 @@ struct Cluster {
     lo_b = lb < lo_b ? lb : lo_b;
     hi_b = h.other_t + h.other_err > hi_b ? h.other_t + h.other_err : hi_b;
     if (h.kind != CurveHitKind::kCrossing) return;
-    ++crossings;
+    if (crossings == 0 || h.sense != last_sense) ++crossings;
+    last_sense = h.sense;
     if (rep.kind != CurveHitKind::kCrossing) {
       rep = h;
       return;
@@ -441,10 +522,15 @@ struct Cluster {
       out.t_err = widen(out.t, out.t_err, lo_a, hi_a);
       out.other_err = widen(out.other_t, out.other_err, lo_b, hi_b);
       if (!fronts_agree) out.front = 0;
-      return out;
+      // A crossing that may be at either curve's own end is an end-point meeting (a curve
+      // ending on the other, or on itself): never a crossing, as at CUT's end points.
+      if (out.t > out.t_err && out.t + out.t_err < kCurveParamOne && out.other_t > out.other_err &&
+          out.other_t + out.other_err < kCurveParamOne)
+        return out;
     }
     out.kind = CurveHitKind::kTouch;
     out.front = 0;
+    out.sense = 0;
     out.t = lo_a + (hi_a - lo_a) / 2;
     out.t_err = hi_a - out.t;
     out.other_t = lo_b + (hi_b - lo_b) / 2;
@@ -496,7 +582,8 @@ Status plan_curve_cross(const BezierEdge3* curves, uint32_t n_curves, const Edge
   FixBox* box;
   uint32_t* order;
   PiecePair* stack;
-  carve(bytes, plan->pieces, &p, &box, &order, &stack);
+  CurvePiece* self_stack;
+  carve(bytes, plan->pieces, &p, &box, &order, &stack, &self_stack);
   plan->scratch_bytes = bytes.total;
   return Status::kOk;
 }
@@ -511,7 +598,8 @@ Status run_curve_cross(const CurveCrossPlan& plan, const BezierEdge3* curves, co
   FixBox* box;
   uint32_t* order;
   PiecePair* stack;
-  carve(carver, plan.pieces, &p, &box, &order, &stack);
+  CurvePiece* self_stack;
+  carve(carver, plan.pieces, &p, &box, &order, &stack, &self_stack);
   if (carver.short_) return Status::kWorkspaceTooSmall;
   uint32_t n = 0;
   auto keep = [&](const CurvePiece& piece) {
@@ -524,7 +612,7 @@ Status run_curve_cross(const CurveCrossPlan& plan, const BezierEdge3* curves, co
   sort_in_place(order, n, [box](uint32_t a, uint32_t b) {
     return box[a].x0 != box[b].x0 ? box[a].x0 < box[b].x0 : a < b;
   });
-  Run run{plan.params, hits, capacity, stats, stack};
+  Run run{plan.params, hits, capacity, stats, stack, self_stack};
   sweep(run, p, box, order, n);
   if (stats->raw > capacity) {
     stats->needed = stats->raw;
@@ -545,6 +633,7 @@ Status run_curve_cross(const CurveCrossPlan& plan, const BezierEdge3* curves, co
     m.t_err = hits[i].other_err;
     m.other_err = hits[i].t_err;
     m.front = static_cast<int8_t>(-hits[i].front);
+    m.sense = static_cast<int8_t>(-hits[i].sense);
     if (hits[i].kind == CurveHitKind::kCrossing)
       ++stats->crossings;
     else

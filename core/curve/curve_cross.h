@@ -19,8 +19,10 @@
 //       At max_depth a chord crossing is a crossing even if its bound exceeds t_tol.
 //  4. Raw records of one pair of curves whose parameter intervals overlap on both curves are
 //     one cluster (the same crossing seen by neighbouring pieces, or a tangency seen as two
-//     chord crossings): an odd number of crossings in it is one crossing, an even number
-//     (or only touches) is a touch.
+//     chord crossings). Along the first curve, a crossing record with the same sense (which
+//     way the other curve crosses) as the one before is the same crossing again: distinct
+//     neighbouring crossings of two curves alternate. An odd number of distinct crossings is
+//     one crossing, an even number (or only touches) is a touch.
 //
 // Parameter bound of a crossing. Pieces A, B with chords L_A(s) = A0 + s dA, L_B(u) and
 // per-coordinate flatness e_A, e_B (|B_A(s) - L_A(s)| <= e_A coordinate-wise). At the true
@@ -89,6 +91,9 @@ struct CurveHit {
   // +1: `curve` is in front of `other` here; -1: behind; 0: the depths are too close to call
   // (within their error bound), or a touch.
   int8_t front = 0;
+  // Crossings: which way `other` crosses `curve`, the sign of cross(tangent of curve, tangent
+  // of other) (from the chords); 0 for a touch.
+  int8_t sense = 0;
 };
 
 struct CurveCrossPlan {
