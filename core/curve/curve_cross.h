@@ -43,15 +43,20 @@
 // piece ends of both curves (a dyadic parameter on each: easy to build with symmetric
 // curves) is found once, and collinear chords (an overlap) do not cross.
 //
-// Shared end points. Pieces that meet at an end point are not tested when that point is a
-// curve's own end (curves joined end to start, a curve ending on another: HALO ignores
-// crossings at end points) or the same point of one curve (consecutive pieces). The cost: a
-// loop of one curve smaller than flat_tol, folded back at a piece end, is not resolved.
+// Meetings at end points. Pieces that meet at a point that is a curve's own end (curves joined
+// end to start, a curve ending on another) or the same point of one curve (consecutive pieces)
+// are never a crossing there, but may cross elsewhere (a curve folding back along a segment it
+// ends on, a loop): they are halved until the path through the point is monotone along its
+// chord, and dropped at max_depth. A crossing whose bound reaches a curve's end is such an
+// end-point meeting (HALO ignores crossings at end points): a touch. A piece flat within
+// flat_tol that is not monotone along its own chord is halved and checked for a loop inside.
+// So a loop or fold is missed only within a max_depth piece (2^-14 of the parameter).
 //
 // Memory: plan_curve_cross() counts the pieces and says how many scratch bytes
 // run_curve_cross() needs (the pieces, their boxes, the sweep order and a refinement stack of
-// 2 * kCurveMaxDepth + 2 piece pairs); the hits go into the caller's array. No recursion
-// but the flattening's, at most max_depth calls deep.
+// 2 * kCurveMaxDepth + 2 piece pairs and a loop check's stack of kCurveMaxDepth + 2 pieces);
+// the hits go into the caller's array. No recursion but the flattening's, at most max_depth
+// calls deep.
 #pragma once
 #include <stddef.h>
 #include <stdint.h>
