@@ -16,6 +16,11 @@ static InputError parse(const std::string& text, std::vector<Edge3>* out) {
   return read_edges(in, "s.edges", out);
 }
 
+static InputError parse_curves(const std::string& text, EdgesWithCurves* out) {
+  std::istringstream in(text);
+  return read_edges_with_curves(in, "s.edges", out);
+}
+
 static bool error_is(const InputError& e, int line, const std::string& fragment) {
   return e.failed() && e.line == line &&
          e.message().find("s.edges:" + std::to_string(line) + ": ") == 0 &&
@@ -118,5 +123,43 @@ int main() {
     const std::string s = decimal_position(a, d, t);
     CHECK_MSG(std::fabs(std::stold(s) - exact) <= 0.0005L + 1e-9L, s);
   }
+  // Bézier records: both kinds in one file, each edge keeping its data line's index.
+  EdgesWithCurves wc;
+  const InputError ce = parse_curves(
+      "# substep 2\n1 2 3 4 5 6\nbezier 0 1 2 3 4 5 6 7 8 9 10 11\r\n7 8 9 10 11 12\n", &wc);
+  CHECK_MSG(!ce.failed(), ce.message());
+  CHECK(wc.edges.size() == 2 && wc.curves.size() == 1);
+  CHECK(wc.edge_index == std::vector<uint32_t>({0, 2}) &&
+        wc.curve_index == std::vector<uint32_t>{1});
+  CHECK(wc.curves.size() == 1 && wc.curves[0].p[0].x == 0 && wc.curves[0].p[2].z == 8 &&
+        wc.curves[0].p[3].z == 11);
+  CHECK(error_is(parse_curves("1 2 3 4 5 6\nbezier 0 1 2 3 4 5 6 7 8 9 10\n", &wc), 2,
+                 "expected 'bezier' and 12 integers"));
+  CHECK(wc.edges.empty() && wc.curves.empty());  // nothing half-read is kept
+  CHECK(error_is(parse_curves("bezier 0 1 2 3 4 5 6 7 8 9 10 1048576\n", &wc), 1,
+                 "field 13 '1048576'"));
+  CHECK(error_is(parse_curves("bezier 0 1 2 3 4 5 6 7 x 9 10 11\n", &wc), 1, "field 10 'x'"));
+  // The readers of straight scenes refuse a curve by name, at its line.
+  CHECK(error_is(parse("1 2 3 4 5 6\n# c\nbezier 0 1 2 3 4 5 6 7 8 9 10 11\n", &e), 3,
+                 "Bézier edge"));
+  CHECK(e.empty());
+  // Write and read back: the same control points and edges.
+  const std::vector<BezierEdge3> curves = {
+      BezierEdge3{{{0, 0, 0}, {1048575, 5, 6}, {7, 8, 9}, {10, 11, 1048575}}},
+      BezierEdge3{{{1, 2, 3}, {4, 5, 6}, {7, 8, 9}, {10, 11, 12}}}};
+  const std::vector<Edge3> straight = {Edge3{{1, 2, 3}, {4, 5, 6}}};
+  std::ostringstream cw;
+  write_edges_with_curves(cw, curves, straight, "# curves\n");
+  const InputError rt = parse_curves(cw.str(), &wc);
+  CHECK_MSG(!rt.failed(), rt.message());
+  bool same_curves = wc.curves.size() == 2 && wc.edges.size() == 1 && wc.edges[0].b.z == 6;
+  for (size_t k = 0; same_curves && k < 2; ++k)
+    for (int i = 0; i < 4; ++i)
+      same_curves = same_curves && wc.curves[k].p[i].x == curves[k].p[i].x &&
+                    wc.curves[k].p[i].y == curves[k].p[i].y &&
+                    wc.curves[k].p[i].z == curves[k].p[i].z;
+  CHECK(same_curves);
+  CHECK(read_edges_with_curves_file("/nonexistent/x.edges", &wc).message() ==
+        "/nonexistent/x.edges: cannot open");
   return check::finish("io");
 }

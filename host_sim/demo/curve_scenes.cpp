@@ -1,0 +1,118 @@
+#include "demo/curve_scenes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace haloplot::host {
+
+namespace {
+
+struct V3 {
+  double x, y, z;
+};
+V3 operator+(V3 a, V3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+V3 operator*(double k, V3 a) { return {k * a.x, k * a.y, k * a.z}; }
+
+using Fn = std::function<V3(double)>;
+
+// The view's rotation: about x by tilt, then about y by turn; (x, y) on paper, z the depth.
+V3 rotate(V3 p, const CurveView& v) {
+  const double c = std::cos(v.tilt), s = std::sin(v.tilt);
+  const V3 a{p.x, c * p.y - s * p.z, s * p.y + c * p.z};
+  const double c2 = std::cos(v.turn), s2 = std::sin(v.turn);
+  return {c2 * a.x + s2 * a.z, a.y, -s2 * a.x + c2 * a.z};
+}
+
+// Hermite control points of `edges` equal steps of f over [t0, t1], in 3-D, rotated.
+std::vector<V3> fit(const Fn& f, const Fn& df, double t0, double t1, int edges, bool closed,
+                    const CurveView& view) {
+  const double h = (t1 - t0) / edges;
+  std::vector<V3> cp;
+  for (int i = 0; i < edges; ++i) {
+    const double a = t0 + i * h, b = (closed && i + 1 == edges) ? t0 : a + h;
+    cp.push_back(rotate(f(a), view));
+    cp.push_back(rotate(f(a) + (h / 3) * df(a), view));
+    cp.push_back(rotate(f(b) + (-h / 3) * df(b), view));
+    cp.push_back(rotate(f(b), view));
+  }
+  return cp;
+}
+
+// Scale into the view's square and round; equal 3-D points round to equal integer points, so
+// shared ends stay shared.
+struct Fit {
+  double x0, y0, z0, k, kz;
+  int32_t margin;
+  Point3 operator()(V3 p) const {
+    return Point3{margin + int32_t(std::lround((p.x - x0) * k)),
+                  margin + int32_t(std::lround((p.y - y0) * k)),
+                  margin + int32_t(std::lround((p.z - z0) * kz))};
+  }
+};
+
+Fit fit_of(const std::vector<V3>& pts, const CurveView& v) {
+  double x0 = 1e300, y0 = 1e300, z0 = 1e300, x1 = -1e300, y1 = -1e300, z1 = -1e300;
+  for (const V3& p : pts) {
+    x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), z0 = std::min(z0, p.z);
+    x1 = std::max(x1, p.x), y1 = std::max(y1, p.y), z1 = std::max(z1, p.z);
+  }
+  const double span = v.size - 2.0 * v.margin;
+  return Fit{x0,      y0, z0, span / std::max(x1 - x0, y1 - y0), span / std::max(z1 - z0, 1e-9),
+             v.margin};
+}
+
+CurveScene to_scene(const std::vector<V3>& cp, const Fit& fit) {
+  CurveScene s;
+  for (size_t i = 0; i + 3 < cp.size(); i += 4)
+    s.curves.push_back(BezierEdge3{{fit(cp[i]), fit(cp[i + 1]), fit(cp[i + 2]), fit(cp[i + 3])}});
+  return s;
+}
+
+}  // namespace
+
+CurveScene trefoil_knot(int edges, const CurveView& view) {
+  const Fn f = [](double t) {
+    return V3{std::sin(t) + 2 * std::sin(2 * t), std::cos(t) - 2 * std::cos(2 * t),
+              -std::sin(3 * t)};
+  };
+  const Fn df = [](double t) {
+    return V3{std::cos(t) + 4 * std::cos(2 * t), -std::sin(t) + 4 * std::sin(2 * t),
+              -3 * std::cos(3 * t)};
+  };
+  const std::vector<V3> cp = fit(f, df, 0, 2 * M_PI, edges, true, view);
+  return to_scene(cp, fit_of(cp, view));
+}
+
+CurveScene torus_knot(int p, int q, int edges, const CurveView& view) {
+  const Fn f = [p, q](double t) {
+    const double r = 2 + std::cos(q * t);
+    return V3{r * std::cos(p * t), r * std::sin(p * t), -std::sin(q * t)};
+  };
+  const Fn df = [p, q](double t) {
+    const double r = 2 + std::cos(q * t), dr = -q * std::sin(q * t);
+    return V3{dr * std::cos(p * t) - r * p * std::sin(p * t),
+              dr * std::sin(p * t) + r * p * std::cos(p * t), -q * std::cos(q * t)};
+  };
+  const std::vector<V3> cp = fit(f, df, 0, 2 * M_PI, edges, true, view);
+  return to_scene(cp, fit_of(cp, view));
+}
+
+CurveScene helix(double turns, double pitch, int edges, bool with_axis, const CurveView& view) {
+  const double rise = pitch / (2 * M_PI);
+  const Fn f = [rise](double t) { return V3{std::cos(t), std::sin(t), rise * t}; };
+  const Fn df = [rise](double t) { return V3{-std::sin(t), std::cos(t), rise}; };
+  const double t1 = 2 * M_PI * turns;
+  std::vector<V3> cp = fit(f, df, 0, t1, edges, false, view);
+  // The axis reaches a little beyond both ends of the helix.
+  const V3 a0 = rotate(V3{0, 0, -0.5 * pitch}, view),
+           a1 = rotate(f(t1) + V3{0, 0, 0.5 * pitch} + V3{-std::cos(t1), -std::sin(t1), 0}, view);
+  std::vector<V3> all = cp;
+  if (with_axis) all.insert(all.end(), {a0, a1});
+  const Fit fitted = fit_of(all, view);
+  CurveScene s = to_scene(cp, fitted);
+  if (with_axis) s.segments.push_back(Edge3{fitted(a0), fitted(a1)});
+  return s;
+}
+
+}  // namespace haloplot::host
