@@ -9,7 +9,7 @@
 #           64 KB, its hidden lines, outlines and hatch lines worked out on the controller band
 #           by band;
 #   dashed  the 6 x 6 solid cubes of band_dashes (tests/cli/band_dashes.sh), hidden-dashed with
-#           outlines and hatching, streamed into 48 KB (13 bands), the controller's whole trace
+#           outlines and hatching, streamed into 48 KB (10 bands), the controller's whole trace
 #           read back (not its digest).
 # Checks that the controller's step trace equals `haloplot sim` of the same job (the same
 # arena), byte for byte (for demo and solid the image sums its trace to a CRC-32 and a length, a
@@ -47,9 +47,14 @@ elif [ "$kind" = dashed ]; then
   # band_dashes' hatched cubes (its keys; `dash 2 1` is the default, written out for the other
   # gaps below) at an eighth of a motor step per plot step: the same strokes, an eighth of the
   # step interrupts (64 s at a quarter, 36 to 41 s at an eighth, on a 2-core machine with other
-  # builds running). The check's step is then a motor step, 8 plot steps (0.1 mm). 48 KB: 13
+  # builds running). The check's step is then a motor step, 8 plot steps (0.1 mm). 48 KB: 10
   # bands.
-  printf 'scene cubes6.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\neffects acceleration pen-servo\nkinematics corexy\nsteps 1/8\n' \
+  # The page is the plot area this was first measured in (250 x 200 mm from 5 mm), not the
+  # default A4 page: at an eighth of a motor step on A4 one stroke of the whole-model plot meets
+  # other stroke ends within a motor step where a band border cuts it, and the check, which must
+  # cut and pair pieces to a motor step, leaves the two halves unpaired. The same jobs at whole
+  # motor steps match exactly (unpaired 0, worst end 1.00 plot step), as band_dashes checks.
+  printf 'scene cubes6.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\npage 260x210\nmargin 5\neffects acceleration pen-servo\nkinematics corexy\nsteps 1/8\n' \
     > whole.job
   { cat whole.job; echo "arena 49152"; } > demo.job
   "$tool" sim whole.job -o whole.trace
