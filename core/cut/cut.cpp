@@ -9,10 +9,6 @@
 
 namespace haloplot {
 
-size_t cutset_bytes(uint32_t n_edges, uint32_t capacity) {
-  return (size_t{n_edges} + 1) * sizeof(uint32_t) + size_t{capacity} * sizeof(Crossing);
-}
-
 uint32_t cutset_capacity(uint32_t n_edges, size_t bytes) {
   const size_t index = (size_t{n_edges} + 1) * sizeof(uint32_t);
   if (bytes < index) return 0;

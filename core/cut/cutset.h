@@ -36,8 +36,11 @@ struct CutSet {
 };
 
 // Bytes of caller storage a CUTSET with room for `capacity` records needs: the per-edge index
-// (4 bytes per edge + 4) followed by the records (12 bytes each).
-size_t cutset_bytes(uint32_t n_edges, uint32_t capacity);
+// (4 bytes per edge + 4) followed by the records (12 bytes each). constexpr, so static storage
+// can be sized with it.
+constexpr size_t cutset_bytes(uint32_t n_edges, uint32_t capacity) {
+  return (size_t{n_edges} + 1) * sizeof(uint32_t) + size_t{capacity} * sizeof(Crossing);
+}
 // The record capacity that `bytes` of storage gives for n_edges (0 if even the index won't fit).
 uint32_t cutset_capacity(uint32_t n_edges, size_t bytes);
 

@@ -10,10 +10,6 @@ uint64_t speed_v2(uint32_t v) { return uint64_t{v} * v * 256; }
 
 }  // namespace
 
-size_t MotionPlanner::workspace_bytes(const PlotterEffects& fx, uint32_t lookahead) {
-  return fx.acceleration ? size_t{lookahead} * sizeof(Block) : 0;
-}
-
 Status MotionPlanner::init(const Machine& m, const PlotterEffects& fx, const PathPoint* points,
                            uint32_t n, void* workspace, size_t workspace_bytes_given,
                            uint32_t lookahead) {

@@ -56,7 +56,10 @@ class MotionPlanner {
   static constexpr uint32_t kDefaultLookahead = 16;
   // Workspace for the look-ahead buffer: zero without the acceleration effect (then null will
   // do). It starts on a kBufferAlignment (8) boundary, or init() returns kMisalignedBuffer.
-  static size_t workspace_bytes(const PlotterEffects& fx, uint32_t lookahead = kDefaultLookahead);
+  // constexpr, so a firmware sizes its static workspace with it:
+  //   alignas(8) static uint8_t ws[MotionPlanner::workspace_bytes(PlotterEffects{})];
+  static constexpr size_t workspace_bytes(const PlotterEffects& fx,
+                                          uint32_t lookahead = kDefaultLookahead);
 
   Status init(const Machine& m, const PlotterEffects& fx, const PathPoint* points, uint32_t n,
               void* workspace, size_t workspace_bytes, uint32_t lookahead = kDefaultLookahead);
@@ -111,5 +114,9 @@ class MotionPlanner {
   bool home_pending_ = false;  // the travel home is still to come
   PathPoint home_{0, 0, 0};    // where it goes: the origin, pen up
 };
+
+constexpr size_t MotionPlanner::workspace_bytes(const PlotterEffects& fx, uint32_t lookahead) {
+  return fx.acceleration ? size_t{lookahead} * sizeof(Block) : 0;
+}
 
 }  // namespace haloplot

@@ -58,7 +58,9 @@ class MotionRunner {
   Status begin(const JobSpec& spec, const PreparedJob& job);
   void finish(Status s);
 
-  alignas(8) uint8_t planner_ws_[MotionPlanner::kDefaultLookahead * 64];
+  // Sized by the planner at compile time; PlotterEffects{} has acceleration on, the most any
+  // job asks (without it the planner needs none).
+  alignas(8) uint8_t planner_ws_[MotionPlanner::workspace_bytes(PlotterEffects{})];
   MotionPlanner planner_;
   StepPrep prep_;
   Queue queue_;

@@ -62,7 +62,7 @@ int main() {
   conductor.set_clock(&counter_ticks);
   s = conductor.begin(spec, source, arena, sizeof arena);
   if (!ok(s)) fail("bands", s);
-  alignas(8) static uint8_t planner_ws[MotionPlanner::kDefaultLookahead * 64];
+  alignas(8) static uint8_t planner_ws[MotionPlanner::workspace_bytes(PlotterEffects{})];
   MotionPlanner planner;
   PreparedJob streamed;
   streamed.feed = PointFeed{&BandConductor::feed, &conductor};

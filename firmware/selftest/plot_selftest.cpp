@@ -317,7 +317,7 @@ void plot_on_chip() {
   if (!ok(s)) fail("job_prepare", s);
   stat("prepare_instructions", ticks_to_instructions(t4 - t3));
 
-  alignas(8) static uint8_t planner_ws[MotionPlanner::kDefaultLookahead * 64];
+  alignas(8) static uint8_t planner_ws[MotionPlanner::workspace_bytes(PlotterEffects{})];
   MotionPlanner planner;
   s = init_planner(&planner, spec, job, planner_ws, sizeof planner_ws);
   if (!ok(s)) fail("planner", s);

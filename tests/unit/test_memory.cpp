@@ -7,6 +7,17 @@
 #include "../reference/brute_cut.h"
 #include "../support/run_core.h"
 #include "../support/scenes.h"
+#include "cut/cutset.h"
+#include "motion/planner.h"
+
+// The size queries a firmware sizes static storage with are constant expressions, and count
+// what their headers say: the CUTSET's index (4 bytes an edge, plus 4) and 12-byte records; the
+// planner's look-ahead ring only with acceleration on.
+static_assert(haloplot::cutset_bytes(10, 5) == (10 + 1) * 4 + 5 * 12);
+static_assert(haloplot::MotionPlanner::workspace_bytes(haloplot::PlotterEffects{false, true,
+                                                                                false}) == 0);
+static_assert(haloplot::MotionPlanner::workspace_bytes(haloplot::PlotterEffects{}, 16) ==
+              2 * haloplot::MotionPlanner::workspace_bytes(haloplot::PlotterEffects{}, 8));
 
 using namespace haloplot;
 
