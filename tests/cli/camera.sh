@@ -100,7 +100,10 @@ expect "! \"$tool\" plot flat.edges --halo 5 -o r.svg --roll 30 2> err.txt && gr
 cp "$tori" tori.obj
 printf 'scene tori.obj\ndrawing hidden-removed\nroll 90\neye %s\nlook-at 0.3,-1,0.2\n' \
   "$(eye_for 30 40 0.3,-1,0.2 y)" > cam.job
-expect "\"$tool\" sim cam.job -o cam.trace" "a job with eye, look-at and roll"
+printf 'scene tori.obj\ndrawing hidden-removed\nview 30,40\nroll 90\n' > view.job
+expect "\"$tool\" sim cam.job -o cam.trace --gcode cam.gcode && \"$tool\" sim view.job -o view.trace --gcode view.gcode && cmp cam.gcode view.gcode" "a job with eye, look-at and roll draws the view 30,40 job's G-code"
+printf 'scene tori.obj\ndrawing hidden-removed\nview 30,40\n' > noroll.job
+expect "\"$tool\" sim noroll.job -o noroll.trace --gcode noroll.gcode && ! cmp -s noroll.gcode view.gcode" "(and the job's roll is not ignored)"
 printf 'scene tori.obj\ndrawing hidden-removed\neye 1,2,3\nlook-at 0,0,0\nview 30,40\n' > both.job
 expect "! \"$tool\" sim both.job -o both.trace 2> err.txt && grep -q 'both.job:5: --view and --eye' err.txt" "job: eye with view refused at the view line"
 printf 'scene tori.obj\nfov 30\n' > fov.job
