@@ -162,12 +162,22 @@ bool project_obj(const Options& o, const std::string& path, ObjModel* model,
   return true;
 }
 
+// The view options as given, for the dump's header.
+std::string view_words(const Options& o) {
+  std::string words = o.get("--eye").empty()
+                          ? "--view " + o.get("--view", "30,40")
+                          : "--eye " + o.get("--eye") + " --look-at " + o.get("--look-at");
+  for (const char* option : {"--perspective", "--fov", "--roll", "--up"})
+    if (!o.get(option).empty()) words += std::string(" ") + option + " " + o.get(option);
+  return words;
+}
+
 bool dump_edges(const Options& o, const std::string& path, const std::vector<Edge3>& edges,
                 int32_t substep_bits, std::string* error) {
   if (o.get("--dump-edges").empty()) return true;
   *error = write_atomically(o.get("--dump-edges"), [&](std::ostream& out) {
     write_edges(out, edges,
-                "# projected from " + path + " with --view " + o.get("--view", "30,40") + "\n" +
+                "# projected from " + path + " with " + view_words(o) + "\n" +
                     substep_header(substep_bits));
     return true;
   });
