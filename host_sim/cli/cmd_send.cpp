@@ -91,6 +91,7 @@ bool load_obj(const std::string& job_path, SendScene* sc, std::string* error) {
   if (jf.landscape) model_options.flags.insert("--landscape");
   // --scale: the view's area from the model, as `sim` and `plot` shrink it.
   if (!read_model(model_options, jf.scene_path, &sc->model, nullptr, &model_error) ||
+      !aim_view(model_options, &sc->model, &sc->view, &model_error) ||
       !scale_view(model_options, sc->model, &sc->view, &model_error)) {
     *error = model_error.find(jf.scene_path) == 0 ? model_error : job_path + ": " + model_error;
     return false;

@@ -1,6 +1,7 @@
 #include "io/job_file.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <map>
 
@@ -23,7 +24,11 @@ const std::map<std::string, std::string> kKeys = {
     {"view", "AZ,EL (degrees)"},
     {"perspective", "D (world units)"},
     {"substep", "S (sub-step bits for an .obj scene)"},
-    {"up", "y | z (the OBJ file's up axis)"},
+    {"up", "x | y | z | -x | -y | -z (the model file's up axis)"},
+    {"eye", "X,Y,Z (a camera, with look-at; the model file's units)"},
+    {"look-at", "X,Y,Z (where the camera looks)"},
+    {"fov", "DEG (a perspective camera's field of view)"},
+    {"roll", "DEG (the picture turned about the view axis)"},
     {"weld", "EPS | off (weld a model's vertices within EPS)"},
     {"crease", "DEG | off (edges between faces within DEG drawn only as contours)"},
     {"method", "auto | qi | fallback"},
@@ -205,7 +210,7 @@ InputError read_hatch(const JobLine& l, JobFile* out) {
 bool is_view_setting(const std::string& key) {
   return key == "view" || key == "perspective" || key == "method" || key == "dash" || key == "up" ||
          key == "substep" || key == "weld" || key == "crease" || key == "page" || key == "margin" ||
-         key == "scale";
+         key == "scale" || key == "eye" || key == "look-at" || key == "fov" || key == "roll";
 }
 
 // The G-code's pen profile and feeds (cli/plot_outputs.h kPenOptions), checked together once
@@ -247,14 +252,40 @@ InputError read_view_setting(const JobLine& l, JobFile* out) {
   Options o;
   o.values = out->solid_options;
   if (out->landscape) o.flags.insert("--landscape");
+  // A camera's keys come in any order (eye before look-at): they are checked together once
+  // the file is read (check_camera); here only their own values.
+  for (const char* camera : {"--eye", "--look-at", "--fov"}) o.values.erase(camera);
   SolidOptions so;
   View view;
   std::string error;
   UpAxis up;
+  double fov = 0, point[3] = {0, 0, 0};
+  Options own;
+  own.values["--fov"] = key == "fov" ? l.f[1] : "";
+  if ((key == "eye" || key == "look-at") &&
+      std::sscanf(l.f[1].c_str(), "%lf,%lf,%lf", &point[0], &point[1], &point[2]) != 3)
+    return l.bad(key + " '" + l.f[1] + "' must be X,Y,Z (numbers, the model file's units)");
   if (!parse_solid_options(o, &so, &error) || !parse_view(o, &view, &error) ||
-      !parse_up(o, &up, &error))
+      !parse_up(o, &up, &error) || !camera_fov(own, &fov, &error))
     return l.bad(error);
   return {};
+}
+
+// The camera keys together (eye with look-at, neither with view or perspective, fov only with
+// them), reported at the line of the key named first in the message.
+InputError check_camera(const std::string& path, const std::map<std::string, int>& key_lines,
+                        const JobFile& jf) {
+  Options o;
+  o.values = jf.solid_options;
+  if (jf.landscape) o.flags.insert("--landscape");
+  View view;
+  std::string error;
+  if (parse_view(o, &view, &error)) return {};
+  int line = 0;
+  for (const char* key : {"eye", "look-at", "fov", "view", "perspective"})
+    if (line == 0 && key_lines.count(key) != 0 && error.rfind(std::string("--") + key, 0) == 0)
+      line = key_lines.at(key);
+  return {path, line, error};
 }
 
 InputError read_effects(const JobLine& l, PlotterEffects* effects) {
@@ -369,7 +400,8 @@ InputError check_job(const std::string& path, const std::map<std::string, int>& 
             "drawing " + out->solid_options["--mode"] + " needs a model scene (.obj, .stl, .ply)"};
   // An .edges scene is projected already: a view setting would be ignored, so it is refused.
   if (!is_mesh_path(out->scene_path))
-    for (const char* key : {"view", "perspective", "up", "crease", "weld", "substep"})
+    for (const char* key : {"view", "perspective", "up", "crease", "weld", "substep", "eye",
+                            "look-at", "fov", "roll"})
       if (key_lines.count(key) != 0)
         return {path, key_lines.at(key),
                 std::string(key) + " is for a model scene (.obj, .stl, .ply): " + out->scene_path +
@@ -379,6 +411,7 @@ InputError check_job(const std::string& path, const std::map<std::string, int>& 
             "scale is for a model scene (.obj, .stl, .ply): an .edges scene is in plot steps "
             "already"};
   if (j.draw.mode == HaloMode::kExact) j.cut.reach = j.draw.halo;
+  if (const InputError camera = check_camera(path, key_lines, *out); camera.failed()) return camera;
   const InputError pen = read_pen_settings(path, key_lines, out);
   if (pen.failed()) return pen;
   const Status s = validate(j.machine);

@@ -95,6 +95,7 @@ void place_vertices(const std::vector<double>& xyz, ObjModel* out) {
   const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
   const double scale = extent > 0 ? double(1 << 19) / extent : 1.0;
   out->scale = scale;
+  for (int a = 0; a < 3; ++a) out->centre[a] = (lo[a] + hi[a]) / 2;
   out->vertices.clear();
   for (size_t i = 0; i < xyz.size(); i += 3) {
     int32_t c[3];
@@ -123,14 +124,53 @@ InputError read_obj_file(const std::string& path, ObjModel* out) {
 }
 
 bool parse_up_axis(const std::string& text, UpAxis* out) {
-  if (text != "y" && text != "z") return false;
-  *out = text == "y" ? UpAxis::kY : UpAxis::kZ;
-  return true;
+  static const char* const kNames[6] = {"x", "y", "z", "-x", "-y", "-z"};
+  for (int i = 0; i < 6; ++i)
+    if (text == kNames[i]) {
+      *out = UpAxis(i);
+      return true;
+    }
+  return false;
+}
+
+namespace {
+
+// The turn as a signed permutation: world axis a is sign[a] times file axis from[a].
+struct Turn {
+  int from[3], sign[3];
+};
+
+Turn turn_of(UpAxis up) {
+  switch (up) {
+    case UpAxis::kX:
+      return {{2, 1, 0}, {-1, 1, 1}};
+    case UpAxis::kY:
+      return {{0, 2, 1}, {1, -1, 1}};
+    case UpAxis::kZ:
+      return {{0, 1, 2}, {1, 1, 1}};
+    case UpAxis::kMinusX:
+      return {{2, 1, 0}, {1, 1, -1}};
+    case UpAxis::kMinusY:
+      return {{0, 2, 1}, {1, 1, -1}};
+    case UpAxis::kMinusZ:
+      return {{0, 1, 2}, {1, -1, -1}};
+  }
+  return {{0, 1, 2}, {1, 1, 1}};
+}
+
+}  // namespace
+
+void turn_z_up(UpAxis up, const double in[3], double out[3]) {
+  const Turn t = turn_of(up);
+  for (int a = 0; a < 3; ++a) out[a] = t.sign[a] * in[t.from[a]];
 }
 
 void make_z_up(ObjModel* model, UpAxis up) {
-  if (up == UpAxis::kZ) return;
-  for (Point3& p : model->vertices) p = Point3{p.x, -p.z, p.y};
+  const Turn t = turn_of(up);
+  for (Point3& p : model->vertices) {
+    const int32_t c[3] = {p.x, p.y, p.z};
+    p = Point3{t.sign[0] * c[t.from[0]], t.sign[1] * c[t.from[1]], t.sign[2] * c[t.from[2]]};
+  }
 }
 
 }  // namespace haloplot::host

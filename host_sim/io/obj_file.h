@@ -26,6 +26,7 @@ struct ObjModel {
   std::vector<uint32_t> face_lines;          // the line each face was read from
   uint32_t lines = 0;                        // `l` statements read
   double scale = 1;                          // world units per unit of the file
+  double centre[3] = {0, 0, 0};              // the file's bounding-box centre (file units)
 };
 
 InputError read_obj(std::istream& in, const std::string& name, ObjModel* out);
@@ -39,12 +40,18 @@ void edges_from_faces(ObjModel* model);
 
 // Which axis of the file points up. Most OBJ files are Y-up (Blender's and Maya's export
 // default, LightWave's files); haloplot's world is Z-up (the view's convention, core/view).
-enum class UpAxis { kY, kZ };
-// "y" or "z"; false for anything else.
+enum class UpAxis { kX, kY, kZ, kMinusX, kMinusY, kMinusZ };
+// "x", "y", "z", "-x", "-y" or "-z"; false for anything else.
 bool parse_up_axis(const std::string& text, UpAxis* out);
-// The model in haloplot's Z-up world: a Y-up file's (x, y, z) becomes (x, -z, y), a rotation
-// (exact on the integer coordinates, and the centring and scale are unchanged).
+// The model in haloplot's Z-up world, turned by the quarter or half turn that takes the named
+// axis to +Z (a rotation, never a mirror: a sign flip and a swap of the integer coordinates,
+// exact, with the centring and scale unchanged). A file point (x, y, z) becomes
+//   y: (x, -z, y)   -y: (x, z, -y)   (about the x axis)
+//   x: (-z, y, x)   -x: (z, y, -x)   (about the y axis)
+//   z: (x, y, z)    -z: (x, -y, -z)  (-z: a half turn about the x axis)
 void make_z_up(ObjModel* model, UpAxis up);
+// The same turn of one point or direction (file axes to world axes).
+void turn_z_up(UpAxis up, const double in[3], double out[3]);
 InputError read_obj_file(const std::string& path, ObjModel* out);
 
 }  // namespace haloplot::host

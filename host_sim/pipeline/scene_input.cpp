@@ -1,5 +1,7 @@
 #include "pipeline/scene_input.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -21,8 +23,9 @@
 
 namespace haloplot::host {
 
-const char* const kSceneOptions[7] = {"--view",    "--perspective", "--dump-edges", "--up",
-                                      "--substep", "--weld",        "--crease"};
+const char* const kSceneOptions[11] = {"--view",    "--perspective", "--dump-edges", "--up",
+                                       "--substep", "--weld",        "--crease",     "--eye",
+                                       "--look-at", "--fov",         "--roll"};
 
 namespace {
 
@@ -41,11 +44,32 @@ bool parse_mdeg(const std::string& s, int32_t* out) {
   return true;
 }
 
+// The picture turned counterclockwise by `radians` about the view axis: each point's screen
+// coordinates along ex = (cos az, -sin az, 0) and ey = (sin az sin el, cos az sin el, cos el)
+// rotated, its depth along w = ex x ey kept (the same frame as core/view/projection.h).
+void roll_about_view_axis(const View& view, double radians,
+                          std::vector<std::array<double, 3>>* points) {
+  const double pi = 3.14159265358979323846;
+  const double az = view.azimuth_mdeg * pi / 180000, el = view.elevation_mdeg * pi / 180000;
+  const double ex[3] = {std::cos(az), -std::sin(az), 0};
+  const double ey[3] = {std::sin(az) * std::sin(el), std::cos(az) * std::sin(el), std::cos(el)};
+  const double w[3] = {-std::sin(az) * std::cos(el), -std::cos(az) * std::cos(el), std::sin(el)};
+  const double c = std::cos(radians), s = std::sin(radians);
+  for (std::array<double, 3>& p : *points) {
+    const double x = p[0] * ex[0] + p[1] * ex[1] + p[2] * ex[2];
+    const double y = p[0] * ey[0] + p[1] * ey[1] + p[2] * ey[2];
+    const double d = p[0] * w[0] + p[1] * w[1] + p[2] * w[2];
+    const double x2 = x * c - y * s, y2 = x * s + y * c;
+    for (size_t a = 0; a < 3; ++a) p[a] = x2 * ex[a] + y2 * ey[a] + d * w[a];
+  }
+}
+
 }  // namespace
 
 bool parse_up(const Options& o, UpAxis* up, std::string* error) {
   if (parse_up_axis(o.get("--up", "y"), up)) return true;
-  *error = "--up '" + o.get("--up") + "' must be y (most OBJ files: Blender, Maya) or z";
+  *error = "--up '" + o.get("--up") +
+           "' must be x, y, z, -x, -y or -z (y: most OBJ files, Blender, Maya; z: most STL)";
   return false;
 }
 
@@ -118,7 +142,8 @@ bool project_obj(const Options& o, const std::string& path, ObjModel* model,
                  RepairReport* repair = nullptr) {
   View view;
   if (!parse_view(o, &view, error)) return false;
-  if (!read_model(o, path, model, repair, error) || !scale_view(o, *model, &view, error))
+  if (!read_model(o, path, model, repair, error) || !aim_view(o, model, &view, error) ||
+      !scale_view(o, *model, &view, error))
     return false;
   *view_out = view;
   screen->resize(model->vertices.size());
@@ -137,12 +162,22 @@ bool project_obj(const Options& o, const std::string& path, ObjModel* model,
   return true;
 }
 
+// The view options as given, for the dump's header.
+std::string view_words(const Options& o) {
+  std::string words = o.get("--eye").empty()
+                          ? "--view " + o.get("--view", "30,40")
+                          : "--eye " + o.get("--eye") + " --look-at " + o.get("--look-at");
+  for (const char* option : {"--perspective", "--fov", "--roll", "--up"})
+    if (!o.get(option).empty()) words += std::string(" ") + option + " " + o.get(option);
+  return words;
+}
+
 bool dump_edges(const Options& o, const std::string& path, const std::vector<Edge3>& edges,
                 int32_t substep_bits, std::string* error) {
   if (o.get("--dump-edges").empty()) return true;
   *error = write_atomically(o.get("--dump-edges"), [&](std::ostream& out) {
     write_edges(out, edges,
-                "# projected from " + path + " with --view " + o.get("--view", "30,40") + "\n" +
+                "# projected from " + path + " with " + view_words(o) + "\n" +
                     substep_header(substep_bits));
     return true;
   });
@@ -189,12 +224,152 @@ bool scale_view(const Options& o, const ObjModel& model, View* view, std::string
   return true;
 }
 
+namespace {
+
+// Three numbers "X,Y,Z" (the model file's units).
+bool parse_point(const std::string& text, double out[3]) {
+  std::string rest = text;
+  for (int a = 0; a < 3; ++a) {
+    const size_t comma = rest.find(',');
+    if ((a < 2) != (comma != std::string::npos)) return false;
+    const std::string f = rest.substr(0, comma);
+    char* end = nullptr;
+    out[a] = std::strtod(f.c_str(), &end);
+    if (f.empty() || end != f.c_str() + f.size() || !std::isfinite(out[a])) return false;
+    rest = a < 2 ? rest.substr(comma + 1) : "";
+  }
+  return true;
+}
+
+// --eye and --look-at (file coordinates) to the view's azimuth and elevation: the direction
+// from the look-at point to the eye, turned into the Z-up world (--up), is the view's
+// direction toward the viewer, w = (-sin az cos el, -cos az cos el, sin el); both angles are
+// rounded to millidegrees, as --view gives them.
+bool camera_direction(const Options& o, View* view, std::string* error) {
+  double eye[3], at[3], v[3], w[3];
+  if (!parse_point(o.get("--eye"), eye) || !parse_point(o.get("--look-at"), at)) {
+    *error = "--eye and --look-at must each be X,Y,Z (numbers, the model file's units): got '" +
+             o.get("--eye") + "' and '" + o.get("--look-at") + "'";
+    return false;
+  }
+  UpAxis up;
+  if (!parse_up(o, &up, error)) return false;
+  for (int a = 0; a < 3; ++a) v[a] = eye[a] - at[a];
+  turn_z_up(up, v, w);
+  const double len = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+  if (!(len > 0)) {
+    *error = "--eye and --look-at are the same point: the camera has no direction";
+    return false;
+  }
+  const double deg = 180 / 3.14159265358979323846;
+  const double el = std::asin(std::max(-1.0, std::min(1.0, w[2] / len))) * deg;
+  const double az = std::atan2(-w[0], -w[1]) * deg;
+  view->azimuth_mdeg = int32_t(std::lround(az * 1000));
+  view->elevation_mdeg = int32_t(std::lround(el * 1000));
+  return true;
+}
+
+// The camera options: --eye with --look-at instead of --view/--perspective, --fov only with
+// them, --roll with either.
+bool parse_camera(const Options& o, View* view, std::string* error) {
+  const bool eye = !o.get("--eye").empty(), at = !o.get("--look-at").empty();
+  int32_t mdeg = 0;
+  if (!o.get("--roll").empty() && !parse_mdeg(o.get("--roll"), &mdeg)) {
+    *error = "--roll '" + o.get("--roll") + "' must be an angle in degrees (up to three decimals)";
+    return false;
+  }
+  if (!eye && !at) {
+    if (o.get("--fov").empty()) return true;
+    *error = "--fov is for a camera: give --eye X,Y,Z --look-at X,Y,Z with it";
+    return false;
+  }
+  if (eye != at) {
+    *error = eye ? "--eye needs --look-at X,Y,Z (the point the camera looks at)"
+                 : "--look-at needs --eye X,Y,Z (where the camera is)";
+    return false;
+  }
+  for (const char* other : {"--view", "--perspective"})
+    if (!o.get(other).empty()) {
+      *error = std::string(other) +
+               " and --eye/--look-at both set the view: give one (--fov for a perspective "
+               "camera)";
+      return false;
+    }
+  double fov = 0;
+  if (!camera_fov(o, &fov, error)) return false;
+  return camera_direction(o, view, error);
+}
+
+}  // namespace
+
+bool camera_fov(const Options& o, double* deg, std::string* error) {
+  *deg = 0;
+  const std::string f = o.get("--fov");
+  if (f.empty()) return true;
+  char* end = nullptr;
+  *deg = std::strtod(f.c_str(), &end);
+  if (end != f.c_str() + f.size() || !(*deg > 0 && *deg <= 170)) {
+    *error = "--fov '" + f + "' must be an angle in degrees in (0, 170]";
+    return false;
+  }
+  return true;
+}
+
+bool aim_view(const Options& o, ObjModel* model, View* view, std::string* error) {
+  double fov = 0;
+  int32_t roll_mdeg = 0;
+  if (!o.get("--roll").empty()) parse_mdeg(o.get("--roll"), &roll_mdeg);
+  if (!o.get("--eye").empty() && !camera_fov(o, &fov, error)) return false;
+  const double pi = 3.14159265358979323846;
+  std::vector<std::array<double, 3>> p(model->vertices.size());
+  for (size_t i = 0; i < p.size(); ++i)
+    p[i] = {double(model->vertices[i].x), double(model->vertices[i].y),
+            double(model->vertices[i].z)};
+  if (fov > 0) {
+    // The look-at point becomes the world origin (the core's eye sits on the view axis through
+    // it) and the eye backs off until the model's bounding sphere about that point fills the
+    // field of view: D = ceil(R / sin(fov / 2)).
+    double at[3], rel[3], shift[3];
+    parse_point(o.get("--look-at"), at);
+    for (int a = 0; a < 3; ++a) rel[a] = (at[a] - model->centre[a]) * model->scale;
+    UpAxis up;
+    parse_up(o, &up, error);
+    turn_z_up(up, rel, shift);
+    double r2 = 0;
+    for (std::array<double, 3>& q : p) {
+      for (int a = 0; a < 3; ++a) q[size_t(a)] -= std::round(shift[a]);
+      r2 = std::max(r2, q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+    }
+    const double d = std::ceil(std::sqrt(r2) / std::sin(fov * pi / 360));
+    if (!(d <= 2 * kWorldLimit)) {
+      *error = "--fov " + o.get("--fov") + " puts the eye beyond the world's range: widen it";
+      return false;
+    }
+    view->perspective = std::max<int32_t>(1, int32_t(d));
+  }
+  if (roll_mdeg != 0) roll_about_view_axis(*view, roll_mdeg * pi / 180000, &p);
+  for (size_t i = 0; i < p.size(); ++i) {
+    for (int a = 0; a < 3; ++a)
+      if (!(std::fabs(p[i][size_t(a)]) <= kWorldLimit)) {
+        *error =
+            "--look-at or --roll moves the model beyond the world's range: look at a point "
+            "nearer the model";
+        return false;
+      }
+    model->vertices[i] = Point3{int32_t(std::lround(p[i][0])), int32_t(std::lround(p[i][1])),
+                                int32_t(std::lround(p[i][2]))};
+  }
+  return true;
+}
+
 bool parse_view(const Options& o, View* out, std::string* error) {
   View view;
+  if (!parse_camera(o, &view, error)) return false;
   const std::string v = o.get("--view", "30,40");
   const size_t comma = v.find(',');
-  if (comma == std::string::npos || !parse_mdeg(v.substr(0, comma), &view.azimuth_mdeg) ||
-      !parse_mdeg(v.substr(comma + 1), &view.elevation_mdeg)) {
+  if (o.get("--eye").empty() &&
+      (comma == std::string::npos || !parse_mdeg(v.substr(0, comma), &view.azimuth_mdeg) ||
+       !parse_mdeg(v.substr(comma + 1), &view.elevation_mdeg))) {
     *error = "--view '" + v + "' must be AZ,EL in degrees (up to three decimals)";
     return false;
   }
@@ -276,7 +451,8 @@ bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* e
       return false;
     }
     // An .edges file is projected already: the view options have nothing to act on.
-    for (const char* view : {"--view", "--perspective", "--up", "--crease", "--dump-edges"})
+    for (const char* view : {"--view", "--perspective", "--up", "--crease", "--dump-edges", "--eye",
+                             "--look-at", "--fov", "--roll"})
       if (!o.get(view).empty()) {
         *error = std::string(view) +
                  " is for models (.obj, .stl, .ply): an .edges file is a scene projected "

@@ -18,16 +18,34 @@ namespace haloplot::host {
 // The options every scene-taking command accepts (valued): --view AZ,EL (degrees, up to three
 // decimals; default 30,40), --perspective D (world units after the OBJ's scaling to 2^19;
 // default orthographic), --dump-edges FILE (the projected scene, in the order all outputs use).
-// --up y|z: the OBJ file's up axis (default y, what most OBJ files use). --substep S: fit the
-// projected scene in units of 2^-S steps (core/view/projection.h). --weld EPS|off: weld a
+// --up x|y|z|-x|-y|-z: the file's up axis (default y, what most OBJ files use). --substep S: fit
+// the projected scene in units of 2^-S steps (core/view/projection.h). --weld EPS|off: weld a
 // model's vertices within EPS (its file's units; 0: at the same position) or not
 // (pipeline/mesh_repair.h); the default welds STL and PLY at the same position, not OBJ.
 // --crease DEG|off: edges between faces within DEG degrees are drawn only as contours (default
 // 0: coplanar faces).
-extern const char* const kSceneOptions[7];
+// A camera instead of --view/--perspective: --eye X,Y,Z --look-at X,Y,Z (the model file's
+// coordinates) look along the eye-to-look-at direction (orthographic); --fov DEG makes it a
+// perspective camera (see aim_view). --roll DEG turns the picture counterclockwise about the
+// view axis (with --view or a camera).
+extern const char* const kSceneOptions[11];
 
 // --up from the options (default y); false with *error naming the value.
 bool parse_up(const Options& o, UpAxis* up, std::string* error);
+
+// --fov in degrees, (0, 170] (0 when not given); false with *error naming the value.
+bool camera_fov(const Options& o, double* deg, std::string* error);
+
+// The view applied to the model where the core's View cannot say it, after read_model and
+// before scale_view: with --fov, the model moved so the look-at point is the world origin
+// (whole world units) and view->perspective = ceil(R / sin(fov / 2)), R the farthest vertex
+// from that point in world units (the eye backs off until the bounding sphere fills the field
+// of view; the page fit then sets the size); with --roll, the model turned about the view
+// axis through the origin, in doubles, each coordinate rounded to whole world units (at most
+// 1/2 unit each, under 1/30 step at the default page). False with *error if the model then
+// leaves the world's range.
+struct ObjModel;
+bool aim_view(const Options& o, ObjModel* model, View* view, std::string* error);
 
 // A model file (.obj, .stl, .ply) read and cleaned as every command draws it: welded
 // (--weld), each shell oriented, coplanar edges dropped (--crease), turned Z-up (--up).

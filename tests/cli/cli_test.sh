@@ -408,9 +408,9 @@ expect '[ $rc -eq 0 ] && [ -s z.data ] && cmp -s z.data y.data' "a Y-up file and
 "$tool" plot zup.obj --halo 5 -o yz.svg --dump-edges yz.edges
 grep -v '^#' yz.edges > yz.data
 expect '! cmp -s z.data yz.data' "the up axis matters (a Z-up file read as Y-up lies on its back)"
-"$tool" plot zup.obj --up x --halo 5 -o x.svg 2> err.txt
+"$tool" plot zup.obj --up w --halo 5 -o x.svg 2> err.txt
 rc=$?
-expect '[ $rc -ne 0 ] && grep -q -- "--up .x. must be y" err.txt' "a bad --up is named: $(cat err.txt)"
+expect '[ $rc -ne 0 ] && grep -q -- "--up .w. must be x, y, z, -x, -y or -z" err.txt' "a bad --up is named: $(cat err.txt)"
 
 # A legal but absurd acceleration is warned about; a sane one is not.
 printf 'scene scene.edges\ndrawing all\naccel 1\n' > slow.job
