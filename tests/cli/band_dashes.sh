@@ -25,18 +25,10 @@ torus_obj 1.5 0.6 12 6 > torus.obj
 torus_sphere_obj > torus_sphere.obj
 
 # NAME SCENE EXTRA-KEYS ARENA...: the whole-model trace, then one banded trace per arena.
-# The page pins the plot area these cases were measured in (20000 x 16000 steps from (400,
-# 400)), not the default A4 landscape page. On that page the torus in 16384 bytes (17 bands)
-# fails the check, and the fault is the checker's: the band conductor's strokes are identical
-# in one band and in 16, 32 and 64 KB (compared exactly, edge by edge, hatch and intersection
-# lines joined), but a contour cut at a border has its ends rounded to a step, and a hidden
-# edge's dash ends about 2 steps away then fall within the checker's one-step cutting distance
-# of the banded chord and not of the whole one, so the pieces cannot pair. The checker needs
-# to join its leftover pieces across sub-step gaps before this pin can go.
 run() {
   local name="$1" scene="$2" extra="$3"
   shift 3
-  printf 'scene %s\ndrawing hidden-dashed\nview 30,25\noutline on\n%bpage 260x210\nmargin 5\neffects acceleration pen-servo\nkinematics corexy\n' \
+  printf 'scene %s\ndrawing hidden-dashed\nview 30,25\noutline on\n%beffects acceleration pen-servo\nkinematics corexy\n' \
     "$scene" "$extra" > "$name.job"
   if ! "$tool" sim "$name.job" -o "$name.trace"; then
     bad "$name: the whole-model plot failed"

@@ -49,12 +49,7 @@ elif [ "$kind" = dashed ]; then
   # step interrupts (64 s at a quarter, 36 to 41 s at an eighth, on a 2-core machine with other
   # builds running). The check's step is then a motor step, 8 plot steps (0.1 mm). 48 KB: 10
   # bands.
-  # The page is the plot area this was first measured in (250 x 200 mm from 5 mm), not the
-  # default A4 page: at an eighth of a motor step on A4 one stroke of the whole-model plot meets
-  # other stroke ends within a motor step where a band border cuts it, and the check, which must
-  # cut and pair pieces to a motor step, leaves the two halves unpaired. The same jobs at whole
-  # motor steps match exactly (unpaired 0, worst end 1.00 plot step), as band_dashes checks.
-  printf 'scene cubes6.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\npage 260x210\nmargin 5\neffects acceleration pen-servo\nkinematics corexy\nsteps 1/8\n' \
+  printf 'scene cubes6.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\neffects acceleration pen-servo\nkinematics corexy\nsteps 1/8\n' \
     > whole.job
   { cat whole.job; echo "arena 49152"; } > demo.job
   "$tool" sim whole.job -o whole.trace

@@ -309,6 +309,34 @@ std::vector<Seg> unpaired(const std::vector<Seg>& a, const std::vector<Seg>& b, 
   return left;
 }
 
+// The unpaired pieces of one drawing joined where two meet within a step and run on straight
+// (each far end within bend_tol of the joined chord). A border's cut rounds both sides of a
+// stroke to a step, so a stroke the other plot draws whole can be left here in pieces with a
+// sub-step gap between them (and a cut at that gap, from a nearby end in the other plot); such
+// pieces are one stroke. A gap of more than a step (a dash restarted at a border) stays a gap.
+std::vector<Seg> rejoined(std::vector<Seg> left) {
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (size_t i = 0; i < left.size() && !merged; ++i)
+      for (size_t j = i + 1; j < left.size() && !merged; ++j) {
+        const Seg &s = left[i], &t = left[j];
+        // Try the four ways round: s's end `p` meets t's end `q`.
+        for (int k = 0; k < 4 && !merged; ++k) {
+          const Pt from = k & 1 ? s.a : s.b, p = k & 1 ? s.b : s.a;
+          const Pt q = k & 2 ? t.b : t.a, to = k & 2 ? t.a : t.b;
+          if (dist(p, q) > end_tol) continue;
+          const bool onward = (to.x - q.x) * (p.x - from.x) + (to.y - q.y) * (p.y - from.y) > 0;
+          if (!onward || off_chord(from, to, p) > bend_tol || off_chord(from, to, q) > bend_tol)
+            continue;
+          left[i] = {from, to};
+          left.erase(left.begin() + std::ptrdiff_t(j));
+          merged = true;
+        }
+      }
+  }
+  return left;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -341,14 +369,22 @@ int main(int argc, char** argv) {
   const std::vector<Seg> pw = cut(sw, ends), pb = cut(sb, ends);
   double worst = 0;
   size_t dots = 0;
-  const std::vector<Seg> lw = unpaired(pw, pb, move_ends(sb), &worst, &dots),
-                         lb = unpaired(pb, pw, move_ends(sw), &worst, &dots);
+  std::vector<Seg> lw = unpaired(pw, pb, move_ends(sb), &worst, &dots),
+                   lb = unpaired(pb, pw, move_ends(sw), &worst, &dots);
+  // The leftovers, each side's joined across sub-step gaps, paired once more.
+  const size_t first_w = lw.size(), first_b = lb.size();
+  if (!lw.empty() || !lb.empty()) {
+    const std::vector<Seg> jw = rejoined(lw), jb = rejoined(lb);
+    lw = unpaired(jw, jb, move_ends(sb), &worst, &dots);
+    lb = unpaired(jb, jw, move_ends(sw), &worst, &dots);
+  }
   std::printf(
       "whole: %zu pen-down moves in %u pen-downs, %zu strokes; banded: %zu moves in %u "
       "pen-downs, %zu strokes joined; %zu and %zu pieces cut at each other's ends (%zu dots); "
-      "unpaired: %zu whole, %zu banded; worst end distance %.2f plot steps (a step: %g)\n",
+      "unpaired: %zu whole, %zu banded (%zu and %zu before joining leftovers across sub-step "
+      "gaps); worst end distance %.2f plot steps (a step: %g)\n",
       w.moves.size(), w.pen_downs, sw.size(), b.moves.size(), b.pen_downs, sb.size(), pw.size(),
-      pb.size(), dots, lw.size(), lb.size(), worst, step);
+      pb.size(), dots, lw.size(), lb.size(), first_w, first_b, worst, step);
   int shown = 0;
   for (const auto* list : {&lw, &lb})
     for (const Seg& s : *list)
