@@ -12,11 +12,8 @@ set -u
 tool="$1"
 tori="$2/linked_tori.obj"
 cmp_edges="python3 $(cd "$(dirname "$0")" && pwd)/edges_compare.py"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-pass=0 fail=0
-expect() { if eval "$1" > out.txt 2>&1; then pass=$((pass + 1)); echo "ok: $2: $(tail -1 out.txt)"; else fail=$((fail + 1)); echo "FAILED: $2: $(cat out.txt)"; fi; }
+# shellcheck source=../support/expect.sh
+. "$(cd "$(dirname "$0")" && pwd)/../support/expect.sh"
 # plot NAME ARGS...: a plot (hidden-removed for (1), else all: the projected scene is what is
 # compared, and all is faster) and its projected scene (NAME.svg, NAME.edges).
 mode=hidden-removed

@@ -9,11 +9,8 @@
 set -u
 tool="$1"
 check="python3 $(cd "$(dirname "$0")" && pwd)/svg_page_check.py"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-pass=0 fail=0
-expect() { if eval "$1" > out.txt 2>&1; then pass=$((pass + 1)); echo "ok: $(tail -1 out.txt)"; else fail=$((fail + 1)); echo "FAILED: $2: $(cat out.txt)"; fi; }
+# shellcheck source=../support/expect.sh
+. "$(cd "$(dirname "$0")" && pwd)/../support/expect.sh"
 
 "$tool" demo-scene --cubes 3 -o cubes.obj
 page="--page a4 --landscape --margin 10"
