@@ -2,8 +2,9 @@
 # The controller images' flash and RAM against their budgets, as one table: the budgets read
 # from each board's board.cmake (the one place they are set), the sizes summed from the built
 # images as the size gate sums them (firmware/check_image.cmake: flash = .vectors .text
-# .ARM.exidx .init_array .data; RAM = .data .bss .ccm). docs/firmware.md quotes this table
-# between its `firmware-sizes` markers; test doc_budgets checks that it is this output.
+# .ARM.exidx .init_array .data; RAM = .data .bss .ccm), and the lean programs' .text
+# (firmware/lean: one plot, unbanded, in bands, a solid in bands). docs/firmware.md quotes both
+# tables between its `firmware-sizes` markers; test doc_budgets checks that they are this output.
 # Usage: tools/firmware_sizes.sh [ROOT]           print the table (the firmware presets built)
 #        tools/firmware_sizes.sh --write [ROOT]   put it into docs/firmware.md
 set -euo pipefail
@@ -43,7 +44,30 @@ table() {
   done
 }
 
-out=$(table)
+# What one kind of plot costs an image of its own (firmware/lean/lean_link.cpp, test lean_link):
+# .text of the smallest programs that plot the same three edges through the step tick.
+lean() {
+  echo
+  echo "The same plot in the smallest image (\`firmware/lean\`, \`.text\` bytes; test \`lean_link\`):"
+  echo
+  echo "| board | haloed (\`job_prepare\`) | haloed in bands (\`begin\`) | a solid in bands (\`begin_solid\`) |"
+  echo "|---|---:|---:|---:|"
+  for pair in stm32f405:firmware mps2_an385:firmware-mps2; do
+    local board=${pair%%:*} dir="$root/build/${pair#*:}/firmware"
+    local h b s
+    h=$(text "$dir/fw_lean_haloed.elf") && b=$(text "$dir/fw_lean_bands.elf") &&
+      s=$(text "$dir/fw_lean_solid_bands.elf") || return 1
+    printf '| %s | %s | %s (%s) | %s (%s) |\n' "$board" "$h" "$b" "$(ratio "$b" "$h")" "$s" \
+      "$(ratio "$s" "$h")"
+  done
+}
+text() {  # ELF: its .text bytes
+  [ -f "$1" ] || { echo "no $1: build the firmware presets first" >&2; return 1; }
+  arm-none-eabi-size -A "$1" | awk '$1 == ".text" { print $2 }'
+}
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2fx", a / b }'; }
+
+out=$(table && lean)
 if [ "$write" -eq 0 ]; then
   echo "$out"
   exit 0

@@ -1,5 +1,5 @@
 // The conductor's working state for one try at one band, shared by its edge stages
-// (conductor.cpp) and its solid stage (solid_band.cpp). Internal to core/band.
+// (conductor.cpp, band_path.cpp) and its solid stage (solid_band.cpp). Internal to core/band.
 #pragma once
 #include <stdint.h>
 

@@ -206,14 +206,24 @@ class BandConductor {
   Status try_band(int32_t y1, bool* fitted);
   Status next_streamed_band();
   Status draw_band(Attempt& a);
-  Status gather_solid(Attempt& a);  // solid_band.cpp
+  // The solid stage (solid_band.cpp): one band's faces and edges, then its hidden lines; and a
+  // streamed band's model part as its source. Reached only through solid_stage_, which only
+  // begin_solid and begin_streamed_solid set, so a program that plots edges never links the
+  // solid stages (conductor.cpp and band_path.cpp name none of them; test lean_link).
+  struct SolidStage {
+    Status (*band)(BandConductor& self, Attempt& a);
+    SolidSource (*streamed)(const StagedSolidBand& band, bool closed);
+  };
+  static const SolidStage kSolidStage;
+  Status gather_solid(Attempt& a);
   Status gather_vertices(Attempt& a, uint32_t* pairs, Triangle* tris, uint32_t* vids);
   Status hide_band(Attempt& a);
+  bool solid_mode() const { return solid_stage_ != nullptr; }
   Status commit_band(Attempt& a);
   uint32_t defer_joined(const Attempt& a, Segment2* u, uint32_t n_own, uint32_t nu, uint8_t* free);
   static constexpr int kJoinDepth = 4;  // links followed from a carried piece's lower end
   size_t carry_bytes(uint32_t n) const {
-    const size_t runs = solid_mode_ ? size_t{n} * sizeof(CarryRun) : 0;
+    const size_t runs = solid_mode() ? size_t{n} * sizeof(CarryRun) : 0;
     return ((size_t{n} * sizeof(Carry) + 7) & ~size_t{7}) + runs;
   }
   // The runs stand after the carry entries at the front of the arena.
@@ -225,7 +235,12 @@ class BandConductor {
     return carry_bytes(n_carry_) + ((size_t{n_defer_} * sizeof(Segment2) + 7) & ~size_t{7});
   }
   Status plan_column(const PathPoint** points, uint32_t* n);
-  int64_t column_of(int64_t x_sum) const;     // x_sum: x0 + x1 of a segment
+  int64_t column_of(int64_t x_sum) const;                        // x_sum: x0 + x1 of a segment
+  bool column_less(const Segment2& p, const Segment2& q) const;  // by column, then whole
+  struct ColumnOrder {  // one comparator type for every sort by column (one instantiation)
+    const BandConductor* self;
+    bool operator()(const Segment2& p, const Segment2& q) const { return self->column_less(p, q); }
+  };
   static constexpr int64_t kMinColumn = 256;  // steps: the narrowest path column
   uint64_t now() const { return clock_ ? clock_() : 0; }
   int64_t rows_for(int64_t rows, size_t bytes) const;  // rows that 7/8 of the arena holds
@@ -246,15 +261,15 @@ class BandConductor {
   int64_t height_ = 0;               // the next attempt's height
   bool margin_known_ = false;
   bool done_ = true;
-  bool solid_mode_ = false;               // begin_solid or begin_streamed_solid
-  bool closed_ = false;                   // a solid's model is closed (SolidSource::closed)
-  SolidSource solid_{};                   // a solid's model, or (streamed) the band's part
-  uint32_t solid_crossings_ = 0;          // the last band's CUT records: the next first guess
-  BandStream stream_{};                   // streamed mode when stream_.next is set
-  const uint32_t* stream_ids_ = nullptr;  // scene indices of the streamed band's edges
-  uint32_t n_carry_ = 0;                  // carry entries at the front of the arena
-  uint32_t n_defer_ = 0;                  // segments deferred to the next band, after the carry
-  size_t band_used_ = 0;                  // the current attempt's bytes
+  const SolidStage* solid_stage_ = nullptr;  // a solid's plot: &kSolidStage
+  bool closed_ = false;                      // a solid's model is closed (SolidSource::closed)
+  SolidSource solid_{};                      // a solid's model, or (streamed) the band's part
+  uint32_t solid_crossings_ = 0;             // the last band's CUT records: the next first guess
+  BandStream stream_{};                      // streamed mode when stream_.next is set
+  const uint32_t* stream_ids_ = nullptr;     // scene indices of the streamed band's edges
+  uint32_t n_carry_ = 0;                     // carry entries at the front of the arena
+  uint32_t n_defer_ = 0;                     // segments deferred to the next band, after the carry
+  size_t band_used_ = 0;                     // the current attempt's bytes
   // The committed band's segments, in column order, waiting for next() to plan them.
   Segment2* segs_ = nullptr;
   uint32_t n_segs_ = 0, next_seg_ = 0;

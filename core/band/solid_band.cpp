@@ -266,7 +266,7 @@ Status BandConductor::begin_solid(const BandSpec& spec, SolidSource source, void
     if (p.y > hi) hi = p.y;
   }
   solid_ = source;
-  solid_mode_ = true;
+  solid_stage_ = &kSolidStage;
   closed_ = source.closed;
   if (source.n_edges == 0 || source.n_vertices == 0) return Status::kOk;  // nothing to draw
   row_lo_ = lo;
@@ -287,12 +287,19 @@ Status BandConductor::begin_streamed_solid(const BandSpec& spec, bool closed, Ba
   const Status s = begin(spec, EdgeSource{}, arena, arena_bytes);
   if (!ok(s)) return s;
   stream_ = stream;
-  solid_mode_ = true;
+  solid_stage_ = &kSolidStage;
   closed_ = closed;
   margin_known_ = true;
   done_ = false;
   return Status::kOk;
 }
+
+const BandConductor::SolidStage BandConductor::kSolidStage = {
+    [](BandConductor& self, Attempt& a) {
+      const Status s = self.gather_solid(a);
+      return ok(s) ? self.hide_band(a) : s;
+    },
+    [](const StagedSolidBand& band, bool closed) { return band.source(closed); }};
 
 // The band's drawn edges (those meeting its rows), its faces (meeting its rows or the row
 // above: the outline pass asks just beyond each border) and the vertices they use, with

@@ -23,7 +23,8 @@ class StepEngine {
   static_assert(hal::check_plotter_hal<Hal>(), "the step engine's HAL (hal/plotter_hal.h)");
 
  public:
-  StepEngine(Hal& hal, Queue& queue) : hal_(hal), queue_(queue) {}
+  // Assignable: a motion runner starts each plot with a fresh engine on the same HAL and queue.
+  StepEngine(Hal& hal, Queue& queue) : hal_(&hal), queue_(&queue) {}
 
   // Begin, or resume after the queue ran dry: returns the delay to the first event (0: nothing
   // to do). The time base continues from the last event.
@@ -35,12 +36,12 @@ class StepEngine {
   // The timer fired: do the due event, return ticks until the next one (0: queue empty).
   uint32_t tick() {
     if (pending_) {
-      hal_.step(dominant_);
+      hal_->step(dominant_);
       position_[dominant_] += step_[dominant_];
       error_ += minor_;
       if (error_ >= major_) {  // Bresenham: the other motor steps when its error overflows
         error_ -= major_;
-        hal_.step(other_);
+        hal_->step(other_);
         position_[other_] += step_[other_];
       }
       ++events_;
@@ -76,15 +77,15 @@ class StepEngine {
         --left_;
         return next_delay();
       }
-      if (queue_.empty()) {
+      if (queue_->empty()) {
         pending_ = false;
         return 0;
       }
-      const StepSegment& s = queue_.front();
+      const StepSegment& s = queue_->front();
       if (s.kind == StepSegment::kPen) {
-        hal_.pen(s.pen_down);
+        hal_->pen(s.pen_down);
         const uint32_t dwell = s.dwell_ticks;
-        queue_.pop();
+        queue_->pop();
         if (dwell > 0) {
           pending_ = false;
           return dwell;
@@ -100,18 +101,18 @@ class StepEngine {
         for (uint8_t m = 0; m < 2; ++m) {
           const bool backward = (s.dir_bits >> m) & 1u;
           step_[m] = backward ? -1 : 1;
-          hal_.set_direction(m, backward);
+          hal_->set_direction(m, backward);
         }
       }
       left_ = s.count;
       interval_q8_ = s.interval_q8;
       add_q8_ = s.add_q8;
-      queue_.pop();
+      queue_->pop();
     }
   }
 
-  Hal& hal_;
-  Queue& queue_;
+  Hal* hal_;
+  Queue* queue_;
   bool pending_ = false;
   uint8_t dominant_ = 0, other_ = 1;
   int32_t step_[2] = {1, 1};

@@ -82,7 +82,7 @@ Status run_virtual(MotionPlanner& planner, StepPrep& prep, Queue& queue, Hal& ha
     s = prep.fill(planner, queue);
     if (!ok(s)) return s;
     // A hold is asked for between a refill and the next tick, as the controller's main loop
-    // asks for one (firmware/app/motion_runner.cpp, pause()): from the end of a full queue.
+    // asks for one (motion_runner.h, pause()): from the end of a full queue.
     if (next_hold < holds.n && engine.events() >= holds.at_events[next_hold] && !prep.holding()) {
       prep.hold();
       ++next_hold;

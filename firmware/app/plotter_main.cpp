@@ -1,6 +1,7 @@
 // The plotter controller, for every board: boots the board (board/board.h, from the board's
 // folder), then serves the job protocol on its serial link forever
-// (core/protocol/job_server.h), plotting through the step timer (motion_runner.h).
+// (core/protocol/job_server.h), plotting through the step timer (core/motion/motion_runner.h,
+// on this board: app/motion_runner.h).
 //
 // Memory: one arena for the scene and the job buffer (HALOPLOT_FW_ARENA_KB, the board's
 // setting), and the small fixed parts (frame buffer, serial ring, step queue, planner window).
@@ -39,7 +40,7 @@ constexpr uint8_t kTestDigestType = 0x7D;
 #endif
 alignas(8) uint8_t arena[HALOPLOT_FW_ARENA_KB * 1024];
 uint8_t rx_frame[JobServer::kMaxPayload + kFrameOverhead];
-MotionRunner motion;
+fw::MotionRunner motion;  // this board's (app/motion_runner.h), not the template
 
 // Quiet time that ends a frame in progress, in counter ticks (the board's, about 2 ms on the
 // chip: 23 byte times at 115200 baud, a sender never pauses that long inside a frame). Under
@@ -63,10 +64,7 @@ bool digesting = false;
 }  // namespace
 
 // The step interrupt: the board's vector table puts it on its step clock's interrupt.
-extern "C" void step_timer_irq() {
-  if (Board::timer_chunk_pending()) return;  // a long delay (a pen dwell) is still running
-  motion.on_timer();
-}
+extern "C" void step_timer_irq() { motion.on_timer(); }
 
 extern "C" uint32_t stack_unused_bytes();
 

@@ -1,6 +1,7 @@
 // Runs CUT and DRAW from the installed package on a 3 x 3 cube array and checks them against a
 // brute-force count of its crossings written here: every pair of edges whose projections cross
-// at one point strictly inside both, at different depths. Exit 0 when they agree.
+// at one point strictly inside both, at different depths; then the motion runner on a fake
+// board (runner_check.cpp). Exit 0 when all agree.
 #include <cstdio>
 #include <vector>
 
@@ -10,6 +11,8 @@
 #include "scene/cube_array.h"
 
 using namespace haloplot;
+
+int check_motion_runner();  // runner_check.cpp
 
 namespace {
 
@@ -71,5 +74,6 @@ int main() {
     return 1;
   std::printf("package consumer: %u edges, %u crossings (brute force %zu), %zu spans\n",
               set.n_edges, set.n_crossings, want, spans);
-  return set.n_crossings == want && spans >= edges.size() ? 0 : 1;
+  if (set.n_crossings != want || spans < edges.size()) return 1;
+  return check_motion_runner();
 }
