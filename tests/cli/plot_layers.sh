@@ -13,7 +13,7 @@ tool="$1"
 check="python3 $(cd "$(dirname "$0")" && pwd)/svg_page_check.py"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-cd "$work"
+cd "$work" || exit 1
 pass=0 fail=0
 expect() { if eval "$1" > out.txt 2>&1; then pass=$((pass + 1)); echo "ok: $(tail -1 out.txt)"; else fail=$((fail + 1)); echo "FAILED: $2: $(cat out.txt)"; fi; }
 
