@@ -436,6 +436,7 @@ Status plan_path_layers(const Segment2* spans, uint32_t n, const LayerCounts& la
                         int32_t start_x, int32_t start_y, void* workspace, size_t workspace_bytes,
                         PathPoint* out, uint32_t out_capacity, uint32_t* out_count,
                         LayerCounts* points_per_layer, PathStats* stats) {
+  if (buffer_misaligned(workspace)) return Status::kMisalignedBuffer;  // even with no spans
   if (layers.n > kMaxLayers) return Status::kBadParameter;
   uint64_t total = 0;
   for (uint32_t k = 0; k < layers.n; ++k) total += layers.count[k];
