@@ -42,6 +42,16 @@ bool units_ok(const JobSpec& spec) {
   return spec.substep_bits >= 0 && spec.substep_bits <= kMaxSubstepBits;
 }
 
+// Layers group the edges of a drawing-all job (one span each), all of them; DRAW's spans and
+// a hidden-line job's strokes are grouped by the job itself.
+bool layers_ok(const JobSpec& spec, uint32_t n) {
+  if (spec.layers.n <= 1) return spec.layers.n == 0 || spec.layers.count[0] == n;
+  if (spec.drawing != DrawingEffect::kAllEdges || spec.layers.n > kMaxLayers) return false;
+  uint64_t total = 0;
+  for (uint32_t k = 0; k < spec.layers.n; ++k) total += spec.layers.count[k];
+  return total == n;
+}
+
 // The peak of the three stages (see job.h).
 size_t peak_of(const JobBytes& b) {
   size_t peak = b.cut_scratch;
@@ -95,7 +105,8 @@ BandSpec band_spec(const JobSpec& steps) {
 
 Status job_bytes(const JobSpec& steps, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
                  JobBytes* bytes) {
-  if (needs_faces(steps.drawing) || !units_ok(steps)) return Status::kBadParameter;
+  if (needs_faces(steps.drawing) || !units_ok(steps) || !layers_ok(steps, n))
+    return Status::kBadParameter;
   const JobSpec spec = in_units(steps);
   JobBytes b;
   uint64_t max_spans = n;
@@ -123,8 +134,8 @@ namespace {
 
 // Stage 3: the path, after the spans (DRAW's scratch is dead by now).
 Status plan_stage(const JobSpec& spec, uint8_t* base, size_t spans_offset, size_t spans_size,
-                  size_t buffer_bytes, const SpanCollector& collect, PreparedJob* job,
-                  JobCounters* c) {
+                  size_t buffer_bytes, const SpanCollector& collect, const LayerCounts& layers,
+                  PreparedJob* job, JobCounters* c) {
   JobBytes stage;
   size_path_stages(collect.count, &stage);
   uint8_t* points_mem = base + spans_offset + spans_size;
@@ -134,11 +145,13 @@ Status plan_stage(const JobSpec& spec, uint8_t* base, size_t spans_offset, size_
   // The spans to whole steps: the one rounding between the scene's units and the pen.
   round_to_steps(collect.out, collect.count, spec.substep_bits);
   uint32_t n_points = 0;
-  const Status s =
-      plan_path(collect.out, collect.count, spec.start_x, spec.start_y, points_mem + stage.points,
-                stage.path, reinterpret_cast<PathPoint*>(points_mem),
-                path_points_max(collect.count), &n_points, &c->path);
+  LayerCounts layer_points;
+  const Status s = plan_path_layers(
+      collect.out, collect.count, layers, spec.start_x, spec.start_y, points_mem + stage.points,
+      stage.path, reinterpret_cast<PathPoint*>(points_mem), path_points_max(collect.count),
+      &n_points, &layer_points, &c->path);
   if (!ok(s)) return s;
+  job->layer_points = layer_points;
   job->points = reinterpret_cast<PathPoint*>(points_mem);
   job->n_points = n_points;
   job->spans = collect.out;
@@ -159,7 +172,8 @@ Status draw_stage(const JobSpec& spec, uint32_t n, size_t cutset_size, uint8_t* 
   const Status s = draw(job->cutset, spec.draw, base + cutset_size + spans_size, draw_size,
                         SpanSink{&SpanCollector::emit, &collect}, &c->draw);
   if (!ok(s)) return s;
-  return plan_stage(spec, base, cutset_size, spans_size, buffer_bytes, collect, job, c);
+  return plan_stage(spec, base, cutset_size, spans_size, buffer_bytes, collect, LayerCounts{}, job,
+                    c);
 }
 
 }  // namespace
@@ -167,7 +181,8 @@ Status draw_stage(const JobSpec& spec, uint32_t n, size_t cutset_size, uint8_t* 
 Status job_prepare(const JobSpec& steps, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
                    void* buffer, size_t buffer_bytes, PreparedJob* out, JobCounters* counters) {
   JobCounters c;
-  if (needs_faces(steps.drawing) || !units_ok(steps)) return Status::kBadParameter;
+  if (needs_faces(steps.drawing) || !units_ok(steps) || !layers_ok(steps, n))
+    return Status::kBadParameter;
   if (buffer_misaligned(buffer)) return Status::kMisalignedBuffer;
   const JobSpec spec = in_units(steps);
   Status s = validate(spec.machine);
@@ -194,7 +209,7 @@ Status job_prepare(const JobSpec& steps, const Edge3* edges, uint32_t n, uint32_
     for (uint32_t i = 0; i < n; ++i)
       collect.out[collect.count++] =
           Segment2{edges[i].a.x, edges[i].a.y, edges[i].b.x, edges[i].b.y};
-    s = plan_stage(spec, base, 0, spans_size, buffer_bytes, collect, &job, &c);
+    s = plan_stage(spec, base, 0, spans_size, buffer_bytes, collect, spec.layers, &job, &c);
   }
   if (counters) *counters = c;
   if (!ok(s)) return s;
@@ -223,43 +238,81 @@ Status job_redraw(const JobSpec& steps, uint32_t n, uint32_t crossing_capacity, 
 
 namespace {
 
-// Strokes gathered in the hidden-line run's free tail.
+// The layers a hidden-line job draws in turn (motion/path_plan.h LayerCounts), as the plot
+// SVG orders them.
+enum StrokeLayer : uint8_t { kVisible, kHidden, kIntersection, kHatching, kOutline };
+
+// Strokes gathered in the hidden-line run's free tail: upwards from its start, and each
+// stroke's layer (a byte) downwards from its end.
 struct StrokeCollector {
   Segment2* out = nullptr;
+  uint8_t* layer_end = nullptr;  // stroke i's layer is layer_end[-1 - i]
   uint32_t capacity = 0, count = 0;
   StrokeStyle style;
   uint32_t n_drawn = 0;
   DashedRuns runs;  // a hidden run's dashes from its start, across its pieces (solid/modes.h)
 
-  Status add(const Span& s) {
+  Status add(const Span& s, uint8_t layer) {
     if (count == capacity) return Status::kSinkFull;
+    layer_end[-1 - int64_t{count}] = layer;
     out[count++] = Segment2{s.x0, s.y0, s.x1, s.y1};
     return Status::kOk;
   }
   static void begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3*) {
     auto* self = static_cast<StrokeCollector*>(ctx);
     self->out = reinterpret_cast<Segment2*>(tail);
-    const size_t n = bytes / sizeof(Segment2);
+    self->layer_end = tail + bytes;
+    const size_t n = bytes / (sizeof(Segment2) + 1);
     self->capacity = n > 0x7fffffffu ? 0x7fffffffu : uint32_t(n);
     self->runs.clear();
   }
+  // A piece's call first strokes the hidden run held before it (dashes), then the piece's own
+  // stroke when it is visible (one span): the host's drawing (pipeline/drawing_modes.cpp)
+  // sorts its strokes into layers the same way.
   static Status piece(void* ctx, const HiddenPiece& p) {
     auto* self = static_cast<StrokeCollector*>(ctx);
-    return self->runs.piece(*p.geometry, p.edge, p.edge >= self->n_drawn, p.t0, p.t1, p.hidden, p.q,
-                            self->style, Emit{self});
+    const uint32_t before = self->count;
+    const Status s = self->runs.piece(*p.geometry, p.edge, p.edge >= self->n_drawn, p.t0, p.t1,
+                                      p.hidden, p.q, self->style, Emit{self});
+    if (ok(s) && !p.hidden && self->count > before)
+      self->layer_end[-int64_t{self->count}] = p.hatch                ? kHatching
+                                               : p.face[0] != kNoFace ? kIntersection
+                                                                      : kVisible;
+    return s;
   }
   static Status outline(void* ctx, const HiddenPiece& p) {
     auto* self = static_cast<StrokeCollector*>(ctx);
     const Status s = self->finish();
-    return ok(s) ? self->add(make_stroke(*p.geometry, p.edge, p.t0, p.t1)) : s;
+    return ok(s) ? self->add(make_stroke(*p.geometry, p.edge, p.t0, p.t1), kOutline) : s;
   }
   // The last hidden run's dashes.
   Status finish() { return runs.finish(style, Emit{this}); }
   struct Emit {
     StrokeCollector* self;
-    Status operator()(const Span& s, int32_t) const { return self->add(s); }
+    Status operator()(const Span& s, int32_t) const { return self->add(s, kHidden); }
   };
 };
+
+// The strokes from the tail to the front of the buffer, layer by layer (in the order they came
+// within each), through scratch after them; the layers' bytes stay at the tail's end until the
+// move is done. kWorkspaceTooSmall when the scratch does not fit: the path would not either.
+Status strokes_to_front(const StrokeCollector& c, uint8_t* base, LayerCounts* layers) {
+  *layers = LayerCounts{};
+  if (c.count == 0) return Status::kOk;
+  Segment2* front = reinterpret_cast<Segment2*>(base);
+  // Forward copy: the strokes move down.
+  for (uint32_t i = 0; i < c.count; ++i) front[i] = c.out[i];
+  const size_t front_bytes = carve_round(size_t{c.count} * sizeof(Segment2));
+  Segment2* scratch = reinterpret_cast<Segment2*>(base + front_bytes);
+  if (2 * front_bytes > size_t(c.layer_end - base) - c.count) return Status::kWorkspaceTooSmall;
+  layers->n = kMaxLayers;
+  for (uint32_t i = 0; i < c.count; ++i) ++layers->count[c.layer_end[-1 - int64_t{i}]];
+  uint32_t at[kMaxLayers] = {};
+  for (uint32_t k = 1; k < kMaxLayers; ++k) at[k] = at[k - 1] + layers->count[k - 1];
+  for (uint32_t i = 0; i < c.count; ++i) scratch[at[c.layer_end[-1 - int64_t{i}]]++] = front[i];
+  for (uint32_t i = 0; i < c.count; ++i) front[i] = scratch[i];
+  return Status::kOk;
+}
 
 }  // namespace
 
@@ -300,13 +353,14 @@ Status job_prepare_solid(const JobSpec& steps, const SolidInput& in, uint32_t cr
   ++c.cut_runs;
   if (counters) *counters = c;
   if (!ok(s)) return s;
-  // The strokes to the front (the run's memory is dead now); forward copy, since they move down.
-  Segment2* front = reinterpret_cast<Segment2*>(base);
-  for (uint32_t i = 0; i < collect.count; ++i) front[i] = collect.out[i];
-  SpanCollector spans{front, collect.count, collect.count};
+  // The strokes to the front (the run's memory is dead now), grouped by layer.
+  LayerCounts layers;
+  s = strokes_to_front(collect, base, &layers);
+  if (!ok(s)) return s;
+  SpanCollector spans{reinterpret_cast<Segment2*>(base), collect.count, collect.count};
   PreparedJob job;
   s = plan_stage(spec, base, 0, carve_round(size_t{collect.count} * sizeof(Segment2)), buffer_bytes,
-                 spans, &job, &c);
+                 spans, layers, &job, &c);
   if (counters) *counters = c;
   if (!ok(s)) return s;
   *out = job;

@@ -53,6 +53,11 @@ struct JobSpec {
   // above stay in steps (the halo, dashes, hatch spacing, CUT's reach, the pen's start); the
   // job turns them into units and rounds what it emits to steps (geometry/units.h).
   int32_t substep_bits = 0;
+  // A drawing-all job of strokes decided elsewhere (the host's hidden-line drawings): the
+  // edges come grouped by line kind, this many of each, and each kind is planned in turn
+  // (motion/path_plan.h plan_path_layers). n = 0: one layer. A hidden-line job groups its
+  // strokes itself; a haloed one has one layer.
+  LayerCounts layers;
 };
 
 // Bytes each stage takes from the job buffer (0: the stage does not run), and the peak the
@@ -82,8 +87,9 @@ struct PreparedJob {
   uint32_t n_points = 0;
   uint32_t n_spans = 0;
   const Segment2* spans = nullptr;
-  CutSet cutset;   // valid when CUT ran: DRAW can rerun from it with another halo width
-  PointFeed feed;  // set: the points come band by band from this feed (a streamed plot)
+  LayerCounts layer_points;  // how many of the points each layer took (n = 0: one layer)
+  CutSet cutset;             // valid when CUT ran: DRAW can rerun from it with another halo width
+  PointFeed feed;            // set: the points come band by band from this feed (a streamed plot)
   // > 0: go on with a plot that stopped after this many step events (an abort, a reset):
   // motion/virtual_run.h skip_events() before the motion starts.
   uint32_t resume_after_events = 0;

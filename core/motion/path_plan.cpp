@@ -432,4 +432,53 @@ Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t sta
   return Status::kOk;
 }
 
+Status plan_path_layers(const Segment2* spans, uint32_t n, const LayerCounts& layers,
+                        int32_t start_x, int32_t start_y, void* workspace, size_t workspace_bytes,
+                        PathPoint* out, uint32_t out_capacity, uint32_t* out_count,
+                        LayerCounts* points_per_layer, PathStats* stats) {
+  if (buffer_misaligned(workspace)) return Status::kMisalignedBuffer;  // even with no spans
+  if (layers.n > kMaxLayers) return Status::kBadParameter;
+  uint64_t total = 0;
+  for (uint32_t k = 0; k < layers.n; ++k) total += layers.count[k];
+  if (layers.n > 0 && total != n) return Status::kBadParameter;
+  if (out_capacity < path_points_max(n)) return Status::kBadParameter;
+  LayerCounts written;
+  written.n = layers.n;
+  if (layers.n <= 1) {
+    const Status s = plan_path(spans, n, start_x, start_y, workspace, workspace_bytes, out,
+                               out_capacity, out_count, stats);
+    written.count[0] = *out_count;
+    if (ok(s) && points_per_layer != nullptr) *points_per_layer = written;
+    return s;
+  }
+  // Each layer in the same workspace (a smaller plan carves less of it), its points after the
+  // previous layer's.
+  PathStats sum;
+  uint32_t first = 0, count = 0;
+  int32_t x = start_x, y = start_y;
+  for (uint32_t k = 0; k < layers.n; ++k) {
+    const uint32_t m = layers.count[k];
+    if (m == 0) continue;
+    uint32_t wrote = 0;
+    PathStats st;
+    const Status s = plan_path(spans + first, m, x, y, workspace, workspace_bytes, out + count,
+                               path_points_max(m), &wrote, &st);
+    if (!ok(s)) return s;
+    if (count > 0) ++sum.pen_lifts;  // the move to this layer's first stroke
+    sum.polylines += st.polylines;
+    sum.pen_up_length += st.pen_up_length;
+    sum.pen_down_length += st.pen_down_length;
+    sum.pen_lifts += st.pen_lifts;
+    written.count[k] = wrote;
+    first += m;
+    count += wrote;
+    x = out[count - 1].x, y = out[count - 1].y;
+  }
+  sum.naive_pen_up_length = naive_pen_up(spans, n, start_x, start_y);
+  *out_count = count;
+  if (points_per_layer != nullptr) *points_per_layer = written;
+  if (stats) *stats = sum;
+  return Status::kOk;
+}
+
 }  // namespace haloplot

@@ -47,6 +47,26 @@ Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t sta
                  void* workspace, size_t workspace_bytes, PathPoint* out, uint32_t out_capacity,
                  uint32_t* out_count, PathStats* stats, PathEnd end = PathEnd{});
 
+// Line kinds drawn one after another, a pen each (the plot SVG's layers): visible edges,
+// hidden dashes, intersection lines, hatching, outlines. A count per layer, in that order.
+constexpr uint32_t kMaxLayers = 5;
+struct LayerCounts {
+  uint32_t n = 0;  // layers in use; 0: the whole input is one layer
+  uint32_t count[kMaxLayers] = {};
+};
+
+// plan_path() for spans grouped by layer (layers.count[k] spans of layer k, one group after
+// the other): each layer planned on its own, the first from (start_x, start_y), each next
+// from where the previous one ended, so no layer's strokes mix with another's and a pen can be
+// changed between them. A non-empty layer after another starts with a pen-up point even where
+// the previous one ended (the pen lifts for the change). *points_per_layer (may be null): how
+// many of the path points each layer wrote. With layers.n <= 1 this is plan_path() exactly.
+// The stats add up over the layers (naive_pen_up_length: the input order as given).
+Status plan_path_layers(const Segment2* spans, uint32_t n, const LayerCounts& layers,
+                        int32_t start_x, int32_t start_y, void* workspace, size_t workspace_bytes,
+                        PathPoint* out, uint32_t out_capacity, uint32_t* out_count,
+                        LayerCounts* points_per_layer, PathStats* stats);
+
 // Spans in units of 2^-s steps (geometry/units.h) to whole steps, in place: the one rounding
 // between a scene fitted finer than the pen moves and the path.
 void round_to_steps(Segment2* spans, uint32_t n, int substep_bits);

@@ -125,7 +125,7 @@ int cmd_plot_solid(const Options& o) {
     if (!export_style_of(o, &export_style, &spec.machine, &error)) return fail(error);
     std::vector<Edge3> edges;
     if (so.spec.mode != SolidMode::kAll) {
-      edges = mode_strokes(d);
+      edges = mode_strokes(d, &spec.layers);
     } else {
       Options edge_options = o;
       edge_options.values.erase("--dump-edges");  // written once, above

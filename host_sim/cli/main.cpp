@@ -77,6 +77,9 @@ const char* kUsage =
     "               [--z-feed MM/MIN] [--pen-up-gcode TEXT] [--pen-down-gcode TEXT]\n"
     "               [--draw-feed MM/MIN] [--travel-feed MM/MIN] [--pen-dwell SECONDS]\n"
     "               (the G-code's pen commands and feeds; TEXT: G-code, \\n between lines)\n"
+    "               [--pause-between-layers]   (hidden-line modes draw layer by layer, as the\n"
+    "               SVG's layers; this adds a pen change between layers: M0 in the G-code,\n"
+    "               the layer's pen SP1..SP5 in the HPGL)\n"
     "  page options (plot, draw): [--page a4|a3|a5|letter|legal|tabloid|WxH] [--landscape]\n"
     "               [--margin MM] [--fit | --scale S] [--pen-width MM] [--background]\n"
     "               (the SVG is the page, default A4 landscape, 10 mm margins; a model is\n"
@@ -445,6 +448,21 @@ int plot_in_bands(const Options& o, const std::vector<Edge3>& edges, const CutPa
   return 0;
 }
 
+// --pause-between-layers needs a plotter output and a drawing of more than one kind of line.
+std::string layer_pause_problem(const Options& o) {
+  if (!o.has("--pause-between-layers")) return "";
+  if (!wants_plotter_outputs(o))
+    return "--pause-between-layers stops for a pen change in the G-code or HPGL: add --gcode "
+           "OUT.gcode or --hpgl OUT.hpgl";
+  const std::string mode = o.get("--mode", "haloed");
+  if (mode != "hidden-removed" && mode != "hidden-dashed")
+    return "--pause-between-layers with --mode " + mode + ": its G-code draws one layer (" +
+           (mode == "all" ? "the model's edges whole, as a job's drawing all"
+                          : "the haloed edges") +
+           "); the layers are --mode hidden-removed or hidden-dashed's";
+  return "";
+}
+
 int cmd_plot(int argc, char** argv) {
   std::set<std::string> valued = kCutValued;
   valued.insert({"--halo", "--spans", "--cut", "--mode", "--dash", "--steps-per-mm", "--method",
@@ -453,7 +471,8 @@ int cmd_plot(int argc, char** argv) {
   valued.insert(std::begin(kPlotterOutputOptions), std::end(kPlotterOutputOptions));
   valued.insert(std::begin(kPenOptions), std::end(kPenOptions));
   valued.insert(std::begin(kPageValued), std::end(kPageValued));
-  std::set<std::string> flags = {"--exact-halo", "--stats", "--outline", "--no-intersections"};
+  std::set<std::string> flags = {"--exact-halo", "--stats", "--outline", "--no-intersections",
+                                 "--pause-between-layers"};
   flags.insert(std::begin(kPageFlags), std::end(kPageFlags));
   const Options o = parse_options(argc, argv, 2, valued, flags);
   if (!o.error.empty()) return fail(o.error);
@@ -462,6 +481,7 @@ int cmd_plot(int argc, char** argv) {
   for (const char* pen : kPenOptions)
     if (!o.get(pen).empty() && o.get("--gcode").empty())
       return fail(std::string(pen) + " sets the G-code's pen or feeds: add --gcode OUT.gcode");
+  if (const std::string bad = layer_pause_problem(o); !bad.empty()) return fail(bad);
   if (o.get("--mode", "haloed") != "haloed") return cmd_plot_solid(o);
   for (const char* solid_flag : {"--outline", "--no-intersections"})
     if (o.has(solid_flag))
@@ -580,8 +600,8 @@ int write_exports(const Options& o, const SimReport& r, const JobSpec& spec, Job
     if (!parse_page(page_options, &page, &error)) return fail(error);
     centre_on_page(page, spec.finish_home, &points, &jf.style);
   }
-  const std::string error =
-      write_plotter_outputs(o.get("--gcode"), o.get("--hpgl"), points, spec.machine, jf.style);
+  const std::string error = write_plotter_outputs(o.get("--gcode"), o.get("--hpgl"), points,
+                                                  spec.machine, jf.style, r.layer_points);
   return error.empty() ? 0 : fail(error);
 }
 
@@ -628,6 +648,10 @@ int cmd_sim(int argc, char** argv) {
       return fail("--arena needs a byte count in [1024, 2^30]");
     jf.arena = uint32_t(v);
   }
+  if (jf.style.pause_between_layers && jf.arena > 0)
+    return fail(o.positional[0] +
+                ": pause-between-layers with an arena: a plot in bands draws band after band, "
+                "not layer after layer (leave out the arena)");
   // --resume-at E: go on from where a plot of this job stopped after E step events.
   int64_t resume_at = 0;
   if (!o.get("--resume-at").empty() && !parse_int(o.get("--resume-at"), 0, UINT32_MAX, &resume_at))
@@ -642,7 +666,7 @@ int cmd_sim(int argc, char** argv) {
   if (solid_bands) {
     if (!load_solid_job_scene(jf, &solid, &jf.spec.hidden, &error)) return fail(error);
     jf.spec.substep_bits = solid.substep_bits;
-  } else if (!load_job_scene(jf, &edges, &error, &jf.spec.substep_bits)) {
+  } else if (!load_job_scene(jf, &edges, &error, &jf.spec.substep_bits, &jf.spec.layers)) {
     return fail(error);
   }
   if (isatty(2)) jf.spec.cut.progress = &progress;

@@ -119,6 +119,7 @@ bool export_style_of(const Options& o, ExportStyle* style, Machine* machine, std
     machine->pen_travel_ticks = uint32_t(v * machine->tick_hz / 1000);
     machine->pen_settle_ticks = 0;
   }
+  if (o.has("--pause-between-layers")) style->pause_between_layers = true;
   return apply_feeds(*style, machine, error);
 }
 
@@ -139,8 +140,8 @@ int write_plot_outputs(const Options& o, const JobSpec& spec, const std::vector<
   const double seconds = estimate_plot_seconds(spec, planned.points);
   add_travel_home(spec, &planned.points);
   if (model) centre_on_page(page, spec.finish_home, &planned.points, &style);
-  const std::string error =
-      write_plotter_outputs(o.get("--gcode"), o.get("--hpgl"), planned.points, spec.machine, style);
+  const std::string error = write_plotter_outputs(o.get("--gcode"), o.get("--hpgl"), planned.points,
+                                                  spec.machine, style, planned.layer_points);
   if (!error.empty()) {
     std::cerr << "haloplot: " << error << "\n";
     return 1;

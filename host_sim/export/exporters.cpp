@@ -34,8 +34,25 @@ bool apply_feeds(const ExportStyle& s, Machine* m, std::string* error) {
          speed(s.travel_feed_milli, "travel-feed", &m->travel_speed);
 }
 
+namespace {
+
+// Where each non-empty layer starts in the path (its first point) and its number (1 for
+// the first kind), when the style asks for pen changes; else nothing.
+std::vector<std::pair<size_t, int>> layer_starts(const LayerCounts& layers, const ExportStyle& s) {
+  std::vector<std::pair<size_t, int>> starts;
+  if (!s.pause_between_layers) return starts;
+  size_t at = 0;
+  for (uint32_t k = 0; k < layers.n && k < kMaxLayers; ++k) {
+    if (layers.count[k] > 0) starts.push_back({at, int(k) + 1});
+    at += layers.count[k];
+  }
+  return starts;
+}
+
+}  // namespace
+
 void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Machine& m,
-                 const ExportStyle& s) {
+                 const ExportStyle& s, const LayerCounts& layers) {
   const auto seconds = [&](uint32_t ticks) { return mm_text(ticks, m.tick_hz); };  // 3 places
   const std::string dwell = seconds(m.pen_travel_ticks + m.pen_settle_ticks);
   // Feeds in mm/min: as given, or the machine's speeds.
@@ -67,7 +84,15 @@ void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Ma
   };
   pen(false);
   bool down = false;
-  for (const PathPoint& p : path) {
+  const std::vector<std::pair<size_t, int>> starts = layer_starts(layers, s);
+  size_t next = 1;  // the first layer needs no change
+  for (size_t i = 0; i < path.size(); ++i) {
+    const PathPoint& p = path[i];
+    if (next < starts.size() && i == starts[next].first) {
+      if (down) pen(false);
+      down = false;
+      out << "; layer " << starts[next++].second << ": change the pen, then resume\nM0\n";
+    }
     if ((p.pen_down != 0) != down) {
       down = p.pen_down != 0;
       pen(down);
@@ -80,7 +105,8 @@ void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Ma
   out << "M2\n";
 }
 
-void write_hpgl(std::ostream& out, const std::vector<PathPoint>& path, const ExportStyle& s) {
+void write_hpgl(std::ostream& out, const std::vector<PathPoint>& path, const ExportStyle& s,
+                const LayerCounts& layers) {
   // 40 plotter units per mm: units = steps * 40 / steps_per_mm, rounded.
   const auto unit = [&](int64_t v) {
     return floor_div(v * 80 + s.steps_per_mm, 2 * int64_t(s.steps_per_mm));
@@ -88,7 +114,19 @@ void write_hpgl(std::ostream& out, const std::vector<PathPoint>& path, const Exp
   out << "IN;SP1;";
   bool down = false;
   bool open = false;
-  for (const PathPoint& p : path) {
+  const std::vector<std::pair<size_t, int>> starts = layer_starts(layers, s);
+  size_t next = 0;
+  int pen = 1;
+  for (size_t i = 0; i < path.size(); ++i) {
+    const PathPoint& p = path[i];
+    if (next < starts.size() && i == starts[next].first) {
+      if (starts[next].second != pen) {
+        pen = starts[next].second;
+        out << (open ? ";" : "") << (down ? "PU;" : "") << "SP" << pen << ";";
+        open = down = false;
+      }
+      ++next;
+    }
     const bool want = p.pen_down != 0;
     if (want != down || !open) {
       out << (open ? ";" : "") << (want ? "PD" : "PU");

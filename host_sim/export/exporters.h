@@ -8,6 +8,7 @@
 //   z       "G0 Z<up>" up, "G1 Z<down> F<z feed>" down (a Z axis waits for itself: no dwell)
 //   custom  the given text for each change, line by line, nothing added
 // HPGL: IN; SP1; then PU x,y; / PD x,y,...; in plotter units of 0.025 mm (40 per mm).
+// Asked for, a pen change between line kinds: M0 in G-code, SPn in HPGL (ExportStyle).
 // Both write paper coordinates (export/page.h): a path point plus the style's offset, from the
 // page's lower-left corner, y up; the SVG of the same plot places every point at the same spot.
 #pragma once
@@ -34,15 +35,22 @@ struct ExportStyle {
   int64_t draw_feed_milli = 0, travel_feed_milli = 0;
   // The page placement (export/page.h): added to every point, in plot steps.
   int32_t offset_x = 0, offset_y = 0;
+  // A pen change between the path's layers (motion/path_plan.h LayerCounts): G-code stops
+  // (M0) with the pen up before each layer after the first; HPGL selects the layer's pen
+  // (SP1 visible, SP2 hidden, SP3 intersections, SP4 hatching, SP5 outlines).
+  bool pause_between_layers = false;
 };
 
 // The machine's draw and travel speeds (plot steps/s) from the style's feeds, when given.
 // False with *error when a feed is out of the machine's range.
 bool apply_feeds(const ExportStyle& s, Machine* m, std::string* error);
 
+// `layers`: how many of the path's points each layer has (PreparedJob::layer_points; the
+// points after them, the travel home, belong to the last); used with pause_between_layers.
 void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Machine& m,
-                 const ExportStyle& s);
-void write_hpgl(std::ostream& out, const std::vector<PathPoint>& path, const ExportStyle& s);
+                 const ExportStyle& s, const LayerCounts& layers = LayerCounts{});
+void write_hpgl(std::ostream& out, const std::vector<PathPoint>& path, const ExportStyle& s,
+                const LayerCounts& layers = LayerCounts{});
 
 // "12.345": plot steps in millimetres, exactly rounded to 3 decimals (integer arithmetic).
 std::string mm_text(int64_t steps, uint32_t steps_per_mm);

@@ -34,14 +34,13 @@ std::vector<PathPoint> joined_path(const std::vector<PlannedLayer>& layers) {
 }
 
 std::vector<StrokeLayer> mode_layers(const ModeDrawing& d) {
-  std::vector<StrokeLayer> layers = {{"1 visible", {}, 1},
-                                     {"2 hidden", {}, 1},
-                                     {"3 intersections", {}, 1},
-                                     {"4 hatching", d.hatch, 1},
-                                     {"5 outlines", d.outline, 2.5}};
-  for (size_t i = 0; i < d.spans.size(); ++i)
-    layers[i < d.kind.size() ? size_t(d.kind[i]) : 0].spans.push_back(d.spans[i]);
-  return layers;
+  // The job's layers (pipeline/drawing_modes.h layer_spans), so G-code and SVG agree.
+  std::vector<std::vector<Span>> spans = layer_spans(d);
+  return {{"1 visible", std::move(spans[0]), 1},
+          {"2 hidden", std::move(spans[1]), 1},
+          {"3 intersections", std::move(spans[2]), 1},
+          {"4 hatching", std::move(spans[3]), 1},
+          {"5 outlines", std::move(spans[4]), 2.5}};
 }
 
 }  // namespace haloplot::host

@@ -27,8 +27,8 @@ struct PlannedLayer {
 };
 
 // Plans each non-empty layer, in order, the first from (0, 0) (where the controller's job
-// starts), each next from where the previous one ended. A single layer's path is the one the
-// controller plans for the same spans.
+// starts), each next from where the previous one ended: the path the controller's job plans
+// for the same strokes, layer by layer (motion/path_plan.h plan_path_layers).
 // A planner failure (a coordinate out of its range) is returned as its status.
 Status plan_layers(const std::vector<StrokeLayer>& layers, std::vector<PlannedLayer>* out);
 

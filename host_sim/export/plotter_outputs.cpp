@@ -24,6 +24,7 @@ Status plan_job_path(const JobSpec& spec, const std::vector<Edge3>& edges, Plann
   if (!ok(s)) return s;
   out->points.assign(job.points, job.points + job.n_points);
   out->spans.assign(job.spans, job.spans + job.n_spans);
+  out->layer_points = job.layer_points;
   return Status::kOk;
 }
 
@@ -78,17 +79,17 @@ void centre_on_page(const Page& page, bool finish_home, std::vector<PathPoint>* 
 
 std::string write_plotter_outputs(const std::string& gcode_path, const std::string& hpgl_path,
                                   const std::vector<PathPoint>& points, const Machine& m,
-                                  const ExportStyle& style) {
+                                  const ExportStyle& style, const LayerCounts& layers) {
   if (!gcode_path.empty()) {
     const std::string error = write_atomically(gcode_path, [&](std::ostream& out) {
-      write_gcode(out, points, m, style);
+      write_gcode(out, points, m, style, layers);
       return true;
     });
     if (!error.empty()) return error;
   }
   if (!hpgl_path.empty())
     return write_atomically(hpgl_path, [&](std::ostream& out) {
-      write_hpgl(out, points, style);
+      write_hpgl(out, points, style, layers);
       return true;
     });
   return "";

@@ -19,6 +19,7 @@ namespace haloplot::host {
 struct PlannedJob {
   std::vector<PathPoint> points;
   std::vector<Segment2> spans;  // what DRAW emitted
+  LayerCounts layer_points;     // the points of each layer (job.h PreparedJob)
   JobCounters counters;
   JobBytes bytes;
   int retries = 0;
@@ -43,9 +44,10 @@ void centre_on_page(const Page& page, bool finish_home, std::vector<PathPoint>* 
                     ExportStyle* style);
 
 // Writes the G-code to `gcode_path` and the HPGL to `hpgl_path` (each when not empty), through
-// the command's output set (io/atomic_file.h). "" or the error.
+// the command's output set (io/atomic_file.h), with the path's layers (pen changes between
+// them when the style asks). "" or the error.
 std::string write_plotter_outputs(const std::string& gcode_path, const std::string& hpgl_path,
                                   const std::vector<PathPoint>& points, const Machine& m,
-                                  const ExportStyle& style);
+                                  const ExportStyle& style, const LayerCounts& layers);
 
 }  // namespace haloplot::host

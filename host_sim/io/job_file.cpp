@@ -63,6 +63,7 @@ const std::map<std::string, std::string> kKeys = {
     {"draw-feed", "MM/MIN"},
     {"travel-feed", "MM/MIN"},
     {"pen-dwell", "SECONDS"},
+    {"pause-between-layers", "on | off (a pen change between layers: M0 in G-code, SPn in HPGL)"},
     {"page", "a4 | a3 | a5 | letter | legal | tabloid | WxH (mm)"},
     {"landscape", "on | off"},
     {"margin", "MM"},
@@ -352,6 +353,10 @@ InputError read_setting(const JobLine& l, JobFile* out) {
     out->outline = f[1] == "on";
     return {};
   }
+  if (key == "pause-between-layers" && l.on_off()) {
+    out->style.pause_between_layers = f[1] == "on";
+    return {};
+  }
   if (key == "landscape" && l.on_off()) {
     out->landscape = f[1] == "on";
     return {};
@@ -414,6 +419,10 @@ InputError check_job(const std::string& path, const std::map<std::string, int>& 
   if (const InputError camera = check_camera(path, key_lines, *out); camera.failed()) return camera;
   const InputError pen = read_pen_settings(path, key_lines, out);
   if (pen.failed()) return pen;
+  if (out->style.pause_between_layers && out->solid_options.count("--mode") == 0)
+    return {path, key_lines.at("pause-between-layers"),
+            "pause-between-layers needs drawing hidden-removed or hidden-dashed (the drawings "
+            "of more than one kind of line)"};
   const Status s = validate(j.machine);
   if (!ok(s)) return machine_problem(path, j.machine, s, key_lines);
   return {};

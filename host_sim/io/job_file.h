@@ -22,6 +22,8 @@
 //   draw-speed 6000   travel-speed 12000   accel 60000   junction-deviation 4
 //   pen-travel-ticks 150000   pen-settle-ticks 50000   backlash 0 0
 //   steps-per-mm 80           for the G-code and HPGL exporters
+//   pause-between-layers on   hidden-line drawings: a pen change between the layers in the
+//                             G-code (M0) and HPGL (SPn); not with an arena
 //   pen servo                 the G-code's pen: servo | z | custom, with servo-down S, z-up MM,
 //                             z-down MM, z-feed MM/MIN, pen-up-gcode TEXT, pen-down-gcode TEXT
 //   draw-feed 4500            feeds in mm/min (instead of draw-speed, travel-speed), and

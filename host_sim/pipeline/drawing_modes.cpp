@@ -62,10 +62,25 @@ ModeDrawing make_mode_drawing(const SolidRun& run, const ModeSpec& spec) {
   return d;
 }
 
-std::vector<Edge3> mode_strokes(const ModeDrawing& d) {
+std::vector<std::vector<Span>> layer_spans(const ModeDrawing& d) {
+  std::vector<std::vector<Span>> layers(kMaxLayers);
+  for (size_t i = 0; i < d.spans.size(); ++i)
+    layers[i < d.kind.size() ? size_t(d.kind[i]) : 0].push_back(d.spans[i]);
+  layers[3] = d.hatch;
+  layers[4] = d.outline;
+  return layers;
+}
+
+std::vector<Edge3> mode_strokes(const ModeDrawing& d, LayerCounts* layers) {
   std::vector<Edge3> edges;
-  for (const std::vector<Span>* part : {&d.spans, &d.hatch, &d.outline})
-    for (const Span& x : *part) edges.push_back(Edge3{{x.x0, x.y0, 0}, {x.x1, x.y1, 0}});
+  LayerCounts counts;
+  counts.n = kMaxLayers;
+  const std::vector<std::vector<Span>> by_layer = layer_spans(d);
+  for (size_t k = 0; k < by_layer.size(); ++k) {
+    counts.count[k] = uint32_t(by_layer[k].size());
+    for (const Span& x : by_layer[k]) edges.push_back(Edge3{{x.x0, x.y0, 0}, {x.x1, x.y1, 0}});
+  }
+  if (layers != nullptr) *layers = counts;
   return edges;
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "draw/draw.h"
+#include "motion/path_plan.h"
 #include "pipeline/solid_pipeline.h"
 #include "solid/modes.h"
 
@@ -37,9 +38,15 @@ bool parse_solid_mode(const std::string& s, SolidMode* out);
 
 ModeDrawing make_mode_drawing(const SolidRun& run, const ModeSpec& spec);
 
-// The drawing's strokes as the edges a job draws whole (drawing all): the first pen's spans,
-// the hatching, then the outline pass. A hidden-line job and `plot --gcode` plan these.
-std::vector<Edge3> mode_strokes(const ModeDrawing& d);
+// The drawing's strokes by layer (motion/path_plan.h LayerCounts, the plot SVG's layers):
+// visible pieces, hidden dashes, intersection lines (each in the first pen's order), the
+// hatching, then the outline pass.
+std::vector<std::vector<Span>> layer_spans(const ModeDrawing& d);
+
+// The drawing's strokes as the edges a job draws whole (drawing all), layer after layer, and
+// how many each layer has (*layers, may be null): a hidden-line job and `plot --gcode` plan
+// these one layer after the other, as the controller's job plans the same strokes.
+std::vector<Edge3> mode_strokes(const ModeDrawing& d, LayerCounts* layers = nullptr);
 
 // "0", "1", "0.5": a QI counted in halves, as the .spans file writes it.
 std::string qi_text(int32_t halves);

@@ -591,9 +591,10 @@ bool load_solid_job_scene(const JobFile& jf, SolidScene* scene, HiddenJob* hidde
 }
 
 bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* error,
-                    int32_t* substep_bits) {
+                    int32_t* substep_bits, LayerCounts* layers) {
   const Options o = job_options(jf);
   if (substep_bits != nullptr) *substep_bits = 0;
+  if (layers != nullptr) *layers = LayerCounts{};
   if (jf.spec.drawing != DrawingEffect::kHiddenRemoved &&
       jf.spec.drawing != DrawingEffect::kHiddenDashed)
     return load_scene(o, jf.scene_path, edges, error, substep_bits);
@@ -611,7 +612,7 @@ bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* e
   // Decided in the scene's units, drawn in steps: the strokes come out rounded (units 0).
   ModeDrawing d = make_mode_drawing(run, mode_in_units(so.spec, scene.substep_bits));
   drawing_to_steps(&d, scene.substep_bits);
-  *edges = mode_strokes(d);
+  *edges = mode_strokes(d, layers);
   return true;
 }
 

@@ -85,9 +85,10 @@ bool job_solid_settings(const JobFile& jf, SolidOptions* so, View* view, std::st
 // The scene a .job file names, as the edges its job draws: an .edges file as it is; an .obj
 // model projected with the job's view; for the hidden-line drawings, the strokes of that mode
 // (visible pieces, dashes, and the outline pass redrawn last), decided on the host and rounded
-// to steps. *substep_bits (may be null): the edges' units (0 for the strokes).
+// to steps, layer after layer. *substep_bits (may be null): the edges' units (0 for the
+// strokes). *layers (may be null): the strokes' layers (JobSpec::layers), none for the others.
 bool load_job_scene(const JobFile& jf, std::vector<Edge3>* edges, std::string* error,
-                    int32_t* substep_bits = nullptr);
+                    int32_t* substep_bits = nullptr, LayerCounts* layers = nullptr);
 // The hidden-line settings of a job's solid options (method, outline, dash, hatching).
 HiddenJob hidden_job(const SolidOptions& so);
 // A hidden-line job's model itself (its view applied) and its settings, for a plot in bands.

@@ -47,6 +47,7 @@ Status prepare_whole(const JobSpec& spec, const std::vector<Edge3>& edges, SimRe
   if (!ok(s)) return s;
   r->points = std::move(planned.points);
   r->spans = std::move(planned.spans);
+  r->layer_points = planned.layer_points;
   return Status::kOk;
 }
 

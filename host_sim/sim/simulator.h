@@ -29,6 +29,7 @@ struct SimReport {
   int retries = 0;
   std::vector<PathPoint> points;  // the planned path (for the exporters)
   std::vector<Segment2> spans;    // what DRAW emitted (for checks)
+  LayerCounts layer_points;       // the points of each layer (none: one layer, or bands)
   int32_t final_motors[2] = {0, 0};
   size_t arena_bytes = 0;  // > 0: the plot ran in bands in this arena, as on the controller
   BandStats bands;

@@ -8,6 +8,11 @@ and checks them against each other. Usage:
                                             in order, point for point (y = H - Y)
   svg_page_check.py segments SVG GCODE      the same pen-down segments, in any order
   svg_page_check.py hpgl SVG HPGL           the HPGL's PD runs are the subpaths (1/40 mm)
+  svg_page_check.py pauses SVG GCODE HPGL N  the G-code stops (M0, pen up) exactly between
+                                            layers and the HPGL selects each layer's pen by
+                                            its number: the parts between them are the SVG's
+                                            layers, in order (N: the layers expected); N = 0:
+                                            no M0 at all, and the HPGL keeps pen 1
   svg_page_check.py extent SVG               prints the drawing's width in mm
   svg_page_check.py count SVG [LABEL]       prints the number of subpaths (of one layer)
   svg_page_check.py kinds SPANS             prints the kinds of line a .spans file holds
@@ -129,8 +134,12 @@ def check_layers(path, labels):
 
 def gcode_runs(path):
     """Pen-down runs: the point the pen went down at, then each G1 X Y while it is down."""
+    return runs_of_lines(open(path))
+
+
+def runs_of_lines(lines):
     runs, x, y, down = [], None, None, False
-    for line in open(path):
+    for line in lines:
         f = line.split(";")[0].split()
         if not f:
             continue
@@ -141,6 +150,9 @@ def gcode_runs(path):
             down = True
             runs.append([(x, y)])
         args = {a[0]: a[1:] for a in f[1:]}
+        if word == "G0" and "Z" in args:  # the Z pen lifted
+            down = False
+            continue
         if word == "G1" and "Z" in args:
             down = thousandths(args["Z"]) <= 0
             if down:
@@ -214,6 +226,86 @@ def check_hpgl(path, hpath):
     print("hpgl ok: %d runs" % len(runs))
 
 
+def gcode_parts(gpath):
+    """The G-code cut at each M0: a file per part (its lines), and whether the pen was down at
+    each M0 (by the servo's M3/M5, or a Z at or below 0)."""
+    parts, down_at, down = [[]], [], False
+    for line in open(gpath):
+        f = line.split(";")[0].split()
+        if f and f[0] == "M0":
+            down_at.append(down)
+            parts.append([])
+            continue
+        parts[-1].append(line)
+        if f and f[0] in ("M3", "M5"):
+            down = f[0] == "M3"
+        if f and f[0] == "G1" and any(a.startswith("Z") for a in f[1:]):
+            down = thousandths([a for a in f[1:] if a.startswith("Z")][0][1:]) <= 0
+        if f and f[0] == "G0" and any(a.startswith("Z") for a in f[1:]):
+            down = False
+    return parts, down_at
+
+
+def hpgl_parts(hpath):
+    """The HPGL cut at each SP: [(pen, runs)], runs as check_hpgl reads them."""
+    parts, pos = [], None
+    for cmd in open(hpath).read().strip().split(";"):
+        if cmd.startswith("SP"):
+            parts.append((int(cmd[2:]), []))
+            continue
+        if cmd[:2] not in ("PU", "PD"):
+            continue
+        vals = [int(v) for v in cmd[2:].split(",") if v != ""]
+        pts = list(zip(vals[0::2], vals[1::2]))
+        if cmd[:2] == "PD" and pts:
+            parts[-1][1].append([pos] + pts)
+        if pts:
+            pos = pts[-1]
+    return [(pen, runs) for (pen, runs) in parts if runs or pen != 0]
+
+
+def near_hpgl(stroke, run):
+    return len(stroke) == len(run) and all(
+        abs(u - x * 40 / 1000) <= 0.501 and abs(v - y * 40 / 1000) <= 0.501
+        for (x, y), (u, v) in zip(stroke, run))
+
+
+def check_pauses(path, gpath, hpath, n):
+    svg = load_svg(path)
+    layers = [(l, flipped(svg, s)) for (_, l, s) in svg["layers"] if s]
+    parts, down_at = gcode_parts(gpath)
+    hparts = hpgl_parts(hpath)
+    if n == 0:
+        if len(parts) != 1:
+            fail("%d M0 in a G-code that was not asked to pause" % (len(parts) - 1))
+        if [pen for (pen, _) in hparts] != [1]:
+            fail("HPGL pens %s, want only pen 1" % [pen for (pen, _) in hparts])
+        print("no pauses ok: no M0, one HPGL pen")
+        return
+    if len(layers) != n:
+        fail("%d layers in the SVG, want %d" % (len(layers), n))
+    if len(parts) != n:
+        fail("%d parts between M0s in the G-code, want %d (one per layer)" % (len(parts), n))
+    if any(down_at):
+        fail("an M0 with the pen down")
+    for k, ((label, strokes), lines) in enumerate(zip(layers, parts)):
+        runs = runs_of_lines(lines)
+        if runs != strokes:
+            fail("G-code part %d: %d pen-down runs, not layer %s's %d subpaths in order"
+                 % (k + 1, len(runs), label, len(strokes)))
+    pens = [pen for (pen, _) in hparts]
+    numbers = [int(label.split()[0]) for (label, _) in layers]
+    # The HPGL opens with SP1; a first layer of another number selects its pen at once.
+    if pens != numbers and not (pens[0] == 1 and not hparts[0][1] and pens[1:] == numbers):
+        fail("HPGL pens %s, want the layers' numbers %s" % (pens, numbers))
+    hparts = [p for p in hparts if p[1]]
+    for (label, strokes), (pen, runs) in zip(layers, hparts):
+        if len(runs) != len(strokes) or not all(near_hpgl(s, r) for s, r in zip(strokes, runs)):
+            fail("HPGL pen %d: its runs are not layer %s's subpaths" % (pen, label))
+    print("pauses ok: %s, M0 and SPn exactly between them"
+          % ", ".join("%s (%d)" % (l, len(s)) for (l, s) in layers))
+
+
 def kinds(spath):
     found = set()
     for line in open(spath):
@@ -248,6 +340,8 @@ def main(argv):
         print("%.3f" % ((max(xs) - min(xs)) / 1000))
     elif cmd == "count":
         print(len(all_strokes(load_svg(argv[2]), argv[3] if len(argv) > 3 else None)))
+    elif cmd == "pauses":
+        check_pauses(argv[2], argv[3], argv[4], int(argv[5]))
     elif cmd == "kinds":
         kinds(argv[2])
     else:

@@ -32,8 +32,8 @@ inline JobSpec cubes_with_backlash_job(const std::string& job_path, std::vector<
   const host::InputError e = host::read_job_file(job_path, &jf);
   CHECK_MSG(!e.failed(), e.message());
   std::string error;
-  CHECK_MSG(host::load_job_scene(jf, strokes, &error), error);
   JobSpec spec = jf.spec;
+  CHECK_MSG(host::load_job_scene(jf, strokes, &error, nullptr, &spec.layers), error);
   spec.drawing = DrawingEffect::kAllEdges;  // the strokes, decided on the host, drawn whole
   CHECK(spec.effects.backlash && spec.machine.backlash[0] == 7);
   return spec;

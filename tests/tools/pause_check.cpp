@@ -28,8 +28,9 @@ int main(int argc, char** argv) {
   if (e.failed()) return std::fprintf(stderr, "%s\n", e.message().c_str()), 1;
   std::vector<Edge3> edges;
   std::string error;
-  if (!load_job_scene(jf, &edges, &error)) return std::fprintf(stderr, "%s\n", error.c_str()), 1;
   JobSpec spec = jf.spec;  // as `haloplot sim` runs it
+  if (!load_job_scene(jf, &edges, &error, nullptr, &spec.layers))
+    return std::fprintf(stderr, "%s\n", error.c_str()), 1;
   if (spec.drawing == DrawingEffect::kHiddenRemoved || spec.drawing == DrawingEffect::kHiddenDashed)
     spec.drawing = DrawingEffect::kAllEdges;
   if (!spec.effects.backlash) spec.machine.backlash[0] = spec.machine.backlash[1] = 0;

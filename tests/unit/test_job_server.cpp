@@ -414,12 +414,18 @@ void solid_scene() {
     ms.gap_steps = 60;
     ms.outline = true;
     const host::ModeDrawing d = host::make_mode_drawing(run, ms);
+    // Layer by layer (visible, hidden dashes, intersections, hatching, outlines), each in the
+    // host's order: the controller groups its strokes by the hidden-line run's piece flags,
+    // the host by its drawing's kinds.
     std::vector<Segment2> want;
-    for (const Span& x : d.spans) want.push_back(Segment2{x.x0, x.y0, x.x1, x.y1});
-    for (const Span& x : d.hatch) want.push_back(Segment2{x.x0, x.y0, x.x1, x.y1});
+    int kinds = 0;
+    for (const std::vector<Span>& layer : host::layer_spans(d)) {
+      kinds += !layer.empty();
+      for (const Span& x : layer) want.push_back(Segment2{x.x0, x.y0, x.x1, x.y1});
+    }
+    CHECK(kinds >= (hatch ? 4 : 2));  // not vacuous: more than one layer to order
     const size_t hatched = d.hatch.size();
     if (hatch) CHECK(hatched > 20);  // not vacuous: the cubes' visible faces are hatched
-    for (const Span& x : d.outline) want.push_back(Segment2{x.x0, x.y0, x.x1, x.y1});
     const std::vector<Segment2>& got = c.motion.spans[0];
     CHECK_EQ(got.size(), want.size());
     bool same = got.size() == want.size();
@@ -428,6 +434,12 @@ void solid_scene() {
              got[i].y1 == want[i].y1;
     CHECK_MSG(same, "the controller's strokes equal the host tool's");
     CHECK(want.size() > 18);  // not vacuous: edges, dashes and the outline pass
+    // The controller's plot is `sim`'s of the host's strokes drawn whole, layer by layer.
+    JobSpec whole = spec;
+    whole.drawing = DrawingEffect::kAllEdges;
+    const std::vector<Edge3> strokes = host::mode_strokes(d, &whole.layers);
+    CHECK_MSG(c.motion.traces.size() == 1 && c.motion.traces[0] == simulated(whole, strokes),
+              "the controller's trace is sim's of the same strokes, layer by layer");
   }
 }
 

@@ -1,7 +1,8 @@
 // Path planning covers exactly the input spans (each once, in either direction, nothing
 // else), with or without a known end, chains what touches, beats the naive order and plain
 // greedy nearest neighbour (and comes near the optimum found by brute force), and the G-code and
-// HPGL exporters parse back, in a small reader written here, to the same strokes.
+// HPGL exporters parse back, in a small reader written here, to the same strokes. Spans in
+// layers are planned layer after layer, each layer drawing exactly its own spans.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -115,9 +116,74 @@ static void against_optimum(scenes::Rng& r) {
   CHECK(ours_sum < 1.05 * best_sum);
 }
 
+// Whole steps of a move, rounded down (an exact integer square root, not the planner's).
+static uint64_t floor_length(int64_t dx, int64_t dy) {
+  const uint64_t d2 = uint64_t(dx * dx + dy * dy);
+  uint64_t r = uint64_t(std::sqrt(double(d2)));
+  while (r * r > d2) --r;
+  while ((r + 1) * (r + 1) <= d2) ++r;
+  return r;
+}
+
+// Spans in layers (some empty): each layer's strokes are its spans, nothing of another's, the
+// layers one after the other in order, each starting with a pen-up move; the stats add up
+// the moves as they are; a wrong count is refused.
+static void layered(scenes::Rng& r) {
+  std::vector<Segment2> s;
+  LayerCounts layers;
+  layers.n = kMaxLayers;
+  const uint32_t sizes[kMaxLayers] = {40, 0, 25, 60, 7};
+  for (uint32_t k = 0; k < kMaxLayers; ++k) {
+    layers.count[k] = sizes[k];
+    for (uint32_t i = 0; i < sizes[k]; ++i) {  // shared ends within and across layers
+      const int32_t x = int32_t(r.uniform(0, 20)) * 100, y = int32_t(r.uniform(0, 20)) * 100;
+      s.push_back({x, y, x + 100 * int32_t(r.uniform(-2, 2)), y + 100 * int32_t(r.uniform(-2, 2))});
+    }
+  }
+  const uint32_t n = uint32_t(s.size());
+  std::vector<uint64_t> ws(path_plan_bytes(n) / 8 + 1);
+  std::vector<PathPoint> out(path_points_max(n));
+  uint32_t count = 0;
+  LayerCounts written;
+  PathStats st;
+  CHECK(ok(plan_path_layers(s.data(), n, layers, 50, -70, ws.data(), ws.size() * 8, out.data(),
+                            uint32_t(out.size()), &count, &written, &st)));
+  CHECK_EQ(written.n, kMaxLayers);
+  uint32_t at = 0, first = 0, lifts = 0;
+  uint64_t up = 0, naive = 0;
+  int32_t x = 50, y = -70;
+  for (uint32_t k = 0; k < kMaxLayers; ++k) {
+    std::map<Key, int> want, got;
+    for (uint32_t i = first; i < first + sizes[k]; ++i)
+      ++want[undirected(s[i].x0, s[i].y0, s[i].x1, s[i].y1)];
+    CHECK_MSG((written.count[k] == 0) == (sizes[k] == 0), "a layer has points iff it has spans");
+    if (written.count[k] > 0) CHECK_MSG(out[at].pen_down == 0, "a layer starts pen up");
+    for (uint32_t i = at; i < at + written.count[k]; ++i) {
+      if (out[i].pen_down)
+        ++got[undirected(x, y, out[i].x, out[i].y)];
+      else
+        up += floor_length(out[i].x - x, out[i].y - y), lifts += i > 0;
+      x = out[i].x, y = out[i].y;
+    }
+    CHECK_MSG(got == want, "layer " + std::to_string(k) + " draws exactly its spans");
+    at += written.count[k];
+    first += sizes[k];
+  }
+  CHECK_EQ(at, count);
+  int32_t px = 50, py = -70;
+  for (const Segment2& g : s) naive += floor_length(g.x0 - px, g.y0 - py), px = g.x1, py = g.y1;
+  CHECK_EQ(st.pen_up_length, up);
+  CHECK_EQ(st.pen_lifts, lifts);
+  CHECK_EQ(st.naive_pen_up_length, naive);
+  layers.count[2] += 1;  // the counts no longer add up to the spans
+  CHECK(plan_path_layers(s.data(), n, layers, 0, 0, ws.data(), ws.size() * 8, out.data(),
+                         uint32_t(out.size()), &count, nullptr, nullptr) == Status::kBadParameter);
+}
+
 int main() {
   scenes::Rng r(21);
   against_optimum(r);
+  layered(r);
   {  // Chains in shuffled order and mixed directions become one stroke.
     const std::vector<Segment2> chain = {
         {200, 0, 300, 50}, {100, 0, 200, 0}, {300, 50, 400, 0}, {100, 0, 0, 0}};
