@@ -251,7 +251,9 @@ uint32_t collect_gaps(const Scene& s, uint32_t k, const uint32_t* link, int32_t 
   Dir a;
   for (uint32_t i = s.first_hit(k); i < s.n_hits && s.hits[i].curve == k; ++i) {
     const CurveHit& h = s.hits[i];
-    if (h.kind == CurveHitKind::kCrossing && h.front == 0 && h.curve <= h.other) ++st.undecided;
+    // Each crossing is seen from both edges: count it from one side.
+    const bool first_side = h.curve < h.other || (h.curve == h.other && h.t < h.other_t);
+    if (h.kind == CurveHitKind::kCrossing && h.front == 0 && first_side) ++st.undecided;
     if (!cuts_gap(h)) continue;
     gaps[n++] = hit_gap(s, h, halo, &a);
     ++st.gaps;

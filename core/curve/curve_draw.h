@@ -13,8 +13,9 @@
 // Arc-length bound (docs/curves.md): the speed changes by at most |A''| <= 6 D per unit of
 // parameter (D: the largest length of a second difference of A's control points, in x, y), so
 // each half of the gap has an arc length within 3 D h^2 of W / sin theta plus the shift that
-// t_err allows (|A'| t_err at most), h the half-gap's parameter width; and the tangents'
-// rounding adds a relative 2^-18. A half-gap that runs past a joint continues on the next edge
+// t_err allows (|A'| t_err at most), h the half-gap's parameter width; the tangents' 30-bit
+// rounding adds a relative 2^-26 / sin(theta) (for tangents of at least 1/4 unit per unit of
+// parameter). A half-gap that runs past a joint continues on the next edge
 // (below) with that edge's speed at the joint, each edge adding its own 3 D h^2.
 //
 // Joints. Where exactly two edge ends meet at the same 3-D point and the chain goes on there

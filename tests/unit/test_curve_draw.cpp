@@ -259,11 +259,11 @@ void check_gaps(const char* name, const CurveScene& scene, const std::vector<Cha
     const LD u_err = core_t_err(d, fe, be, ft);
     const LD sa = speed(cs[be], bt), sb = speed(cs[fe], ft);
     // The tangents at the reported parameters: a relative error in 1 / sin(theta) of at most
-    // (|dA'| / |A'| + |dB'| / |B'|) (1 + 1 / sin), |dA'| <= 6 D t_err; the rounding 2^-18.
+    // (|dA'| / |A'| + |dB'| / |B'|) (1 + 1 / sin), |dA'| <= 6 D t_err; the rounding 2^-26 / sin.
     const LD tangents =
         (6 * second_difference(cs[be]) * t_err / sa + 6 * second_difference(cs[fe]) * u_err / sb) *
         (1 + 1 / r.sin_angle);
-    const LD fixed = L * (tangents + std::ldexp(1.0L, -18)) + 1e-6L;
+    const LD fixed = L * (tangents + std::ldexp(1.0L, -26) / r.sin_angle) + 1e-6L;
     if (!hole->clipped_lo)
       check_side(name, cs, chains[b.chain], hole->lo, g, L, fixed, t_err, max_speed(cs[be]), fig);
     if (!hole->clipped_hi)
