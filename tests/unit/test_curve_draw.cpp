@@ -315,6 +315,33 @@ void test_gaps() {
   CHECK_MSG(fig.across_joints > 0, "no gap side crossed a joint: the carry went untested");
 }
 
+// Straight edges among curves cross each other in the curve stages too (no CUT runs on such a
+// scene). Hand-worked: a horizontal segment at depth 0 under a vertical one at depth 10, both
+// 2,000 units long, crossing at right angles in their middles: the lower one loses
+// W / 2,000 of its parameter on each side of 1/2 (outward rounding: at most 2^-28 more), the
+// upper one is whole; a curve far away keeps its own drawing whole.
+void test_segments_among_curves() {
+  CurveScene s;
+  s.curves.push_back(BezierEdge3{{{5000, 0, 0}, {6000, 500, 0}, {7000, 500, 0}, {8000, 0, 0}}});
+  s.segments.push_back(Edge3{{0, 1000, 0}, {2000, 1000, 0}});
+  s.segments.push_back(Edge3{{1000, 0, 10}, {1000, 2000, 10}});
+  const Drawing d = draw_core(s, 100);
+  std::vector<CurveInterval> low, high, curve;
+  for (const CurveInterval& i : d.intervals)
+    (i.curve == 1 ? low : i.curve == 2 ? high : curve).push_back(i);
+  const LD one = 4294967296.0L, slack = 1.0L / (1 << 28);
+  CHECK_EQ(low.size(), size_t{2});
+  CHECK(high.size() == 1 && high[0].t0 == 0 && high[0].t1 == uint64_t{1} << 32);
+  CHECK(curve.size() == 1 && curve[0].t0 == 0 && curve[0].t1 == uint64_t{1} << 32);
+  if (low.size() == 2) {
+    const LD end = LD(low[0].t1) / one, start = LD(low[1].t0) / one;
+    CHECK_MSG(low[0].t0 == 0 && end <= 0.45L && end >= 0.45L - slack,
+              "the gap starts at 0.45: " + std::to_string(double(end)));
+    CHECK_MSG(low[1].t1 == uint64_t{1} << 32 && start >= 0.55L && start <= 0.55L + slack,
+              "the gap ends at 0.55: " + std::to_string(double(start)));
+  }
+}
+
 // ---- 2. the same knot as ~10,000 straight edges, drawn by CUT and DRAW ----
 
 // Every position drawn, in half steps of `unit` units, sampled every 1/8 step along each span.
@@ -403,6 +430,7 @@ int main(int argc, char** argv) {
   if (argc > 2 && std::string(argv[1]) == "plant")
     g_plant = std::string(argv[2]) == "front" ? Plant::kFront : Plant::kWidth;
   test_gaps();
+  test_segments_among_curves();
   test_flattening();
   return check::finish("curve_draw");
 }
