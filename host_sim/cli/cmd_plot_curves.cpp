@@ -75,6 +75,13 @@ std::string refused_option(const Options& o) {
       return std::string(cut) +
              " is CUT's grid option: a scene with Bézier edges finds its crossings by "
              "subdividing the curves (docs/curves.md)";
+  // As load_scene() says for any .edges file: projected already, in steps or its header's units.
+  for (const char* model : {"--view", "--perspective", "--up", "--crease", "--dump-edges", "--eye",
+                            "--look-at", "--fov", "--roll", "--substep", "--weld"})
+    if (!o.get(model).empty())
+      return std::string(model) +
+             " is for models (.obj, .stl, .ply): an .edges file is a scene projected already, "
+             "drawn as it is";
   if (o.has("--exact-halo"))
     return "--exact-halo is not built for Bézier edges yet: their gaps are the paper's "
            "W / sin(theta) (docs/curves.md)";
