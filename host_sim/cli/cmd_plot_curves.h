@@ -12,8 +12,8 @@
 
 namespace haloplot::host {
 
-// True when `path` is an .edges file whose records include a 'bezier' line (read without
-// error); anything else (a model, a file that does not read) is left to the straight path.
+// True when `path` is an .edges file with a line starting with the word 'bezier'; anything else
+// (a model, a file that does not open) is left to the straight path.
 bool edges_file_has_curves(const std::string& path);
 
 // `plot SCENE.edges --halo W ...` of a scene with curves: SVG, --spans, --gcode, --hpgl.
