@@ -446,7 +446,8 @@ void sweep(Run& run, const CurvePiece* p, const FixBox* box, const uint32_t* ord
     const uint32_t a = order[i];
     for (uint32_t j = i + 1; j < n && box[order[j]].x0 <= box[a].x1; ++j) {
       const uint32_t b = order[j];
-      if (!overlap(box[a], box[b]) || (p[a].straight && p[b].straight)) continue;
+      if (!overlap(box[a], box[b]) || (p[a].straight && p[b].straight && !run.params.segment_pairs))
+        continue;
       ++run.stats->box_pairs;
       refine(run, p[a], p[b]);
     }

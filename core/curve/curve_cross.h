@@ -79,6 +79,9 @@ struct CurveCrossParams {
   // (default 2^-24 of the curve's parameter range), or max_depth is reached.
   uint64_t t_tol = uint64_t{1} << 8;
   uint8_t max_depth = kCurveMaxDepth;  // at most kCurveMaxDepth
+  // Cross segments with segments too. Off, CUT has them (a straight scene goes through CUT);
+  // the curve DRAW of a scene with curves and segments (curve/curve_draw.h) needs them here.
+  bool segment_pairs = false;
 };
 
 enum class CurveHitKind : uint8_t { kCrossing, kTouch };

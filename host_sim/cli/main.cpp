@@ -10,6 +10,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "cli/cmd_plot_curves.h"
 #include "cli/options.h"
 #include "cli/page_options.h"
 #include "cli/plot_outputs.h"
@@ -45,6 +46,8 @@ namespace {
 const char* kUsage =
     "usage:\n"
     "  haloplot demo-scene [--cubes N] -o SCENE.edges|MODEL.obj   (.obj: the cubes as solids)\n"
+    "               [--curve trefoil|torus-P-Q|helix [--edges N]]   (a knot or a helix as cubic\n"
+    "               Bézier edges, N of them, for plot's curve path: docs/curves.md)\n"
     "  haloplot random-scene --edges N --length L [--seed S] -o SCENE.edges\n"
     "  haloplot cut SCENE.edges -o SCENE.cut [--lambda X] [--cell G] [--cover exact|bbox]\n"
     "               [--reach R] [--stats]\n"
@@ -280,8 +283,9 @@ void warn_reach(const HostDraw& d, int32_t halo, int32_t reach) {
 const std::set<std::string> kCutValued = {"-o", "--lambda", "--cell", "--cover", "--reach"};
 
 int cmd_demo_scene(int argc, char** argv) {
-  const Options o = parse_options(argc, argv, 2, {"-o", "--cubes"}, {});
+  const Options o = parse_options(argc, argv, 2, {"-o", "--cubes", "--curve", "--edges"}, {});
   if (!o.error.empty()) return fail(o.error);
+  if (!o.get("--curve").empty() || !o.get("--edges").empty()) return cmd_demo_curve(o);
   if (o.get("-o").empty() || !o.positional.empty())
     return fail(std::string(o.get("-o").empty() ? "demo-scene: missing -o OUTPUT"
                                                 : "demo-scene: takes no input file") +
@@ -492,6 +496,8 @@ int cmd_plot(int argc, char** argv) {
       return fail(std::string(solid_only) +
                   " is for solid drawings: use it with --mode hidden-removed or hidden-dashed" +
                   " (haloed lines have no faces)");
+  // A scene with Bézier edges takes the curve stages (docs/curves.md); any other, CUT and DRAW.
+  if (edges_file_has_curves(o.positional[0])) return cmd_plot_curves(o);
   CutParams cp;
   DrawParams dp;
   std::string error;
@@ -663,7 +669,13 @@ int cmd_sim(int argc, char** argv) {
   const bool solid_bands = jf.arena > 0 && (jf.spec.drawing == DrawingEffect::kHiddenRemoved ||
                                             jf.spec.drawing == DrawingEffect::kHiddenDashed);
   SolidScene solid;
-  if (solid_bands) {
+  // A scene with Bézier edges is drawn on the host by the curve stages; the job then plots the
+  // chords whole, as it plots a hidden-line drawing's strokes.
+  const bool curves = !solid_bands && edges_file_has_curves(jf.scene_path);
+  if (curves) {
+    if (!curve_job_edges(jf.scene_path, jf.spec, jf.arena, &edges, &jf.spec.substep_bits, &error))
+      return fail(error);
+  } else if (solid_bands) {
     if (!load_solid_job_scene(jf, &solid, &jf.spec.hidden, &error)) return fail(error);
     jf.spec.substep_bits = solid.substep_bits;
   } else if (!load_job_scene(jf, &edges, &error, &jf.spec.substep_bits, &jf.spec.layers)) {
@@ -676,6 +688,7 @@ int cmd_sim(int argc, char** argv) {
   if (!solid_bands && (spec.drawing == DrawingEffect::kHiddenRemoved ||
                        spec.drawing == DrawingEffect::kHiddenDashed))
     spec.drawing = DrawingEffect::kAllEdges;
+  if (curves) spec.drawing = DrawingEffect::kAllEdges;
   if (!spec.effects.backlash)
     spec.machine.backlash[0] = spec.machine.backlash[1] = 0;  // not simulated
   SimReport r;

@@ -1,0 +1,419 @@
+#include "curve/curve_draw.h"
+
+#include "memory/carve.h"
+#include "sort/in_place_sort.h"
+
+namespace haloplot {
+
+namespace {
+
+// Bit budget (units: the contract's coordinates, below 2^20):
+//   a point or a tangent in Q.32           |.| < 3 * 2^20 * 2^32 < 2^54
+//   a tangent, normalised                  components below 2^30 after `shift` halvings
+//   cross of two normalised tangents       < 2^61 (int64_t)
+//   half-gap numerator W |b| 2^(64 - s)    < 2^20 * 2^31 * 2^64 = 2^115 (Wide)
+//   carried overhang o |a| 2^(sA - sC)     o <= kHuge = 2^34, |a| < 2^31: < 2^65 * 2^24 (Wide)
+//   chord count factor 3 * 64 * D_c        D_c < 2^22: < 2^30
+inline constexpr int kQ = 32;
+inline constexpr int64_t kOne = int64_t{1} << kQ;
+inline constexpr int64_t kHuge = int64_t{1} << 34;  // a half-gap past any edge and its neighbour
+inline constexpr int64_t kNormLimit = int64_t{1} << 30;
+inline constexpr uint32_t kNoLink = 0xffffffffu;
+static_assert(kCoordBits + 2 + kQ < 63, "a tangent in Q.32 fits int64_t");
+static_assert(2 * 30 + 1 < 63, "a cross of normalised tangents fits int64_t");
+static_assert(kCoordBits + 31 + 64 < 126, "a half-gap numerator fits Wide");
+
+// An edge's control points in units; a segment keeps its ends (p0 = p1, p2 = p3) and is
+// evaluated linearly, as run_curve_cross() parameterises it.
+struct Ctl {
+  int64_t x[4], y[4], z[4];
+  bool straight;
+};
+
+Ctl ctl_of(const BezierEdge3* curves, uint32_t nc, const Edge3* segments, uint32_t k) {
+  Ctl c;
+  Point3 p[4];
+  if (k < nc) {
+    for (int i = 0; i < 4; ++i) p[i] = curves[k].p[i];
+  } else {
+    const Edge3& e = segments[k - nc];
+    p[0] = p[1] = e.a;
+    p[2] = p[3] = e.b;
+  }
+  for (int i = 0; i < 4; ++i) c.x[i] = p[i].x, c.y[i] = p[i].y, c.z[i] = p[i].z;
+  c.straight = k >= nc;
+  return c;
+}
+
+// v + floor(d * t / 2^32), |d| < 2^62, t <= 2^32 (the result fits: the callers' budgets).
+int64_t lerp32(int64_t v, int64_t d, uint64_t t) {
+  const Wide p = mul_i64(d, static_cast<int64_t>(t));
+  return v + static_cast<int64_t>((p.hi << 32) | (p.lo >> 32));
+}
+
+// The point at t (Q0.32) in Q.32 units: de Casteljau, each level a floor of 2^-32 units.
+void point_at(const Ctl& c, uint64_t t, int64_t* x, int64_t* y) {
+  if (c.straight) {
+    *x = c.x[0] * kOne + (c.x[3] - c.x[0]) * static_cast<int64_t>(t);
+    *y = c.y[0] * kOne + (c.y[3] - c.y[0]) * static_cast<int64_t>(t);
+    return;
+  }
+  int64_t px[4], py[4];
+  for (int i = 0; i < 4; ++i) px[i] = c.x[i] * kOne, py[i] = c.y[i] * kOne;
+  for (int level = 3; level > 0; --level)
+    for (int i = 0; i < level; ++i) {
+      px[i] = lerp32(px[i], px[i + 1] - px[i], t);
+      py[i] = lerp32(py[i], py[i + 1] - py[i], t);
+    }
+  *x = px[0];
+  *y = py[0];
+}
+
+int32_t round_unit(int64_t v) { return static_cast<int32_t>((v + (kOne >> 1)) >> kQ); }
+
+// The tangent B'(t) in Q.32 units per unit of t: 3 times the quadratic de Casteljau of the
+// control points' differences.
+void tangent_at(const Ctl& c, uint64_t t, int64_t* dx, int64_t* dy) {
+  if (c.straight) {
+    *dx = (c.x[3] - c.x[0]) * kOne;
+    *dy = (c.y[3] - c.y[0]) * kOne;
+    return;
+  }
+  int64_t qx[3], qy[3];
+  for (int i = 0; i < 3; ++i)
+    qx[i] = (c.x[i + 1] - c.x[i]) * kOne, qy[i] = (c.y[i + 1] - c.y[i]) * kOne;
+  for (int level = 2; level > 0; --level)
+    for (int i = 0; i < level; ++i) {
+      qx[i] = lerp32(qx[i], qx[i + 1] - qx[i], t);
+      qy[i] = lerp32(qy[i], qy[i + 1] - qy[i], t);
+    }
+  *dx = 3 * qx[0];
+  *dy = 3 * qy[0];
+}
+
+// A tangent as (x, y) * 2^(shift - 32), components below 2^30: halved (floor) until they are.
+struct Dir {
+  int64_t x = 0, y = 0;
+  int shift = 0;
+};
+int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
+Dir normalized(int64_t x, int64_t y) {
+  Dir d{x, y, 0};
+  while (abs64(d.x) >= kNormLimit || abs64(d.y) >= kNormLimit) {
+    d.x >>= 1;
+    d.y >>= 1;
+    ++d.shift;
+  }
+  return d;
+}
+Dir tangent_dir(const Ctl& c, uint64_t t) {
+  int64_t x, y;
+  tangent_at(c, t, &x, &y);
+  return normalized(x, y);
+}
+uint64_t length_floor(const Dir& d) {
+  return isqrt_u64(static_cast<uint64_t>(d.x * d.x + d.y * d.y));
+}
+uint64_t length_ceil(const Dir& d) {
+  const uint64_t v = static_cast<uint64_t>(d.x * d.x + d.y * d.y);
+  const uint64_t s = isqrt_u64(v);
+  return s * s < v ? s + 1 : s;
+}
+
+Wide shl(Wide v, int n) {
+  for (int i = 0; i < n; ++i) {
+    v.hi = (v.hi << 1) | (v.lo >> 63);
+    v.lo <<= 1;
+  }
+  return v;
+}
+
+// ceil-ish num / den (rounded, plus one), saturated at kHuge.
+int64_t quotient_up(Wide num, uint64_t den) {
+  if (den == 0) return kHuge;
+  bool over = false;
+  const uint64_t q = divide_round(num, den, &over);
+  return over || q >= static_cast<uint64_t>(kHuge) ? kHuge : static_cast<int64_t>(q) + 1;
+}
+
+// The half-gap in A's parameter (Q0.32): W |b| / |cross(a, b)| with A' = a 2^(a.shift - 32).
+int64_t half_gap(const Dir& a, const Dir& b, int32_t halo) {
+  const int64_t cr = abs64(a.x * b.y - a.y * b.x);
+  if (cr == 0) return kHuge;  // parallel as rounded: the paper's gap has no bound
+  const Wide num = shl(mul_u64(static_cast<uint64_t>(halo), length_ceil(b)), 64 - a.shift);
+  return quotient_up(num, static_cast<uint64_t>(cr));
+}
+
+// The arc o (in A's parameter at A's speed |a|) carried onto C, whose speed at the joint is
+// |c|: o |a| 2^(a.shift - c.shift) / |c|, in C's parameter.
+int64_t carried(int64_t o, const Dir& a, const Dir& c) {
+  if (o > kHuge) o = kHuge;
+  Wide num = mul_u64(static_cast<uint64_t>(o), length_ceil(a));
+  uint64_t den = length_floor(c);
+  if (a.shift >= c.shift)
+    num = shl(num, a.shift - c.shift);
+  else
+    den <<= (c.shift - a.shift);
+  return quotient_up(num, den);
+}
+
+struct Scene {
+  const BezierEdge3* curves;
+  uint32_t nc, n;
+  const Edge3* segments;
+  const CurveHit* hits;
+  uint32_t n_hits;
+  Ctl edge(uint32_t k) const { return ctl_of(curves, nc, segments, k); }
+  // The first hit on edge k (hits are sorted by curve).
+  uint32_t first_hit(uint32_t k) const {
+    uint32_t lo = 0, hi = n_hits;
+    while (lo < hi) {
+      const uint32_t mid = lo + (hi - lo) / 2;
+      if (hits[mid].curve < k)
+        lo = mid + 1;
+      else
+        hi = mid;
+    }
+    return lo;
+  }
+};
+
+// The gap a crossing hit cuts on its own edge, unclipped, with the edge's tangent there.
+Gap hit_gap(const Scene& s, const CurveHit& h, int32_t halo, Dir* a) {
+  *a = tangent_dir(s.edge(h.curve), h.t);
+  const Dir b = tangent_dir(s.edge(h.other), h.other_t);
+  const int64_t dt = half_gap(*a, b, halo);
+  const int64_t t = static_cast<int64_t>(h.t), e = static_cast<int64_t>(h.t_err);
+  return Gap{t - e - dt, t + e + dt};
+}
+
+bool cuts_gap(const CurveHit& h) { return h.kind == CurveHitKind::kCrossing && h.front < 0; }
+
+// ---- joints ----
+
+// The point of end `id` (edge id / 2, its start for an even id) and the direction leaving the
+// joint into the edge.
+void end_of(const Scene& s, uint32_t id, int64_t p[3], int64_t d[2]) {
+  const Ctl c = s.edge(id / 2);
+  const int i = (id & 1) ? 3 : 0, j = (id & 1) ? 2 : 1;
+  const int jj = c.straight ? 3 - i : j;  // a segment's repeated point: its other end
+  p[0] = c.x[i], p[1] = c.y[i], p[2] = c.z[i];
+  d[0] = c.x[jj] - c.x[i], d[1] = c.y[jj] - c.y[i];
+}
+
+bool end_less(const Scene& s, uint32_t a, uint32_t b) {
+  int64_t pa[3], pb[3], d[2];
+  end_of(s, a, pa, d);
+  end_of(s, b, pb, d);
+  for (int i = 0; i < 3; ++i)
+    if (pa[i] != pb[i]) return pa[i] < pb[i];
+  return a < b;
+}
+
+// link[id]: the end joined to end id, or kNoLink. Exactly two ends at one point, leaving it in
+// opposite directions within 45 degrees (|cross| < -dot), make a joint.
+uint32_t link_joints(const Scene& s, uint32_t* order, uint32_t* link) {
+  const uint32_t ends = 2 * s.n;
+  for (uint32_t i = 0; i < ends; ++i) order[i] = i, link[i] = kNoLink;
+  sort_in_place(order, ends, [&s](uint32_t a, uint32_t b) { return end_less(s, a, b); });
+  uint32_t joints = 0;
+  for (uint32_t i = 0; i < ends;) {
+    uint32_t j = i + 1;
+    int64_t pa[3], pb[3], d[2];
+    end_of(s, order[i], pa, d);
+    for (; j < ends; ++j) {
+      end_of(s, order[j], pb, d);
+      if (pa[0] != pb[0] || pa[1] != pb[1] || pa[2] != pb[2]) break;
+    }
+    if (j - i == 2) {
+      int64_t p[3], u[2], v[2];
+      end_of(s, order[i], p, u);
+      end_of(s, order[i + 1], p, v);
+      const int64_t dot = u[0] * v[0] + u[1] * v[1], cr = abs64(u[0] * v[1] - u[1] * v[0]);
+      if (dot < 0 && cr < -dot) {
+        link[order[i]] = order[i + 1];
+        link[order[i + 1]] = order[i];
+        ++joints;
+      }
+    }
+    i = j;
+  }
+  return joints;
+}
+
+// ---- one edge ----
+
+// The gaps on edge k: its own crossings behind, and what its joined neighbours' gaps carry
+// over the joints. Returns the count (at most 3 * most_hits).
+uint32_t collect_gaps(const Scene& s, uint32_t k, const uint32_t* link, int32_t halo, Gap* gaps,
+                      CurveDrawStats& st) {
+  uint32_t n = 0;
+  Dir a;
+  for (uint32_t i = s.first_hit(k); i < s.n_hits && s.hits[i].curve == k; ++i) {
+    const CurveHit& h = s.hits[i];
+    // Each crossing is seen from both edges: count it from one side.
+    const bool first_side = h.curve < h.other || (h.curve == h.other && h.t < h.other_t);
+    if (h.kind == CurveHitKind::kCrossing && h.front == 0 && first_side) ++st.undecided;
+    if (!cuts_gap(h)) continue;
+    gaps[n++] = hit_gap(s, h, halo, &a);
+    ++st.gaps;
+  }
+  const Ctl self = s.edge(k);
+  for (uint32_t end = 0; end < 2; ++end) {
+    const uint32_t other = link[2 * k + end];
+    if (other == kNoLink) continue;
+    const uint32_t m = other / 2;
+    const Dir c = tangent_dir(self, end ? kCurveParamOne : 0);
+    for (uint32_t i = s.first_hit(m); i < s.n_hits && s.hits[i].curve == m; ++i) {
+      if (!cuts_gap(s.hits[i])) continue;
+      const Gap g = hit_gap(s, s.hits[i], halo, &a);
+      const int64_t over = (other & 1) ? g.hi - kOne : -g.lo;  // past m's joined end
+      if (over <= 0) continue;
+      const int64_t dt = carried(over, a, c);
+      gaps[n++] = end ? Gap{kOne - dt, kOne} : Gap{0, dt};
+      ++st.carried;
+    }
+  }
+  return n;
+}
+
+// The largest second-difference coordinate of a curve's control points (0 for a segment).
+int64_t second_difference(const Ctl& c) {
+  if (c.straight) return 0;
+  int64_t most = 0;
+  for (int i = 0; i < 2; ++i) {
+    const int64_t dx = abs64(c.x[i] - 2 * c.x[i + 1] + c.x[i + 2]);
+    const int64_t dy = abs64(c.y[i] - 2 * c.y[i + 1] + c.y[i + 2]);
+    most = dx > most ? dx : most;
+    most = dy > most ? dy : most;
+  }
+  return most;
+}
+
+// One visible interval: to the interval sink, then as n equal chords (curve_draw.h).
+Status emit_visible(const Ctl& c, uint32_t k, uint64_t t0, uint64_t t1, uint64_t root,
+                    SpanSink chords, const CurveIntervalSink* intervals, CurveDrawStats& st) {
+  ++st.intervals;
+  if (intervals != nullptr) {
+    const Status s = intervals->emit(intervals->context, CurveInterval{k, t0, t1});
+    if (!ok(s)) return s;
+  }
+  const uint64_t w = t1 - t0;
+  uint64_t n = (w * root + static_cast<uint64_t>(kOne) - 1) >> kQ;
+  if (n == 0) n = 1;
+  int64_t x, y;
+  point_at(c, t0, &x, &y);
+  Span span{k, static_cast<int64_t>(t0), 0, round_unit(x), round_unit(y), 0, 0};
+  for (uint64_t j = 1; j <= n; ++j) {
+    const uint64_t t = t0 + w * j / n;
+    point_at(c, t, &x, &y);
+    span.t1 = static_cast<int64_t>(t);
+    span.x1 = round_unit(x);
+    span.y1 = round_unit(y);
+    ++st.chords;
+    const Status s = chords.emit(chords.context, span);
+    if (!ok(s)) return s;
+    span.t0 = span.t1;
+    span.x0 = span.x1;
+    span.y0 = span.y1;
+  }
+  return Status::kOk;
+}
+
+// D2.4-D2.5 on one edge: the gaps sorted along it, the uncovered parts emitted.
+Status draw_edge(const Scene& s, uint32_t k, Gap* gaps, uint32_t n, const CurveDrawParams& params,
+                 SpanSink chords, const CurveIntervalSink* intervals, CurveDrawStats& st) {
+  const Ctl c = s.edge(k);
+  const uint64_t k3 = static_cast<uint64_t>(3 * 64 * second_difference(c)) / params.chord_tol_q8;
+  const uint64_t root = c.straight ? 0 : uint64_t{isqrt_u64(k3)} + 1;
+  for (uint32_t i = 0; i < n; ++i) {
+    if (gaps[i].lo < 0) gaps[i].lo = 0;
+    if (gaps[i].hi > kOne) gaps[i].hi = kOne;
+  }
+  sort_in_place(gaps, n, [](const Gap& a, const Gap& b) { return a.lo < b.lo; });
+  int64_t cursor = 0;
+  bool drew = false;
+  for (uint32_t i = 0; i <= n; ++i) {
+    const int64_t until = i < n ? gaps[i].lo : kOne;
+    if (until > cursor) {
+      const Status r = emit_visible(c, k, static_cast<uint64_t>(cursor),
+                                    static_cast<uint64_t>(until), root, chords, intervals, st);
+      if (!ok(r)) return r;
+      drew = true;
+    }
+    if (i < n && gaps[i].hi > cursor) cursor = gaps[i].hi;
+  }
+  if (!drew) ++st.hidden;
+  return Status::kOk;
+}
+
+template <typename Carve>
+void carve(Carve& c, uint32_t edges, uint32_t most_hits, uint32_t** order, uint32_t** link,
+           Gap** gaps) {
+  *order = c.template take<uint32_t>(size_t{2} * edges);
+  *link = c.template take<uint32_t>(size_t{2} * edges);
+  *gaps = c.template take<Gap>(size_t{3} * most_hits);
+}
+
+}  // namespace
+
+Status plan_curve_draw(const BezierEdge3* curves, uint32_t n_curves, const Edge3* segments,
+                       uint32_t n_segments, const CurveHit* hits, uint32_t n_hits,
+                       const CurveDrawParams& params, CurveDrawPlan* plan) {
+  *plan = CurveDrawPlan();
+  if (params.halo < 0 || params.halo > kCoordMax || params.chord_tol_q8 == 0 ||
+      params.chord_tol_q8 > (uint32_t{1} << 16))
+    return Status::kBadParameter;
+  if (uint64_t{n_curves} + n_segments > kMaxCurveCount) return Status::kTooManyEdges;
+  for (uint32_t i = 0; i < n_curves; ++i)
+    if (!in_range(curves[i])) return Status::kCoordinateOutOfRange;
+  for (uint32_t i = 0; i < n_segments; ++i)
+    if (!in_range(segments[i])) return Status::kCoordinateOutOfRange;
+  const uint32_t n = n_curves + n_segments;
+  uint32_t run = 0;
+  for (uint32_t i = 0; i < n_hits; ++i) {
+    const CurveHit& h = hits[i];
+    // Hits must be run_curve_cross()'s: on these edges, sorted by curve.
+    if (h.curve >= n || h.other >= n || h.t > kCurveParamOne || h.other_t > kCurveParamOne ||
+        h.t_err > kCurveParamOne || (i > 0 && hits[i - 1].curve > h.curve))
+      return Status::kBadParameter;
+    run = (i > 0 && hits[i - 1].curve == h.curve) ? run + 1 : 1;
+    if (run > plan->most_hits) plan->most_hits = run;
+  }
+  plan->n_curves = n_curves;
+  plan->n_segments = n_segments;
+  plan->n_hits = n_hits;
+  plan->params = params;
+  ByteCounter bytes;
+  uint32_t *order, *link;
+  Gap* gaps;
+  carve(bytes, n, plan->most_hits, &order, &link, &gaps);
+  plan->scratch_bytes = bytes.total;
+  return Status::kOk;
+}
+
+Status run_curve_draw(const CurveDrawPlan& plan, const BezierEdge3* curves, const Edge3* segments,
+                      const CurveHit* hits, uint32_t n_hits, void* scratch, size_t scratch_bytes,
+                      SpanSink chords, const CurveIntervalSink* intervals, CurveDrawStats* stats) {
+  CurveDrawStats st;
+  if (buffer_misaligned(scratch)) return Status::kMisalignedBuffer;
+  if (n_hits != plan.n_hits) return Status::kBadParameter;  // not the hits the plan checked
+  const uint32_t n = plan.n_curves + plan.n_segments;
+  Carver carver(scratch, scratch_bytes);
+  uint32_t *order, *link;
+  Gap* gaps;
+  carve(carver, n, plan.most_hits, &order, &link, &gaps);
+  if (carver.short_) return Status::kWorkspaceTooSmall;
+  const Scene s{curves, plan.n_curves, n, segments, hits, n_hits};
+  st.joints = link_joints(s, order, link);
+  for (uint32_t k = 0; k < n; ++k) {
+    const uint32_t g =
+        plan.params.halo > 0 ? collect_gaps(s, k, link, plan.params.halo, gaps, st) : 0;
+    const Status r = draw_edge(s, k, gaps, g, plan.params, chords, intervals, st);
+    if (!ok(r)) return r;
+  }
+  if (stats != nullptr) *stats = st;
+  return Status::kOk;
+}
+
+}  // namespace haloplot

@@ -1,0 +1,93 @@
+// DRAW for curved edges (the HALO paper's DRAW, D2.1-D2.5, on cubic Bézier edges and the
+// straight edges among them): from the crossings run_curve_cross() found, a halo gap wherever
+// an edge passes behind another, the visible parameter intervals of every edge, and each
+// interval flattened into chords for the plotter.
+//
+// The gap. At a crossing where edge A (at t) passes behind edge B (at u), the paper's
+// effective half-gap is W / sin(theta) of arc length along A, theta the angle between the
+// tangents A'(t) and B'(u). In A's parameter, at the local speed |A'(t)|, that is
+//     dt = W / (|A'(t)| sin theta) = W |B'(u)| / |cross(A'(t), B'(u))|,
+// the straight DRAW's formula with the tangents for the edge directions. The gap is
+// [t - t_err - dt, t + t_err + dt] (t_err: the crossing's parameter bound), rounded outward.
+//
+// Arc-length bound (docs/curves.md): the speed changes by at most |A''| <= 6 D per unit of
+// parameter (D: the largest length of a second difference of A's control points, in x, y), so
+// each half of the gap has an arc length within 3 D h^2 of W / sin theta plus the shift that
+// t_err allows (|A'| t_err at most), h the half-gap's parameter width; the tangents' 30-bit
+// rounding adds a relative 2^-26 / sin(theta) (for tangents of at least 1/4 unit per unit of
+// parameter). A half-gap that runs past a joint continues on the next edge
+// (below) with that edge's speed at the joint, each edge adding its own 3 D h^2.
+//
+// Joints. Where exactly two edge ends meet at the same 3-D point and the chain goes on there
+// (the tangents on either side point the same way within 45 degrees), the edges are one line
+// for the halos: a gap running off one edge's end continues on the other for the arc length
+// left, so a knot's halos do not stop at the joints of its fit. It reaches one joint: a gap
+// longer than the whole next edge stops at that edge's far end. Elsewhere a gap is clipped at
+// the edge's end, as in the straight DRAW.
+//
+// Chords. A visible interval of width w (in t) on a curve is cut into n equal chords with
+// n = ceil(w sqrt(3 D_c / (4 tol))), D_c the largest second-difference coordinate, so each
+// chord lies within tol of its piece of curve, coordinate by coordinate (the flatness bound of
+// curve/bezier.h, which scales with h^2 on a sub-interval of width h); the chord ends are the
+// curve's points rounded to the nearest unit (within 1/2 unit, coordinate by coordinate). A
+// straight edge's visible interval is one chord, its ends rounded as the straight DRAW rounds.
+//
+// Edges are numbered as in run_curve_cross(): the curves, then the segments. The hits must be
+// run_curve_cross()'s, sorted by curve. No heap: plan_curve_draw() says how much scratch
+// run_curve_draw() needs (the joints' table and one edge's gaps).
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+
+#include "curve/curve_cross.h"
+#include "draw/draw.h"
+
+namespace haloplot {
+
+struct CurveDrawParams {
+  int32_t halo = 0;            // W, in the edges' units, [0, 2^20); 0 draws every edge whole
+  uint32_t chord_tol_q8 = 64;  // chord tolerance in 1/256 units, [1, 2^16]; default 1/4
+};
+
+// A visible piece of an edge as a parameter interval, Q0.32 (kCurveParamOne is t = 1).
+struct CurveInterval {
+  uint32_t curve;
+  uint64_t t0, t1;
+};
+struct CurveIntervalSink {
+  Status (*emit)(void* context, const CurveInterval& interval);
+  void* context;
+};
+
+struct CurveDrawPlan {
+  uint32_t n_curves = 0, n_segments = 0;
+  uint32_t n_hits = 0;
+  uint32_t most_hits = 0;  // the most hits on one edge
+  size_t scratch_bytes = 0;
+  CurveDrawParams params;
+};
+
+struct CurveDrawStats {
+  uint64_t gaps = 0;       // halo gaps cut (crossings where an edge is behind)
+  uint64_t carried = 0;    // gaps continued across a joint
+  uint64_t undecided = 0;  // crossings whose front could not be called: no gap
+  uint64_t intervals = 0;  // visible intervals
+  uint64_t chords = 0;     // chords emitted
+  uint64_t hidden = 0;     // edges the halos removed entirely
+  uint32_t joints = 0;     // joints where halos carry on
+};
+
+// Check the input (hits sorted by curve, indices in range, params in range) and size the
+// scratch.
+Status plan_curve_draw(const BezierEdge3* curves, uint32_t n_curves, const Edge3* segments,
+                       uint32_t n_segments, const CurveHit* hits, uint32_t n_hits,
+                       const CurveDrawParams& params, CurveDrawPlan* plan);
+
+// The visible intervals (to `intervals`, if given) and their chords (to `chords`, as Spans:
+// edge = the edge's number, t0 and t1 the chord's parameters, the ends in units), edge by
+// edge and along each edge. A sink's status other than kOk stops the run with it.
+Status run_curve_draw(const CurveDrawPlan& plan, const BezierEdge3* curves, const Edge3* segments,
+                      const CurveHit* hits, uint32_t n_hits, void* scratch, size_t scratch_bytes,
+                      SpanSink chords, const CurveIntervalSink* intervals, CurveDrawStats* stats);
+
+}  // namespace haloplot

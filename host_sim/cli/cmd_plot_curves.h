@@ -1,0 +1,31 @@
+// plot and sim of a scene with Bézier edges (docs/curves.md): the curve stages of the core
+// (curve/curve_cross.h, curve/curve_draw.h) instead of CUT and DRAW; the drawing's chords are
+// then planned as any drawing's strokes. A scene without Bézier records never comes here: the
+// straight-edge path is unchanged.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "cli/options.h"
+#include "geometry/contract.h"
+#include "job/job.h"
+
+namespace haloplot::host {
+
+// True when `path` is an .edges file with a line starting with the word 'bezier'; anything else
+// (a model, a file that does not open) is left to the straight path.
+bool edges_file_has_curves(const std::string& path);
+
+// `plot SCENE.edges --halo W ...` of a scene with curves: SVG, --spans, --gcode, --hpgl.
+int cmd_plot_curves(const Options& o);
+
+// `demo-scene --curve trefoil|torus-P-Q|helix [--edges N] -o SCENE.edges`: the demo curve
+// scenes (demo/curve_scenes.h) as an .edges file with 'bezier' records, sized for an A4 page.
+int cmd_demo_curve(const Options& o);
+
+// The haloed chords of a job's curve scene, in the scene's units (*substep_bits), for `sim`
+// to plan as a drawing of whole edges. False with *error saying what is wrong.
+bool curve_job_edges(const std::string& scene_path, const JobSpec& spec, uint32_t arena,
+                     std::vector<Edge3>* edges, int32_t* substep_bits, std::string* error);
+
+}  // namespace haloplot::host

@@ -1,0 +1,26 @@
+// The core's curve stages on the host (core/curve/): the crossings of a scene with Bézier
+// edges (run_curve_cross, segment pairs included: no CUT runs on such a scene), then the curve
+// DRAW (run_curve_draw): haloed visible intervals flattened into chords. Buffers sized by the
+// plans; the hit array grows to the count the core asks for.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "curve/curve_draw.h"
+
+namespace haloplot::host {
+
+struct HostCurveDraw {
+  std::vector<CurveHit> hits;
+  std::vector<CurveInterval> intervals;  // edges numbered curves first, then segments
+  std::vector<Span> chords;              // the same numbering, ends in the scene's units
+  CurveCrossStats cross_stats;
+  CurveDrawStats stats;
+  size_t cross_scratch_bytes = 0, draw_scratch_bytes = 0;
+  double cross_ms = 0, draw_ms = 0;
+};
+
+Status host_curve_draw(const std::vector<BezierEdge3>& curves, const std::vector<Edge3>& segments,
+                       const CurveDrawParams& params, HostCurveDraw* out);
+
+}  // namespace haloplot::host

@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# plot and sim of a scene with Bézier edges (docs/cli.md, "Scenes with curved edges"): the
+# demo trefoil haloed, its SVG's strokes the G-code's pen-down runs point for point, one stroke
+# per gap (a closed knot with 3 crossings and W small against the crossings' distance: 3 gaps,
+# 3 strokes), sim of the same job the same G-code bytes; the options a curve scene cannot take
+# refused by name with nothing written; a scene without curves still plots through CUT.
+set -u
+tool="$1"
+src="$2"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+pass=0 fail=0
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAILED: $*" >&2; }
+expect() { if eval "$1"; then ok; else bad "$2"; fi; }
+check="python3 $src/tests/cli/svg_page_check.py"
+
+cd "$work"
+"$tool" demo-scene --curve trefoil -o trefoil.edges || bad "demo-scene --curve trefoil"
+expect '[ "$(grep -c ^bezier trefoil.edges)" = 24 ]' "the demo trefoil has 24 bezier records"
+"$tool" plot trefoil.edges --halo 80 -o t.svg --spans t.spans --gcode t.gcode --hpgl t.hpgl \
+  --stats 2> t.txt || bad "plot trefoil.edges: $(cat t.txt)"
+expect 'grep -q "^crossings=3$" t.txt && grep -q "^gaps=3$" t.txt' "3 crossings, 3 gaps"
+expect '[ "$($check count t.svg)" = 3 ]' "3 strokes in the SVG (a closed knot with 3 gaps)"
+expect '$check gcode t.svg t.gcode > /dev/null' "the SVG's strokes are the G-code's runs"
+expect '$check hpgl t.svg t.hpgl > /dev/null' "the SVG's strokes are the HPGL's runs"
+expect '[ "$(grep -c "^s " t.spans)" = "$(sed -n "s/^chords=//p" t.txt)" ]' "a spans line a chord"
+# The same drawing as a job: sim plots the chords whole and writes the same G-code.
+printf 'scene trefoil.edges\ndrawing haloed\nhalo 80\nhalo-mode paper\n' > t.job
+"$tool" sim t.job -o t.trace --gcode s.gcode 2> sim.txt || bad "sim t.job: $(cat sim.txt)"
+expect 'cmp -s t.gcode s.gcode' "sim of the job writes plot's G-code"
+# A wider halo leaves less ink; halo 0 draws the knot whole: one closed stroke.
+"$tool" plot trefoil.edges --halo 0 -o w.svg --stats 2> w.txt || bad "plot --halo 0"
+expect '[ "$($check count w.svg)" = 1 ] && grep -q "^gaps=0$" w.txt' "halo 0: one stroke, no gap"
+# Refused by name, nothing written.
+for opt in "--exact-halo" "--cell 100" "--arena 65536" "--cut x.cut" "--reach 4" "--view 10,20" \
+  "--substep 3"; do
+  # shellcheck disable=SC2086
+  if "$tool" plot trefoil.edges --halo 80 $opt -o r.svg 2> r.txt; then
+    bad "plot of a curve scene with $opt succeeded"
+  else
+    expect 'grep -q -- "${opt%% *}" r.txt && [ ! -e r.svg ]' "$opt refused by name, no output"
+  fi
+done
+printf 'scene trefoil.edges\ndrawing haloed\nhalo 80\nhalo-mode exact\n' > e.job
+expect '! "$tool" sim e.job -o e.trace 2> /dev/null && [ ! -e e.trace ]' "sim refuses the exact halo"
+expect '! "$tool" cut trefoil.edges -o t.cut 2> c.txt && grep -q "straight edges only" c.txt' \
+  "cut still refuses bezier records"
+# Other demo curves and bad names.
+"$tool" demo-scene --curve helix -o helix.edges && "$tool" plot helix.edges --halo 40 -o h.svg \
+  --stats 2> h.txt || bad "helix"
+expect 'grep -q "^crossings=11$" h.txt && grep -q "^gaps=11$" h.txt' "helix: 11 crossings, 11 gaps"
+expect '! "$tool" demo-scene --curve torus-2 -o x.edges 2> /dev/null && [ ! -e x.edges ]' \
+  "--curve torus-2 refused"
+# A straight scene still goes through CUT and DRAW.
+"$tool" demo-scene --cubes 3 -o cubes.edges
+"$tool" plot cubes.edges --halo 10 -o c.svg --stats 2> cs.txt || bad "plot cubes.edges"
+expect 'grep -q "^cut_ms=" cs.txt && ! grep -q "^curve_pieces=" cs.txt' "straight scene: CUT ran"
+
+echo "curve_plot: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]
