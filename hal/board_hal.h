@@ -12,13 +12,13 @@
 // step HAL, plotter_hal.h, wraps these for the step tick). The rest could be virtual at no
 // measurable cost, but one shape for the whole board reads better than two.
 #pragma once
-#include "detect.h"
-#include "limit_switch.h"
-#include "pen.h"
-#include "serial.h"
-#include "step_clock.h"
-#include "stepper_axis.h"
-#include "watchdog.h"
+#include "haloplot/hal/detect.h"
+#include "haloplot/hal/limit_switch.h"
+#include "haloplot/hal/pen.h"
+#include "haloplot/hal/serial.h"
+#include "haloplot/hal/step_clock.h"
+#include "haloplot/hal/stepper_axis.h"
+#include "haloplot/hal/watchdog.h"
 
 namespace haloplot::hal {
 

@@ -7,7 +7,7 @@
 //     void pen(bool down);   // servo pulse width or solenoid pin
 //   };
 #pragma once
-#include "detect.h"
+#include "haloplot/hal/detect.h"
 
 namespace haloplot::hal {
 

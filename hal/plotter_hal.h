@@ -15,9 +15,9 @@
 // What is not on the step path (serial, limit switches, watchdog, the timer) is the board's
 // (board_hal.h), checked the same way.
 #pragma once
-#include "pen.h"
-#include "step_clock.h"
-#include "stepper_axis.h"
+#include "haloplot/hal/pen.h"
+#include "haloplot/hal/step_clock.h"
+#include "haloplot/hal/stepper_axis.h"
 
 namespace haloplot::hal {
 

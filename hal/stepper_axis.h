@@ -11,7 +11,7 @@
 #pragma once
 #include <stdint.h>
 
-#include "detect.h"
+#include "haloplot/hal/detect.h"
 
 namespace haloplot::hal {
 

@@ -6,7 +6,7 @@
 //     static void watchdog_kick();
 //   };
 #pragma once
-#include "detect.h"
+#include "haloplot/hal/detect.h"
 
 namespace haloplot::hal {
 

@@ -3,9 +3,9 @@
 #pragma once
 #include <stdint.h>
 
-#include "band/band_rule.h"
-#include "band/conductor.h"
-#include "solid/mesh.h"
+#include "haloplot/band/band_rule.h"
+#include "haloplot/band/conductor.h"
+#include "haloplot/solid/mesh.h"
 
 namespace haloplot {
 namespace band_detail {

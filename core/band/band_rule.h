@@ -11,11 +11,11 @@
 #pragma once
 #include <stdint.h>
 
-#include "geometry/contract.h"
-#include "geometry/fraction.h"
-#include "geometry/rows.h"
-#include "solid/mesh.h"
-#include "status/status.h"
+#include "haloplot/geometry/contract.h"
+#include "haloplot/geometry/fraction.h"
+#include "haloplot/geometry/rows.h"
+#include "haloplot/solid/mesh.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

@@ -35,14 +35,14 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "band/edge_source.h"
-#include "band/solid_source.h"
-#include "cut/cut.h"
-#include "draw/draw.h"
-#include "motion/path_plan.h"
-#include "solid/modes.h"
-#include "status/status.h"
-#include "surface/hatch.h"
+#include "haloplot/band/edge_source.h"
+#include "haloplot/band/solid_source.h"
+#include "haloplot/cut/cut.h"
+#include "haloplot/draw/draw.h"
+#include "haloplot/motion/path_plan.h"
+#include "haloplot/solid/modes.h"
+#include "haloplot/status/status.h"
+#include "haloplot/surface/hatch.h"
 
 namespace haloplot {
 

@@ -3,12 +3,12 @@
 // they use, runs the topology-free method in its rows only, and keeps the strokes of the
 // pieces it owns; a piece running past the top is carried up with its q. Intersection lines
 // (where its faces cross) are drawn in its rows too, cut at its borders.
-#include "band/band_attempt.h"
-#include "band/conductor.h"
-#include "memory/carve.h"
-#include "memory/sized_stage.h"
-#include "solid/hidden_lines.h"
-#include "sort/in_place_sort.h"
+#include "haloplot/band/band_attempt.h"
+#include "haloplot/band/conductor.h"
+#include "haloplot/memory/carve.h"
+#include "haloplot/memory/sized_stage.h"
+#include "haloplot/solid/hidden_lines.h"
+#include "haloplot/sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

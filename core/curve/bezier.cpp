@@ -1,4 +1,4 @@
-#include "curve/bezier.h"
+#include "haloplot/curve/bezier.h"
 
 namespace haloplot {
 

@@ -24,8 +24,8 @@
 #pragma once
 #include <stdint.h>
 
-#include "geometry/contract.h"
-#include "geometry/wide.h"
+#include "haloplot/geometry/contract.h"
+#include "haloplot/geometry/wide.h"
 
 namespace haloplot {
 

@@ -61,8 +61,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "curve/bezier.h"
-#include "status/status.h"
+#include "haloplot/curve/bezier.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

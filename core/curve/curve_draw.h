@@ -39,8 +39,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "curve/curve_cross.h"
-#include "draw/draw.h"
+#include "haloplot/curve/curve_cross.h"
+#include "haloplot/draw/draw.h"
 
 namespace haloplot {
 

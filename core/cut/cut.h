@@ -11,10 +11,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "cut/cutset.h"
-#include "cut/grid.h"
-#include "memory/sized_stage.h"
-#include "status/status.h"
+#include "haloplot/cut/cutset.h"
+#include "haloplot/cut/grid.h"
+#include "haloplot/memory/sized_stage.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

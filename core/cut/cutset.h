@@ -4,7 +4,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "geometry/contract.h"
+#include "haloplot/geometry/contract.h"
 
 namespace haloplot {
 

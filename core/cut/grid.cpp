@@ -1,6 +1,6 @@
-#include "cut/grid.h"
+#include "haloplot/cut/grid.h"
 
-#include "geometry/wide.h"
+#include "haloplot/geometry/wide.h"
 
 namespace haloplot {
 

@@ -5,8 +5,8 @@
 #pragma once
 #include <stdint.h>
 
-#include "geometry/contract.h"
-#include "geometry/fraction.h"
+#include "haloplot/geometry/contract.h"
+#include "haloplot/geometry/fraction.h"
 
 namespace haloplot {
 

@@ -1,8 +1,8 @@
-#include "cut/near_miss.h"
+#include "haloplot/cut/near_miss.h"
 
-#include "geometry/fraction.h"
-#include "geometry/predicates.h"
-#include "geometry/wide.h"
+#include "haloplot/geometry/fraction.h"
+#include "haloplot/geometry/predicates.h"
+#include "haloplot/geometry/wide.h"
 
 namespace haloplot {
 namespace {

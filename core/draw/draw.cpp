@@ -1,7 +1,7 @@
-#include "draw/draw.h"
+#include "haloplot/draw/draw.h"
 
-#include "geometry/fraction.h"
-#include "sort/in_place_sort.h"
+#include "haloplot/geometry/fraction.h"
+#include "haloplot/sort/in_place_sort.h"
 
 namespace haloplot {
 

@@ -4,10 +4,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "cut/cutset.h"
-#include "draw/halo.h"
-#include "draw/precision.h"
-#include "status/status.h"
+#include "haloplot/cut/cutset.h"
+#include "haloplot/draw/halo.h"
+#include "haloplot/draw/precision.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

@@ -15,8 +15,8 @@
 #pragma once
 #include <stdint.h>
 
-#include "draw/precision.h"
-#include "geometry/contract.h"
+#include "haloplot/draw/precision.h"
+#include "haloplot/geometry/contract.h"
 
 namespace haloplot {
 

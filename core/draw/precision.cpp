@@ -1,6 +1,6 @@
-#include "draw/precision.h"
+#include "haloplot/draw/precision.h"
 
-#include "geometry/wide.h"
+#include "haloplot/geometry/wide.h"
 
 namespace haloplot {
 namespace {

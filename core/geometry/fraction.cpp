@@ -1,6 +1,6 @@
-#include "geometry/fraction.h"
+#include "haloplot/geometry/fraction.h"
 
-#include "geometry/wide.h"
+#include "haloplot/geometry/wide.h"
 
 namespace haloplot {
 

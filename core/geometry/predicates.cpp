@@ -1,6 +1,6 @@
-#include "geometry/predicates.h"
+#include "haloplot/geometry/predicates.h"
 
-#include "geometry/fraction.h"
+#include "haloplot/geometry/fraction.h"
 
 namespace haloplot {
 

@@ -1,8 +1,8 @@
-#include "job/job.h"
+#include "haloplot/job/job.h"
 
-#include "geometry/units.h"
-#include "memory/carve.h"
-#include "solid/modes.h"
+#include "haloplot/geometry/units.h"
+#include "haloplot/memory/carve.h"
+#include "haloplot/solid/modes.h"
 
 namespace haloplot {
 namespace {

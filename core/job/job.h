@@ -6,14 +6,14 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "band/conductor.h"
-#include "cut/cut.h"
-#include "draw/draw.h"
-#include "motion/machine.h"
-#include "motion/path_plan.h"
-#include "motion/planner.h"
-#include "solid/hidden_lines.h"
-#include "status/status.h"
+#include "haloplot/band/conductor.h"
+#include "haloplot/cut/cut.h"
+#include "haloplot/draw/draw.h"
+#include "haloplot/motion/machine.h"
+#include "haloplot/motion/path_plan.h"
+#include "haloplot/motion/planner.h"
+#include "haloplot/solid/hidden_lines.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

@@ -1,6 +1,6 @@
-#include "motion/machine.h"
+#include "haloplot/motion/machine.h"
 
-#include "geometry/fraction.h"
+#include "haloplot/geometry/fraction.h"
 
 namespace haloplot {
 namespace {

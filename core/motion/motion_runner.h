@@ -29,13 +29,13 @@
 #pragma once
 #include <stdint.h>
 
-#include "board_hal.h"
-#include "job/job.h"
-#include "motion/planner.h"
-#include "motion/step_engine.h"
-#include "motion/step_prep.h"
-#include "motion/virtual_run.h"
-#include "protocol/job_server.h"
+#include "haloplot/hal/board_hal.h"
+#include "haloplot/job/job.h"
+#include "haloplot/motion/planner.h"
+#include "haloplot/motion/step_engine.h"
+#include "haloplot/motion/step_prep.h"
+#include "haloplot/motion/virtual_run.h"
+#include "haloplot/protocol/job_server.h"
 
 namespace haloplot {
 

@@ -1,9 +1,9 @@
-#include "motion/path_plan.h"
+#include "haloplot/motion/path_plan.h"
 
-#include "geometry/units.h"
-#include "geometry/wide.h"
-#include "memory/carve.h"
-#include "sort/in_place_sort.h"
+#include "haloplot/geometry/units.h"
+#include "haloplot/geometry/wide.h"
+#include "haloplot/memory/carve.h"
+#include "haloplot/sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

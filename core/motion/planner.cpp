@@ -1,6 +1,6 @@
-#include "motion/planner.h"
+#include "haloplot/motion/planner.h"
 
-#include "geometry/wide.h"
+#include "haloplot/geometry/wide.h"
 
 namespace haloplot {
 namespace {

@@ -15,9 +15,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "motion/machine.h"
-#include "motion/path_plan.h"
-#include "status/status.h"
+#include "haloplot/motion/machine.h"
+#include "haloplot/motion/path_plan.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

@@ -13,8 +13,8 @@
 #pragma once
 #include <stdint.h>
 
-#include "motion/step_segment.h"
-#include "plotter_hal.h"
+#include "haloplot/hal/plotter_hal.h"
+#include "haloplot/motion/step_segment.h"
 
 namespace haloplot {
 

@@ -14,10 +14,10 @@
 #pragma once
 #include <stdint.h>
 
-#include "motion/machine.h"
-#include "motion/planner.h"
-#include "motion/step_segment.h"
-#include "status/status.h"
+#include "haloplot/motion/machine.h"
+#include "haloplot/motion/planner.h"
+#include "haloplot/motion/step_segment.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

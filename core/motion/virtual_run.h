@@ -8,10 +8,10 @@
 #pragma once
 #include <stdint.h>
 
-#include "motion/planner.h"
-#include "motion/step_engine.h"
-#include "motion/step_prep.h"
-#include "step_clock.h"
+#include "haloplot/hal/step_clock.h"
+#include "haloplot/motion/planner.h"
+#include "haloplot/motion/step_engine.h"
+#include "haloplot/motion/step_prep.h"
 
 namespace haloplot {
 

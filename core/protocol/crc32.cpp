@@ -1,4 +1,4 @@
-#include "protocol/crc32.h"
+#include "haloplot/protocol/crc32.h"
 
 namespace haloplot {
 namespace {

@@ -1,6 +1,6 @@
-#include "protocol/frame.h"
+#include "haloplot/protocol/frame.h"
 
-#include "protocol/crc32.h"
+#include "haloplot/protocol/crc32.h"
 
 namespace haloplot {
 

@@ -1,8 +1,8 @@
-#include "protocol/job_server.h"
+#include "haloplot/protocol/job_server.h"
 
-#include "geometry/units.h"
-#include "memory/carve.h"
-#include "view/facing.h"
+#include "haloplot/geometry/units.h"
+#include "haloplot/memory/carve.h"
+#include "haloplot/view/facing.h"
 
 namespace haloplot {
 namespace {

@@ -28,11 +28,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "band/conductor.h"
-#include "job/job.h"
-#include "protocol/frame.h"
-#include "protocol/messages.h"
-#include "view/projection.h"
+#include "haloplot/band/conductor.h"
+#include "haloplot/job/job.h"
+#include "haloplot/protocol/frame.h"
+#include "haloplot/protocol/messages.h"
+#include "haloplot/view/projection.h"
 
 namespace haloplot {
 

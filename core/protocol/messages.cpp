@@ -1,6 +1,6 @@
-#include "protocol/messages.h"
+#include "haloplot/protocol/messages.h"
 
-#include "geometry/contract.h"
+#include "haloplot/geometry/contract.h"
 
 namespace haloplot {
 

@@ -40,9 +40,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "job/job.h"
-#include "status/status.h"
-#include "view/projection.h"
+#include "haloplot/job/job.h"
+#include "haloplot/status/status.h"
+#include "haloplot/view/projection.h"
 
 namespace haloplot {
 

@@ -1,4 +1,4 @@
-#include "scene/cube_array.h"
+#include "haloplot/scene/cube_array.h"
 
 namespace haloplot {
 namespace {

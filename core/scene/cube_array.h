@@ -9,8 +9,8 @@
 #pragma once
 #include <stdint.h>
 
-#include "geometry/contract.h"
-#include "status/status.h"
+#include "haloplot/geometry/contract.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

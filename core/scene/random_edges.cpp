@@ -1,4 +1,4 @@
-#include "scene/random_edges.h"
+#include "haloplot/scene/random_edges.h"
 
 namespace haloplot {
 

@@ -1,7 +1,7 @@
-#include "solid/classify.h"
+#include "haloplot/solid/classify.h"
 
-#include "geometry/wide.h"
-#include "solid/cover.h"
+#include "haloplot/geometry/wide.h"
+#include "haloplot/solid/cover.h"
 
 namespace haloplot {
 namespace {

@@ -4,7 +4,7 @@
 #pragma once
 #include <stdint.h>
 
-#include "solid/topology.h"
+#include "haloplot/solid/topology.h"
 
 namespace haloplot {
 

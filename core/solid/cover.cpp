@@ -1,4 +1,4 @@
-#include "solid/cover.h"
+#include "haloplot/solid/cover.h"
 
 namespace haloplot {
 namespace {

@@ -1,8 +1,8 @@
-#include "solid/face_crossing.h"
+#include "haloplot/solid/face_crossing.h"
 
-#include "geometry/fraction.h"
-#include "geometry/wide.h"
-#include "solid/pierce.h"
+#include "haloplot/geometry/fraction.h"
+#include "haloplot/geometry/wide.h"
+#include "haloplot/solid/pierce.h"
 
 namespace haloplot {
 namespace {

@@ -16,7 +16,7 @@
 #pragma once
 #include <stdint.h>
 
-#include "geometry/contract.h"
+#include "haloplot/geometry/contract.h"
 
 namespace haloplot {
 

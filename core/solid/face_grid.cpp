@@ -1,7 +1,7 @@
-#include "solid/face_grid.h"
+#include "haloplot/solid/face_grid.h"
 
-#include "geometry/wide.h"
-#include "memory/carve.h"
+#include "haloplot/geometry/wide.h"
+#include "haloplot/memory/carve.h"
 
 namespace haloplot {
 namespace {

@@ -5,9 +5,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "cut/grid.h"
-#include "solid/topology.h"
-#include "status/status.h"
+#include "haloplot/cut/grid.h"
+#include "haloplot/solid/topology.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

@@ -1,16 +1,16 @@
-#include "solid/fallback.h"
+#include "haloplot/solid/fallback.h"
 
-#include "geometry/fraction.h"
-#include "geometry/predicates.h"
-#include "geometry/rows.h"
-#include "geometry/wide.h"
-#include "memory/carve.h"
-#include "solid/classify.h"
-#include "solid/cover.h"
-#include "solid/face_grid.h"
-#include "solid/pierce.h"
-#include "solid/qi.h"
-#include "sort/in_place_sort.h"
+#include "haloplot/geometry/fraction.h"
+#include "haloplot/geometry/predicates.h"
+#include "haloplot/geometry/rows.h"
+#include "haloplot/geometry/wide.h"
+#include "haloplot/memory/carve.h"
+#include "haloplot/solid/classify.h"
+#include "haloplot/solid/cover.h"
+#include "haloplot/solid/face_grid.h"
+#include "haloplot/solid/pierce.h"
+#include "haloplot/solid/qi.h"
+#include "haloplot/sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

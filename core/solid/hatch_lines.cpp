@@ -1,7 +1,7 @@
-#include "solid/hatch_lines.h"
+#include "haloplot/solid/hatch_lines.h"
 
-#include "geometry/fraction.h"
-#include "solid/cover.h"
+#include "haloplot/geometry/fraction.h"
+#include "haloplot/solid/cover.h"
 
 namespace haloplot {
 namespace {

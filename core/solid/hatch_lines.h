@@ -15,8 +15,8 @@
 #pragma once
 #include <stdint.h>
 
-#include "solid/hatch_pattern.h"
-#include "solid/segment_pass.h"
+#include "haloplot/solid/hatch_pattern.h"
+#include "haloplot/solid/segment_pass.h"
 
 namespace haloplot {
 

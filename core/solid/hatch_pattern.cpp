@@ -1,4 +1,4 @@
-#include "solid/hatch_pattern.h"
+#include "haloplot/solid/hatch_pattern.h"
 
 namespace haloplot {
 

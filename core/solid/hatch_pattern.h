@@ -4,8 +4,8 @@
 #pragma once
 #include <stdint.h>
 
-#include "solid/mesh.h"
-#include "view/trig.h"
+#include "haloplot/solid/mesh.h"
+#include "haloplot/view/trig.h"
 
 namespace haloplot {
 

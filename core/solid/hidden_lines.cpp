@@ -1,7 +1,7 @@
-#include "solid/hidden_lines.h"
+#include "haloplot/solid/hidden_lines.h"
 
-#include "memory/carve.h"
-#include "solid/incidence.h"
+#include "haloplot/memory/carve.h"
+#include "haloplot/solid/incidence.h"
 
 namespace haloplot {
 namespace {

@@ -14,14 +14,14 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "cut/cut.h"
-#include "solid/classify.h"
-#include "solid/fallback.h"
-#include "solid/hatch_lines.h"
-#include "solid/intersection_lines.h"
-#include "solid/outline.h"
-#include "solid/qi.h"
-#include "status/status.h"
+#include "haloplot/cut/cut.h"
+#include "haloplot/solid/classify.h"
+#include "haloplot/solid/fallback.h"
+#include "haloplot/solid/hatch_lines.h"
+#include "haloplot/solid/intersection_lines.h"
+#include "haloplot/solid/outline.h"
+#include "haloplot/solid/qi.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

@@ -1,9 +1,9 @@
-#include "solid/incidence.h"
+#include "haloplot/solid/incidence.h"
 
-#include "cut/grid.h"
-#include "geometry/wide.h"
-#include "memory/carve.h"
-#include "sort/in_place_sort.h"
+#include "haloplot/cut/grid.h"
+#include "haloplot/geometry/wide.h"
+#include "haloplot/memory/carve.h"
+#include "haloplot/sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

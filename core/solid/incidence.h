@@ -10,8 +10,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "solid/topology.h"
-#include "status/status.h"
+#include "haloplot/solid/topology.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

@@ -1,6 +1,6 @@
-#include "solid/intersection_lines.h"
+#include "haloplot/solid/intersection_lines.h"
 
-#include "solid/face_crossing.h"
+#include "haloplot/solid/face_crossing.h"
 
 namespace haloplot {
 namespace {

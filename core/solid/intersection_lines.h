@@ -12,7 +12,7 @@
 #pragma once
 #include <stdint.h>
 
-#include "solid/segment_pass.h"
+#include "haloplot/solid/segment_pass.h"
 
 namespace haloplot {
 

@@ -1,6 +1,6 @@
-#include "solid/modes.h"
+#include "haloplot/solid/modes.h"
 
-#include "geometry/wide.h"
+#include "haloplot/geometry/wide.h"
 
 namespace haloplot {
 

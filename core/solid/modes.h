@@ -11,8 +11,8 @@
 #pragma once
 #include <stdint.h>
 
-#include "draw/draw.h"
-#include "status/status.h"
+#include "haloplot/draw/draw.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

@@ -1,12 +1,12 @@
-#include "solid/outline.h"
+#include "haloplot/solid/outline.h"
 
-#include "geometry/fraction.h"
-#include "geometry/predicates.h"
-#include "memory/carve.h"
-#include "solid/classify.h"
-#include "solid/cover.h"
-#include "solid/face_grid.h"
-#include "sort/in_place_sort.h"
+#include "haloplot/geometry/fraction.h"
+#include "haloplot/geometry/predicates.h"
+#include "haloplot/memory/carve.h"
+#include "haloplot/solid/classify.h"
+#include "haloplot/solid/cover.h"
+#include "haloplot/solid/face_grid.h"
+#include "haloplot/sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

@@ -1,8 +1,8 @@
-#include "solid/pierce.h"
+#include "haloplot/solid/pierce.h"
 
-#include "cut/grid.h"
-#include "geometry/contract.h"
-#include "geometry/wide.h"
+#include "haloplot/cut/grid.h"
+#include "haloplot/geometry/contract.h"
+#include "haloplot/geometry/wide.h"
 
 namespace haloplot {
 namespace {

@@ -20,8 +20,8 @@
 #pragma once
 #include <stdint.h>
 
-#include "solid/face_grid.h"
-#include "solid/topology.h"
+#include "haloplot/solid/face_grid.h"
+#include "haloplot/solid/topology.h"
 
 namespace haloplot {
 

@@ -1,9 +1,9 @@
-#include "solid/qi.h"
+#include "haloplot/solid/qi.h"
 
-#include "memory/carve.h"
-#include "solid/classify.h"
-#include "solid/cover.h"
-#include "solid/face_grid.h"
+#include "haloplot/memory/carve.h"
+#include "haloplot/solid/classify.h"
+#include "haloplot/solid/cover.h"
+#include "haloplot/solid/face_grid.h"
 
 namespace haloplot {
 namespace {

@@ -21,11 +21,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "cut/cutset.h"
-#include "solid/face_grid.h"
-#include "solid/incidence.h"
-#include "solid/topology.h"
-#include "status/status.h"
+#include "haloplot/cut/cutset.h"
+#include "haloplot/solid/face_grid.h"
+#include "haloplot/solid/incidence.h"
+#include "haloplot/solid/topology.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

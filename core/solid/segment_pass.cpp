@@ -1,11 +1,11 @@
-#include "solid/segment_pass.h"
+#include "haloplot/solid/segment_pass.h"
 
-#include "geometry/fraction.h"
-#include "geometry/predicates.h"
-#include "geometry/rows.h"
-#include "geometry/wide.h"
-#include "solid/cover.h"
-#include "solid/pierce.h"
+#include "haloplot/geometry/fraction.h"
+#include "haloplot/geometry/predicates.h"
+#include "haloplot/geometry/rows.h"
+#include "haloplot/geometry/wide.h"
+#include "haloplot/solid/cover.h"
+#include "haloplot/solid/pierce.h"
 
 namespace haloplot {
 namespace {

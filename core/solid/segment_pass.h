@@ -8,10 +8,10 @@
 #pragma once
 #include <stdint.h>
 
-#include "cut/grid.h"
-#include "solid/face_grid.h"
-#include "solid/topology.h"
-#include "status/status.h"
+#include "haloplot/cut/grid.h"
+#include "haloplot/solid/face_grid.h"
+#include "haloplot/solid/topology.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

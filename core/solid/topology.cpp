@@ -1,7 +1,7 @@
-#include "solid/topology.h"
+#include "haloplot/solid/topology.h"
 
-#include "memory/carve.h"
-#include "sort/in_place_sort.h"
+#include "haloplot/memory/carve.h"
+#include "haloplot/sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

@@ -9,8 +9,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "solid/mesh.h"
-#include "status/status.h"
+#include "haloplot/solid/mesh.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

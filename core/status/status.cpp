@@ -1,4 +1,4 @@
-#include "status/status.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

@@ -1,12 +1,12 @@
-#include "surface/franklin.h"
+#include "haloplot/surface/franklin.h"
 
-#include "geometry/fraction.h"
-#include "geometry/predicates.h"
-#include "geometry/wide.h"
-#include "memory/carve.h"
-#include "solid/cover.h"
-#include "solid/incidence.h"
-#include "sort/in_place_sort.h"
+#include "haloplot/geometry/fraction.h"
+#include "haloplot/geometry/predicates.h"
+#include "haloplot/geometry/wide.h"
+#include "haloplot/memory/carve.h"
+#include "haloplot/solid/cover.h"
+#include "haloplot/solid/incidence.h"
+#include "haloplot/sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

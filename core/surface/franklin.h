@@ -22,10 +22,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "cut/grid.h"
-#include "memory/sized_stage.h"
-#include "solid/mesh.h"
-#include "status/status.h"
+#include "haloplot/cut/grid.h"
+#include "haloplot/memory/sized_stage.h"
+#include "haloplot/solid/mesh.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

@@ -12,9 +12,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "solid/hatch_pattern.h"
-#include "solid/mesh.h"
-#include "status/status.h"
+#include "haloplot/solid/hatch_pattern.h"
+#include "haloplot/solid/mesh.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

@@ -1,6 +1,6 @@
-#include "surface/hidden_surface.h"
+#include "haloplot/surface/hidden_surface.h"
 
-#include "memory/carve.h"
+#include "haloplot/memory/carve.h"
 
 namespace haloplot {
 namespace {

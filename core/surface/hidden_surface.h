@@ -8,9 +8,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "surface/franklin.h"
-#include "surface/region_hatch.h"
-#include "surface/regions.h"
+#include "haloplot/surface/franklin.h"
+#include "haloplot/surface/region_hatch.h"
+#include "haloplot/surface/regions.h"
 
 namespace haloplot {
 

@@ -1,10 +1,10 @@
-#include "surface/region_hatch.h"
+#include "haloplot/surface/region_hatch.h"
 
-#include "geometry/fraction.h"
-#include "geometry/wide.h"
-#include "memory/carve.h"
-#include "solid/cover.h"
-#include "sort/in_place_sort.h"
+#include "haloplot/geometry/fraction.h"
+#include "haloplot/geometry/wide.h"
+#include "haloplot/memory/carve.h"
+#include "haloplot/solid/cover.h"
+#include "haloplot/sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

@@ -16,8 +16,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "surface/hatch.h"
-#include "surface/regions.h"
+#include "haloplot/surface/hatch.h"
+#include "haloplot/surface/regions.h"
 
 namespace haloplot {
 

@@ -1,11 +1,11 @@
-#include "surface/regions.h"
+#include "haloplot/surface/regions.h"
 
-#include "geometry/predicates.h"
-#include "geometry/wide.h"
-#include "memory/carve.h"
-#include "solid/cover.h"
-#include "solid/face_grid.h"
-#include "sort/in_place_sort.h"
+#include "haloplot/geometry/predicates.h"
+#include "haloplot/geometry/wide.h"
+#include "haloplot/memory/carve.h"
+#include "haloplot/solid/cover.h"
+#include "haloplot/solid/face_grid.h"
+#include "haloplot/sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

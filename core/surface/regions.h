@@ -24,9 +24,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "solid/mesh.h"
-#include "status/status.h"
-#include "surface/franklin.h"
+#include "haloplot/solid/mesh.h"
+#include "haloplot/status/status.h"
+#include "haloplot/surface/franklin.h"
 
 namespace haloplot {
 

@@ -1,4 +1,4 @@
-#include "trace/trace_encoder.h"
+#include "haloplot/trace/trace_encoder.h"
 
 namespace haloplot {
 namespace {

@@ -13,8 +13,8 @@
 #pragma once
 #include <stdint.h>
 
-#include "motion/machine.h"
-#include "motion/step_segment.h"
+#include "haloplot/motion/machine.h"
+#include "haloplot/motion/step_segment.h"
 
 namespace haloplot {
 

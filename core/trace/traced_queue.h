@@ -3,8 +3,8 @@
 // Only traced builds (the simulator, tests, the firmware's test images) use it; the flashed
 // controller's queue is the plain one, so the step path carries no trace code.
 #pragma once
-#include "motion/step_segment.h"
-#include "trace/trace_encoder.h"
+#include "haloplot/motion/step_segment.h"
+#include "haloplot/trace/trace_encoder.h"
 
 namespace haloplot {
 

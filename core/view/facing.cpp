@@ -1,7 +1,7 @@
-#include "view/facing.h"
+#include "haloplot/view/facing.h"
 
-#include "geometry/wide.h"
-#include "view/trig.h"
+#include "haloplot/geometry/wide.h"
+#include "haloplot/view/trig.h"
 
 namespace haloplot {
 namespace {

@@ -14,10 +14,10 @@
 #pragma once
 #include <stdint.h>
 
-#include "geometry/contract.h"
-#include "solid/mesh.h"
-#include "status/status.h"
-#include "view/projection.h"
+#include "haloplot/geometry/contract.h"
+#include "haloplot/solid/mesh.h"
+#include "haloplot/status/status.h"
+#include "haloplot/view/projection.h"
 
 namespace haloplot {
 

@@ -1,7 +1,7 @@
-#include "view/projection.h"
+#include "haloplot/view/projection.h"
 
-#include "geometry/wide.h"
-#include "view/trig.h"
+#include "haloplot/geometry/wide.h"
+#include "haloplot/view/trig.h"
 
 namespace haloplot {
 namespace {

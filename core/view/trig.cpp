@@ -1,4 +1,4 @@
-#include "view/trig.h"
+#include "haloplot/view/trig.h"
 
 namespace haloplot {
 namespace {

@@ -1,8 +1,8 @@
-#include "view2d/polygon_view.h"
+#include "haloplot/view2d/polygon_view.h"
 
-#include "geometry/fraction.h"
-#include "geometry/wide.h"
-#include "sort/in_place_sort.h"
+#include "haloplot/geometry/fraction.h"
+#include "haloplot/geometry/wide.h"
+#include "haloplot/sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

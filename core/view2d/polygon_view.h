@@ -27,7 +27,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "status/status.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot {
 

@@ -5,12 +5,12 @@
 // the trace's decimal text needs division, which its step path must not (check_image.cmake).
 #pragma once
 #include "board/board.h"
-#include "motion/motion_runner.h"
+#include "haloplot/motion/motion_runner.h"
 
 #ifdef HALOPLOT_FW_TEST_HOOKS
 #include <new>  // placement construction into static storage: no heap
 
-#include "trace/traced_queue.h"
+#include "haloplot/trace/traced_queue.h"
 #endif
 
 namespace haloplot::fw {

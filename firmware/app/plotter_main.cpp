@@ -13,9 +13,9 @@
 // debugger attached.
 #include "app/motion_runner.h"
 #include "board/board.h"
+#include "haloplot/protocol/job_server.h"
 #include "platform/console.h"
 #include "platform/instruction_counter.h"
-#include "protocol/job_server.h"
 
 #ifdef HALOPLOT_FW_TEST_HOOKS
 #include "platform/semihosting.h"

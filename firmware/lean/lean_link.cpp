@@ -7,12 +7,12 @@
 //   LEAN_PLOT == 3  a solid's hidden lines in bands: begin_solid, the solid stages too.
 // An edges-only banded plot must cost about what the unbanded one does, not drag in the solid
 // model's stages it never runs.
-#include "band/conductor.h"
-#include "job/job.h"
-#include "motion/planner.h"
-#include "motion/step_engine.h"
-#include "motion/step_prep.h"
-#include "motion/virtual_run.h"
+#include "haloplot/band/conductor.h"
+#include "haloplot/job/job.h"
+#include "haloplot/motion/planner.h"
+#include "haloplot/motion/step_engine.h"
+#include "haloplot/motion/step_prep.h"
+#include "haloplot/motion/virtual_run.h"
 
 using namespace haloplot;
 

@@ -4,7 +4,7 @@
 #pragma once
 #include <stdint.h>
 
-#include "trace/trace_encoder.h"
+#include "haloplot/trace/trace_encoder.h"
 
 namespace haloplot::fw {
 

@@ -3,8 +3,8 @@
 #pragma once
 #include <stdint.h>
 
-#include "protocol/crc32.h"
-#include "trace/trace_encoder.h"
+#include "haloplot/protocol/crc32.h"
+#include "haloplot/trace/trace_encoder.h"
 
 namespace haloplot::fw {
 

@@ -5,19 +5,19 @@
 // step trace (about 46 MB of text) is not sent: its CRC-32 and length are, and the host test
 // compares them with `haloplot sim` of the demo job with `arena 65536`. Instruction counts
 // come from the TIM5 counter under -icount (one count per instruction).
-#include "band/conductor.h"
-#include "job/job.h"
-#include "motion/planner.h"
-#include "motion/step_engine.h"
-#include "motion/step_prep.h"
-#include "motion/virtual_run.h"
+#include "haloplot/band/conductor.h"
+#include "haloplot/job/job.h"
+#include "haloplot/motion/planner.h"
+#include "haloplot/motion/step_engine.h"
+#include "haloplot/motion/step_prep.h"
+#include "haloplot/motion/virtual_run.h"
+#include "haloplot/scene/cube_array.h"
+#include "haloplot/trace/traced_queue.h"
 #include "platform/console.h"
 #include "platform/instruction_counter.h"
 #include "platform/semihosting.h"
 #include "platform/trace_digest.h"
-#include "scene/cube_array.h"
 #include "selftest_support.h"
-#include "trace/traced_queue.h"
 
 using namespace haloplot;
 using namespace haloplot::fw;

@@ -2,10 +2,10 @@
 // the Edge3 array (N <= 1000), built on the chip from the same seeds as the host uses. Prints
 // one "fw row N L_MILLIONTHS SEED CROSSINGS CUT_INSTRUCTIONS CELL_PAIRS" line per row; the CTest
 // firmware_cut_bench checks CROSSINGS against the host, tools/bench_performance.sh reports.
-#include "haloplot.h"
+#include "haloplot/haloplot.h"
+#include "haloplot/scene/random_edges.h"
 #include "platform/instruction_counter.h"
 #include "platform/semihosting.h"
-#include "scene/random_edges.h"
 
 using namespace haloplot;
 using namespace haloplot::fw;

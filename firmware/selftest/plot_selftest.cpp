@@ -4,23 +4,23 @@
 // semihosting. The host compares the trace byte for byte with `haloplot sim` on the same job,
 // and reads the instruction counts this image measures under -icount (1 instruction = 1 ns
 // of virtual time, read with SYS_ELAPSED).
-#include "geometry/units.h"
-#include "haloplot.h"
-#include "job/job.h"
-#include "motion/planner.h"
-#include "motion/step_engine.h"
-#include "motion/step_prep.h"
-#include "motion/virtual_run.h"
+#include "haloplot/geometry/units.h"
+#include "haloplot/haloplot.h"
+#include "haloplot/job/job.h"
+#include "haloplot/motion/planner.h"
+#include "haloplot/motion/step_engine.h"
+#include "haloplot/motion/step_prep.h"
+#include "haloplot/motion/virtual_run.h"
+#include "haloplot/scene/cube_array.h"
+#include "haloplot/solid/hidden_lines.h"
+#include "haloplot/surface/hidden_surface.h"
+#include "haloplot/trace/traced_queue.h"
+#include "haloplot/view/projection.h"
 #include "platform/console.h"
 #include "platform/instruction_counter.h"
 #include "platform/semihosting.h"
-#include "scene/cube_array.h"
 #include "selftest_support.h"
-#include "solid/hidden_lines.h"
-#include "surface/hidden_surface.h"
 #include "tick_workload.h"
-#include "trace/traced_queue.h"
-#include "view/projection.h"
 
 using namespace haloplot;
 using namespace haloplot::fw;

@@ -4,10 +4,10 @@
 #pragma once
 #include <stdint.h>
 
+#include "haloplot/status/status.h"
+#include "haloplot/trace/trace_encoder.h"
 #include "platform/console.h"
 #include "platform/semihosting.h"
-#include "status/status.h"
-#include "trace/trace_encoder.h"
 
 namespace haloplot::fw {
 

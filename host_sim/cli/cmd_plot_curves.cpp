@@ -8,7 +8,7 @@
 #include "cli/plot_outputs.h"
 #include "demo/curve_scenes.h"
 #include "export/plotter_outputs.h"
-#include "geometry/units.h"
+#include "haloplot/geometry/units.h"
 #include "io/atomic_file.h"
 #include "io/edges_file.h"
 #include "io/line_reader.h"

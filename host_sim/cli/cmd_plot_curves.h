@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "cli/options.h"
-#include "geometry/contract.h"
-#include "job/job.h"
+#include "haloplot/geometry/contract.h"
+#include "haloplot/job/job.h"
 
 namespace haloplot::host {
 

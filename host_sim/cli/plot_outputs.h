@@ -7,7 +7,7 @@
 
 #include "cli/options.h"
 #include "export/exporters.h"
-#include "job/job.h"
+#include "haloplot/job/job.h"
 
 namespace haloplot::host {
 

@@ -4,8 +4,8 @@
 #include <string>
 
 #include "cli/options.h"
+#include "haloplot/surface/hatch.h"
 #include "pipeline/drawing_modes.h"
-#include "surface/hatch.h"
 
 namespace haloplot::host {
 

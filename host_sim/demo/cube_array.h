@@ -3,7 +3,7 @@
 #pragma once
 #include <vector>
 
-#include "scene/cube_array.h"
+#include "haloplot/scene/cube_array.h"
 
 namespace haloplot::host {
 

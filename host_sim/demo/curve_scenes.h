@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "curve/bezier.h"
+#include "haloplot/curve/bezier.h"
 
 namespace haloplot::host {
 

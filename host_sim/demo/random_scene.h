@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "scene/random_edges.h"
+#include "haloplot/scene/random_edges.h"
 
 namespace haloplot::host {
 

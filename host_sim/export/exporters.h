@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "motion/machine.h"
-#include "motion/path_plan.h"
+#include "haloplot/motion/machine.h"
+#include "haloplot/motion/path_plan.h"
 
 namespace haloplot::host {
 

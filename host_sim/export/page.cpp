@@ -4,7 +4,7 @@
 #include <cctype>
 #include <cstdlib>
 
-#include "geometry/contract.h"
+#include "haloplot/geometry/contract.h"
 #include "io/line_reader.h"
 
 namespace haloplot::host {

@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "cli/options.h"
-#include "motion/path_plan.h"
+#include "haloplot/motion/path_plan.h"
 
 namespace haloplot::host {
 

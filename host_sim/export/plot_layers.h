@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "draw/draw.h"
-#include "motion/path_plan.h"
+#include "haloplot/draw/draw.h"
+#include "haloplot/motion/path_plan.h"
 #include "pipeline/drawing_modes.h"
 
 namespace haloplot::host {

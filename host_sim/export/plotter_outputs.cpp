@@ -2,9 +2,9 @@
 
 #include <cmath>
 
+#include "haloplot/memory/sized_stage.h"
+#include "haloplot/motion/planner.h"
 #include "io/atomic_file.h"
-#include "memory/sized_stage.h"
-#include "motion/planner.h"
 #include "pipeline/host_memory.h"
 
 namespace haloplot::host {

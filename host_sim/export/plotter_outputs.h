@@ -8,7 +8,7 @@
 
 #include "export/exporters.h"
 #include "export/page.h"
-#include "job/job.h"
+#include "haloplot/job/job.h"
 
 namespace haloplot::host {
 

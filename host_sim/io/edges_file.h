@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "curve/bezier.h"
-#include "geometry/contract.h"
+#include "haloplot/curve/bezier.h"
+#include "haloplot/geometry/contract.h"
 #include "io/input_error.h"
 
 namespace haloplot::host {

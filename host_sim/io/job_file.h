@@ -42,8 +42,8 @@
 #include <string>
 
 #include "export/exporters.h"
+#include "haloplot/job/job.h"
 #include "io/input_error.h"
-#include "job/job.h"
 
 namespace haloplot::host {
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/contract.h"
+#include "haloplot/geometry/contract.h"
 #include "io/input_error.h"
 
 namespace haloplot::host {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "haloplot/view2d/polygon_view.h"
 #include "io/input_error.h"
-#include "view2d/polygon_view.h"
 
 namespace haloplot::host {
 

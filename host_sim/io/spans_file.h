@@ -4,7 +4,7 @@
 #include <iosfwd>
 #include <vector>
 
-#include "draw/draw.h"
+#include "haloplot/draw/draw.h"
 
 namespace haloplot::host {
 

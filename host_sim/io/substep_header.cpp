@@ -1,6 +1,6 @@
 #include "io/substep_header.h"
 
-#include "geometry/contract.h"
+#include "haloplot/geometry/contract.h"
 #include "io/line_reader.h"
 
 namespace haloplot::host {

@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "job/job.h"
+#include "haloplot/job/job.h"
+#include "haloplot/protocol/frame.h"
+#include "haloplot/protocol/messages.h"
+#include "haloplot/solid/mesh.h"
+#include "haloplot/view/projection.h"
 #include "pipeline/band_stream.h"
-#include "protocol/frame.h"
-#include "protocol/messages.h"
-#include "solid/mesh.h"
-#include "view/projection.h"
 
 namespace haloplot::host {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "band/band_rule.h"
+#include "haloplot/band/band_rule.h"
 
 namespace haloplot::host {
 

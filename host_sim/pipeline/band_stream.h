@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "band/conductor.h"
+#include "haloplot/band/conductor.h"
 
 namespace haloplot::host {
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "curve/curve_draw.h"
+#include "haloplot/curve/curve_draw.h"
 
 namespace haloplot::host {
 

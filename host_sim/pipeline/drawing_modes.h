@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "draw/draw.h"
-#include "motion/path_plan.h"
+#include "haloplot/draw/draw.h"
+#include "haloplot/motion/path_plan.h"
+#include "haloplot/solid/modes.h"
 #include "pipeline/solid_pipeline.h"
-#include "solid/modes.h"
 
 namespace haloplot::host {
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "memory/sized_stage.h"
+#include "haloplot/memory/sized_stage.h"
 
 namespace haloplot::host {
 

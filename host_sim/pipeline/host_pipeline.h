@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "band/conductor.h"
-#include "haloplot.h"
+#include "haloplot/band/conductor.h"
+#include "haloplot/haloplot.h"
 
 namespace haloplot::host {
 

@@ -8,6 +8,8 @@
 
 #include "cli/solid_options.h"
 #include "export/page.h"
+#include "haloplot/view/facing.h"
+#include "haloplot/view/projection.h"
 #include "io/atomic_file.h"
 #include "io/edges_file.h"
 #include "io/job_file.h"
@@ -18,8 +20,6 @@
 #include "pipeline/mesh_repair.h"
 #include "pipeline/surface_pipeline.h"
 #include "pipeline/units.h"
-#include "view/facing.h"
-#include "view/projection.h"
 
 namespace haloplot::host {
 

@@ -5,13 +5,13 @@
 #include <vector>
 
 #include "cli/options.h"
-#include "geometry/contract.h"
+#include "haloplot/geometry/contract.h"
+#include "haloplot/job/job.h"
+#include "haloplot/view/projection.h"
 #include "io/obj_file.h"
-#include "job/job.h"
 #include "pipeline/mesh_repair.h"
 #include "pipeline/solid_pipeline.h"
 #include "pipeline/triangulate.h"
-#include "view/projection.h"
 
 namespace haloplot::host {
 

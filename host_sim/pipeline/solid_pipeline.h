@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
-#include "haloplot.h"
+#include "haloplot/haloplot.h"
+#include "haloplot/solid/classify.h"
+#include "haloplot/solid/fallback.h"
+#include "haloplot/solid/hidden_lines.h"
+#include "haloplot/solid/outline.h"
+#include "haloplot/solid/qi.h"
 #include "pipeline/host_pipeline.h"
-#include "solid/classify.h"
-#include "solid/fallback.h"
-#include "solid/hidden_lines.h"
-#include "solid/outline.h"
-#include "solid/qi.h"
 
 namespace haloplot::host {
 

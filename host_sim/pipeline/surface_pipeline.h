@@ -3,10 +3,10 @@
 #pragma once
 #include <vector>
 
+#include "haloplot/surface/franklin.h"
+#include "haloplot/surface/hatch.h"
+#include "haloplot/surface/hidden_surface.h"
 #include "pipeline/solid_pipeline.h"
-#include "surface/franklin.h"
-#include "surface/hatch.h"
-#include "surface/hidden_surface.h"
 
 namespace haloplot::host {
 

@@ -14,8 +14,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/contract.h"
-#include "solid/mesh.h"
+#include "haloplot/geometry/contract.h"
+#include "haloplot/solid/mesh.h"
 
 namespace haloplot::host {
 

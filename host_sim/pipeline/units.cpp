@@ -1,6 +1,6 @@
 #include "pipeline/units.h"
 
-#include "geometry/units.h"
+#include "haloplot/geometry/units.h"
 
 namespace haloplot::host {
 

@@ -5,10 +5,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "cut/cut.h"
-#include "draw/draw.h"
+#include "haloplot/cut/cut.h"
+#include "haloplot/draw/draw.h"
+#include "haloplot/surface/hatch.h"
 #include "pipeline/drawing_modes.h"
-#include "surface/hatch.h"
 
 namespace haloplot::host {
 

@@ -5,7 +5,7 @@
 #include <ostream>
 #include <string>
 
-#include "geometry/fraction.h"
+#include "haloplot/geometry/fraction.h"
 
 namespace haloplot::host {
 

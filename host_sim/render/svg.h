@@ -14,10 +14,10 @@
 #include <iosfwd>
 #include <vector>
 
-#include "draw/draw.h"
 #include "export/exporters.h"
 #include "export/page.h"
 #include "export/plot_layers.h"
+#include "haloplot/draw/draw.h"
 
 namespace haloplot::host {
 

@@ -4,7 +4,7 @@
 #include <ostream>
 #include <vector>
 
-#include "view2d/polygon_view.h"
+#include "haloplot/view2d/polygon_view.h"
 
 namespace haloplot::host {
 

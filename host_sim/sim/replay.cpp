@@ -1,7 +1,7 @@
 #include "sim/replay.h"
 
-#include "geometry/fraction.h"
-#include "geometry/wide.h"
+#include "haloplot/geometry/fraction.h"
+#include "haloplot/geometry/wide.h"
 
 namespace haloplot::host {
 

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "motion/path_plan.h"
+#include "haloplot/motion/path_plan.h"
 #include "sim/trace.h"
 
 namespace haloplot::host {

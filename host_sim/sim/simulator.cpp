@@ -3,10 +3,10 @@
 #include <memory>
 
 #include "export/plotter_outputs.h"
-#include "motion/step_engine.h"
-#include "motion/virtual_run.h"
+#include "haloplot/motion/step_engine.h"
+#include "haloplot/motion/virtual_run.h"
+#include "haloplot/trace/traced_queue.h"
 #include "sim/trace.h"
-#include "trace/traced_queue.h"
 
 namespace haloplot::host {
 namespace {

@@ -6,12 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "band/conductor.h"
-#include "job/job.h"
-#include "motion/planner.h"
-#include "motion/step_prep.h"
+#include "haloplot/band/conductor.h"
+#include "haloplot/job/job.h"
+#include "haloplot/motion/planner.h"
+#include "haloplot/motion/step_prep.h"
+#include "haloplot/trace/trace_encoder.h"
 #include "pipeline/band_stream.h"
-#include "trace/trace_encoder.h"
 
 namespace haloplot::host {
 

@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
+#include "haloplot/motion/machine.h"
+#include "haloplot/trace/trace_encoder.h"
 #include "io/input_error.h"
-#include "motion/machine.h"
-#include "trace/trace_encoder.h"
 
 namespace haloplot::host {
 

@@ -11,15 +11,15 @@
 #include <tuple>
 #include <vector>
 
-#include "band/conductor.h"
 #include "demo/cube_array.h"
 #include "demo/random_scene.h"
-#include "job/job.h"
+#include "haloplot/band/conductor.h"
+#include "haloplot/job/job.h"
+#include "haloplot/protocol/frame.h"
+#include "haloplot/protocol/job_server.h"
+#include "haloplot/protocol/messages.h"
 #include "perf_common.h"
 #include "pipeline/band_stream.h"
-#include "protocol/frame.h"
-#include "protocol/job_server.h"
-#include "protocol/messages.h"
 #include "sim/simulator.h"
 
 using namespace haloplot;

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "haloplot.h"
+#include "haloplot/haloplot.h"
 
 namespace bench {
 

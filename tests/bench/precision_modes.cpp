@@ -8,14 +8,14 @@
 #include <vector>
 
 #include "chart.h"
-#include "cut/cut.h"
 #include "demo/random_scene.h"
-#include "draw/draw.h"
-#include "geometry/predicates.h"
+#include "haloplot/cut/cut.h"
+#include "haloplot/draw/draw.h"
+#include "haloplot/geometry/predicates.h"
+#include "haloplot/view/projection.h"
+#include "haloplot/view/trig.h"
 #include "perf_common.h"
 #include "reference/draw_reference.h"
-#include "view/projection.h"
-#include "view/trig.h"
 
 namespace bench {
 namespace {

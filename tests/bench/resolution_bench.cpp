@@ -20,12 +20,12 @@
 
 #include "bench/perf_common.h"
 #include "cli/options.h"
+#include "haloplot/view/projection.h"
 #include "io/obj_file.h"
 #include "pipeline/scene_input.h"
 #include "reference/contour_diagonals.h"
 #include "reference/ray_cast.h"
 #include "support/solid_scenes.h"
-#include "view/projection.h"
 
 using namespace haloplot;
 using namespace haloplot::host;

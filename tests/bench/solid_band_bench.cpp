@@ -14,7 +14,7 @@
 #include <tuple>
 #include <vector>
 
-#include "band/conductor.h"
+#include "haloplot/band/conductor.h"
 #include "perf_common.h"
 #include "pipeline/solid_pipeline.h"
 #include "support/solid_refs.h"

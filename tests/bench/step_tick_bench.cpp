@@ -3,8 +3,8 @@
 // the events it made is the cost of one event, as the timer interrupt would pay it.
 #include <cstdio>
 
-#include "motion/step_engine.h"
-#include "motion/step_segment.h"
+#include "haloplot/motion/step_engine.h"
+#include "haloplot/motion/step_segment.h"
 #include "tick_workload.h"
 
 using namespace haloplot;

@@ -3,7 +3,7 @@
 // firmware/selftest/plot_selftest.cpp) measure the same thing: a 3 : 2 Bresenham move in
 // segments of 16 steps with a gentle ramp, the shape the step prep makes while cruising.
 #pragma once
-#include "motion/step_segment.h"
+#include "haloplot/motion/step_segment.h"
 
 namespace bench {
 

@@ -8,9 +8,9 @@
 #include <sstream>
 #include <vector>
 
+#include "haloplot/view2d/polygon_view.h"
 #include "perf_common.h"
 #include "reference/view2d_reference.h"
-#include "view2d/polygon_view.h"
 
 using namespace haloplot;
 using bench::fmt;

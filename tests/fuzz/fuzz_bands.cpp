@@ -8,7 +8,7 @@
 #include <tuple>
 #include <vector>
 
-#include "band/conductor.h"
+#include "haloplot/band/conductor.h"
 #include "pipeline/host_pipeline.h"
 
 using namespace haloplot;

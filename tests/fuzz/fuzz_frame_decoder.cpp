@@ -4,8 +4,8 @@
 #include <cstdlib>
 #include <vector>
 
-#include "protocol/crc32.h"
-#include "protocol/frame.h"
+#include "haloplot/protocol/crc32.h"
+#include "haloplot/protocol/frame.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using haloplot::FrameDecoder;

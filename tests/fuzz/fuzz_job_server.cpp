@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "protocol/job_server.h"
+#include "haloplot/protocol/job_server.h"
 #include "support/virtual_motion.h"
 
 using namespace haloplot;

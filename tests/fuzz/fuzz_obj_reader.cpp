@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "haloplot/view/projection.h"
 #include "io/obj_file.h"
 #include "pipeline/triangulate.h"
-#include "view/projection.h"
 
 using namespace haloplot;
 

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "haloplot/view2d/polygon_view.h"
 #include "io/polygon_file.h"
 #include "reference/view2d_reference.h"
-#include "view2d/polygon_view.h"
 
 using namespace haloplot;
 

@@ -15,21 +15,23 @@ cmake --install "$build" --prefix "$work/prefix" > "$work/install.log"
 [ -f "$work/prefix/lib/cmake/haloplot/haloplotConfig.cmake" ] || { echo "no package config installed"; exit 1; }
 [ -f "$work/prefix/include/haloplot/cut/cut.h" ] || { echo "no headers installed"; exit 1; }
 # The package carries the public headers and what they include, and nothing else: each
-# installed header compiles on its own against the prefix alone, and a header only the core's
-# sources use is not there.
+# installed header compiles on its own as <haloplot/...> with the prefix's one include
+# directory, and a header only the core's sources use is not there. No installed header is
+# reached by a bare generic name: every header the package holds is under include/haloplot/.
 if [ "$mode" = host ]; then
   [ ! -e "$work/prefix/include/haloplot/sort/in_place_sort.h" ] ||
     { echo "an internal header (sort/in_place_sort.h) was installed"; exit 1; }
   n=0
   while IFS= read -r h; do
-    rel=${h#"$work/prefix/include/haloplot/"}
-    printf '#include "%s"\n' "$rel" |
-      c++ -std=c++17 -fsyntax-only -x c++ -I "$work/prefix/include/haloplot" \
-        -I "$work/prefix/include/haloplot/hal" - ||
-      { echo "installed header $rel does not compile on its own from the prefix"; exit 1; }
+    rel=${h#"$work/prefix/include/"}
+    printf '#include <%s>\n' "$rel" |
+      c++ -std=c++17 -fsyntax-only -x c++ -I "$work/prefix/include" - ||
+      { echo "installed header <$rel> does not compile on its own from the prefix's one include directory"; exit 1; }
     n=$((n + 1))
   done < <(find "$work/prefix/include/haloplot" -name '*.h' | sort)
-  echo "package headers: $n, each compiles on its own"
+  stray=$(find "$work/prefix/include" -name '*.h' -not -path "$work/prefix/include/haloplot/*")
+  [ -z "$stray" ] || { echo "headers outside include/haloplot/: $stray"; exit 1; }
+  echo "package headers: $n, each compiles on its own as <haloplot/...>"
 fi
 args=(-S "$src/tests/package/${mode}_consumer" -B "$work/consumer" -DCMAKE_PREFIX_PATH="$work/prefix"
       -DCMAKE_BUILD_TYPE=Release)

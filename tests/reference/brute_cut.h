@@ -7,7 +7,7 @@
 #include <tuple>
 #include <vector>
 
-#include "geometry/contract.h"  // the Edge3 struct only
+#include "haloplot/geometry/contract.h"  // the Edge3 struct only
 
 namespace reference {
 

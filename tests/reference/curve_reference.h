@@ -9,8 +9,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "curve/bezier.h"  // the BezierEdge3 struct only
 #include "demo/curve_scenes.h"
+#include "haloplot/curve/bezier.h"  // the BezierEdge3 struct only
 
 namespace curve_reference {
 

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "geometry/contract.h"
+#include "haloplot/geometry/contract.h"
 
 namespace reference {
 

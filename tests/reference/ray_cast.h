@@ -22,9 +22,9 @@
 #include <tuple>
 #include <vector>
 
-#include "geometry/contract.h"  // Point3
-#include "solid/mesh.h"         // Triangle (vertex ids)
-#include "view/projection.h"    // View (the parameters only)
+#include "haloplot/geometry/contract.h"  // Point3
+#include "haloplot/solid/mesh.h"         // Triangle (vertex ids)
+#include "haloplot/view/projection.h"    // View (the parameters only)
 
 namespace ray_cast {
 

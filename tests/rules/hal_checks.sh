@@ -2,14 +2,14 @@
 # The HAL's compile-time checks must see what they guard: a step HAL or a board that lacks a
 # member must fail to build, with a message that names the member; a complete one must build.
 # Each case is a small translation unit compiled (syntax only) against the real headers.
-# Usage: hal_checks.sh SOURCE_DIR CXX
+# Usage: hal_checks.sh INCLUDE_ROOT CXX   (the build tree's include/, where haloplot/ is)
 set -u
-src=$1
+root=$1
 cxx=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 pass=0 fail=0
-flags=(-std=c++17 -fsyntax-only -ffreestanding -fno-exceptions -fno-rtti -I"$src/core" -I"$src/hal")
+flags=(-std=c++17 -fsyntax-only -ffreestanding -fno-exceptions -fno-rtti -I"$root")
 
 # try NAME EXPECT CODE: EXPECT is "ok" or the text the error must contain.
 try() {
@@ -25,8 +25,8 @@ try() {
   fi
 }
 
-engine='#include "motion/step_engine.h"
-#include "motion/step_segment.h"
+engine='#include "haloplot/motion/step_engine.h"
+#include "haloplot/motion/step_segment.h"
 using namespace haloplot;'
 full='void step(uint8_t) {} void set_direction(uint8_t, bool) {} void pen(bool) {}'
 try step_hal_complete ok "$engine
@@ -41,7 +41,7 @@ SegmentQueue<4> q; H h; StepEngine<H, SegmentQueue<4>> e(h, q);"
 try step_hal_no_pen "has no void pen(bool down)" "$engine
 struct H { void step(uint8_t) {} void set_direction(uint8_t, bool) {} };
 SegmentQueue<4> q; H h; StepEngine<H, SegmentQueue<4>> e(h, q);"
-try virtual_run_no_clock "has no uint64_t now" "#include \"motion/virtual_run.h\"
+try virtual_run_no_clock "has no uint64_t now" "#include \"haloplot/motion/virtual_run.h\"
 using namespace haloplot;
 struct H { $full };
 Status run(MotionPlanner& p, StepPrep& s, SegmentQueue<4>& q, H& h, StepEngine<H, SegmentQueue<4>>& e) {
@@ -66,7 +66,7 @@ board_fns=(
 board() {  # board SKIP: the board without function number SKIP (-1: complete)
   local body="" i
   for i in "${!board_fns[@]}"; do [ "$i" -eq "$1" ] || body+="${board_fns[$i]} "; done
-  printf '#include "board_hal.h"\n#include <stdint.h>\nstruct B { %s };\nstatic_assert(haloplot::hal::check_board<B>(), "board");\n' "$body"
+  printf '#include "haloplot/hal/board_hal.h"\n#include <stdint.h>\nstruct B { %s };\nstatic_assert(haloplot::hal::check_board<B>(), "board");\n' "$body"
 }
 try board_complete ok "$(board -1)"
 try board_no_step_high "has no static void step_high(uint8_t motor)" "$(board 1)"

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "../check.h"
+#include "haloplot/job/job.h"
 #include "io/job_file.h"
-#include "job/job.h"
 #include "pipeline/scene_input.h"
 
 namespace haloplot::test {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "demo/random_scene.h"
-#include "geometry/contract.h"
+#include "haloplot/geometry/contract.h"
 
 namespace scenes {
 

@@ -7,10 +7,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "haloplot/view/projection.h"
 #include "pipeline/scene_input.h"
 #include "pipeline/solid_pipeline.h"
 #include "pipeline/triangulate.h"
-#include "view/projection.h"
 
 namespace solid_scenes {
 

@@ -3,7 +3,7 @@
 #pragma once
 #include <cstdint>
 
-#include "job/job.h"
+#include "haloplot/job/job.h"
 
 namespace test_support {
 

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <vector>
 
-#include "job/job.h"
-#include "motion/path_plan.h"
+#include "haloplot/job/job.h"
+#include "haloplot/motion/path_plan.h"
 #include "reference/trace_checker.h"
 
 namespace haloplot::test {

@@ -5,12 +5,12 @@
 #include <string>
 #include <vector>
 
-#include "motion/planner.h"
-#include "motion/step_engine.h"
-#include "motion/step_prep.h"
-#include "motion/virtual_run.h"
-#include "protocol/job_server.h"
-#include "trace/traced_queue.h"
+#include "haloplot/motion/planner.h"
+#include "haloplot/motion/step_engine.h"
+#include "haloplot/motion/step_prep.h"
+#include "haloplot/motion/virtual_run.h"
+#include "haloplot/protocol/job_server.h"
+#include "haloplot/trace/traced_queue.h"
 
 namespace haloplot::test {
 

@@ -8,20 +8,20 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "band/conductor.h"
-#include "band/edge_source.h"
-#include "band/solid_source.h"
-#include "cut/cut.h"
-#include "draw/draw.h"
-#include "job/job.h"
-#include "motion/path_plan.h"
-#include "motion/planner.h"
-#include "protocol/job_server.h"
-#include "scene/cube_array.h"
-#include "solid/hidden_lines.h"
-#include "surface/hidden_surface.h"
-#include "view/projection.h"
-#include "view2d/polygon_view.h"
+#include "haloplot/band/conductor.h"
+#include "haloplot/band/edge_source.h"
+#include "haloplot/band/solid_source.h"
+#include "haloplot/cut/cut.h"
+#include "haloplot/draw/draw.h"
+#include "haloplot/job/job.h"
+#include "haloplot/motion/path_plan.h"
+#include "haloplot/motion/planner.h"
+#include "haloplot/protocol/job_server.h"
+#include "haloplot/scene/cube_array.h"
+#include "haloplot/solid/hidden_lines.h"
+#include "haloplot/surface/hidden_surface.h"
+#include "haloplot/view/projection.h"
+#include "haloplot/view2d/polygon_view.h"
 
 namespace haloplot::misaligned {
 

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "band/band_rule.h"
 #include "check.h"
 #include "demo/cube_array.h"
+#include "haloplot/band/band_rule.h"
 #include "pipeline/band_stream.h"
 #include "sim/simulator.h"
 #include "support/solid_scenes.h"

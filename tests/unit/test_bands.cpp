@@ -11,10 +11,10 @@
 #include <tuple>
 #include <vector>
 
-#include "band/conductor.h"
 #include "check.h"
 #include "demo/cube_array.h"
 #include "demo/random_scene.h"
+#include "haloplot/band/conductor.h"
 #include "pipeline/host_pipeline.h"
 #include "support/scenes.h"
 

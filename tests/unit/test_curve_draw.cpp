@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "check.h"
-#include "curve/curve_draw.h"
+#include "haloplot/curve/curve_draw.h"
 #include "reference/curve_reference.h"
 #include "support/pen_drawing.h"
 #include "support/plot.h"

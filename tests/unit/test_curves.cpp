@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "check.h"
-#include "curve/curve_cross.h"
 #include "demo/curve_scenes.h"
+#include "haloplot/curve/curve_cross.h"
 #include "reference/curve_reference.h"
 
 using namespace haloplot;

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "check.h"
-#include "cut/grid.h"
+#include "haloplot/cut/grid.h"
 #include "pipeline/surface_pipeline.h"
 #include "support/solid_scenes.h"
 

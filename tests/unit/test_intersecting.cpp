@@ -31,11 +31,11 @@
 #include <vector>
 
 #include "../check.h"
+#include "haloplot/solid/face_crossing.h"
+#include "haloplot/solid/pierce.h"
+#include "haloplot/view/projection.h"
 #include "reference/ray_cast.h"
-#include "solid/face_crossing.h"
-#include "solid/pierce.h"
 #include "support/solid_scenes.h"
-#include "view/projection.h"
 
 using namespace haloplot;
 using namespace haloplot::host;

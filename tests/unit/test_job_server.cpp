@@ -13,10 +13,10 @@
 #include "../check.h"
 #include "../support/solid_scenes.h"
 #include "../support/virtual_motion.h"
+#include "haloplot/scene/cube_array.h"
 #include "link/job_client.h"
 #include "pipeline/drawing_modes.h"
 #include "pipeline/surface_pipeline.h"
-#include "scene/cube_array.h"
 #include "sim/simulator.h"
 
 using namespace haloplot;

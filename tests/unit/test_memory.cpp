@@ -7,8 +7,8 @@
 #include "../reference/brute_cut.h"
 #include "../support/run_core.h"
 #include "../support/scenes.h"
-#include "cut/cutset.h"
-#include "motion/planner.h"
+#include "haloplot/cut/cutset.h"
+#include "haloplot/motion/planner.h"
 
 // The size queries a firmware sizes static storage with are constant expressions, and count
 // what their headers say: the CUTSET's index (4 bytes an edge, plus 4) and 12-byte records; the

@@ -29,11 +29,11 @@
 
 #include "../check.h"
 #include "cli/options.h"
+#include "haloplot/view/projection.h"
 #include "io/obj_file.h"
 #include "pipeline/scene_input.h"
 #include "pipeline/solid_pipeline.h"
 #include "reference/ray_cast.h"
-#include "view/projection.h"
 
 using namespace haloplot;
 using namespace haloplot::host;

@@ -12,7 +12,7 @@
 #include "../support/scenes.h"
 #include "../support/test_machine.h"
 #include "demo/cube_array.h"
-#include "motion/step_engine.h"
+#include "haloplot/motion/step_engine.h"
 #include "sim/replay.h"
 #include "sim/simulator.h"
 

@@ -6,11 +6,11 @@
 
 #include "../check.h"
 #include "../support/scenes.h"
-#include "cut/grid.h"
-#include "draw/precision.h"
-#include "geometry/fraction.h"
-#include "geometry/predicates.h"
-#include "geometry/wide.h"
+#include "haloplot/cut/grid.h"
+#include "haloplot/draw/precision.h"
+#include "haloplot/geometry/fraction.h"
+#include "haloplot/geometry/predicates.h"
+#include "haloplot/geometry/wide.h"
 
 using namespace haloplot;
 using i128 = __int128;

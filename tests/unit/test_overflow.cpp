@@ -8,10 +8,10 @@
 #include "../support/plot.h"
 #include "../support/run_core.h"
 #include "../support/scenes.h"
-#include "geometry/fraction.h"
-#include "motion/planner.h"
-#include "motion/step_prep.h"
-#include "motion/step_segment.h"
+#include "haloplot/geometry/fraction.h"
+#include "haloplot/motion/planner.h"
+#include "haloplot/motion/step_prep.h"
+#include "haloplot/motion/step_segment.h"
 
 using namespace haloplot;
 using scenes::edge;

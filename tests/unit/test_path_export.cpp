@@ -13,7 +13,7 @@
 #include "../support/scenes.h"
 #include "demo/cube_array.h"
 #include "export/exporters.h"
-#include "motion/path_plan.h"
+#include "haloplot/motion/path_plan.h"
 
 using namespace haloplot;
 using namespace haloplot::host;

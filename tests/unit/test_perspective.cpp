@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "../check.h"
+#include "haloplot/view/projection.h"
 #include "pipeline/host_pipeline.h"
 #include "support/solid_scenes.h"
-#include "view/projection.h"
 
 using namespace haloplot;
 using namespace haloplot::host;

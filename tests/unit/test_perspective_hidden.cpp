@@ -22,9 +22,9 @@
 #include <vector>
 
 #include "../check.h"
+#include "haloplot/view/projection.h"
 #include "reference/ray_cast.h"
 #include "support/solid_scenes.h"
-#include "view/projection.h"
 
 using namespace haloplot;
 using namespace haloplot::host;

@@ -7,9 +7,9 @@
 
 #include "../check.h"
 #include "../support/scenes.h"
-#include "protocol/crc32.h"
-#include "protocol/frame.h"
-#include "protocol/messages.h"
+#include "haloplot/protocol/crc32.h"
+#include "haloplot/protocol/frame.h"
+#include "haloplot/protocol/messages.h"
 
 using namespace haloplot;
 

@@ -8,11 +8,11 @@
 
 #include "../check.h"
 #include "../reference/brute_cut.h"
-#include "cut/cut.h"
-#include "job/job.h"
-#include "memory/sized_stage.h"
+#include "haloplot/cut/cut.h"
+#include "haloplot/job/job.h"
+#include "haloplot/memory/sized_stage.h"
+#include "haloplot/scene/random_edges.h"
 #include "pipeline/host_memory.h"
-#include "scene/random_edges.h"
 
 using namespace haloplot;
 

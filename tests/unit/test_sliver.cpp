@@ -13,9 +13,9 @@
 #include <string>
 
 #include "check.h"
+#include "haloplot/view/projection.h"
 #include "reference/contour_diagonals.h"
 #include "support/solid_scenes.h"
-#include "view/projection.h"
 
 using namespace haloplot;
 using namespace haloplot::host;

@@ -19,8 +19,8 @@
 #include <tuple>
 #include <vector>
 
-#include "band/conductor.h"
 #include "check.h"
+#include "haloplot/band/conductor.h"
 #include "pipeline/solid_pipeline.h"
 #include "support/solid_refs.h"
 #include "support/solid_scenes.h"

@@ -13,7 +13,7 @@
 #include "../support/plot.h"
 #include "../support/run_core.h"
 #include "../support/scenes.h"
-#include "geometry/fraction.h"
+#include "haloplot/geometry/fraction.h"
 
 using namespace haloplot;
 using ld = long double;

@@ -11,11 +11,11 @@
 #include "../reference/trace_checker.h"
 #include "../support/test_machine.h"
 #include "demo/cube_array.h"
-#include "motion/step_engine.h"
-#include "motion/virtual_run.h"
+#include "haloplot/motion/step_engine.h"
+#include "haloplot/motion/virtual_run.h"
+#include "haloplot/trace/traced_queue.h"
 #include "sim/simulator.h"
 #include "sim/trace.h"
-#include "trace/traced_queue.h"
 
 using namespace haloplot;
 using namespace haloplot::host;

@@ -15,10 +15,10 @@
 #include "check.h"
 #include "demo/cube_array.h"
 #include "demo/random_scene.h"
-#include "geometry/units.h"
-#include "job/job.h"
-#include "protocol/messages.h"
-#include "view/projection.h"
+#include "haloplot/geometry/units.h"
+#include "haloplot/job/job.h"
+#include "haloplot/protocol/messages.h"
+#include "haloplot/view/projection.h"
 
 using namespace haloplot;
 

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "../check.h"
-#include "view/facing.h"
-#include "view/projection.h"
-#include "view/trig.h"
+#include "haloplot/view/facing.h"
+#include "haloplot/view/projection.h"
+#include "haloplot/view/trig.h"
 
 using namespace haloplot;
 

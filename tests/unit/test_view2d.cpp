@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "../check.h"
+#include "haloplot/view2d/polygon_view.h"
 #include "reference/view2d_reference.h"
-#include "view2d/polygon_view.h"
 
 using namespace haloplot;
 

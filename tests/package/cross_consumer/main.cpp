@@ -2,10 +2,10 @@
 // through the installed motion runner on a board of its own (registers at made-up addresses):
 // no heap, no startup code beyond an entry point. It is linked, not run: the test checks its
 // symbols.
-#include "cut/cut.h"
-#include "memory/sized_stage.h"
-#include "motion/motion_runner.h"
-#include "scene/cube_array.h"
+#include <haloplot/cut/cut.h>
+#include <haloplot/memory/sized_stage.h>
+#include <haloplot/motion/motion_runner.h>
+#include <haloplot/scene/cube_array.h>
 
 using namespace haloplot;
 

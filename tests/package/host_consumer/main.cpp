@@ -2,13 +2,13 @@
 // brute-force count of its crossings written here: every pair of edges whose projections cross
 // at one point strictly inside both, at different depths; then the motion runner on a fake
 // board (runner_check.cpp). Exit 0 when all agree.
+#include <haloplot/cut/cut.h>
+#include <haloplot/draw/draw.h>
+#include <haloplot/memory/sized_stage.h>
+#include <haloplot/scene/cube_array.h>
+
 #include <cstdio>
 #include <vector>
-
-#include "cut/cut.h"
-#include "draw/draw.h"
-#include "memory/sized_stage.h"
-#include "scene/cube_array.h"
 
 using namespace haloplot;
 

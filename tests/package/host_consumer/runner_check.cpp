@@ -5,11 +5,11 @@
 // facts of the board: each STEP rises only after the runner lowered it, the plot ends where it
 // began (finish home, after a feed hold too), an end stop stops the timer at once, an abort
 // lifts the pen.
+#include <haloplot/job/job.h>
+#include <haloplot/motion/motion_runner.h>
+
 #include <cstdio>
 #include <vector>
-
-#include "job/job.h"
-#include "motion/motion_runner.h"
 
 using namespace haloplot;
 

@@ -2,7 +2,7 @@
 // that lacks a capability fails here with the name of the missing function.
 #pragma once
 #include "board/mps2_an385_board.h"
-#include "board_hal.h"  // hal/: the contract
+#include "haloplot/hal/board_hal.h"  // hal/: the contract
 
 namespace haloplot::fw {
 

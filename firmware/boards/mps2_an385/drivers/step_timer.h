@@ -11,7 +11,7 @@
 #pragma once
 #include <stdint.h>
 
-#include "status/status.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot::fw {
 

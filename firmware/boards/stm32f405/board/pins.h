@@ -10,7 +10,7 @@
 #pragma once
 #include <stdint.h>
 
-#include "stepper_axis.h"  // hal/: hal::kMotors
+#include "haloplot/hal/stepper_axis.h"  // hal/: hal::kMotors
 
 namespace haloplot::fw::board {
 

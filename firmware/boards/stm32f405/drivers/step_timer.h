@@ -11,7 +11,7 @@
 #include <stdint.h>
 
 #include "chip/stm32f405.h"
-#include "status/status.h"
+#include "haloplot/status/status.h"
 
 namespace haloplot::fw {
 
