@@ -2,8 +2,9 @@
 # Redraws the README's pictures of a real model with the tool itself: WusonOBJ.obj, a bull
 # from Debian's assimp-testmodels (installed by `bash tools/install_deps.sh test`), seen from
 # azimuth 120, elevation 20, in the four ways haloplot draws a model, and the README's quick
-# start: the bull's STL on an A4 landscape page (its edge drawn in grey for the picture only).
-# Writes docs/model-*.png and docs/quickstart-a4.png.
+# start: the bull's STL on an A4 landscape page (its edge drawn in grey for the picture only),
+# and two knots as Bézier edges, haloed (each picture cropped to its drawing).
+# Writes docs/model-*.png, docs/quickstart-a4.png and docs/knot-*.png.
 # Usage: tools/make_doc_pictures.sh [HALOPLOT]   (default build/host/host_sim/haloplot)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -28,4 +29,24 @@ echo "wrote docs/quickstart-a4.png"
 for p in haloed hidden-removed hidden-dashed hatched; do
   rsvg-convert -w 600 -b white "$work/$p.svg" -o "$root/docs/model-$p.png"
   echo "wrote docs/model-$p.png"
+done
+# The knots: the demo trefoil and (2,5) torus knot (`demo-scene --curve`), haloed with a wide
+# halo so the gaps show at this size; the SVG's page cropped to the drawing for the picture.
+crop() {
+  python3 - "$1" "$2" <<'PY'
+import re, sys
+s = open(sys.argv[1]).read()
+pts = [tuple(map(float, m)) for m in re.findall(r"(-?\d+\.\d+),(-?\d+\.\d+)", s)]
+x0, y0 = min(p[0] for p in pts) - 4, min(p[1] for p in pts) - 4
+w, h = max(p[0] for p in pts) + 4 - x0, max(p[1] for p in pts) + 4 - y0
+box = 'width="%.1fmm" height="%.1fmm" viewBox="%.2f %.2f %.2f %.2f"' % (w, h, x0, y0, w, h)
+open(sys.argv[2], "w").write(re.sub(r'width="[^"]*" height="[^"]*" viewBox="[^"]*"', box, s, count=1))
+PY
+}
+for knot in trefoil torus-2-5; do
+  "$tool" demo-scene --curve "$knot" -o "$work/$knot.edges"
+  "$tool" plot "$work/$knot.edges" --halo 600 -o "$work/$knot.svg"
+  crop "$work/$knot.svg" "$work/$knot-cropped.svg"
+  rsvg-convert -w 300 -b white "$work/$knot-cropped.svg" -o "$root/docs/knot-$knot.png"
+  echo "wrote docs/knot-$knot.png"
 done
