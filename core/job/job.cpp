@@ -367,6 +367,137 @@ Status job_prepare_solid(const JobSpec& steps, const SolidInput& in, uint32_t cr
   return Status::kOk;
 }
 
+void curve_job_params(const JobSpec& steps, CurveCrossParams* cross, CurveDrawParams* draw) {
+  const JobSpec spec = in_units(steps);
+  *cross = CurveCrossParams{};
+  cross->segment_pairs = true;
+  cross->flat_tol = uint64_t(steps_to_units(kCurveJobPieceSteps, spec.substep_bits))
+                    << kCurveFracBits;
+  *draw = CurveDrawParams{};
+  draw->halo = spec.draw.halo;
+}
+
+namespace {
+
+struct ChordCounter {
+  static Status emit(void* ctx, const Span&) {
+    ++*static_cast<uint32_t*>(ctx);
+    return Status::kOk;
+  }
+};
+
+// Says what a retry needs, and that this buffer is too small for it.
+Status short_of(size_t bytes, size_t* need_bytes) {
+  if (need_bytes != nullptr) *need_bytes = bytes;
+  return Status::kWorkspaceTooSmall;
+}
+
+// The crossings, hits at the buffer's front (`steps`: the job in steps, as given).
+Status curve_cross_stage(const JobSpec& steps, const CurveJobScene& sc, uint32_t hit_capacity,
+                         uint8_t* base, size_t buffer_bytes, uint32_t* n_hits, JobCounters* c,
+                         size_t* need_bytes) {
+  CurveCrossParams cp;
+  CurveDrawParams dp;
+  curve_job_params(steps, &cp, &dp);
+  CurveCrossPlan plan;
+  const Status s = plan_curve_cross(sc.curves, sc.n_curves, sc.segments, sc.n_segments, cp, &plan);
+  if (!ok(s)) return s;
+  const size_t hits_size = carve_round(size_t{hit_capacity} * sizeof(CurveHit));
+  const size_t scratch = carve_round(plan.scratch_bytes);
+  if (buffer_bytes < hits_size + scratch) return short_of(hits_size + scratch, need_bytes);
+  ++c->cut_runs;
+  return run_curve_cross(plan, sc.curves, sc.segments, base + hits_size, scratch,
+                         reinterpret_cast<CurveHit*>(base), hit_capacity, n_hits, &c->curve_cross);
+}
+
+// DRAW of the hits at the buffer's front: counting the chords first, so the buffer is checked
+// for them and for the path before one is stored; then the chords to the front and the path.
+Status curve_draw_stage(const JobSpec& steps, const CurveJobScene& sc, uint32_t n_hits,
+                        uint8_t* base, size_t buffer_bytes, PreparedJob* job, JobCounters* c,
+                        size_t* need_bytes) {
+  CurveCrossParams cp;
+  CurveDrawParams dp;
+  curve_job_params(steps, &cp, &dp);
+  const CurveHit* hits = reinterpret_cast<const CurveHit*>(base);
+  CurveDrawPlan plan;
+  Status s =
+      plan_curve_draw(sc.curves, sc.n_curves, sc.segments, sc.n_segments, hits, n_hits, dp, &plan);
+  if (!ok(s)) return s;
+  const size_t hits_size = carve_round(size_t{n_hits} * sizeof(CurveHit));
+  const size_t draw_size = carve_round(plan.scratch_bytes);
+  if (buffer_bytes < hits_size + draw_size) return short_of(hits_size + draw_size, need_bytes);
+  uint8_t* scratch = base + hits_size;
+  uint32_t n_chords = 0;
+  s = run_curve_draw(plan, sc.curves, sc.segments, hits, n_hits, scratch, draw_size,
+                     SpanSink{&ChordCounter::emit, &n_chords}, nullptr, nullptr);
+  if (!ok(s)) return s;
+  JobBytes path;
+  size_path_stages(n_chords, &path);
+  size_t need = hits_size + draw_size + path.spans;
+  if (path.spans + path.points + path.path > need) need = path.spans + path.points + path.path;
+  if (buffer_bytes < need) return short_of(need, need_bytes);
+  SpanCollector collect{reinterpret_cast<Segment2*>(scratch + draw_size), n_chords, 0};
+  ++c->draw_runs;
+  s = run_curve_draw(plan, sc.curves, sc.segments, hits, n_hits, scratch, draw_size,
+                     SpanSink{&SpanCollector::emit, &collect}, nullptr, &c->curve_draw);
+  if (!ok(s)) return s;
+  // The chords move down to the front (the hits and DRAW's scratch are dead): a forward copy
+  // through a local, so overlapping records are read before they are overwritten.
+  Segment2* front = reinterpret_cast<Segment2*>(base);
+  for (uint32_t i = 0; i < collect.count; ++i) {
+    const Segment2 chord = collect.out[i];
+    front[i] = chord;
+  }
+  collect.out = front;
+  return plan_stage(in_units(steps), base, 0, path.spans, buffer_bytes, collect, LayerCounts{}, job,
+                    c);
+}
+
+}  // namespace
+
+Status job_prepare_curves(const JobSpec& steps, const CurveJobScene& scene, uint32_t hit_capacity,
+                          void* buffer, size_t buffer_bytes, PreparedJob* out,
+                          JobCounters* counters, size_t* need_bytes) {
+  JobCounters c;
+  if (steps.drawing != DrawingEffect::kHaloed || steps.draw.mode != HaloMode::kPaper ||
+      !units_ok(steps) || steps.layers.n > 1)
+    return Status::kBadParameter;
+  if (buffer_misaligned(buffer)) return Status::kMisalignedBuffer;
+  Status s = validate(steps.machine);
+  if (!ok(s)) return s;
+  uint8_t* base = static_cast<uint8_t*>(buffer);
+  uint32_t n_hits = 0;
+  PreparedJob job;
+  s = curve_cross_stage(steps, scene, hit_capacity, base, buffer_bytes, &n_hits, &c, need_bytes);
+  if (ok(s)) s = curve_draw_stage(steps, scene, n_hits, base, buffer_bytes, &job, &c, need_bytes);
+  if (counters) *counters = c;
+  if (!ok(s)) return s;
+  *out = job;
+  return Status::kOk;
+}
+
+size_t CurveJobStage::bytes(const StageNeeds& needs) const {
+  CurveCrossParams cp;
+  CurveDrawParams dp;
+  curve_job_params(*spec, &cp, &dp);
+  CurveCrossPlan plan;
+  if (!ok(plan_curve_cross(scene.curves, scene.n_curves, scene.segments, scene.n_segments, cp,
+                           &plan)))
+    return 0;
+  return carve_round(size_t{needs.crossings} * sizeof(CurveHit)) + carve_round(plan.scratch_bytes);
+}
+
+Status CurveJobStage::run(const StageNeeds& needs, void* buffer, size_t bytes, StageNeeds* want) {
+  size_t need = 0;
+  const Status s =
+      job_prepare_curves(*spec, scene, needs.crossings, buffer, bytes, out, counters, &need);
+  cut_runs += counters->cut_runs;
+  draw_runs += counters->draw_runs;
+  if (s == Status::kCrossingCapacity) want->crossings = need_count(counters->curve_cross.needed);
+  if (s == Status::kWorkspaceTooSmall) want->bytes = need;
+  return s;
+}
+
 size_t EdgeJobStage::bytes(const StageNeeds& needs) {
   JobBytes b;
   if (!ok(job_bytes(*spec, edges, n, needs.crossings, &b))) return 0;

@@ -7,6 +7,7 @@
 #include <stdint.h>
 
 #include "haloplot/band/conductor.h"
+#include "haloplot/curve/curve_draw.h"
 #include "haloplot/cut/cut.h"
 #include "haloplot/draw/draw.h"
 #include "haloplot/motion/machine.h"
@@ -76,10 +77,12 @@ struct JobBytes {
 };
 
 struct JobCounters {
-  uint32_t cut_runs = 0, draw_runs = 0, path_runs = 0;
+  uint32_t cut_runs = 0, draw_runs = 0, path_runs = 0;  // a curve job's crossings count as CUT
   CutStats cut;
   DrawStats draw;
   PathStats path;
+  CurveCrossStats curve_cross;  // a scene with curves (job_prepare_curves)
+  CurveDrawStats curve_draw;
 };
 
 struct PreparedJob {
@@ -128,6 +131,52 @@ Status job_redraw(const JobSpec& spec, uint32_t n, uint32_t crossing_capacity, v
 // their motion through this one call, so their traces can only differ by arithmetic.
 Status init_planner(MotionPlanner* planner, const JobSpec& spec, const PreparedJob& job,
                     void* workspace, size_t workspace_bytes);
+
+// A scene with cubic Bézier edges (curve/curve_draw.h): the curves, and the straight edges
+// among them; edges are numbered curves first, then the segments.
+struct CurveJobScene {
+  const BezierEdge3* curves = nullptr;
+  uint32_t n_curves = 0;
+  const Edge3* segments = nullptr;
+  uint32_t n_segments = 0;
+};
+
+// The first pieces of a curve job's crossing search are flat within this many steps. They only
+// pair the curves up (a crossing's precision comes from the refinement, curve/curve_cross.h):
+// coarse pieces keep the scratch small enough for a controller's arena (the demo trefoil: 96
+// pieces in 22,720 bytes, not 768 in 122,176 at the stage's default of 1/4 unit).
+inline constexpr int32_t kCurveJobPieceSteps = 16;
+
+// The curve stages' settings for a job, in the scene's units: pieces flat within
+// kCurveJobPieceSteps, the segments crossed with each other too (no CUT runs on a scene with
+// curves), the paper's gap of spec.draw.halo, chords within the stage's default 1/4 unit.
+// `plot` of a curve scene uses the same, so it draws what the job plots.
+void curve_job_params(const JobSpec& spec, CurveCrossParams* cross, CurveDrawParams* draw);
+
+// A haloed drawing of a scene with curves (spec.drawing kHaloed, the paper's gap; anything else
+// is kBadParameter): the crossings (run_curve_cross), the curve DRAW's chords (run_curve_draw),
+// then the path of the chords as of any drawing's spans, all in one caller buffer:
+//   [hits | crossing scratch          ]   while the crossings are found
+//   [hits | DRAW scratch | chords     ]   while DRAW runs (once counting, once storing)
+//   [chords | points | path workspace ]   while the path is planned
+// hit_capacity bounds the hits: kCrossingCapacity leaves counters->curve_cross.needed, the
+// capacity a retry needs. kWorkspaceTooSmall leaves *need_bytes (when not null) the buffer a
+// retry needs, as far as the run got. Nothing is partial: a full buffer is an error.
+Status job_prepare_curves(const JobSpec& spec, const CurveJobScene& scene, uint32_t hit_capacity,
+                          void* buffer, size_t buffer_bytes, PreparedJob* out,
+                          JobCounters* counters, size_t* need_bytes = nullptr);
+
+// job_prepare_curves() as a sized stage: needs.crossings is the hit capacity; bytes() is what
+// the crossing search takes (DRAW's and the path's needs come from a run).
+struct CurveJobStage {
+  const JobSpec* spec;
+  CurveJobScene scene;
+  PreparedJob* out;
+  JobCounters* counters;
+  uint32_t cut_runs = 0, draw_runs = 0;
+  size_t bytes(const StageNeeds& needs) const;
+  Status run(const StageNeeds& needs, void* buffer, size_t bytes, StageNeeds* want);
+};
 
 // job_prepare() as a sized stage (memory/sized_stage.h): needs.crossings is CUT's record
 // capacity. cut_runs and draw_runs add up over every run.

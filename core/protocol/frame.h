@@ -40,7 +40,8 @@ enum class FrameType : uint8_t {
   kBandSolidEdges = 0x1E,
   kBandTriangles = 0x1F,
   kPlot = 0x20,
-  kReplot = 0x21,  // another halo width: DRAW only, CUT's result is kept
+  kReplot = 0x21,        // another halo width: DRAW only, CUT's result is kept
+  kUploadCurves = 0x22,  // cubic Bézier edges (projected control points)
   kQueryStatus = 0x30,
   kStatus = 0x31,  // the reply to kQueryStatus
   kPause = 0x3D,   // feed hold: brake to rest, lift the pen, wait (state kPaused once at rest)

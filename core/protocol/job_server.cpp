@@ -15,6 +15,9 @@ size_t pair_bytes(const UploadBegin& s) {
   return carve_round(size_t{s.edges} * 2 * sizeof(uint32_t));
 }
 size_t edge_bytes(const UploadBegin& s) { return carve_round(size_t{s.edges} * sizeof(Edge3)); }
+size_t curve_bytes(const UploadBegin& s) {
+  return carve_round(size_t{s.curves} * sizeof(BezierEdge3));
+}
 size_t face_bytes(const UploadBegin& s) { return carve_round(size_t{s.faces} * sizeof(Triangle)); }
 
 bool hidden_line_drawing(DrawingEffect d) {
@@ -37,10 +40,10 @@ JobServer::JobServer(uint8_t* arena, size_t arena_bytes, uint8_t* rx_buffer, siz
 
 size_t JobServer::job_offset() const {
   // The indexed format keeps the world vertices and the pairs (a new view re-projects them)
-  // in front of the projected edges.
+  // in front of the projected edges; the edges format its curves.
   const size_t front = scene_.format == SceneFormat::kIndexed
                            ? world_bytes(scene_) + pair_bytes(scene_) + face_bytes(scene_)
-                           : 0;
+                           : curve_bytes(scene_);
   return front + edge_bytes(scene_);
 }
 
@@ -126,6 +129,7 @@ Status JobServer::act(const Frame& f) {
     case FrameType::kUploadBegin:
       return upload_begin(f.payload, f.length);
     case FrameType::kUploadEdges:
+    case FrameType::kUploadCurves:
     case FrameType::kUploadVertices:
     case FrameType::kUploadEdgeIndices:
       return upload_records(type, f.payload, f.length);
@@ -188,21 +192,30 @@ Status JobServer::upload_begin(const uint8_t* p, uint16_t n) {
                              ? uint64_t{b.vertices} * sizeof(Point3) + uint64_t{b.edges} * 8 +
                                    uint64_t{b.faces} * sizeof(Triangle) + 24
                              : 0) +
-                        uint64_t{b.edges} * sizeof(Edge3) + 8;
+                        uint64_t{b.edges} * sizeof(Edge3) + 8 +
+                        uint64_t{b.curves} * sizeof(BezierEdge3) + 8;
   if (need > arena_bytes_) return Status::kSceneTooLarge;
   scene_ = b;
   streamed_ = false;
-  received_vertices_ = received_edges_ = received_faces_ = 0;
-  n_edges_ = 0;
+  received_vertices_ = received_edges_ = received_faces_ = received_curves_ = 0;
+  n_edges_ = n_curves_ = 0;
   forget_cut();
-  state_ = b.edges == 0 ? ServerState::kIdle : ServerState::kUploading;
+  state_ = b.edges == 0 && b.curves == 0 ? ServerState::kIdle : ServerState::kUploading;
   return Status::kOk;
 }
 
 Status JobServer::upload_records(FrameType type, const uint8_t* p, uint16_t n) {
   if (state_ != ServerState::kUploading) return Status::kUploadMismatch;
   const bool indexed = scene_.format == SceneFormat::kIndexed;
-  if (type == FrameType::kUploadVertices) {
+  if (type == FrameType::kUploadCurves) {
+    if (indexed || n % kCurveRecordBytes) return Status::kUploadMismatch;
+    const uint32_t k = uint32_t(n / kCurveRecordBytes);
+    if (k > scene_.curves - received_curves_) return Status::kUploadMismatch;
+    BezierEdge3* curves = reinterpret_cast<BezierEdge3*>(arena_);
+    for (uint32_t i = 0; i < k; ++i)
+      curves[received_curves_ + i] = decode_curve(p + i * kCurveRecordBytes);
+    received_curves_ += k;
+  } else if (type == FrameType::kUploadVertices) {
     if (!indexed || n % kVertexRecordBytes) return Status::kUploadMismatch;
     const uint32_t k = uint32_t(n / kVertexRecordBytes);
     if (k > scene_.vertices - received_vertices_) return Status::kUploadMismatch;
@@ -229,14 +242,15 @@ Status JobServer::upload_records(FrameType type, const uint8_t* p, uint16_t n) {
       uint32_t* pairs = reinterpret_cast<uint32_t*>(arena_ + world_bytes(scene_));
       for (uint32_t i = 0; i < 2 * k; ++i) pairs[2 * received_edges_ + i] = get_u32(p + 4 * i);
     } else {
-      Edge3* edges = reinterpret_cast<Edge3*>(arena_);
+      Edge3* edges = reinterpret_cast<Edge3*>(arena_ + curve_bytes(scene_));
       for (uint32_t i = 0; i < k; ++i) edges[received_edges_ + i] = decode_edge(p + i * size);
     }
     received_edges_ += k;
   }
   if (received_edges_ == scene_.edges && received_vertices_ == scene_.vertices &&
-      received_faces_ == scene_.faces) {
+      received_faces_ == scene_.faces && received_curves_ == scene_.curves) {
     n_edges_ = scene_.edges;
+    n_curves_ = scene_.curves;
     state_ = ServerState::kReady;
   }
   return Status::kOk;
@@ -263,6 +277,7 @@ Status JobServer::plot() {
   }
   forget_cut();
   if (hidden_line_drawing(spec_.drawing)) return plot_hidden(job_mem, job_bytes);
+  if (n_curves_ > 0) return plot_curves(edges, job_mem, job_bytes);
   // The crossing count is unknown before CUT: start from a guess and run again with the
   // exact count CUT reports (it never stores a partial CUTSET).
   StageNeeds needs;
@@ -277,6 +292,29 @@ Status JobServer::plot() {
   if (clock_) prepare_ticks_ = clock_() - t0;
   if (!ok(s)) return s;
   has_cut_ = spec_.drawing == DrawingEffect::kHaloed;
+  return start_motion();
+}
+
+// A scene with curves: the curve stages in the job buffer (job_prepare_curves), haloed with the
+// paper's gap only.
+Status JobServer::plot_curves(const Edge3* edges, uint8_t* job_mem, size_t job_bytes) {
+  if (spec_.drawing != DrawingEffect::kHaloed || spec_.draw.mode != HaloMode::kPaper)
+    return Status::kUnsupported;
+  // The hit count is unknown before the search: guess, then run again with the count it
+  // reports (it never stores a partial answer).
+  StageNeeds needs;
+  needs.crossings = 64;
+  const uint64_t t0 = clock_ ? clock_() : 0;
+  CurveJobStage stage{
+      &spec_,
+      CurveJobScene{reinterpret_cast<const BezierEdge3*>(arena_), n_curves_, edges, n_edges_},
+      &job_, &counters_};
+  FixedMemory memory{job_mem, job_bytes};
+  const Status s = run_sized(stage, memory.memory(), &needs);
+  cut_runs_ += stage.cut_runs;
+  draw_runs_ += stage.draw_runs;
+  if (clock_) prepare_ticks_ = clock_() - t0;
+  if (!ok(s)) return s;
   return start_motion();
 }
 
@@ -543,8 +581,9 @@ void JobServer::send_status(uint8_t seq) {
     r.state = ServerState::kPaused;
   r.last_error = last_error_;
   r.free_bytes = uint32_t(arena_bytes_ - job_offset());
-  r.edges = n_edges_;
+  r.edges = n_edges_ + n_curves_;
   r.crossings = has_cut_ ? job_.cutset.n_crossings : 0;
+  if (n_curves_ > 0) r.crossings = counters_.curve_cross.crossings;  // of its last plot
   r.cut_runs = cut_runs_;
   r.draw_runs = draw_runs_;
   r.step_events = motion_.step_events(motion_.ctx);

@@ -10,9 +10,11 @@
 //
 // Memory: one caller arena. The scene takes the front, sized by kUploadBegin (refused with
 // kSceneTooLarge when it cannot fit, before a byte of it is stored): world vertices, index
-// pairs and triangles for the indexed format, then the projected edges; the rest is the job
-// buffer for CUT, DRAW and the path (core/job), or for a hidden-line drawing the projected
-// vertices, the hidden-line run and its strokes (job_prepare_solid).
+// pairs and triangles for the indexed format, then the projected edges (after a scene's
+// projected Bézier edges, kUploadCurves); the rest is the job buffer for CUT, DRAW and the path
+// (core/job), for a scene with curves the curve stages and the path (job_prepare_curves), or
+// for a hidden-line drawing the projected vertices, the hidden-line run and its strokes
+// (job_prepare_solid).
 //
 // Streamed plots (kStreamBegin): the scene never comes whole. The arena is split into the band
 // conductor's arena (the size the host planned its bands for) and a staging buffer behind it
@@ -90,7 +92,7 @@ class JobServer {
   Status last_error() const { return last_error_; }
   const JobCounters& counters() const { return counters_; }
   const JobSpec& spec() const { return spec_; }
-  uint32_t edges() const { return n_edges_; }
+  uint32_t edges() const { return n_edges_ + n_curves_; }  // the stored scene's, curves too
 
  private:
   void on_event(FrameDecoder::Event ev);
@@ -100,6 +102,7 @@ class JobServer {
   Status upload_records(FrameType type, const uint8_t* p, uint16_t n);
   Status plot();
   Status plot_hidden(uint8_t* job_mem, size_t job_bytes);
+  Status plot_curves(const Edge3* edges, uint8_t* job_mem, size_t job_bytes);
   Status replot(const uint8_t* p, uint16_t n);
   Status start_motion();
   Status stream_begin(const uint8_t* p, uint16_t n);
@@ -129,8 +132,8 @@ class JobServer {
   uint16_t last_reply_bytes_ = 0;
 
   UploadBegin scene_;
-  uint32_t received_vertices_ = 0, received_edges_ = 0, received_faces_ = 0;
-  uint32_t n_edges_ = 0;
+  uint32_t received_vertices_ = 0, received_edges_ = 0, received_faces_ = 0, received_curves_ = 0;
+  uint32_t n_edges_ = 0, n_curves_ = 0;
   bool has_cut_ = false;
   uint32_t crossing_capacity_ = 0;
 

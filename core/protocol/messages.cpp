@@ -11,6 +11,21 @@ void encode_upload_begin(const UploadBegin& b, uint8_t out[kUploadBeginBytes]) {
   put_u32(out + 9, b.faces);
 }
 
+void encode_upload_begin_curves(const UploadBegin& b, uint8_t out[kUploadBeginCurvesBytes]) {
+  encode_upload_begin(b, out);
+  put_u32(out + kUploadBeginBytes, b.curves);
+}
+
+void encode_curve(const BezierEdge3& c, uint8_t out[kCurveRecordBytes]) {
+  for (int i = 0; i < 4; ++i) encode_vertex(c.p[i], out + i * kVertexRecordBytes);
+}
+
+BezierEdge3 decode_curve(const uint8_t* p) {
+  BezierEdge3 c;
+  for (int i = 0; i < 4; ++i) c.p[i] = decode_vertex(p + i * kVertexRecordBytes);
+  return c;
+}
+
 void encode_edge(const Edge3& e, uint8_t out[kEdgeRecordBytes]) {
   encode_vertex(e.a, out);
   encode_vertex(e.b, out + kVertexRecordBytes);
@@ -73,13 +88,17 @@ void encode_status(const StatusReport& r, uint8_t out[kStatusBytes]) {
 }
 
 Status decode_upload_begin(const uint8_t* p, size_t n, UploadBegin* out) {
-  if (n != kUploadBeginBytes || p[0] > uint8_t(SceneFormat::kIndexed))
+  if ((n != kUploadBeginBytes && n != kUploadBeginCurvesBytes) ||
+      p[0] > uint8_t(SceneFormat::kIndexed))
     return Status::kMalformedRequest;
   out->format = SceneFormat(p[0]);
   out->vertices = get_u32(p + 1);
   out->edges = get_u32(p + 5);
   out->faces = get_u32(p + 9);
+  out->curves = n == kUploadBeginCurvesBytes ? get_u32(p + kUploadBeginBytes) : 0;
   if (out->format == SceneFormat::kEdges && out->vertices != 0) return Status::kMalformedRequest;
+  // Curves come with projected edges only: the indexed format's view projects vertices.
+  if (out->format != SceneFormat::kEdges && out->curves != 0) return Status::kMalformedRequest;
   return Status::kOk;
 }
 

@@ -4,7 +4,10 @@
 //
 //   kUploadBegin       u8 format (0 edges, 1 vertices + edge indices), u32 vertices,
 //                      u32 edges, u32 faces                                      13 bytes
+//                      or the same and u32 curves (format 0 only: a scene with cubic
+//                      Bézier edges, drawn haloed by the curve stages)          17 bytes
 //   kUploadEdges       Edge3 records: 6 x i32 (x0 y0 z0 x1 y1 z1)            24 per edge
+//   kUploadCurves      BezierEdge3 records: 4 control points of 3 x i32      48 per curve
 //   kUploadVertices    world Point3: 3 x i32                                  12 per vertex
 //   kUploadEdgeIndices 2 x u32 vertex indices                                  8 per edge
 //   kSetView           i32 azimuth, elevation (millidegrees), width, height, margin,
@@ -40,13 +43,15 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "haloplot/curve/bezier.h"
 #include "haloplot/job/job.h"
 #include "haloplot/status/status.h"
 #include "haloplot/view/projection.h"
 
 namespace haloplot {
 
-inline constexpr size_t kUploadBeginBytes = 13, kEdgeRecordBytes = 24, kVertexRecordBytes = 12,
+inline constexpr size_t kUploadBeginBytes = 13, kUploadBeginCurvesBytes = 17,
+                        kCurveRecordBytes = 48, kEdgeRecordBytes = 24, kVertexRecordBytes = 12,
                         kIndexRecordBytes = 8, kViewBytes = 24, kHaloBytes = 5, kEffectsBytes = 3,
                         kMachineBytes = 61, kStatusBytes = 32, kFaceRecordBytes = 16,
                         kHiddenBytes = 22, kStreamBeginBytes = 9, kBandBeginBytes = 20,
@@ -72,6 +77,7 @@ enum class SceneFormat : uint8_t { kEdges = 0, kIndexed = 1 };
 struct UploadBegin {
   SceneFormat format = SceneFormat::kEdges;
   uint32_t vertices = 0, edges = 0, faces = 0;
+  uint32_t curves = 0;  // the 17-byte form's: Bézier edges besides the straight ones
 };
 
 // kPaused: a plot held by kPause, at rest with its pen lifted, until kResume (or kAbort).
@@ -104,7 +110,10 @@ inline int32_t get_i32(const uint8_t* p) { return int32_t(get_u32(p)); }
 
 // Encoders write exactly the documented bytes into `out`.
 void encode_upload_begin(const UploadBegin& b, uint8_t out[kUploadBeginBytes]);
+// The 17-byte form, with b.curves.
+void encode_upload_begin_curves(const UploadBegin& b, uint8_t out[kUploadBeginCurvesBytes]);
 void encode_edge(const Edge3& e, uint8_t out[kEdgeRecordBytes]);
+void encode_curve(const BezierEdge3& c, uint8_t out[kCurveRecordBytes]);
 void encode_vertex(const Point3& p, uint8_t out[kVertexRecordBytes]);
 void encode_view(const View& v, uint8_t out[kViewBytes]);
 void encode_halo(const DrawParams& d, uint8_t out[kHaloBytes]);
@@ -120,6 +129,7 @@ void encode_band_begin(const BandBegin& b, uint8_t out[kBandBeginBytes]);
 // (speeds, plot area) are checked later by validate() of the machine and the view.
 Status decode_upload_begin(const uint8_t* p, size_t n, UploadBegin* out);
 Edge3 decode_edge(const uint8_t* p);
+BezierEdge3 decode_curve(const uint8_t* p);
 Point3 decode_vertex(const uint8_t* p);
 Status decode_view(const uint8_t* p, size_t n, View* out);
 Status decode_halo(const uint8_t* p, size_t n, DrawParams* out);

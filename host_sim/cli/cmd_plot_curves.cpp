@@ -25,7 +25,9 @@ int fail(const std::string& message) {
   return 1;
 }
 
-// The scene's curve drawing, the chords numbered by the file's data lines, in its units.
+// The scene's curve drawing, the chords numbered by the file's data lines, in its units. The
+// stages' settings are a job's (job/job.h curve_job_params): `plot` draws what `sim` and the
+// controller plot.
 bool draw_scene(const std::string& path, int32_t halo_steps, HostCurveDraw* d,
                 int32_t* substep_bits, std::string* error) {
   EdgesWithCurves scene;
@@ -34,9 +36,13 @@ bool draw_scene(const std::string& path, int32_t halo_steps, HostCurveDraw* d,
     *error = ie.message();
     return false;
   }
+  JobSpec spec;
+  spec.draw.halo = halo_steps;
+  spec.substep_bits = *substep_bits;
+  CurveCrossParams cp;
   CurveDrawParams p;
-  p.halo = steps_to_units(halo_steps, *substep_bits);
-  const Status s = host_curve_draw(scene.curves, scene.edges, p, d);
+  curve_job_params(spec, &cp, &p);
+  const Status s = host_curve_draw(scene.curves, scene.edges, cp, p, d);
   if (!ok(s)) {
     *error = path + ": curve drawing failed: " + status_name(s);
     return false;
@@ -189,18 +195,17 @@ int cmd_demo_curve(const Options& o) {
   return error.empty() ? 0 : fail(error);
 }
 
-bool curve_job_edges(const std::string& scene_path, const JobSpec& spec, uint32_t arena,
-                     std::vector<Edge3>* edges, int32_t* substep_bits, std::string* error) {
+bool load_curve_job(const std::string& scene_path, const JobSpec& spec, uint32_t arena,
+                    EdgesWithCurves* scene, int32_t* substep_bits, std::string* error) {
   if (spec.drawing != DrawingEffect::kHaloed || spec.draw.mode != HaloMode::kPaper || arena > 0) {
     *error = scene_path +
-             ": a scene with Bézier edges is drawn haloed with the paper's gap, whole on the "
-             "host (no exact halo, no arena, no other drawing mode yet)";
+             ": a scene with Bézier edges is drawn haloed with the paper's gap, whole (no exact "
+             "halo, no arena, no other drawing mode yet)";
     return false;
   }
-  HostCurveDraw d;
-  if (!draw_scene(scene_path, spec.draw.halo, &d, substep_bits, error)) return false;
-  *edges = chord_edges(d.chords);
-  return true;
+  const InputError ie = read_edges_with_curves_file(scene_path, scene, substep_bits);
+  if (ie.failed()) *error = ie.message();
+  return !ie.failed();
 }
 
 }  // namespace haloplot::host

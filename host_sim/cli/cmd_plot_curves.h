@@ -9,6 +9,7 @@
 #include "cli/options.h"
 #include "haloplot/geometry/contract.h"
 #include "haloplot/job/job.h"
+#include "io/edges_file.h"
 
 namespace haloplot::host {
 
@@ -23,9 +24,10 @@ int cmd_plot_curves(const Options& o);
 // scenes (demo/curve_scenes.h) as an .edges file with 'bezier' records, sized for an A4 page.
 int cmd_demo_curve(const Options& o);
 
-// The haloed chords of a job's curve scene, in the scene's units (*substep_bits), for `sim`
-// to plan as a drawing of whole edges. False with *error saying what is wrong.
-bool curve_job_edges(const std::string& scene_path, const JobSpec& spec, uint32_t arena,
-                     std::vector<Edge3>* edges, int32_t* substep_bits, std::string* error);
+// A job's curve scene for the core's curve job (job/job.h job_prepare_curves), which `sim` and
+// `send` (the controller) run alike: read, with the job's settings checked (haloed, the
+// paper's gap, no arena). False with *error saying what is wrong.
+bool load_curve_job(const std::string& scene_path, const JobSpec& spec, uint32_t arena,
+                    EdgesWithCurves* scene, int32_t* substep_bits, std::string* error);
 
 }  // namespace haloplot::host

@@ -10,6 +10,7 @@
 #include <memory>
 #include <thread>
 
+#include "cli/cmd_plot_curves.h"
 #include "cli/options.h"
 #include "cli/solid_options.h"
 #include "io/edges_file.h"
@@ -68,6 +69,7 @@ struct SendScene {
   JobFile jf;
   bool obj = false;
   std::vector<Edge3> edges;
+  std::vector<BezierEdge3> curves;  // an .edges scene's Bézier edges (`edges`: its straight ones)
   ObjModel model;
   std::vector<Triangle> triangles;
   View view;
@@ -117,6 +119,16 @@ bool load_scene(const std::string& job_path, SendScene* sc, std::string* error) 
   const std::string& scene = sc->jf.scene_path;
   sc->obj = is_mesh_path(scene);
   if (sc->obj) return load_obj(job_path, sc, error);
+  if (edges_file_has_curves(scene)) {
+    // The controller draws the curves itself (the core's curve job, as `sim` runs it).
+    EdgesWithCurves with_curves;
+    if (!load_curve_job(scene, sc->jf.spec, sc->jf.arena, &with_curves, &sc->jf.spec.substep_bits,
+                        error))
+      return false;
+    sc->edges = std::move(with_curves.edges);
+    sc->curves = std::move(with_curves.curves);
+    return true;
+  }
   ie = read_edges_file(scene, &sc->edges, &sc->jf.spec.substep_bits);
   if (ie.failed()) *error = ie.message();
   return !ie.failed();
@@ -273,7 +285,7 @@ int SendSession::stream() {
 int SendSession::upload_and_plot() {
   const bool sent = sc.obj ? client.upload_indexed(sc.jf.spec, sc.view, sc.model.vertices,
                                                    sc.model.edge_pairs, &s, &sc.triangles)
-                           : client.upload(sc.jf.spec, sc.edges, &s);
+                           : client.upload(sc.jf.spec, sc.edges, &s, &sc.curves);
   if (int e = check(sent, "upload")) return e;
   // --resume E: go on with a plot of this job that stopped after E step events (an abort,
   // a reset), drawing nothing twice.

@@ -669,12 +669,15 @@ int cmd_sim(int argc, char** argv) {
   const bool solid_bands = jf.arena > 0 && (jf.spec.drawing == DrawingEffect::kHiddenRemoved ||
                                             jf.spec.drawing == DrawingEffect::kHiddenDashed);
   SolidScene solid;
-  // A scene with Bézier edges is drawn on the host by the curve stages; the job then plots the
-  // chords whole, as it plots a hidden-line drawing's strokes.
+  // A scene with Bézier edges goes to the core's curve job (crossings, the curve DRAW, the
+  // path), the one the controller runs on a curve scene from `send`.
   const bool curves = !solid_bands && edges_file_has_curves(jf.scene_path);
+  EdgesWithCurves curve_scene;
   if (curves) {
-    if (!curve_job_edges(jf.scene_path, jf.spec, jf.arena, &edges, &jf.spec.substep_bits, &error))
+    if (!load_curve_job(jf.scene_path, jf.spec, jf.arena, &curve_scene, &jf.spec.substep_bits,
+                        &error))
       return fail(error);
+    edges = curve_scene.edges;
   } else if (solid_bands) {
     if (!load_solid_job_scene(jf, &solid, &jf.spec.hidden, &error)) return fail(error);
     jf.spec.substep_bits = solid.substep_bits;
@@ -688,16 +691,15 @@ int cmd_sim(int argc, char** argv) {
   if (!solid_bands && (spec.drawing == DrawingEffect::kHiddenRemoved ||
                        spec.drawing == DrawingEffect::kHiddenDashed))
     spec.drawing = DrawingEffect::kAllEdges;
-  if (curves) spec.drawing = DrawingEffect::kAllEdges;
   if (!spec.effects.backlash)
     spec.machine.backlash[0] = spec.machine.backlash[1] = 0;  // not simulated
   SimReport r;
   Status s = Status::kOk;
   error = write_atomically(o.get("-o"), [&](std::ostream& out) {
-    s = solid_bands
-            ? simulate_solid(spec, solid_input(solid), model_closed(solid), &out, &r, jf.arena,
-                             form, pause_at, uint32_t(resume_at))
-            : simulate(spec, edges, &out, &r, jf.arena, form, pause_at, uint32_t(resume_at));
+    s = solid_bands ? simulate_solid(spec, solid_input(solid), model_closed(solid), &out, &r,
+                                     jf.arena, form, pause_at, uint32_t(resume_at))
+                    : simulate(spec, edges, &out, &r, jf.arena, form, pause_at, uint32_t(resume_at),
+                               curves ? &curve_scene.curves : nullptr);
     return ok(s);
   });
   if (s == Status::kArenaTooSmall)
@@ -708,7 +710,12 @@ int cmd_sim(int argc, char** argv) {
   if (!error.empty()) return fail(error);
   if (const int rc = write_exports(o, r, spec, jf)) return rc;
   if (o.has("--stats")) {
-    print_sim_stats(spec, r, edges.size());
+    print_sim_stats(spec, r, edges.size() + curve_scene.curves.size());
+    if (curves)  // the curve job's stages (job/job.h job_prepare_curves)
+      std::fprintf(stderr, "curve_pieces=%u\ncrossings=%u\ngaps=%llu\nchords=%llu\n",
+                   r.job.curve_cross.pieces, r.job.curve_cross.crossings,
+                   (unsigned long long)r.job.curve_draw.gaps,
+                   (unsigned long long)r.job.curve_draw.chords);
     if (!pause_at.empty()) std::fprintf(stderr, "holds=%llu\n", (unsigned long long)r.holds);
     if (jf.arena > 0) print_band_stats(r.bands, jf.arena);
   }

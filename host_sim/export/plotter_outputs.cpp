@@ -9,17 +9,29 @@
 
 namespace haloplot::host {
 
-Status plan_job_path(const JobSpec& spec, const std::vector<Edge3>& edges, PlannedJob* out) {
+Status plan_job_path(const JobSpec& spec, const std::vector<Edge3>& edges, PlannedJob* out,
+                     const std::vector<BezierEdge3>* curves) {
   *out = PlannedJob{};
   const uint32_t n = uint32_t(edges.size());
   // The job buffer from the core's own query; a second run if CUT needs more records.
   StageNeeds needs;
   needs.crossings = 4 * n + 1024;
   PreparedJob job;
-  EdgeJobStage stage{&spec, edges.data(), n, &job, &out->counters, &out->bytes};
   HostMemory memory;
   int rounds = 0;
-  const Status s = run_sized(stage, memory.memory(), &needs, &rounds);
+  Status s = Status::kOk;
+  if (curves != nullptr && !curves->empty()) {
+    // The controller's first guess of the hit count (job_server.cpp plot_curves): the same
+    // runs, so the counters match too.
+    needs.crossings = 64;
+    CurveJobStage stage{&spec,
+                        CurveJobScene{curves->data(), uint32_t(curves->size()), edges.data(), n},
+                        &job, &out->counters};
+    s = run_sized(stage, memory.memory(), &needs, &rounds);
+  } else {
+    EdgeJobStage stage{&spec, edges.data(), n, &job, &out->counters, &out->bytes};
+    s = run_sized(stage, memory.memory(), &needs, &rounds);
+  }
   out->retries = rounds - 1;
   if (!ok(s)) return s;
   out->points.assign(job.points, job.points + job.n_points);

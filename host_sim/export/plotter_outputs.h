@@ -16,6 +16,8 @@ namespace haloplot::host {
 // needs them, then the path planner) in a buffer sized by the stage's own query, as the
 // simulator and the controller run it. *retries: runs beyond the first (a CUT that needed more
 // records). The travel home is not in *points (the motion planner adds it; add_travel_home).
+// With `curves` (not empty) the scene has Bézier edges and `edges` are its straight ones: the
+// core's curve job (job_prepare_curves) instead of CUT and DRAW, as the controller runs it.
 struct PlannedJob {
   std::vector<PathPoint> points;
   std::vector<Segment2> spans;  // what DRAW emitted
@@ -24,7 +26,8 @@ struct PlannedJob {
   JobBytes bytes;
   int retries = 0;
 };
-Status plan_job_path(const JobSpec& spec, const std::vector<Edge3>& edges, PlannedJob* out);
+Status plan_job_path(const JobSpec& spec, const std::vector<Edge3>& edges, PlannedJob* out,
+                     const std::vector<BezierEdge3>* curves = nullptr);
 
 // The travel home as the path's last point when the job ends at the origin (spec.finish_home)
 // and the path does not end there already: the exporters' G-code and HPGL end where the plot does.

@@ -14,7 +14,7 @@ uint64_t splitmix(uint64_t* s) {
 }
 
 // Frames of at most this many payload bytes: a whole number of records of every kind.
-constexpr size_t kChunk = 960;  // 40 edges, 80 vertices or 120 index pairs
+constexpr size_t kChunk = 960;  // 40 edges, 80 vertices, 120 index pairs or 20 curves
 
 }  // namespace
 
@@ -128,13 +128,28 @@ bool JobClient::chunks(FrameType type, const std::vector<uint8_t>& records, size
   return true;
 }
 
-bool JobClient::upload(const JobSpec& spec, const std::vector<Edge3>& edges, Status* status) {
+bool JobClient::upload(const JobSpec& spec, const std::vector<Edge3>& edges, Status* status,
+                       const std::vector<BezierEdge3>* curves) {
   if (!settings(spec, status)) return false;
   if (!ok(*status)) return true;
-  std::vector<uint8_t> begin(kUploadBeginBytes);
-  encode_upload_begin(UploadBegin{SceneFormat::kEdges, 0, uint32_t(edges.size()), 0}, begin.data());
+  const size_t n_curves = curves ? curves->size() : 0;
+  UploadBegin b{SceneFormat::kEdges, 0, uint32_t(edges.size()), 0};
+  b.curves = uint32_t(n_curves);
+  // A straight scene sends the 13-byte form, as before curves.
+  std::vector<uint8_t> begin(n_curves > 0 ? kUploadBeginCurvesBytes : kUploadBeginBytes);
+  if (n_curves > 0)
+    encode_upload_begin_curves(b, begin.data());
+  else
+    encode_upload_begin(b, begin.data());
   if (!request(FrameType::kUploadBegin, begin, status)) return false;
   if (!ok(*status)) return true;
+  if (n_curves > 0) {
+    std::vector<uint8_t> curve_records(n_curves * kCurveRecordBytes);
+    for (size_t i = 0; i < n_curves; ++i)
+      encode_curve((*curves)[i], &curve_records[i * kCurveRecordBytes]);
+    if (!chunks(FrameType::kUploadCurves, curve_records, kCurveRecordBytes, status)) return false;
+    if (!ok(*status)) return true;
+  }
   std::vector<uint8_t> records(edges.size() * kEdgeRecordBytes);
   for (size_t i = 0; i < edges.size(); ++i) encode_edge(edges[i], &records[i * kEdgeRecordBytes]);
   return chunks(FrameType::kUploadEdges, records, kEdgeRecordBytes, status);

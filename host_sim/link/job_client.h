@@ -47,8 +47,10 @@ class JobClient {
                std::vector<uint8_t>* reply_payload = nullptr);
 
   bool sync();
-  // The whole job: machine, effects, halo, then the scene as projected edges.
-  bool upload(const JobSpec& spec, const std::vector<Edge3>& edges, Status* status);
+  // The whole job: machine, effects, halo, then the scene as projected edges (and, when
+  // `curves` is given and not empty, its projected Bézier edges before them: kUploadCurves).
+  bool upload(const JobSpec& spec, const std::vector<Edge3>& edges, Status* status,
+              const std::vector<BezierEdge3>* curves = nullptr);
   // The scene as world vertices and index pairs, projected on the controller with `view`.
   // With `faces` (triangles, for the hidden-line drawings) they are uploaded too.
   bool upload_indexed(const JobSpec& spec, const View& view, const std::vector<Point3>& world,

@@ -22,9 +22,10 @@ Status collect_interval(void* context, const CurveInterval& i) {
 }  // namespace
 
 Status host_curve_draw(const std::vector<BezierEdge3>& curves, const std::vector<Edge3>& segments,
-                       const CurveDrawParams& params, HostCurveDraw* out) {
+                       const CurveCrossParams& cross, const CurveDrawParams& params,
+                       HostCurveDraw* out) {
   *out = HostCurveDraw();
-  CurveCrossParams cp;
+  CurveCrossParams cp = cross;
   cp.segment_pairs = true;
   auto t0 = std::chrono::steady_clock::now();
   CurveCrossPlan plan;

@@ -20,7 +20,9 @@ struct HostCurveDraw {
   double cross_ms = 0, draw_ms = 0;
 };
 
+// `cross`'s segment_pairs is set here (no CUT runs on a scene with curves).
 Status host_curve_draw(const std::vector<BezierEdge3>& curves, const std::vector<Edge3>& segments,
-                       const CurveDrawParams& params, HostCurveDraw* out);
+                       const CurveCrossParams& cross, const CurveDrawParams& params,
+                       HostCurveDraw* out);
 
 }  // namespace haloplot::host

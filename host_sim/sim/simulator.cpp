@@ -38,9 +38,10 @@ struct RecordingHal {
 
 // The path for the planner: the whole scene's from one job buffer (the job stage the
 // exporters of `plot` plan with too).
-Status prepare_whole(const JobSpec& spec, const std::vector<Edge3>& edges, SimReport* r) {
+Status prepare_whole(const JobSpec& spec, const std::vector<Edge3>& edges, SimReport* r,
+                     const std::vector<BezierEdge3>* curves) {
   PlannedJob planned;
-  const Status s = plan_job_path(spec, edges, &planned);
+  const Status s = plan_job_path(spec, edges, &planned, curves);
   r->job = planned.counters;
   r->bytes = planned.bytes;
   r->retries = planned.retries;
@@ -130,14 +131,17 @@ bool edge_drawing(const JobSpec& spec) {
 
 Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostream* trace,
                 SimReport* r, size_t arena_bytes, TraceForm form,
-                const std::vector<uint32_t>& pause_at, uint32_t resume_at) {
+                const std::vector<uint32_t>& pause_at, uint32_t resume_at,
+                const std::vector<BezierEdge3>* curves) {
   *r = SimReport{};
   r->arena_bytes = arena_bytes;
   Status s = validate(spec.machine);
   if (!ok(s)) return s;
   std::vector<uint64_t> buffer;
-  if (arena_bytes == 0) {
-    s = prepare_whole(spec, edges, r);
+  const bool has_curves = curves != nullptr && !curves->empty();
+  if (arena_bytes == 0 || has_curves) {
+    if (arena_bytes > 0) return Status::kUnsupported;  // curves are not drawn in bands yet
+    s = prepare_whole(spec, edges, r, curves);
     return ok(s) ? run_motion(spec, nullptr, trace, r, form, pause_at, resume_at) : s;
   }
   if (!edge_drawing(spec)) return Status::kBadParameter;

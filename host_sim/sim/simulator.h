@@ -44,9 +44,12 @@ struct SimReport {
 // made that many step events, and resumed at rest; ascending. resume_at > 0: the plot goes on
 // from where a run of it stopped after that many step events (an abort), as the controller
 // does after `haloplot send --resume` (motion/virtual_run.h skip_events).
+// `curves` (not empty): the scene's Bézier edges, `edges` its straight ones, drawn haloed by
+// the core's curve job (job/job.h job_prepare_curves) as the controller draws them; no arena.
 Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostream* trace,
                 SimReport* report, size_t arena_bytes = 0, TraceForm form = TraceForm::kText,
-                const std::vector<uint32_t>& pause_at = {}, uint32_t resume_at = 0);
+                const std::vector<uint32_t>& pause_at = {}, uint32_t resume_at = 0,
+                const std::vector<BezierEdge3>* curves = nullptr);
 
 // The same with the bands streamed in (band/conductor.h begin_streamed), as a controller that
 // receives them over its link runs it: the stream may make the plot wait (kBusy).

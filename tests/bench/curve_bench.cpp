@@ -52,7 +52,7 @@ int main() {
     HostCurveDraw d;
     CurveDrawParams p;
     p.halo = W;
-    if (!ok(host_curve_draw(knot.curves, knot.segments, p, &d))) return 1;
+    if (!ok(host_curve_draw(knot.curves, knot.segments, CurveCrossParams{}, p, &d))) return 1;
     cross_ms.push_back(d.cross_ms);
     cdraw_ms.push_back(d.draw_ms);
     cross_scratch = d.cross_scratch_bytes;

@@ -4,7 +4,9 @@
 // damaged and truncated frames are NAKed and the job still plots identically; a lost ACK
 // does not store a chunk twice; a re-plot runs DRAW only and equals the simulator with the
 // new width; each bad request gets its named error and leaves the stored job intact; an
-// indexed scene projected on the controller lands within 1/2 + 2^-9 steps of long double.
+// indexed scene projected on the controller lands within 1/2 + 2^-9 steps of long double; a
+// scene with Bézier edges, drawn by the controller's curve job, plots the strokes of the host's
+// curve drawing (pipeline/curve_pipeline.h, which runs the curve stages without the job).
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -13,8 +15,10 @@
 #include "../check.h"
 #include "../support/solid_scenes.h"
 #include "../support/virtual_motion.h"
+#include "demo/curve_scenes.h"
 #include "haloplot/scene/cube_array.h"
 #include "link/job_client.h"
+#include "pipeline/curve_pipeline.h"
 #include "pipeline/drawing_modes.h"
 #include "pipeline/surface_pipeline.h"
 #include "sim/simulator.h"
@@ -443,6 +447,82 @@ void solid_scene() {
   }
 }
 
+// The demo trefoil (24 Bézier edges, 3 crossings) and a straight edge across it, uploaded as
+// curves and edges into a controller's 96 KB arena: the controller finds the crossings, draws
+// the halos and plots; its trace must be the plot of the chords the host's curve drawing
+// makes with the same settings (host_curve_draw, no job code), drawn whole. Then the refusals:
+// a curve record of the wrong length, curves in the indexed format, the exact halo, an arena
+// too small for the crossing search.
+void curve_scene() {
+  CurveView view;
+  view.size = 15200;
+  view.margin = 400;
+  host::CurveScene knot = trefoil_knot(24, view);
+  const std::vector<Edge3> segments = {Edge3{{1000, 7000, 20000}, {14000, 8000, 20000}}};
+  JobSpec spec = demo_spec(80);
+  CurveCrossParams cp;
+  CurveDrawParams dp;
+  curve_job_params(spec, &cp, &dp);
+  HostCurveDraw d;
+  CHECK(ok(host_curve_draw(knot.curves, segments, cp, dp, &d)));
+  std::vector<Edge3> chords;
+  for (const Span& c : d.chords) chords.push_back(Edge3{{c.x0, c.y0, 0}, {c.x1, c.y1, 0}});
+  JobSpec whole = spec;
+  whole.drawing = DrawingEffect::kAllEdges;
+  const std::string want = simulated(whole, chords);
+  // The knot's 3 crossings and the segment's over it, as the host drawing counts them: the
+  // controller must report as many.
+  const uint32_t crossings = d.cross_stats.crossings;
+  CHECK(crossings > 3);
+  Controller c(96 * 1024);
+  Loopback link(c);
+  JobClient client(link);
+  Status s;
+  CHECK(client.sync() && client.upload(spec, segments, &s, &knot.curves) && ok(s));
+  CHECK(client.request(FrameType::kPlot, {}, &s));
+  CHECK_MSG(ok(s), std::string("curve plot: ") + status_name(s));
+  StatusReport r;
+  CHECK(client.wait_idle(&r, 0));
+  CHECK_EQ(r.edges, 25u);
+  CHECK_EQ(r.crossings, crossings);
+  CHECK_MSG(c.motion.traces.size() == 1 && c.motion.traces[0] == want,
+            "the controller's curve plot is the host curve drawing's chords, plotted whole");
+  // sim of the same job (the curve job on the host) is that trace too.
+  std::ostringstream sim_trace;
+  SimReport sr;
+  CHECK(ok(simulate(spec, segments, &sim_trace, &sr, 0, TraceForm::kText, {}, 0, &knot.curves)));
+  CHECK(sim_trace.str() == want);
+  // A curve record cut short; the indexed format with curves; the exact halo.
+  std::vector<uint8_t> begin(kUploadBeginCurvesBytes);
+  UploadBegin b{SceneFormat::kEdges, 0, 0, 0};
+  b.curves = 2;
+  encode_upload_begin_curves(b, begin.data());
+  CHECK(client.request(FrameType::kUploadBegin, begin, &s) && ok(s));
+  CHECK(client.request(FrameType::kUploadCurves, std::vector<uint8_t>(kCurveRecordBytes + 1), &s));
+  CHECK_MSG(s == Status::kUploadMismatch,
+            std::string("expected kUploadMismatch, got ") + status_name(s));
+  b.format = SceneFormat::kIndexed;
+  b.vertices = 3;
+  encode_upload_begin_curves(b, begin.data());
+  CHECK(client.request(FrameType::kUploadBegin, begin, &s));
+  CHECK_MSG(s == Status::kMalformedRequest,
+            std::string("expected kMalformedRequest, got ") + status_name(s));
+  JobSpec exact = spec;
+  exact.draw.mode = HaloMode::kExact;
+  CHECK(client.upload(exact, segments, &s, &knot.curves) && ok(s));
+  CHECK(client.request(FrameType::kPlot, {}, &s));
+  CHECK_MSG(s == Status::kUnsupported, std::string("expected kUnsupported, got ") + status_name(s));
+  // 8 KB: the scene fits (1,176 bytes), the crossing search does not; named, no plot.
+  Controller small(8 * 1024);
+  Loopback small_link(small);
+  JobClient small_client(small_link);
+  CHECK(small_client.sync() && small_client.upload(spec, segments, &s, &knot.curves) && ok(s));
+  CHECK(small_client.request(FrameType::kPlot, {}, &s));
+  CHECK_MSG(s == Status::kWorkspaceTooSmall,
+            std::string("expected kWorkspaceTooSmall, got ") + status_name(s));
+  CHECK(small.motion.traces.empty());
+}
+
 }  // namespace
 
 int main() {
@@ -454,5 +534,6 @@ int main() {
   busy_and_abort();
   indexed_scene();
   solid_scene();
+  curve_scene();
   return check::finish("job_server");
 }
