@@ -35,9 +35,11 @@ min_bands=2
 send_opts=(--trace-digest)
 if [ "$kind" = solid ]; then
   "$tool" demo-scene --cubes 10 -o cubes10.obj
-  # A quarter of a motor step per plot step: the same bands and hidden lines, a quarter of the
-  # step interrupts (QEMU's time goes to them).
-  printf 'scene cubes10.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\nkinematics corexy\nsteps 1/4\narena 65536\n' \
+  # A sixteenth of a motor step per plot step: the same 20 bands, hidden lines and hatching
+  # worked out on the chip and the same link traffic, a sixteenth of the step interrupts, where
+  # QEMU's time goes (161,000 steps a motor; at a quarter, 200 s of the test command's time).
+  # The step interrupt at finer steps is firmware_link's and firmware_stream_dashed's.
+  printf 'scene cubes10.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\nkinematics corexy\nsteps 1/16\narena 65536\n' \
     > demo.job
   "$tool" sim demo.job -o host.trace --stats 2> host.stats
   host=$(trace_digest host.trace)
