@@ -17,16 +17,8 @@ cd "$work" || exit 1
 pass=0 fail=0
 expect() { if eval "$1" > out.txt 2>&1; then pass=$((pass + 1)); echo "ok: $(tail -1 out.txt)"; else fail=$((fail + 1)); echo "FAILED: $2: $(cat out.txt)"; fi; }
 
-box() {  # x0 x1 y0 y1 z0 z1 first-vertex: 8 vertices and 6 faces, counter-clockwise outside
-  local x0=$1 x1=$2 y0=$3 y1=$4 z0=$5 z1=$6 b=$7
-  for y in $y0 $y1; do for z in $z0 $z1; do for x in $x0 $x1; do echo "v $x $y $z"; done; done; done
-  echo "f $b $((b + 2)) $((b + 3)) $((b + 1))"
-  echo "f $((b + 4)) $((b + 5)) $((b + 7)) $((b + 6))"
-  echo "f $b $((b + 1)) $((b + 5)) $((b + 4))"
-  echo "f $((b + 2)) $((b + 6)) $((b + 7)) $((b + 3))"
-  echo "f $b $((b + 4)) $((b + 6)) $((b + 2))"
-  echo "f $((b + 1)) $((b + 3)) $((b + 7)) $((b + 5))"
-}
+# shellcheck source=../support/model_files.sh
+source "$(cd "$(dirname "$0")" && pwd)/../support/model_files.sh"  # box
 { box 0 2 0 2 0 -2 1; box 0.7 2.6 0.4 2.5 -0.6 -2.7 9; } > pierced.obj
 drawing="--view 30,25 --mode hidden-dashed --outline --hatch 1"
 all_five='"1 visible" "2 hidden" "3 intersections" "4 hatching" "5 outlines"'

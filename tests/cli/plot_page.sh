@@ -42,16 +42,8 @@ expect "$check gcode halo.svg halo.gcode" "subpaths are the G-code's pen-down ru
 expect "$check hpgl halo.svg halo.hpgl" "subpaths are the HPGL's pen-down runs"
 
 # Lines where faces cross get their own layer, only when there are some.
-box() {  # x0 x1 y0 y1 z0 z1 first-vertex: 8 vertices and 6 faces, counter-clockwise outside
-  local x0=$1 x1=$2 y0=$3 y1=$4 z0=$5 z1=$6 b=$7
-  for y in $y0 $y1; do for z in $z0 $z1; do for x in $x0 $x1; do echo "v $x $y $z"; done; done; done
-  echo "f $b $((b + 2)) $((b + 3)) $((b + 1))"
-  echo "f $((b + 4)) $((b + 5)) $((b + 7)) $((b + 6))"
-  echo "f $b $((b + 1)) $((b + 5)) $((b + 4))"
-  echo "f $((b + 2)) $((b + 6)) $((b + 7)) $((b + 3))"
-  echo "f $b $((b + 4)) $((b + 6)) $((b + 2))"
-  echo "f $((b + 1)) $((b + 3)) $((b + 7)) $((b + 5))"
-}
+# shellcheck source=../support/model_files.sh
+source "$(cd "$(dirname "$0")" && pwd)/../support/model_files.sh"  # box
 { box 0 2 0 2 0 -2 1; box 0.7 2.6 0.4 2.5 -0.6 -2.7 9; } > pierced.obj
 "$tool" plot pierced.obj --view 30,25 --mode hidden-removed -o cross.svg 2> /dev/null
 "$tool" plot pierced.obj --view 30,25 --mode hidden-removed --no-intersections -o nocross.svg 2> /dev/null

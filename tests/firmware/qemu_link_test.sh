@@ -53,18 +53,9 @@ if [ "$solids" = yes ]; then
 cp "$(dirname "$0")/../../scenes/pair_of_cubes.obj" cubes.obj
 printf 'scene cubes.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\nkinematics corexy\nsteps 1/4\n' > solid.job
 "$tool" sim solid.job -o host_solid.trace
+source "$repo_root/tests/support/model_files.sh"
 # Two boxes that pass through each other: the QI finds conflicts and the fallback cuts three
 # edges where they pierce a face, on the controller, in the default sub-step units.
-box() {  # x0 x1 y0 y1 z0 z1 first-vertex: 8 vertices and 6 faces, counter-clockwise outside
-  local x0=$1 x1=$2 y0=$3 y1=$4 z0=$5 z1=$6 b=$7
-  for y in $y0 $y1; do for z in $z0 $z1; do for x in $x0 $x1; do echo "v $x $y $z"; done; done; done
-  echo "f $b $((b + 2)) $((b + 3)) $((b + 1))"
-  echo "f $((b + 4)) $((b + 5)) $((b + 7)) $((b + 6))"
-  echo "f $b $((b + 1)) $((b + 5)) $((b + 4))"
-  echo "f $((b + 2)) $((b + 6)) $((b + 7)) $((b + 3))"
-  echo "f $b $((b + 4)) $((b + 6)) $((b + 2))"
-  echo "f $((b + 1)) $((b + 3)) $((b + 7)) $((b + 5))"
-}
 { box 0 2 0 2 0 -2 1; box 0.7 2.6 0.4 2.5 -0.6 -2.7 9; } > pierced.obj
 printf 'scene pierced.obj\ndrawing hidden-removed\nview 30,25\nkinematics corexy\n' > pierced.job
 "$tool" sim pierced.job -o host_pierced.trace
@@ -78,7 +69,6 @@ else
   ok
 fi
 # A sphere through a torus (10 x 5 and 6 x 5 facets), its intersection lines too.
-source "$repo_root/tests/support/model_files.sh"
 torus_sphere_obj > torus_sphere.obj
 printf 'scene torus_sphere.obj\ndrawing hidden-removed\nview 30,25\nkinematics corexy\nsteps 1/4\n' \
   > torus_sphere.job

@@ -37,3 +37,17 @@ torus_sphere_obj() {
       printf "f %d %d %d\n", bot, base + 2 + (nt - 2) * ns + k, base + 2 + (nt - 2) * ns + (k + 1) % ns
   }'
 }
+
+# An axis-aligned box as OBJ lines: box x0 x1 y0 y1 z0 z1 FIRST-VERTEX (its vertices are numbered
+# from FIRST-VERTEX, so boxes can be concatenated into one file); 8 vertices and 6 faces,
+# counter-clockwise seen from outside when x0 < x1, y0 < y1 and z0 > z1 as the tests write them.
+box() {  # x0 x1 y0 y1 z0 z1 first-vertex: 8 vertices and 6 faces, counter-clockwise outside
+  local x0=$1 x1=$2 y0=$3 y1=$4 z0=$5 z1=$6 b=$7
+  for y in $y0 $y1; do for z in $z0 $z1; do for x in $x0 $x1; do echo "v $x $y $z"; done; done; done
+  echo "f $b $((b + 2)) $((b + 3)) $((b + 1))"
+  echo "f $((b + 4)) $((b + 5)) $((b + 7)) $((b + 6))"
+  echo "f $b $((b + 1)) $((b + 5)) $((b + 4))"
+  echo "f $((b + 2)) $((b + 6)) $((b + 7)) $((b + 3))"
+  echo "f $b $((b + 4)) $((b + 6)) $((b + 2))"
+  echo "f $((b + 1)) $((b + 3)) $((b + 7)) $((b + 5))"
+}
