@@ -4,6 +4,9 @@
 //     gap, on the strand behind, and the strand in front is drawn there; each side of a gap has
 //     the arc length W / sin(theta) (the reference's angle, the arc integrated from the
 //     reference's speed) within the bound docs/curves.md states;
+//  1b. crossings at joints: knots fitted so that crossings fall on joints (the reference keeps
+//     crossings at edge ends), a curve through another chain's joint, and two joints that
+//     touch or cross (hand-worked);
 //  2. the same knot written by this test as ~10,000 straight edges (its own long-double
 //     evaluation) and drawn by the straight-edge CUT and DRAW: the same ink within a step.
 // `curve_draw plant front` cuts the gaps on the front strand and `plant width` draws with 3/4
@@ -370,6 +373,49 @@ void test_through_joint() {
   }
 }
 
+// Hand-worked: chain A-A' along y = 1000 at depth 10 with its joint at (1000, 1000), chain
+// B-B' at depth 20 with its joint at the same (x, y), leaving it at slopes -0.3 and 0.3 (both
+// above A: a touch, every edge drawn whole) or with B' turned below A (B crosses A there: A,
+// behind, loses a gap on each side of its joint, B is whole).
+void test_touch_at_joint() {
+  for (bool crossing : {false, true}) {
+    CurveScene s;
+    s.curves.push_back(
+        BezierEdge3{{{0, 1000, 10}, {300, 1000, 10}, {700, 1000, 10}, {1000, 1000, 10}}});
+    s.curves.push_back(
+        BezierEdge3{{{1000, 1000, 10}, {1300, 1000, 10}, {1700, 1000, 10}, {2000, 1000, 10}}});
+    s.curves.push_back(
+        BezierEdge3{{{0, 1300, 20}, {300, 1210, 20}, {700, 1090, 20}, {1000, 1000, 20}}});
+    const int sign = crossing ? -1 : 1;
+    s.curves.push_back(BezierEdge3{{{1000, 1000, 20},
+                                    {1300, 1000 + sign * 90, 20},
+                                    {1700, 1000 + sign * 210, 20},
+                                    {2000, 1000 + sign * 300, 20}}});
+    const Drawing d = draw_core(s, 100);
+    std::vector<std::vector<CurveInterval>> by_edge(4);
+    for (const CurveInterval& i : d.intervals) by_edge[i.curve].push_back(i);
+    const uint64_t one = uint64_t{1} << 32;
+    CHECK_EQ(d.stats.joint_crossings, uint64_t{crossing ? 1u : 0u});
+    for (uint32_t k = 0; k < 4; ++k) {
+      const bool cut = crossing && k < 2;
+      CHECK_MSG(by_edge[k].size() == 1, "one visible interval on each edge");
+      if (by_edge[k].size() != 1) continue;
+      const CurveInterval& v = by_edge[k][0];
+      // A cut edge loses W / sin(theta) = 100 * sqrt(1.09) / 0.3 = 348 units of arc at the
+      // joint, sin(theta) from slope 0.3 against 0; A's speed runs from 900 (at its ends) to
+      // 1,050 units per unit of t, so between 0.33 and 0.39 of its parameter: 0.2 to 0.5 here.
+      const bool whole = v.t0 == 0 && v.t1 == one;
+      const uint64_t lo = one / 10 * 2, hi = one / 10 * 5;
+      const bool gap_at_joint = k == 0 ? (v.t0 == 0 && one - v.t1 > lo && one - v.t1 < hi)
+                                       : (v.t1 == one && v.t0 > lo && v.t0 < hi);
+      CHECK_MSG(cut ? gap_at_joint : whole, std::string(crossing ? "crossing" : "touch") +
+                                                " at a joint: edge " + std::to_string(k) +
+                                                " drawn on [" + std::to_string(double(v.t0) / one) +
+                                                ", " + std::to_string(double(v.t1) / one) + "]");
+    }
+  }
+}
+
 // Straight edges among curves cross each other in the curve stages too (no CUT runs on such a
 // scene). Hand-worked: a horizontal segment at depth 0 under a vertical one at depth 10, both
 // 2,000 units long, crossing at right angles in their middles: the lower one loses
@@ -487,6 +533,7 @@ int main(int argc, char** argv) {
   test_gaps();
   test_gaps_at_joints();
   test_through_joint();
+  test_touch_at_joint();
   test_segments_among_curves();
   test_flattening();
   return check::finish("curve_draw");
