@@ -241,13 +241,228 @@ uint32_t link_joints(const Scene& s, uint32_t* order, uint32_t* link) {
   return joints;
 }
 
+// ---- crossings at joints ----
+
+// Two chains that pass through one projected point at different depths, each with a joint
+// there, may cross at it; run_curve_cross() sees only edge ends meeting there (never a
+// crossing). The chains cross when their directions alternate around the point: the two
+// directions of one chain lie strictly on opposite sides of the other chain's path through
+// it. Directions are control-point differences (below 2^21 a coordinate): their cross
+// products are below 2^43.
+static_assert(2 * (kCoordBits + 1) + 1 < 63, "a cross of two end directions fits int64_t");
+
+int64_t cross2(const int64_t u[2], const int64_t v[2]) { return u[0] * v[1] - u[1] * v[0]; }
+
+// +1 when w is strictly inside the counter-clockwise turn from u to v, -1 inside the turn from
+// v to u, 0 on either ray (a tangency: no side).
+int side_of_path(const int64_t u[2], const int64_t v[2], const int64_t w[2]) {
+  const int64_t uw = cross2(u, w), wv = cross2(w, v), uv = cross2(u, v);
+  const bool on_u = uw == 0 && u[0] * w[0] + u[1] * w[1] > 0;
+  const bool on_v = wv == 0 && v[0] * w[0] + v[1] * w[1] > 0;
+  if (on_u || on_v) return 0;
+  // The turn from u to v is convex (uv > 0), a half-plane (uv = 0) or reflex (uv < 0).
+  const bool inside = uv > 0 ? (uw > 0 && wv > 0) : uv == 0 ? uw > 0 : (uw >= 0 || wv >= 0);
+  return inside ? 1 : -1;
+}
+
+// The half-gap on the edge of end `e` (its tangent at the joint) against the front chain's two
+// ends f[0], f[1]: the larger of the two, so the gap covers either side's angle.
+int64_t joint_half_gap(const Scene& s, uint32_t e, const uint32_t f[2], int32_t halo) {
+  const Dir a = tangent_dir(s.edge(e / 2), (e & 1) ? kCurveParamOne : 0);
+  int64_t most = 0;
+  for (int i = 0; i < 2; ++i) {
+    const Dir b = tangent_dir(s.edge(f[i] / 2), (f[i] & 1) ? kCurveParamOne : 0);
+    const int64_t dt = half_gap(a, b, halo);
+    most = dt > most ? dt : most;
+  }
+  return most;
+}
+
+// Joints j (ends j[0], j[1]) and k at one projected point: when they cross at different
+// depths, the gap on both edges of the joint behind (end_gap, per end, in its edge's parameter).
+void joint_pair(const Scene& s, const uint32_t j[2], const uint32_t k[2], int32_t halo,
+                int64_t* end_gap, CurveDrawStats& st) {
+  int64_t pj[3], pk[3], uj[2], vj[2], uk[2], vk[2];
+  end_of(s, j[0], pj, uj);
+  end_of(s, j[1], pj, vj);
+  end_of(s, k[0], pk, uk);
+  end_of(s, k[1], pk, vk);
+  if (pj[2] == pk[2]) return;  // one 3-D point: a meeting
+  if (side_of_path(uj, vj, uk) * side_of_path(uj, vj, vk) != -1) return;  // a touch
+  const uint32_t* back = pj[2] < pk[2] ? j : k;                           // larger z is nearer
+  const uint32_t* front = pj[2] < pk[2] ? k : j;
+  for (int i = 0; i < 2; ++i) {
+    const int64_t dt = joint_half_gap(s, back[i], front, halo);
+    end_gap[back[i]] = dt > end_gap[back[i]] ? dt : end_gap[back[i]];
+  }
+  ++st.gaps;
+  ++st.joint_crossings;
+}
+
+// Over the ends sorted by (x, y, z) (link_joints' order): the joints at each projected point,
+// taken in pairs.
+void joint_crossings(const Scene& s, const uint32_t* order, const uint32_t* link, int32_t halo,
+                     int64_t* end_gap, CurveDrawStats& st) {
+  const uint32_t ends = 2 * s.n;
+  for (uint32_t i = 0; i < ends; ++i) end_gap[i] = 0;
+  for (uint32_t i = 0; i < ends;) {
+    int64_t pa[3], pb[3], d[2];
+    end_of(s, order[i], pa, d);
+    uint32_t j = i + 1;
+    for (; j < ends; ++j) {
+      end_of(s, order[j], pb, d);
+      if (pa[0] != pb[0] || pa[1] != pb[1]) break;
+    }
+    // A joint is named by its lower end; each pair of joints once.
+    for (uint32_t x = i; x < j; ++x) {
+      const uint32_t ex = order[x];
+      if (link[ex] == kNoLink || link[ex] < ex) continue;
+      for (uint32_t y = x + 1; y < j; ++y) {
+        const uint32_t ey = order[y];
+        if (link[ey] == kNoLink || link[ey] < ey) continue;
+        const uint32_t jx[2] = {ex, link[ex]}, jy[2] = {ey, link[ey]};
+        joint_pair(s, jx, jy, halo, end_gap, st);
+      }
+    }
+    i = j;
+  }
+}
+
+// ---- a chain through another's joint ----
+
+// Edge k passing, in its interior, exactly through the projected point of a joint of another
+// chain: found where it does so at a piece end of its exact halving (a dyadic parameter, as a
+// symmetric scene has it), by descending into the pieces whose box holds the point, to
+// kCurveMaxDepth (on a stack of kCurveMaxDepth + 2 pieces in scratch). A pass through the point
+// between piece ends is left to run_curve_cross(): an end-point meeting there.
+static_assert(kCurvePointBits + 1 + kCoordBits + 1 + 1 < 126, "a side of a pass fits Wide");
+struct Through {
+  uint64_t t = 0;
+  int64_t z = 0;      // depth, Q20.42
+  int64_t d[2] = {};  // direction along k there, Q20.42 (below 2^62)
+};
+bool passes_through(const Scene& s, uint32_t k, const int64_t p[2], CurvePiece* stack,
+                    Through* out) {
+  const Ctl c = s.edge(k);
+  const int64_t px = p[0], py = p[1];
+  if (px < c.x[0] && px < c.x[1] && px < c.x[2] && px < c.x[3]) return false;
+  if (px > c.x[0] && px > c.x[1] && px > c.x[2] && px > c.x[3]) return false;
+  if (py < c.y[0] && py < c.y[1] && py < c.y[2] && py < c.y[3]) return false;
+  if (py > c.y[0] && py > c.y[1] && py > c.y[2] && py > c.y[3]) return false;
+  const int64_t fx = px * (int64_t{1} << kCurveFracBits), fy = py * (int64_t{1} << kCurveFracBits);
+  uint32_t top = 0;
+  stack[top++] = k < s.nc ? whole_piece(s.curves[k], k) : segment_piece(s.segments[k - s.nc], k);
+  while (top > 0) {
+    const CurvePiece q = stack[--top];
+    const FixBox b = box_of(q);
+    if (fx < b.x0 || fx > b.x1 || fy < b.y0 || fy > b.y1) continue;
+    const FixPoint3& a = q.p[0];
+    const FixPoint3& next = q.straight ? q.p[3] : q.p[1];
+    if (q.t_lo() != 0 && a.x == fx && a.y == fy && (next.x != a.x || next.y != a.y)) {
+      out->t = q.t_lo();
+      out->z = a.z;
+      out->d[0] = next.x - a.x;
+      out->d[1] = next.y - a.y;
+      return true;
+    }
+    if (q.level >= kCurveMaxDepth) continue;
+    CurvePiece l, r;
+    halve(q, &l, &r);
+    stack[top++] = r;
+    stack[top++] = l;
+  }
+  return false;
+}
+
+// Joint j (ends j[0], j[1], at point p) and edge k through it (found by passes_through): a
+// crossing when j's two directions lie strictly on opposite sides of k's tangent line there
+// (exact: Q20.42 direction times a unit difference, below 2^84, in Wide). Returns -1 when the
+// joint is behind, +1 when k is, 0 for no crossing (a touch, or one depth).
+int through_front(const Scene& s, const uint32_t j[2], const Through& th) {
+  int64_t p[3], u[2], v[2];
+  end_of(s, j[0], p, u);
+  end_of(s, j[1], p, v);
+  const int64_t z = p[2] * (int64_t{1} << kCurveFracBits);
+  if (z == th.z) return 0;
+  const Wide su = mul_i64(th.d[0], u[1]) - mul_i64(th.d[1], u[0]);
+  const Wide sv = mul_i64(th.d[0], v[1]) - mul_i64(th.d[1], v[0]);
+  if (su.is_zero() || sv.is_zero() || su.negative() == sv.negative()) return 0;
+  return z < th.z ? -1 : 1;
+}
+
+// The half-gap on edge k at the pass (or, joint = true, on the joint's end e) against the other.
+int64_t through_half_gap(const Scene& s, uint32_t k, uint64_t t, uint32_t e, bool on_joint,
+                         int32_t halo) {
+  const Dir dk = tangent_dir(s.edge(k), t);
+  const Dir de = tangent_dir(s.edge(e / 2), (e & 1) ? kCurveParamOne : 0);
+  return on_joint ? half_gap(de, dk, halo) : half_gap(dk, de, halo);
+}
+
+// The first end in `order` (sorted by x, then y, z) whose x is not below x.
+uint32_t first_end_at(const Scene& s, const uint32_t* order, int64_t x) {
+  uint32_t lo = 0, hi = 2 * s.n;
+  while (lo < hi) {
+    const uint32_t mid = lo + (hi - lo) / 2;
+    int64_t p[3], d[2];
+    end_of(s, order[mid], p, d);
+    if (p[0] < x)
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return lo;
+}
+
+// Edges k in [from, to) through the joints of other chains: the joints whose x lies within
+// k's box are found by a binary search in the ends sorted by x. Joints behind: their end_gap.
+// Edges behind: with `gaps` given, their gaps, else counted.
+uint32_t through_joints(const Scene& s, const uint32_t* order, const uint32_t* link, int32_t halo,
+                        uint32_t from, uint32_t to, CurvePiece* stack, int64_t* end_gap, Gap* gaps,
+                        CurveDrawStats& st) {
+  uint32_t n = 0;
+  for (uint32_t k = from; k < to; ++k) {
+    const Ctl c = s.edge(k);
+    int64_t x0 = c.x[0], x1 = c.x[0];
+    for (int i = 1; i < 4; ++i) x0 = c.x[i] < x0 ? c.x[i] : x0, x1 = c.x[i] > x1 ? c.x[i] : x1;
+    for (uint32_t i = first_end_at(s, order, x0); i < 2 * s.n; ++i) {
+      const uint32_t e = order[i];
+      int64_t p[3], d[2];
+      end_of(s, e, p, d);
+      if (p[0] > x1) break;
+      if (link[e] == kNoLink || link[e] < e) continue;
+      const uint32_t j[2] = {e, link[e]};
+      Through th;
+      if (k == j[0] / 2 || k == j[1] / 2 || !passes_through(s, k, p, stack, &th)) continue;
+      const int f = through_front(s, j, th);
+      if (f == 0) continue;
+      if (gaps == nullptr) {
+        ++st.gaps;
+        ++st.joint_crossings;
+      }
+      int64_t most = 0;
+      for (int m = 0; m < 2; ++m) {
+        const int64_t dt = through_half_gap(s, k, th.t, j[m], f < 0, halo);
+        if (f < 0 && gaps == nullptr) end_gap[j[m]] = dt > end_gap[j[m]] ? dt : end_gap[j[m]];
+        most = dt > most ? dt : most;
+      }
+      const int64_t t = static_cast<int64_t>(th.t);
+      if (f > 0 && gaps != nullptr) gaps[n++] = Gap{t - most, t + most};
+    }
+  }
+  return n;
+}
+
 // ---- one edge ----
 
 // The gaps on edge k: its own crossings behind, and what its joined neighbours' gaps carry
-// over the joints. Returns the count (at most 3 * most_hits).
-uint32_t collect_gaps(const Scene& s, uint32_t k, const uint32_t* link, int32_t halo, Gap* gaps,
+// over the joints, the crossings at its joints (end_gap) and its passes through other chains'
+// joints (at most one a joint). Returns the count (at most 3 * most_hits + 2 + edges).
+uint32_t collect_gaps(const Scene& s, uint32_t k, const uint32_t* order, const uint32_t* link,
+                      int64_t* end_gap, CurvePiece* stack, int32_t halo, Gap* gaps,
                       CurveDrawStats& st) {
-  uint32_t n = 0;
+  uint32_t n = through_joints(s, order, link, halo, k, k + 1, stack, end_gap, gaps, st);
+  if (end_gap[2 * k] > 0) gaps[n++] = Gap{0, end_gap[2 * k]};
+  if (end_gap[2 * k + 1] > 0) gaps[n++] = Gap{kOne - end_gap[2 * k + 1], kOne};
   Dir a;
   for (uint32_t i = s.first_hit(k); i < s.n_hits && s.hits[i].curve == k; ++i) {
     const CurveHit& h = s.hits[i];
@@ -349,10 +564,12 @@ Status draw_edge(const Scene& s, uint32_t k, Gap* gaps, uint32_t n, const CurveD
 
 template <typename Carve>
 void carve(Carve& c, uint32_t edges, uint32_t most_hits, uint32_t** order, uint32_t** link,
-           Gap** gaps) {
+           int64_t** end_gap, CurvePiece** stack, Gap** gaps) {
   *order = c.template take<uint32_t>(size_t{2} * edges);
   *link = c.template take<uint32_t>(size_t{2} * edges);
-  *gaps = c.template take<Gap>(size_t{3} * most_hits);
+  *end_gap = c.template take<int64_t>(size_t{2} * edges);
+  *stack = c.template take<CurvePiece>(kCurveMaxDepth + 2);
+  *gaps = c.template take<Gap>(size_t{3} * most_hits + 2 + edges);
 }
 
 }  // namespace
@@ -386,8 +603,10 @@ Status plan_curve_draw(const BezierEdge3* curves, uint32_t n_curves, const Edge3
   plan->params = params;
   ByteCounter bytes;
   uint32_t *order, *link;
+  int64_t* end_gap;
+  CurvePiece* stack;
   Gap* gaps;
-  carve(bytes, n, plan->most_hits, &order, &link, &gaps);
+  carve(bytes, n, plan->most_hits, &order, &link, &end_gap, &stack, &gaps);
   plan->scratch_bytes = bytes.total;
   return Status::kOk;
 }
@@ -401,14 +620,21 @@ Status run_curve_draw(const CurveDrawPlan& plan, const BezierEdge3* curves, cons
   const uint32_t n = plan.n_curves + plan.n_segments;
   Carver carver(scratch, scratch_bytes);
   uint32_t *order, *link;
+  int64_t* end_gap;
+  CurvePiece* stack;
   Gap* gaps;
-  carve(carver, n, plan.most_hits, &order, &link, &gaps);
+  carve(carver, n, plan.most_hits, &order, &link, &end_gap, &stack, &gaps);
   if (carver.short_) return Status::kWorkspaceTooSmall;
   const Scene s{curves, plan.n_curves, n, segments, hits, n_hits};
   st.joints = link_joints(s, order, link);
+  const int32_t halo = plan.params.halo;
+  if (halo > 0) {
+    joint_crossings(s, order, link, halo, end_gap, st);
+    through_joints(s, order, link, halo, 0, n, stack, end_gap, nullptr, st);
+  }
   for (uint32_t k = 0; k < n; ++k) {
     const uint32_t g =
-        plan.params.halo > 0 ? collect_gaps(s, k, link, plan.params.halo, gaps, st) : 0;
+        halo > 0 ? collect_gaps(s, k, order, link, end_gap, stack, halo, gaps, st) : 0;
     const Status r = draw_edge(s, k, gaps, g, plan.params, chords, intervals, st);
     if (!ok(r)) return r;
   }

@@ -25,6 +25,15 @@
 // longer than the whole next edge stops at that edge's far end. Elsewhere a gap is clipped at
 // the edge's end, as in the straight DRAW.
 //
+// Crossings at joints. Two chains can cross exactly at a joint of each (a symmetric fit puts
+// a knot's crossings there); run_curve_cross() sees only edge ends meeting, never a crossing.
+// Two joints at one projected point at different depths cross when their directions alternate
+// around it (exact integer sides); the joint behind gets W / sin(theta) of arc on both its
+// edges, theta from the tangents at the joint (the front chain's side with the smaller angle).
+// An edge passing through another chain's joint at a dyadic parameter of its own (a piece end
+// of its exact halving) is found (the joints in its x range by a binary search) and decided
+// the same way.
+//
 // Chords. A visible interval of width w (in t) on a curve is cut into n equal chords with
 // n = ceil(w sqrt(3 D_c / (4 tol))), D_c the largest second-difference coordinate, so each
 // chord lies within tol of its piece of curve, coordinate by coordinate (the flatness bound of
@@ -34,7 +43,7 @@
 //
 // Edges are numbered as in run_curve_cross(): the curves, then the segments. The hits must be
 // run_curve_cross()'s, sorted by curve. No heap: plan_curve_draw() says how much scratch
-// run_curve_draw() needs (the joints' table and one edge's gaps).
+// run_curve_draw() needs (the joints' table, a halving stack and one edge's gaps).
 #pragma once
 #include <stddef.h>
 #include <stdint.h>
@@ -68,13 +77,14 @@ struct CurveDrawPlan {
 };
 
 struct CurveDrawStats {
-  uint64_t gaps = 0;       // halo gaps cut (crossings where an edge is behind)
-  uint64_t carried = 0;    // gaps continued across a joint
-  uint64_t undecided = 0;  // crossings whose front could not be called: no gap
-  uint64_t intervals = 0;  // visible intervals
-  uint64_t chords = 0;     // chords emitted
-  uint64_t hidden = 0;     // edges the halos removed entirely
-  uint32_t joints = 0;     // joints where halos carry on
+  uint64_t gaps = 0;             // halo gaps cut (crossings where an edge is behind)
+  uint64_t carried = 0;          // gaps continued across a joint
+  uint64_t joint_crossings = 0;  // crossings at a chain's joint (counted among gaps)
+  uint64_t undecided = 0;        // crossings whose front could not be called: no gap
+  uint64_t intervals = 0;        // visible intervals
+  uint64_t chords = 0;           // chords emitted
+  uint64_t hidden = 0;           // edges the halos removed entirely
+  uint32_t joints = 0;           // joints where halos carry on
 };
 
 // Check the input (hits sorted by curve, indices in range, params in range) and size the

@@ -61,17 +61,17 @@ std::vector<Edge3> chord_edges(const std::vector<Span>& chords) {
 }
 
 void print_stats(const HostCurveDraw& d) {
-  std::fprintf(stderr,
-               "curves_cross_ms=%.3f\ncurve_pieces=%u\ncrossings=%u\ntouches=%u\n"
-               "cross_scratch_bytes=%zu\ncurve_draw_ms=%.3f\ngaps=%llu\ncarried=%llu\n"
-               "undecided=%llu\njoints=%u\nintervals=%llu\nchords=%llu\nhidden_edges=%llu\n"
-               "draw_scratch_bytes=%zu\n",
-               d.cross_ms, d.cross_stats.pieces, d.cross_stats.crossings, d.cross_stats.touches,
-               d.cross_scratch_bytes, d.draw_ms, (unsigned long long)d.stats.gaps,
-               (unsigned long long)d.stats.carried, (unsigned long long)d.stats.undecided,
-               d.stats.joints, (unsigned long long)d.stats.intervals,
-               (unsigned long long)d.stats.chords, (unsigned long long)d.stats.hidden,
-               d.draw_scratch_bytes);
+  std::fprintf(
+      stderr,
+      "curves_cross_ms=%.3f\ncurve_pieces=%u\ncrossings=%u\ntouches=%u\n"
+      "cross_scratch_bytes=%zu\ncurve_draw_ms=%.3f\ngaps=%llu\njoint_crossings=%llu\n"
+      "carried=%llu\nundecided=%llu\njoints=%u\nintervals=%llu\nchords=%llu\nhidden_edges=%llu\n"
+      "draw_scratch_bytes=%zu\n",
+      d.cross_ms, d.cross_stats.pieces, d.cross_stats.crossings, d.cross_stats.touches,
+      d.cross_scratch_bytes, d.draw_ms, (unsigned long long)d.stats.gaps,
+      (unsigned long long)d.stats.joint_crossings, (unsigned long long)d.stats.carried,
+      (unsigned long long)d.stats.undecided, d.stats.joints, (unsigned long long)d.stats.intervals,
+      (unsigned long long)d.stats.chords, (unsigned long long)d.stats.hidden, d.draw_scratch_bytes);
 }
 
 // CUT's options and the other ways of drawing have no meaning for a curve scene: refused by

@@ -71,11 +71,12 @@ inline LP deriv(const RefCurve& c, LD t) {
 }
 
 struct RefCrossing {
-  uint32_t i, j;  // i <= j
-  LD s, u;        // parameters on i and j
-  LD dz;          // depth of i minus depth of j there (units; larger is nearer)
-  LD sin_angle;   // |sin| of the angle between the curves there
-  int sense;      // sign of cross(tangent of i, tangent of j) there
+  uint32_t i, j;        // i <= j
+  LD s, u;              // parameters on i and j
+  LD dz;                // depth of i minus depth of j there (units; larger is nearer)
+  LD sin_angle;         // |sin| of the angle between the curves there
+  int sense;            // sign of cross(tangent of i, tangent of j) there
+  bool at_end = false;  // at an end of i or j (kept only when asked for joints)
 };
 
 // Newton's method on B_i(s) - B_j(u) = 0 from (s, u); false if it does not converge.
@@ -95,8 +96,10 @@ inline bool newton(const RefCurve& a, const RefCurve& b, LD* s, LD* u) {
 }
 
 // Crossings of curves i <= j by dense sampling (m chords each), refined by Newton.
+// With `joints`, a crossing at an edge's end is kept when the two curves are at different
+// depths there (a chain passing a joint of another); ends at one 3-D point are a meeting.
 inline void ref_pair(const std::vector<RefCurve>& cs, uint32_t i, uint32_t j, int m,
-                     std::vector<RefCrossing>* out) {
+                     std::vector<RefCrossing>* out, bool joints = false) {
   const RefCurve &a = cs[i], &b = cs[j];
   std::vector<LP> pa(m + 1), pb(m + 1);
   for (int k = 0; k <= m; ++k) pa[k] = eval(a, LD(k) / m), pb[k] = eval(b, LD(k) / m);
@@ -117,7 +120,11 @@ inline void ref_pair(const std::vector<RefCurve>& cs, uint32_t i, uint32_t j, in
       if (al < -1e-6L || al > 1 + 1e-6L || be < -1e-6L || be > 1 + 1e-6L) continue;
       LD s = (k + al) / m, u = (l + be) / m;
       if (!newton(a, b, &s, &u)) continue;
-      if (s <= 1e-9L || s >= 1 - 1e-9L || u <= 1e-9L || u >= 1 - 1e-9L) continue;  // ends
+      const auto outside = [](LD v) { return v < -1e-9L || v > 1 + 1e-9L; };
+      const auto end = [](LD v) { return v <= 1e-9L || v >= 1 - 1e-9L; };
+      if (outside(s) || outside(u)) continue;
+      const bool at_end = end(s) || end(u);
+      if (at_end && !(joints && std::fabs(eval(a, s).z - eval(b, u).z) > 1e-6L)) continue;
       if (i == j && std::fabs(s - u) < 1e-6L) continue;
       if (i == j && u < s) std::swap(s, u);
       bool seen = false;
@@ -127,21 +134,33 @@ inline void ref_pair(const std::vector<RefCurve>& cs, uint32_t i, uint32_t j, in
       const LD cr = da.x * db.y - da.y * db.x;
       const LD sin_angle = std::fabs(cr) / (std::hypot(da.x, da.y) * std::hypot(db.x, db.y));
       if (!seen)
-        out->push_back(
-            RefCrossing{i, j, s, u, eval(a, s).z - eval(b, u).z, sin_angle, cr > 0 ? 1 : -1});
+        out->push_back(RefCrossing{i, j, s, u, eval(a, s).z - eval(b, u).z, sin_angle,
+                                   cr > 0 ? 1 : -1, at_end});
     }
   }
 }
 
-inline std::vector<RefCrossing> reference(const CurveScene& scene, int m) {
+// With `joints`, crossings at edge ends too: one per projected point (the edges on either
+// side of a joint all see it).
+inline std::vector<RefCrossing> reference(const CurveScene& scene, int m, bool joints = false) {
   std::vector<RefCurve> cs;
   for (const auto& c : scene.curves) cs.push_back(ref_of(c));
   for (const auto& s : scene.segments) cs.push_back(ref_of(s));
-  std::vector<RefCrossing> out;
+  std::vector<RefCrossing> all;
   for (uint32_t i = 0; i < cs.size(); ++i)
     for (uint32_t j = i; j < cs.size(); ++j)
       if (!(cs[i].straight && cs[j].straight) && !(i == j && cs[i].straight))
-        ref_pair(cs, i, j, m, &out);
+        ref_pair(cs, i, j, m, &all, joints);
+  std::vector<RefCrossing> out;
+  for (const RefCrossing& r : all) {
+    bool seen = false;
+    const LP p = eval(cs[r.i], r.s);
+    for (const RefCrossing& o : out) {
+      const LP q = eval(cs[o.i], o.s);
+      if (r.at_end && o.at_end && std::hypot(p.x - q.x, p.y - q.y) < 1e-6L) seen = true;
+    }
+    if (!seen) out.push_back(r);
+  }
   return out;
 }
 

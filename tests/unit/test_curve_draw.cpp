@@ -4,6 +4,9 @@
 //     gap, on the strand behind, and the strand in front is drawn there; each side of a gap has
 //     the arc length W / sin(theta) (the reference's angle, the arc integrated from the
 //     reference's speed) within the bound docs/curves.md states;
+//  1b. crossings at joints: knots fitted so that crossings fall on joints (the reference keeps
+//     crossings at edge ends), a curve through another chain's joint, and two joints that
+//     touch or cross (hand-worked);
 //  2. the same knot written by this test as ~10,000 straight edges (its own long-double
 //     evaluation) and drawn by the straight-edge CUT and DRAW: the same ink within a step.
 // `curve_draw plant front` cuts the gaps on the front strand and `plant width` draws with 3/4
@@ -233,10 +236,12 @@ void check_side(const char* name, const std::vector<RefCurve>& cs, const Chain& 
                 std::to_string(double(bound)));
 }
 
+int g_at_joints = 0;  // reference crossings at joints, over every check_gaps call
+
 void check_gaps(const char* name, const CurveScene& scene, const std::vector<Chain>& chains,
                 int32_t W, SideFigures* fig) {
   const std::vector<RefCurve> cs = ref_curves(scene);
-  const std::vector<RefCrossing> ref = curve_reference::reference(scene, 64);
+  const std::vector<RefCrossing> ref = curve_reference::reference(scene, 64, true);
   const Drawing d = draw_core(scene, W);
   std::vector<std::vector<Hole>> holes = holes_of(chains, d);
   int problems = 0;
@@ -255,8 +260,9 @@ void check_gaps(const char* name, const CurveScene& scene, const std::vector<Cha
                                    std::to_string(be) + " t=" + std::to_string(double(bt)));
     if (hole == nullptr) continue;
     const LD g = b.g + (b.g < hole->lo ? bsize : 0);
-    const LD L = LD(W) / r.sin_angle, t_err = core_t_err(d, be, fe, bt);
-    const LD u_err = core_t_err(d, fe, be, ft);
+    // A crossing at a joint is at the edges' end points exactly: no parameter error.
+    const LD L = LD(W) / r.sin_angle, t_err = r.at_end ? 0 : core_t_err(d, be, fe, bt);
+    const LD u_err = r.at_end ? 0 : core_t_err(d, fe, be, ft);
     const LD sa = speed(cs[be], bt), sb = speed(cs[fe], ft);
     // The tangents at the reported parameters: a relative error in 1 / sin(theta) of at most
     // (|dA'| / |A'| + |dB'| / |B'|) (1 + 1 / sin), |dA'| <= 6 D t_err; the rounding 2^-26 / sin.
@@ -280,8 +286,11 @@ void check_gaps(const char* name, const CurveScene& scene, const std::vector<Cha
     }
   CHECK_MSG(n_holes == ref.size(), std::string(name) + ": " + std::to_string(n_holes) +
                                        " gaps for " + std::to_string(ref.size()) + " crossings");
-  std::printf("%-28s W=%-5d %zu crossings, %zu gaps, %llu carried over a joint\n", name, W,
-              ref.size(), n_holes, (unsigned long long)d.stats.carried);
+  size_t at_joints = 0;
+  for (const RefCrossing& r : ref) at_joints += r.at_end ? 1 : 0;
+  g_at_joints += int(at_joints);
+  std::printf("%-28s W=%-5d %zu crossings (%zu at joints), %zu gaps, %llu carried over a joint\n",
+              name, W, ref.size(), at_joints, n_holes, (unsigned long long)d.stats.carried);
 }
 
 std::vector<Chain> knot_chain(const CurveScene& s) {
@@ -313,6 +322,98 @@ void test_gaps() {
   std::printf("gap sides: %d (%d across a joint), worst |arc - W/sin| / bound %.3f\n", fig.sides,
               fig.across_joints, double(fig.worst));
   CHECK_MSG(fig.across_joints > 0, "no gap side crossed a joint: the carry went untested");
+}
+
+// Knots whose crossings fall on joints of both strands (by symmetry, at these edge counts; the
+// reference says which): each must still get one gap, on the strand behind, of W / sin(theta)
+// on each side, across the joint.
+void test_gaps_at_joints() {
+  CurveView top;
+  SideFigures fig;
+  g_at_joints = 0;
+  for (int32_t W : {64, 600}) {
+    for (int n : {24, 40})
+      check_gaps(("trefoil/" + std::to_string(n)).c_str(), host::trefoil_knot(n, top),
+                 knot_chain(host::trefoil_knot(n, top)), W, &fig);
+    for (int n : {12, 20, 40}) {
+      const CurveScene k = host::torus_knot(2, 5, n, top);
+      check_gaps(("torus knot (2,5)/" + std::to_string(n)).c_str(), k, knot_chain(k), W, &fig);
+    }
+    for (int n : {9, 24, 30}) {
+      const CurveScene k = host::torus_knot(3, 4, n, top);
+      check_gaps(("torus knot (3,4)/" + std::to_string(n)).c_str(), k, knot_chain(k), W, &fig);
+    }
+  }
+  std::printf("at joints: %d reference crossings; gap sides %d, worst |arc - W/sin| / bound %.3f\n",
+              g_at_joints, fig.sides, double(fig.worst));
+  CHECK_MSG(g_at_joints > 0, "no reference crossing fell on a joint: the case went untested");
+}
+
+// Hand-worked: chain A-A' (two straight-shaped cubics, the joint at (1000, 1000))
+// and a cubic B from (0, 2000) to (2000, 0), point-symmetric about (1000, 1000), so it passes
+// through the joint at t = 1/2, at depth `zb` (A's is 10). B in front: A and A' lose the gap at the
+// joint; B behind: B loses it around t = 1/2. Checked against the reference by check_gaps.
+void test_through_joint() {
+  for (int zb : {20, 0}) {
+    const int za = 10;
+    CurveScene s;
+    s.curves.push_back(BezierEdge3{{{0, 0, za}, {300, 300, za}, {700, 700, za}, {1000, 1000, za}}});
+    s.curves.push_back(
+        BezierEdge3{{{1000, 1000, za}, {1300, 1300, za}, {1700, 1700, za}, {2000, 2000, za}}});
+    s.curves.push_back(
+        BezierEdge3{{{0, 2000, zb}, {600, 1800, zb}, {1400, 200, zb}, {2000, 0, zb}}});
+    Chain a, b;
+    a.edges = {0, 1};
+    b.edges = {2};
+    SideFigures fig;
+    g_at_joints = 0;
+    check_gaps(zb > za ? "B through A's joint, in front" : "B through A's joint, behind", s, {a, b},
+               100, &fig);
+    CHECK_MSG(g_at_joints == 1, "the reference sees the crossing at the joint");
+  }
+}
+
+// Hand-worked: chain A-A' along y = 1000 at depth 10 with its joint at (1000, 1000), chain
+// B-B' at depth 20 with its joint at the same (x, y), leaving it at slopes -0.3 and 0.3 (both
+// above A: a touch, every edge drawn whole) or with B' turned below A (B crosses A there: A,
+// behind, loses a gap on each side of its joint, B is whole).
+void test_touch_at_joint() {
+  for (bool crossing : {false, true}) {
+    CurveScene s;
+    s.curves.push_back(
+        BezierEdge3{{{0, 1000, 10}, {300, 1000, 10}, {700, 1000, 10}, {1000, 1000, 10}}});
+    s.curves.push_back(
+        BezierEdge3{{{1000, 1000, 10}, {1300, 1000, 10}, {1700, 1000, 10}, {2000, 1000, 10}}});
+    s.curves.push_back(
+        BezierEdge3{{{0, 1300, 20}, {300, 1210, 20}, {700, 1090, 20}, {1000, 1000, 20}}});
+    const int sign = crossing ? -1 : 1;
+    s.curves.push_back(BezierEdge3{{{1000, 1000, 20},
+                                    {1300, 1000 + sign * 90, 20},
+                                    {1700, 1000 + sign * 210, 20},
+                                    {2000, 1000 + sign * 300, 20}}});
+    const Drawing d = draw_core(s, 100);
+    std::vector<std::vector<CurveInterval>> by_edge(4);
+    for (const CurveInterval& i : d.intervals) by_edge[i.curve].push_back(i);
+    const uint64_t one = uint64_t{1} << 32;
+    CHECK_EQ(d.stats.joint_crossings, uint64_t{crossing ? 1u : 0u});
+    for (uint32_t k = 0; k < 4; ++k) {
+      const bool cut = crossing && k < 2;
+      CHECK_MSG(by_edge[k].size() == 1, "one visible interval on each edge");
+      if (by_edge[k].size() != 1) continue;
+      const CurveInterval& v = by_edge[k][0];
+      // A cut edge loses W / sin(theta) = 100 * sqrt(1.09) / 0.3 = 348 units of arc at the
+      // joint, sin(theta) from slope 0.3 against 0; A's speed runs from 900 (at its ends) to
+      // 1,050 units per unit of t, so between 0.33 and 0.39 of its parameter: 0.2 to 0.5 here.
+      const bool whole = v.t0 == 0 && v.t1 == one;
+      const uint64_t lo = one / 10 * 2, hi = one / 10 * 5;
+      const bool gap_at_joint = k == 0 ? (v.t0 == 0 && one - v.t1 > lo && one - v.t1 < hi)
+                                       : (v.t1 == one && v.t0 > lo && v.t0 < hi);
+      CHECK_MSG(cut ? gap_at_joint : whole, std::string(crossing ? "crossing" : "touch") +
+                                                " at a joint: edge " + std::to_string(k) +
+                                                " drawn on [" + std::to_string(double(v.t0) / one) +
+                                                ", " + std::to_string(double(v.t1) / one) + "]");
+    }
+  }
 }
 
 // Straight edges among curves cross each other in the curve stages too (no CUT runs on such a
@@ -430,6 +531,9 @@ int main(int argc, char** argv) {
   if (argc > 2 && std::string(argv[1]) == "plant")
     g_plant = std::string(argv[2]) == "front" ? Plant::kFront : Plant::kWidth;
   test_gaps();
+  test_gaps_at_joints();
+  test_through_joint();
+  test_touch_at_joint();
   test_segments_among_curves();
   test_flattening();
   return check::finish("curve_draw");
