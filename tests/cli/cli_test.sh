@@ -4,12 +4,8 @@
 set -u
 tool="$1"
 here="$(cd "$(dirname "$0")" && pwd)"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-pass=0 fail=0
-ok() { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAILED: $*" >&2; }
-expect() { if eval "$1"; then ok; else bad "$2"; fi; }
+# shellcheck source=../support/checks.sh
+. "$(cd "$(dirname "$0")" && pwd)/../support/checks.sh"
 
 cd "$work"
 "$tool" demo-scene --cubes 6 -o scene.edges

@@ -7,12 +7,8 @@
 set -u
 tool="$1"
 src="$2"  # the source tree (scenes/)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-pass=0 fail=0
-ok() { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAILED: $*" >&2; }
-expect() { if eval "$1"; then ok; else bad "$2"; fi; }
+# shellcheck source=../support/checks.sh
+. "$(cd "$(dirname "$0")" && pwd)/../support/checks.sh"
 
 cd "$work"
 "$tool" demo-scene --cubes 4 -o scene.edges
