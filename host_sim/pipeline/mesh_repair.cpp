@@ -4,14 +4,12 @@
 #include <array>
 #include <cmath>
 #include <unordered_map>
-#include <unordered_set>
+#include <utility>
+
+#include "io/pair_set.h"
 
 namespace haloplot::host {
 namespace {
-
-uint64_t pair_key(uint32_t a, uint32_t b) {
-  return uint64_t(std::min(a, b)) << 32 | std::max(a, b);
-}
 
 // Integer world coordinates (within +-2^20) packed into one key.
 uint64_t position_key(int64_t x, int64_t y, int64_t z) {
@@ -81,10 +79,10 @@ void weld_vertices(ObjModel* model, double tolerance, RepairReport* report) {
   model->faces = faces;
   model->face_lines = lines;
   std::vector<uint32_t> edges;
-  std::unordered_set<uint64_t> seen;
+  PairSet seen;
   for (size_t e = 0; e + 1 < model->edge_pairs.size(); e += 2) {
     const uint32_t a = index[model->edge_pairs[e]], b = index[model->edge_pairs[e + 1]];
-    if (a != b && seen.insert(pair_key(a, b)).second) edges.insert(edges.end(), {a, b});
+    if (a != b && seen.insert(pair_key(a, b))) edges.insert(edges.end(), {a, b});
   }
   model->edge_pairs = edges;
 }
@@ -107,6 +105,23 @@ struct Adjacency {
   std::vector<uint8_t> on_boundary, on_nonmanifold;  // per face
 };
 
+// Sorts the sides by key, stably: a radix sort on the key's 16-bit digits, skipping the digits
+// every key shares (a model's vertex indices use few of the 64 bits).
+void sort_by_key(std::vector<Side>* sides) {
+  std::vector<Side> other(sides->size());
+  std::vector<uint32_t> count(size_t{1} << 16);
+  for (int shift = 0; shift < 64; shift += 16) {
+    std::fill(count.begin(), count.end(), 0);
+    for (const Side& s : *sides) ++count[(s.key >> shift) & 0xffff];
+    if (!sides->empty() && count[(sides->front().key >> shift) & 0xffff] == sides->size())
+      continue;  // one digit for all: this pass would keep the order
+    uint32_t at = 0;
+    for (uint32_t& c : count) at += std::exchange(c, at);
+    for (const Side& s : *sides) other[count[(s.key >> shift) & 0xffff]++] = s;
+    sides->swap(other);
+  }
+}
+
 Adjacency adjacency(const ObjModel& m) {
   std::vector<Side> sides;
   for (uint32_t f = 0; f < m.faces.size(); ++f)
@@ -114,13 +129,12 @@ Adjacency adjacency(const ObjModel& m) {
       const uint32_t a = m.faces[f][i], b = m.faces[f][(i + 1) % m.faces[f].size()];
       if (a != b) sides.push_back(Side{pair_key(a, b), f, a < b});
     }
-  std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
-    return x.key < y.key || (x.key == y.key && x.face < y.face);
-  });
+  sort_by_key(&sides);  // stable, and the faces came in order: by key, then face
   Adjacency adj;
   adj.on_boundary.assign(m.faces.size(), 0);
   adj.on_nonmanifold.assign(m.faces.size(), 0);
   std::vector<std::array<uint32_t, 3>> links;  // face, neighbour, constraint
+  links.reserve(sides.size());
   for (size_t i = 0, j = 0; i < sides.size(); i = j) {
     while (j < sides.size() && sides[j].key == sides[i].key) ++j;
     if (j - i == 1) adj.on_boundary[sides[i].face] = 1;
@@ -281,26 +295,39 @@ bool flat_between(const ObjModel& m, const std::vector<Normal>& n, uint32_t f, u
          planar(m, m.faces[g], b);
 }
 
+// The faces on a side: how many, the first two, and the last one counted.
+struct SideFaces {
+  uint32_t n = 0, face[2] = {0, 0}, last = 0;
+};
+
 }  // namespace
 
 void drop_flat_edges(ObjModel* model, double crease_deg, RepairReport* report) {
   if (crease_deg < 0) return;
-  std::unordered_map<uint64_t, std::vector<uint32_t>> faces_of;
+  PairMap<SideFaces> faces_of;
+  size_t n_sides = 0;
+  for (const std::vector<uint32_t>& c : model->faces) n_sides += c.size();
+  faces_of.reserve(n_sides);
   for (uint32_t f = 0; f < model->faces.size(); ++f) {
     const std::vector<uint32_t>& c = model->faces[f];
     for (size_t i = 0; i < c.size(); ++i) {
-      std::vector<uint32_t>& list = faces_of[pair_key(c[i], c[(i + 1) % c.size()])];
-      if (list.empty() || list.back() != f) list.push_back(f);
+      SideFaces* s = faces_of.insert(pair_key(c[i], c[(i + 1) % c.size()]));
+      if (s->n > 0 && s->last == f) continue;  // a face counts once on a side
+      if (s->n < 2) s->face[s->n] = f;
+      ++s->n;
+      s->last = f;
     }
   }
   std::vector<Normal> normals;
+  normals.reserve(model->faces.size());
   for (const std::vector<uint32_t>& c : model->faces) normals.push_back(newell(*model, c));
   std::vector<uint32_t> kept;
+  kept.reserve(model->edge_pairs.size());
   for (size_t e = 0; e + 1 < model->edge_pairs.size(); e += 2) {
     const uint32_t a = model->edge_pairs[e], b = model->edge_pairs[e + 1];
-    auto it = faces_of.find(pair_key(a, b));
-    if (it != faces_of.end() && it->second.size() == 2 &&
-        flat_between(*model, normals, it->second[0], it->second[1], crease_deg)) {
+    const SideFaces* s = faces_of.find(pair_key(a, b));
+    if (s != nullptr && s->n == 2 &&
+        flat_between(*model, normals, s->face[0], s->face[1], crease_deg)) {
       ++report->flat_edges;
       continue;
     }
