@@ -1,6 +1,6 @@
-// Sets and maps of unordered vertex pairs (edges, a face's sides) for the model readers and the
-// mesh cleaning: open addressing in one array, no node per pair (a std::unordered_set or map
-// allocated one for each of a large model's hundreds of thousands of edges).
+// A set of unordered vertex pairs (edges) for the model readers and the mesh cleaning: open
+// addressing in one array, no node per pair (a std::unordered_set allocated one for each of a
+// large model's hundreds of thousands of edges).
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -29,7 +29,7 @@ class PairSet {
       has_all_ones_ = true;
       return added;
     }
-    if (2 * (count_ + 1) > slots_.size()) grow();
+    if (4 * (count_ + 1) > 3 * slots_.size()) grow();  // at most 3/4 full
     const size_t mask = slots_.size() - 1;
     for (size_t i = pair_hash(key) & mask;; i = (i + 1) & mask) {
       if (slots_[i] == key) return false;
@@ -54,64 +54,6 @@ class PairSet {
   std::vector<uint64_t> slots_;
   size_t count_ = 0;
   bool has_all_ones_ = false;
-};
-
-// A map from pairs to values, V default-constructed on first use.
-template <typename V>
-class PairMap {
- public:
-  // The value of `key`, a new V{} when it was not in the map (then *added, if asked). The
-  // pointer holds until the next insertion.
-  V* insert(uint64_t key, bool* added = nullptr) {
-    if (key == kEmpty) {  // the mark of an empty slot, kept aside
-      if (added != nullptr) *added = !has_all_ones_;
-      has_all_ones_ = true;
-      return &all_ones_;
-    }
-    if (2 * (count_ + 1) > slots_.size()) grow();
-    const size_t mask = slots_.size() - 1;
-    size_t i = pair_hash(key) & mask;
-    while (slots_[i].key != key && slots_[i].key != kEmpty) i = (i + 1) & mask;
-    if (added != nullptr) *added = slots_[i].key == kEmpty;
-    if (slots_[i].key == kEmpty) {
-      slots_[i].key = key;
-      ++count_;
-    }
-    return &slots_[i].value;
-  }
-  // The value of `key`, or null.
-  const V* find(uint64_t key) const {
-    if (key == kEmpty) return has_all_ones_ ? &all_ones_ : nullptr;
-    if (slots_.empty()) return nullptr;
-    const size_t mask = slots_.size() - 1;
-    for (size_t i = pair_hash(key) & mask;; i = (i + 1) & mask) {
-      if (slots_[i].key == key) return &slots_[i].value;
-      if (slots_[i].key == kEmpty) return nullptr;
-    }
-  }
-  // Room for n keys without growing.
-  void reserve(size_t n) {
-    while (2 * n > slots_.size()) grow();
-  }
-
- private:
-  static constexpr uint64_t kEmpty = ~uint64_t{0};
-  struct Slot {
-    uint64_t key = kEmpty;
-    V value{};
-  };
-  void grow() {
-    std::vector<Slot> old;
-    old.swap(slots_);
-    slots_.resize(old.empty() ? 64 : 2 * old.size());
-    count_ = 0;
-    for (Slot& s : old)
-      if (s.key != kEmpty) *insert(s.key) = std::move(s.value);
-  }
-  std::vector<Slot> slots_;
-  size_t count_ = 0;
-  bool has_all_ones_ = false;
-  V all_ones_{};
 };
 
 }  // namespace haloplot::host

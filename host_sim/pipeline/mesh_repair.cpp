@@ -89,11 +89,51 @@ void weld_vertices(ObjModel* model, double tolerance, RepairReport* report) {
 
 namespace {
 
-// A face's side: the face, whether it runs from the lower vertex to the higher.
-struct Side {
-  uint64_t key;
-  uint32_t face;
-  bool up;
+// Each face's sides listed under their lesser vertex, in face order: the faces on side {a, b}
+// are the entries of min(a, b) naming max(a, b). A few entries per vertex, in two passes over
+// the faces (sorting or hashing every side cost more, most of it in page faults).
+struct SidesByVertex {
+  struct Entry {
+    uint32_t other, face;
+    bool up;  // the face runs the side from the lesser vertex to the greater
+  };
+  std::vector<uint32_t> first;  // vertex v's entries: [first[v], first[v + 1])
+  std::vector<Entry> entry;
+
+  explicit SidesByVertex(const ObjModel& m) : first(m.vertices.size() + 1, 0) {
+    for_each_side(m, [&](uint32_t a, uint32_t b, uint32_t) { ++first[std::min(a, b) + 1]; });
+    for (size_t v = 0; v + 1 < first.size(); ++v) first[v + 1] += first[v];
+    entry.resize(first.back());
+    std::vector<uint32_t> fill(first.begin(), first.end() - 1);
+    for_each_side(m, [&](uint32_t a, uint32_t b, uint32_t f) {
+      entry[fill[std::min(a, b)]++] = Entry{std::max(a, b), f, a < b};
+    });
+  }
+  template <typename Fn>
+  static void for_each_side(const ObjModel& m, Fn fn) {
+    for (uint32_t f = 0; f < m.faces.size(); ++f) {
+      const std::vector<uint32_t>& c = m.faces[f];
+      for (size_t i = 0; i < c.size(); ++i) fn(c[i], c[(i + 1) % c.size()], f);
+    }
+  }
+  // Each vertex's entries by the other vertex, stably (the faces stay in order): every side's
+  // entries together, the sides in key order, each one's faces in order.
+  void sort_each() {
+    for (size_t v = 0; v + 1 < first.size(); ++v)
+      std::stable_sort(entry.begin() + first[v], entry.begin() + first[v + 1],
+                       [](const Entry& x, const Entry& y) { return x.other < y.other; });
+  }
+  // How many faces side {a, b} is on (each face once), and the first two.
+  uint32_t faces(uint32_t a, uint32_t b, uint32_t face[2]) const {
+    const uint32_t lo = std::min(a, b), hi = std::max(a, b);
+    uint32_t n = 0;
+    for (uint32_t k = first[lo]; k < first[lo + 1]; ++k) {
+      if (entry[k].other != hi || (n > 0 && entry[k].face == face[n < 2 ? n - 1 : 1])) continue;
+      if (n < 2) face[n] = entry[k].face;
+      ++n;
+    }
+    return n;
+  }
 };
 
 // The faces next to each face: neighbour, and whether it must be flipped relative to this
@@ -105,48 +145,31 @@ struct Adjacency {
   std::vector<uint8_t> on_boundary, on_nonmanifold;  // per face
 };
 
-// Sorts the sides by key, stably: a radix sort on the key's 16-bit digits, skipping the digits
-// every key shares (a model's vertex indices use few of the 64 bits).
-void sort_by_key(std::vector<Side>* sides) {
-  std::vector<Side> other(sides->size());
-  std::vector<uint32_t> count(size_t{1} << 16);
-  for (int shift = 0; shift < 64; shift += 16) {
-    std::fill(count.begin(), count.end(), 0);
-    for (const Side& s : *sides) ++count[(s.key >> shift) & 0xffff];
-    if (!sides->empty() && count[(sides->front().key >> shift) & 0xffff] == sides->size())
-      continue;  // one digit for all: this pass would keep the order
-    uint32_t at = 0;
-    for (uint32_t& c : count) at += std::exchange(c, at);
-    for (const Side& s : *sides) other[count[(s.key >> shift) & 0xffff]++] = s;
-    sides->swap(other);
-  }
-}
-
 Adjacency adjacency(const ObjModel& m) {
-  std::vector<Side> sides;
-  for (uint32_t f = 0; f < m.faces.size(); ++f)
-    for (size_t i = 0; i < m.faces[f].size(); ++i) {
-      const uint32_t a = m.faces[f][i], b = m.faces[f][(i + 1) % m.faces[f].size()];
-      if (a != b) sides.push_back(Side{pair_key(a, b), f, a < b});
-    }
-  sort_by_key(&sides);  // stable, and the faces came in order: by key, then face
+  SidesByVertex sides(m);
+  sides.sort_each();  // the sides in key order, each one's faces in order
   Adjacency adj;
   adj.on_boundary.assign(m.faces.size(), 0);
   adj.on_nonmanifold.assign(m.faces.size(), 0);
   std::vector<std::array<uint32_t, 3>> links;  // face, neighbour, constraint
-  links.reserve(sides.size());
-  for (size_t i = 0, j = 0; i < sides.size(); i = j) {
-    while (j < sides.size() && sides[j].key == sides[i].key) ++j;
-    if (j - i == 1) adj.on_boundary[sides[i].face] = 1;
-    if (j - i > 2)
-      for (size_t k = i; k < j; ++k) adj.on_nonmanifold[sides[k].face] = 1;
-    for (size_t p = i; p < j; ++p)
-      for (size_t q = i; q < j; ++q) {
-        if (sides[p].face == sides[q].face) continue;
-        // Two faces on one side agree when they run it opposite ways.
-        const uint32_t c = j - i > 2 ? 2u : sides[p].up == sides[q].up ? 1u : 0u;
-        links.push_back({sides[p].face, sides[q].face, c});
-      }
+  links.reserve(sides.entry.size());
+  for (uint32_t v = 0; v + 1 < sides.first.size(); ++v) {
+    const SidesByVertex::Entry* e = sides.entry.data() + sides.first[v];
+    const size_t k = sides.first[v + 1] - sides.first[v];
+    for (size_t i = 0, j = 0; i < k; i = j) {
+      while (j < k && e[j].other == e[i].other) ++j;
+      if (e[i].other == v) continue;  // a side from a vertex to itself joins nothing
+      if (j - i == 1) adj.on_boundary[e[i].face] = 1;
+      if (j - i > 2)
+        for (size_t q = i; q < j; ++q) adj.on_nonmanifold[e[q].face] = 1;
+      for (size_t p = i; p < j; ++p)
+        for (size_t q = i; q < j; ++q) {
+          if (e[p].face == e[q].face) continue;
+          // Two faces on one side agree when they run it opposite ways.
+          const uint32_t c = j - i > 2 ? 2u : e[p].up == e[q].up ? 1u : 0u;
+          links.push_back({e[p].face, e[q].face, c});
+        }
+    }
   }
   adj.first.assign(m.faces.size() + 1, 0);
   for (const auto& l : links) ++adj.first[l[0] + 1];
@@ -295,29 +318,11 @@ bool flat_between(const ObjModel& m, const std::vector<Normal>& n, uint32_t f, u
          planar(m, m.faces[g], b);
 }
 
-// The faces on a side: how many, the first two, and the last one counted.
-struct SideFaces {
-  uint32_t n = 0, face[2] = {0, 0}, last = 0;
-};
-
 }  // namespace
 
 void drop_flat_edges(ObjModel* model, double crease_deg, RepairReport* report) {
   if (crease_deg < 0) return;
-  PairMap<SideFaces> faces_of;
-  size_t n_sides = 0;
-  for (const std::vector<uint32_t>& c : model->faces) n_sides += c.size();
-  faces_of.reserve(n_sides);
-  for (uint32_t f = 0; f < model->faces.size(); ++f) {
-    const std::vector<uint32_t>& c = model->faces[f];
-    for (size_t i = 0; i < c.size(); ++i) {
-      SideFaces* s = faces_of.insert(pair_key(c[i], c[(i + 1) % c.size()]));
-      if (s->n > 0 && s->last == f) continue;  // a face counts once on a side
-      if (s->n < 2) s->face[s->n] = f;
-      ++s->n;
-      s->last = f;
-    }
-  }
+  const SidesByVertex sides(*model);
   std::vector<Normal> normals;
   normals.reserve(model->faces.size());
   for (const std::vector<uint32_t>& c : model->faces) normals.push_back(newell(*model, c));
@@ -325,9 +330,9 @@ void drop_flat_edges(ObjModel* model, double crease_deg, RepairReport* report) {
   kept.reserve(model->edge_pairs.size());
   for (size_t e = 0; e + 1 < model->edge_pairs.size(); e += 2) {
     const uint32_t a = model->edge_pairs[e], b = model->edge_pairs[e + 1];
-    const SideFaces* s = faces_of.find(pair_key(a, b));
-    if (s != nullptr && s->n == 2 &&
-        flat_between(*model, normals, s->face[0], s->face[1], crease_deg)) {
+    uint32_t face[2] = {0, 0};
+    if (sides.faces(a, b, face) == 2 &&
+        flat_between(*model, normals, face[0], face[1], crease_deg)) {
       ++report->flat_edges;
       continue;
     }

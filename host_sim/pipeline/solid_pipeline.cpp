@@ -127,6 +127,9 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
     out->hatch_faces.clear();
     out->n_drawn = in.n_edges;
   });
+  // Room for the drawn edges and about as many diagonals as faces (a quad mesh's: half that),
+  // so the pieces' edges seldom grow the vector by copying it.
+  out->edges.reserve(size_t{in.n_edges} + in.n_triangles);
   HostMemory memory;
   const Status s = run_sized(restart, memory.memory(), &needs);
   out->check = r.check;
