@@ -96,7 +96,7 @@ uint32_t undrawn_sides(const SolidInput& in, const TopologyOptions& options, con
     if (side != nullptr) side[n_side] = k;
     ++n_side;
   }
-  if (side != nullptr) heap_sort(side, n_side, [](uint64_t x, uint64_t y) { return x < y; });
+  if (side != nullptr) sort_total(side, n_side, [](uint64_t x, uint64_t y) { return x < y; });
   return n_side;
 }
 
@@ -252,7 +252,7 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
   // Drawn edges keep their input order and index; a repeat is an input error.
   for (uint32_t e = 0; e < in.n_edges; ++e)
     drawn[e] = SideKey{key_of(in.edge_pairs[2 * e], in.edge_pairs[2 * e + 1]), e};
-  heap_sort(drawn, in.n_edges, key_less);
+  sort_total(drawn, in.n_edges, key_less);
   for (uint32_t i = 1; i < in.n_edges; ++i)
     if (drawn[i].key == drawn[i - 1].key) return Status::kBadParameter;
 
