@@ -9,24 +9,20 @@ namespace haloplot::host {
 
 bool LineReader::read_line(std::string* text) {
   text->clear();
-  // Straight from the stream's buffer (istream::get builds a sentry per byte), leaving the
-  // stream in the state get() would: eof and fail at the end, fail if it was not good.
-  std::streambuf* buffer = in_.good() ? in_.rdbuf() : nullptr;
-  int c = EOF;
-  if (buffer == nullptr) in_.setstate(std::ios::failbit);
-  while (buffer != nullptr && (c = buffer->sbumpc()) != '\n') {
-    if (c == EOF) {
-      in_.setstate(std::ios::eofbit | std::ios::failbit);
-      break;
-    }
-    if (text->size() == kMaxLine) {
-      ++line_;
-      error_ = "line longer than " + std::to_string(kMaxLine) + " bytes";
-      return false;
-    }
-    text->push_back(char(c));
+  // One getline a line (it scans the stream's buffer for the newline, where get() built a
+  // sentry per byte), into a buffer one byte longer than a line may be: a longer one fills it.
+  if (!line_buffer_) line_buffer_.reset(new char[kMaxLine + 2]);
+  in_.getline(line_buffer_.get(), std::streamsize(kMaxLine + 2));
+  const size_t got = size_t(in_.gcount());
+  if (got == 0) return false;                      // the end (or a stream that was not good)
+  const bool newline = !in_.fail() && !in_.eof();  // the delimiter was taken, and counted
+  const size_t length = newline ? got - 1 : got;
+  if (length > kMaxLine) {
+    ++line_;
+    error_ = "line longer than " + std::to_string(kMaxLine) + " bytes";
+    return false;
   }
-  if (c == EOF && text->empty()) return false;
+  text->assign(line_buffer_.get(), length);
   ++line_;
   if (line_ == 1 && text->size() >= 2 &&
       ((uint8_t((*text)[0]) == 0xFF && uint8_t((*text)[1]) == 0xFE) ||

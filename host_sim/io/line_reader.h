@@ -6,6 +6,7 @@
 #pragma once
 #include <cstdint>
 #include <istream>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -35,6 +36,7 @@ class LineReader {
   std::string error_;
   std::string text_;  // the line being split (kept: its capacity serves the next line)
   std::vector<std::string_view> views_;
+  std::unique_ptr<char[]> line_buffer_;  // kMaxLine + 2 bytes, once a line is read
 };
 
 // A field as an error message quotes it: at most 40 bytes, then "...".
