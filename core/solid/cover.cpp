@@ -33,16 +33,33 @@ int side_sign(const Point3& u, const Point3& v, const CoverPoint& p) {
 
 // The sign P takes against u -> v after the nudge; 0 only when P is on the line and the nudge
 // runs along it.
-int nudged_side(const Point3& u, const Point3& v, const CoverPoint& p) {
-  const int s = side_sign(u, v, p);
-  if (s != 0) return s;
+// The nudge's side of u -> v: what decides when P is on the line.
+int nudge_side(const Point3& u, const Point3& v, const CoverPoint& p) {
   const int64_t c = int64_t{v.x - u.x} * p.dir_y - int64_t{v.y - u.y} * p.dir_x;
   return (c > 0) - (c < 0);
 }
 
-// Halves of cover for a counter-clockwise triangle, by the nudged sides alone.
+int nudged_side(const Point3& u, const Point3& v, const CoverPoint& p) {
+  const int s = side_sign(u, v, p);
+  return s != 0 ? s : nudge_side(u, v, p);
+}
+
+bool on_point(const Point3& u, const CoverPoint& p) { return p.d == 1 && p.x == u.x && p.y == u.y; }
+
+// Halves of cover for a counter-clockwise triangle (area > 0), by the nudged sides alone.
 int inside_halves(const Point3& a, const Point3& b, const Point3& c, const CoverPoint& p) {
-  const int s0 = nudged_side(a, b, p), s1 = nudged_side(b, c, p), s2 = nudged_side(c, a, p);
+  int s0, s1, s2;
+  // P on a corner (a vertex asked about its own faces): both sides through it are 0 before the
+  // nudge, and the side opposite is the doubled area, > 0; the same signs as the tests give.
+  if (on_point(a, p)) {
+    s0 = nudge_side(a, b, p), s1 = 1, s2 = nudge_side(c, a, p);
+  } else if (on_point(b, p)) {
+    s0 = nudge_side(a, b, p), s1 = nudge_side(b, c, p), s2 = 1;
+  } else if (on_point(c, p)) {
+    s0 = 1, s1 = nudge_side(b, c, p), s2 = nudge_side(c, a, p);
+  } else {
+    s0 = nudged_side(a, b, p), s1 = nudged_side(b, c, p), s2 = nudged_side(c, a, p);
+  }
   if (s0 < 0 || s1 < 0 || s2 < 0) return 0;
   const int zeros = (s0 == 0) + (s1 == 0) + (s2 == 0);
   return zeros == 0 ? 2 : (zeros == 1 ? 1 : 0);

@@ -100,10 +100,15 @@ void read_all(std::istream& in, std::string* bytes) {
   const std::streampos start = in.tellg();
   if (start != std::streampos(-1) && in.seekg(0, std::ios::end)) {
     const std::streampos end = in.tellg();
-    if (end != std::streampos(-1) && end > start) bytes->reserve(size_t(end - start));
     in.seekg(start);
+    if (end != std::streampos(-1) && end > start && in) {
+      // Straight into the string; whatever the size said, the reading below takes the rest.
+      bytes->resize(size_t(end - start));
+      in.read(&(*bytes)[0], std::streamsize(bytes->size()));
+      bytes->resize(size_t(in.gcount()));
+    }
   }
-  in.clear();
+  if (!in.bad()) in.clear();  // a seek a pipe refused, or the end met: read on
   char chunk[1 << 16];
   while (in.read(chunk, sizeof chunk) || in.gcount() > 0) bytes->append(chunk, size_t(in.gcount()));
 }

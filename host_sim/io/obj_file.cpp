@@ -92,6 +92,7 @@ void place_vertices(const std::vector<double>& xyz, ObjModel* out) {
   out->scale = scale;
   for (int a = 0; a < 3; ++a) out->centre[a] = (lo[a] + hi[a]) / 2;
   out->vertices.clear();
+  out->vertices.reserve(xyz.size() / 3);
   for (size_t i = 0; i < xyz.size(); i += 3) {
     int32_t c[3];
     for (int a = 0; a < 3; ++a)
