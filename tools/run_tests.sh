@@ -13,7 +13,7 @@
 # No test depends on the machine's speed (the QEMU link runs wait on the emulator's progress,
 # not a clock), so the lanes may load both cores as they like.
 #
-# Usage: tools/run_tests.sh            everything (13 to 15 minutes on 2 cores)
+# Usage: tools/run_tests.sh            everything (12 to 15 minutes on 2 cores)
 #        ctest --preset host -L quick  the quick tests of an existing host build (a minute)
 set -euo pipefail
 cd "$(dirname "$0")/.."
