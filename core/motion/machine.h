@@ -49,4 +49,13 @@ void motor_position(const Machine& m, int32_t x, int32_t y, int32_t motors[2]);
 // The plot position a motor position stands for, rounded to plot steps (for replay).
 void plot_position(const Machine& m, const int32_t motors[2], int32_t* x, int32_t* y);
 
+// How far the pen travels, in plot steps * 256 (Q8), on a move of `delta` motor steps (|delta|
+// below 2^27): the motors' own move, not the plot segment it was rounded from. The planner
+// times each move over this length, so a motor never accelerates faster than the machine's
+// `accel` allows however the move's ends round to motor steps. (Timed over the segment's
+// length, a 26-step move whose ends round half a step outward each ran its motor 1.7 % over
+// the acceleration at an eighth of a motor step per plot step, 5.5 % at a sixteenth.) With
+// whole motor steps per plot step it is the segment's own length.
+uint32_t motor_move_length_q8(const Machine& m, const int32_t delta[2]);
+
 }  // namespace haloplot

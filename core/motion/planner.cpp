@@ -35,8 +35,7 @@ bool MotionPlanner::make_move(const PathPoint& p, Block* b) {
   b->delta[1] = motors[1] - motors_[1];
   b->dx = p.x - x_;
   b->dy = p.y - y_;
-  const uint64_t l2 = uint64_t(int64_t{b->dx} * b->dx + int64_t{b->dy} * b->dy);
-  b->length_q8 = isqrt_u64(l2 << 16);  // l2 < 2^42: shifted < 2^58
+  b->length_q8 = motor_move_length_q8(m_, b->delta);  // what the motors travel (machine.h)
   x_ = p.x;
   y_ = p.y;
   motors_[0] = motors[0];

@@ -292,11 +292,8 @@ MotionItem StepPrep::travel(const int32_t delta[2]) const {
   t.pen_down = false;
   t.delta[0] = delta[0];
   t.delta[1] = delta[1];
-  int32_t x = 0, y = 0;
-  plot_position(m_, delta, &x, &y);
-  const uint64_t l2 = uint64_t(int64_t{x} * x + int64_t{y} * y);
-  t.length_q8 = isqrt_u64(l2 << 16);
-  if (t.length_q8 < 256) t.length_q8 = 256;  // below a plot step: still a step's time
+  t.length_q8 = motor_move_length_q8(m_, delta);  // as the planner times its moves
+  if (t.length_q8 < 256) t.length_q8 = 256;       // below a plot step: still a step's time
   const uint64_t top = uint64_t{m_.travel_speed} * m_.travel_speed * 256;
   t.top_v2 = top;
   t.accel = fx_.acceleration ? m_.accel : 0;
