@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# Pen-up travel of a solid plotted in bands against the whole-model plot's, both measured in
-# this run by `haloplot sim --stats` (pen_up_length, plot steps): 10 x 10 cubes hidden-dashed
-# and hatched in 64 KB, without and with outlines. A band is a strip the pen crosses from side
-# to side, so banded travel stays above the whole plot's (2.31x and 2.43x when this was
-# written; the aim is 1.3x). The limits are a guard: a change that makes the banded order worse
-# fails here, one that makes it better should lower them.
+# Pen-up travel of a solid plotted in bands, measured in this run by `haloplot sim --stats`
+# (pen_up_length, plot steps): 10 x 10 cubes hidden-dashed and hatched, without and with
+# outlines (the demo-style job), in 64 KB, against the same conductor given room for one band
+# (arena 256 MB) and against the whole-model plot (no arena). A band is a strip the pen crosses
+# from side to side, so banded travel stays above one band's: 2.03x and 2.11x in 19 and 20
+# bands when this was last measured (1.37x and 1.40x of the whole-model plot's; the aim is 1.3x
+# of one band's). The limits (on banded / one band) are a guard: a change that makes the banded
+# order worse fails here, one that makes it better should lower them.
 #   band_pen_up.sh HALOPLOT
 set -u
 tool="$1"
@@ -16,35 +18,42 @@ cd "$work"
 "$tool" demo-scene --cubes 10 -o c10.obj || { echo "FAILED: demo-scene --cubes 10"; exit 1; }
 stat() { sed -n "s/^$2=//p" "$1" | head -1; }
 
-# NAME EXTRA-KEYS LIMIT: the whole-model plot and the plot in 64 KB; banded / whole at most
+# NAME EXTRA-KEYS LIMIT: the plot whole, in one band and in 64 KB; banded / one band at most
 # LIMIT (thousandths).
 run() {
   local name="$1" extra="$2" limit="$3"
   printf 'scene c10.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\n%bhatch 3 30 90\nkinematics corexy\n' \
     "$extra" > "$name.job"
+  { cat "$name.job"; echo "arena 268435456"; } > "${name}_one.job"
   { cat "$name.job"; echo "arena 65536"; } > "${name}_arena.job"
-  if ! "$tool" sim "$name.job" -o "$name.trace" --stats 2> "$name.stats" ||
-     ! "$tool" sim "${name}_arena.job" -o "${name}_arena.trace" --stats 2> "${name}_arena.stats"; then
-    echo "FAILED: $name: a plot failed"
-    fail=$((fail + 1))
-    return
-  fi
-  local whole banded bands ratio
+  local j
+  for j in "$name" "${name}_one" "${name}_arena"; do
+    if ! "$tool" sim "$j.job" -o "$j.trace" --stats 2> "$j.stats"; then
+      echo "FAILED: $j: the plot failed"
+      fail=$((fail + 1))
+      return
+    fi
+  done
+  local whole one banded bands one_bands ratio
   whole=$(stat "$name.stats" pen_up_length)
+  one=$(stat "${name}_one.stats" pen_up_length)
+  one_bands=$(stat "${name}_one.stats" bands)
   banded=$(stat "${name}_arena.stats" pen_up_length)
   bands=$(stat "${name}_arena.stats" bands)
-  ratio=$((1000 * banded / whole))
-  echo "$name: pen-up whole $whole, in 64 KB ($bands bands) $banded: $ratio/1000 (limit $limit)"
-  if [ "${bands:-0}" -ge 2 ] && [ "$ratio" -le "$limit" ]; then
+  ratio=$((1000 * banded / one))
+  echo "$name: pen-up in one band $one, in 64 KB ($bands bands) $banded: $ratio/1000 of one" \
+    "band's (limit $limit); the whole-model plot $whole: banded $((1000 * banded / whole))/1000"
+  if [ "${one_bands:-0}" -eq 1 ] && [ "${bands:-0}" -ge 2 ] && [ "$ratio" -le "$limit" ]; then
     pass=$((pass + 1))
   else
-    echo "FAILED: $name: banded pen-up travel $ratio/1000 of the whole plot's, limit $limit"
+    echo "FAILED: $name: banded pen-up travel $ratio/1000 of one band's, limit $limit" \
+      "($one_bands and $bands bands)"
     fail=$((fail + 1))
   fi
 }
 
-run hatched '' 2400
-run demo_style 'outline on\n' 2500
+run hatched '' 2200
+run demo_style 'outline on\n' 2300
 
 echo "band_pen_up: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
