@@ -3,6 +3,9 @@
 // closed oriented meshes and by the topology-free fallback otherwise (said on stderr).
 #include <cstdio>
 #include <iostream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "cli/options.h"
 #include "cli/page_options.h"
@@ -75,6 +78,31 @@ void print_solid_stats(const SolidRun& r, const TriangulateStats& tri) {
                r.bytes_outline, r.bytes_intersections, r.ms_total);
 }
 
+// The job `sim` runs for this drawing, for --gcode and --hpgl: a hidden-line drawing's
+// strokes, decided here, layer by layer (planned once, for the SVG too); in mode all the
+// model's edges whole (the same lines, not split where others cross them).
+struct PlotterJob {
+  JobSpec spec;
+  ExportStyle style;
+  std::vector<Edge3> edges;
+  bool planned_once = false;
+  PlannedJob planned;
+};
+
+bool plotter_job(const Options& o, const SolidOptions& so, const ModeDrawing& d, PlotterJob* job,
+                 std::string* error) {
+  job->spec.drawing = DrawingEffect::kAllEdges;
+  if (!export_style_of(o, &job->style, &job->spec.machine, error)) return false;
+  if (so.spec.mode != SolidMode::kAll) {
+    job->edges = mode_strokes(d, &job->spec.layers);
+    job->planned_once = true;
+    return true;
+  }
+  Options edge_options = o;
+  edge_options.values.erase("--dump-edges");  // written once, with the scene
+  return load_scene(edge_options, o.positional[0], &job->edges, error, &job->spec.substep_bits);
+}
+
 }  // namespace
 
 int cmd_plot_solid(const Options& o) {
@@ -114,25 +142,26 @@ int cmd_plot_solid(const Options& o) {
   drawing_to_steps(&d, units);
   PlotSvgStyle style;
   if (!parse_plot_svg_style(o, true, so.steps_per_mm, &style, &error)) return fail(error);
-  error = write_plot_page(o.get("-o"), mode_layers(d), true, &style);
+  const std::vector<StrokeLayer> layers = mode_layers(d);
+  std::vector<PlannedLayer> page_layers;
+  PlotterJob job;
+  if (wants_plotter_outputs(o)) {
+    if (!plotter_job(o, so, d, &job, &error)) return fail(error);
+    if (job.planned_once && !plan_plot_job(job.spec, job.edges, &job.planned)) return 1;
+    // The SVG's layers are the job's path cut at its layers: planned once, for both.
+    if (job.planned_once &&
+        !cut_planned_layers(layers, job.planned.points, job.planned.layer_points, &page_layers))
+      return fail("the planned path's layers do not match the drawing's (" +
+                  std::to_string(job.planned.layer_points.n) + " layers)");
+  }
+  error = job.planned_once ? write_planned_page(o.get("-o"), page_layers, true, &style)
+                           : write_plot_page(o.get("-o"), layers, true, &style);
   if (!error.empty()) return fail(error);
   if (wants_plotter_outputs(o)) {
-    // The job `sim` runs for this drawing: a hidden-line drawing's strokes, decided here; in
-    // mode all the model's edges whole (the same lines, not split where others cross them).
-    JobSpec spec;
-    spec.drawing = DrawingEffect::kAllEdges;
-    ExportStyle export_style;
-    if (!export_style_of(o, &export_style, &spec.machine, &error)) return fail(error);
-    std::vector<Edge3> edges;
-    if (so.spec.mode != SolidMode::kAll) {
-      edges = mode_strokes(d, &spec.layers);
-    } else {
-      Options edge_options = o;
-      edge_options.values.erase("--dump-edges");  // written once, above
-      if (!load_scene(edge_options, o.positional[0], &edges, &error, &spec.substep_bits))
-        return fail(error);
-    }
-    if (const int rc = write_plot_outputs(o, spec, edges, export_style, true)) return rc;
+    const int rc = job.planned_once
+                       ? write_planned_outputs(o, job.spec, std::move(job.planned), job.style, true)
+                       : write_plot_outputs(o, job.spec, job.edges, job.style, true);
+    if (rc != 0) return rc;
   }
   if (!error.empty()) return fail(error);
   if (!o.get("--spans").empty()) {

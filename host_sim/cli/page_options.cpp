@@ -59,6 +59,11 @@ std::string write_plot_page(const std::string& path, const std::vector<StrokeLay
   std::vector<PlannedLayer> planned;
   const Status s = plan_layers(layers, &planned);
   if (!ok(s)) return path + ": planning the pen path failed: " + status_name(s);
+  return write_planned_page(path, planned, model, style, joined);
+}
+
+std::string write_planned_page(const std::string& path, const std::vector<PlannedLayer>& planned,
+                               bool model, PlotSvgStyle* style, std::vector<PathPoint>* joined) {
   const std::vector<PathPoint> all = joined_path(planned);
   if (model)
     centring_offset(style->page, style->placement.steps_per_mm, all, &style->placement.offset_x,

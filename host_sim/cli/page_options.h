@@ -26,5 +26,9 @@ bool parse_plot_svg_style(const Options& o, bool model, uint32_t steps_per_mm, P
 std::string write_plot_page(const std::string& path, const std::vector<StrokeLayer>& layers,
                             bool model, PlotSvgStyle* style,
                             std::vector<PathPoint>* joined = nullptr);
+// The same for layers planned already (plot_layers.h cut_planned_layers).
+std::string write_planned_page(const std::string& path, const std::vector<PlannedLayer>& planned,
+                               bool model, PlotSvgStyle* style,
+                               std::vector<PathPoint>* joined = nullptr);
 
 }  // namespace haloplot::host

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <utility>
 
 #include "export/plotter_outputs.h"
 #include "io/line_reader.h"
@@ -125,16 +126,23 @@ bool export_style_of(const Options& o, ExportStyle* style, Machine* machine, std
 
 int write_plot_outputs(const Options& o, const JobSpec& spec, const std::vector<Edge3>& edges,
                        ExportStyle style, bool model) {
+  PlannedJob planned;
+  if (!plan_plot_job(spec, edges, &planned)) return 1;
+  return write_planned_outputs(o, spec, std::move(planned), style, model);
+}
+
+bool plan_plot_job(const JobSpec& spec, const std::vector<Edge3>& edges, PlannedJob* planned) {
+  const Status s = plan_job_path(spec, edges, planned);
+  if (!ok(s)) std::cerr << "haloplot: path planning failed: " << status_name(s) << "\n";
+  return ok(s);
+}
+
+int write_planned_outputs(const Options& o, const JobSpec& spec, PlannedJob planned,
+                          ExportStyle style, bool model) {
   Page page;
   std::string page_error;
   if (model && !parse_page(o, &page, &page_error)) {
     std::cerr << "haloplot: " << page_error << "\n";
-    return 1;
-  }
-  PlannedJob planned;
-  const Status s = plan_job_path(spec, edges, &planned);
-  if (!ok(s)) {
-    std::cerr << "haloplot: path planning failed: " << status_name(s) << "\n";
     return 1;
   }
   const double seconds = estimate_plot_seconds(spec, planned.points);

@@ -7,6 +7,7 @@
 
 #include "cli/options.h"
 #include "export/exporters.h"
+#include "export/plotter_outputs.h"
 #include "haloplot/job/job.h"
 
 namespace haloplot::host {
@@ -34,5 +35,10 @@ bool export_style_of(const Options& o, ExportStyle* style, Machine* machine, std
 // after reporting.
 int write_plot_outputs(const Options& o, const JobSpec& spec, const std::vector<Edge3>& edges,
                        ExportStyle style, bool model);
+// The two halves of it, for a command that also draws its SVG from the planned path: the path
+// planned (false after reporting a failure), then the files written from it.
+bool plan_plot_job(const JobSpec& spec, const std::vector<Edge3>& edges, PlannedJob* planned);
+int write_planned_outputs(const Options& o, const JobSpec& spec, PlannedJob planned,
+                          ExportStyle style, bool model);
 
 }  // namespace haloplot::host

@@ -1,5 +1,6 @@
 #include "export/plot_layers.h"
 
+#include <cstddef>
 #include <cstdint>
 
 namespace haloplot::host {
@@ -25,6 +26,33 @@ Status plan_layers(const std::vector<StrokeLayer>& layers, std::vector<PlannedLa
     out->push_back(std::move(p));
   }
   return Status::kOk;
+}
+
+bool cut_planned_layers(const std::vector<StrokeLayer>& layers,
+                        const std::vector<PathPoint>& points, const LayerCounts& layer_points,
+                        std::vector<PlannedLayer>* out) {
+  out->clear();
+  if (layers.size() != layer_points.n) return false;
+  size_t first = 0;
+  int32_t x = 0, y = 0;
+  for (size_t k = 0; k < layers.size(); ++k) {
+    const size_t count = layer_points.count[k];
+    // plan_layers() plans every layer with strokes, and a planned stroke is two points or more.
+    if (layers[k].spans.empty() != (count == 0) || count > points.size() - first) {
+      out->clear();
+      return false;
+    }
+    if (count == 0) continue;
+    const auto begin = points.begin() + std::ptrdiff_t(first);
+    out->push_back(PlannedLayer{layers[k].label,
+                                std::vector<PathPoint>(begin, begin + std::ptrdiff_t(count)),
+                                layers[k].pen_width, x, y});
+    first += count;
+    x = points[first - 1].x, y = points[first - 1].y;
+  }
+  if (first == points.size()) return true;
+  out->clear();
+  return false;
 }
 
 std::vector<PathPoint> joined_path(const std::vector<PlannedLayer>& layers) {

@@ -32,6 +32,14 @@ struct PlannedLayer {
 // A planner failure (a coordinate out of its range) is returned as its status.
 Status plan_layers(const std::vector<StrokeLayer>& layers, std::vector<PlannedLayer>* out);
 
+// The same layers cut from the path a job planned for their strokes, grouped layer by layer
+// (pipeline/drawing_modes.h mode_strokes, then motion/path_plan.h plan_path_layers, as `sim` plans
+// it): what plan_layers() would plan again, without planning it twice. `layer_points`: the points
+// each layer took. False (and *out empty) when the counts do not fit the layers.
+bool cut_planned_layers(const std::vector<StrokeLayer>& layers,
+                        const std::vector<PathPoint>& points, const LayerCounts& layer_points,
+                        std::vector<PlannedLayer>* out);
+
 // The layers' paths one after the other: the plot as one pen path (for G-code or HPGL).
 std::vector<PathPoint> joined_path(const std::vector<PlannedLayer>& layers);
 

@@ -209,10 +209,75 @@ void pages() {
   CHECK(ox == 0 && oy == 0);  // nothing drawn
 }
 
+// The SVG's layers cut from one path the job planned for all of them (plot --gcode plans once)
+// against plan_layers(), which plans each layer on its own: the same points, starts, labels and
+// widths; and counts that do not fit the layers are refused, never cut anyhow.
+void layers_cut_from_one_path() {
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int32_t> coord(0, 20), step(-1, 1);
+  std::vector<StrokeLayer> layers = {{"1 visible", {}, 1},
+                                     {"2 hidden", {}, 1},
+                                     {"3 intersections", {}, 1},
+                                     {"4 hatching", {}, 1},
+                                     {"5 outlines", {}, 2.5}};
+  for (size_t k : {0, 1, 4})  // the third and fourth layers empty, as in most drawings
+    for (int i = 0; i < 200; ++i) {
+      const int32_t x0 = 100 + 30 * coord(rng), y0 = 100 + 30 * coord(rng);
+      const int32_t x1 = x0 + 30 * step(rng), y1 = y0 + 30 * step(rng);
+      if (x0 != x1 || y0 != y1) layers[k].spans.push_back(Span{0, 0, 0, x0, y0, x1, y1});
+    }
+  std::vector<Segment2> segs;
+  LayerCounts counts;
+  counts.n = uint32_t(layers.size());
+  for (size_t k = 0; k < layers.size(); ++k) {
+    counts.count[k] = uint32_t(layers[k].spans.size());
+    for (const Span& x : layers[k].spans) segs.push_back(Segment2{x.x0, x.y0, x.x1, x.y1});
+  }
+  const uint32_t n = uint32_t(segs.size());
+  std::vector<uint64_t> work(path_plan_bytes(n) / 8 + 1);
+  std::vector<PathPoint> points(path_points_max(n));
+  uint32_t count = 0;
+  LayerCounts per_layer;
+  CHECK(ok(plan_path_layers(segs.data(), n, counts, 0, 0, work.data(), work.size() * 8,
+                            points.data(), uint32_t(points.size()), &count, &per_layer, nullptr)));
+  points.resize(count);
+  std::vector<PlannedLayer> want, got;
+  CHECK(ok(plan_layers(layers, &want)));
+  CHECK(cut_planned_layers(layers, points, per_layer, &got));
+  CHECK_EQ(got.size(), size_t{3});
+  CHECK_EQ(got.size(), want.size());
+  for (size_t i = 0; i < std::min(got.size(), want.size()); ++i) {
+    CHECK(got[i].label == want[i].label);
+    CHECK(got[i].pen_width == want[i].pen_width);
+    CHECK(got[i].start_x == want[i].start_x && got[i].start_y == want[i].start_y);
+    CHECK_EQ(got[i].path.size(), want[i].path.size());
+    CHECK(std::equal(got[i].path.begin(), got[i].path.end(), want[i].path.begin(),
+                     want[i].path.end(), [](const PathPoint& a, const PathPoint& b) {
+                       return a.x == b.x && a.y == b.y && a.pen_down == b.pen_down;
+                     }));
+  }
+  CHECK(got[1].start_x != 0 || got[1].start_y != 0);  // the second layer starts where one ended
+  // Counts that do not fit: another layer count, a point moved between layers, a point short.
+  LayerCounts bad = per_layer;
+  bad.n = 4;
+  CHECK(!cut_planned_layers(layers, points, bad, &got) && got.empty());
+  bad = per_layer;
+  ++bad.count[0], --bad.count[1];
+  CHECK(cut_planned_layers(layers, points, bad, &got));  // fits, though cut elsewhere
+  bad.count[2] = 1, --bad.count[4];                      // a point for a layer with no strokes
+  CHECK(!cut_planned_layers(layers, points, bad, &got) && got.empty());
+  bad = per_layer;
+  --bad.count[4];
+  CHECK(!cut_planned_layers(layers, points, bad, &got) && got.empty());
+  points.pop_back();
+  CHECK(!cut_planned_layers(layers, points, per_layer, &got) && got.empty());
+}
+
 }  // namespace
 
 int main() {
   layers_against_exports();
+  layers_cut_from_one_path();
   pages();
   return check::finish("plot_svg");
 }
