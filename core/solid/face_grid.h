@@ -32,7 +32,7 @@ inline Topology faces_only(const SolidInput& in) {
   return t;
 }
 
-size_t face_grid_bytes(const Topology& topo);  // walks the faces' cells once to count
+size_t face_grid_bytes(const Topology& topo);  // counts the faces' cells (no walk)
 Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGrid* out);
 
 }  // namespace haloplot
