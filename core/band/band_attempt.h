@@ -82,8 +82,9 @@ struct BandConductor::Attempt {
   // whose local index is g.n + k lies on lines_end[-1 - k].
   const Edge3* lines_end = nullptr;
   uint32_t n_lines = 0;
-  size_t need = 0;  // bytes asked for by the stage that did not fit
-  SolidInput in{};  // a solid's band: its faces and drawn edges, local vertex indices
+  size_t need = 0;      // bytes asked for by the stage that did not fit
+  size_t gathered = 0;  // a solid's band: the arena's bytes while its input was gathered
+  SolidInput in{};      // a solid's band: its faces and drawn edges, local vertex indices
 
   // DRAW's sink: keep what this band owns, carry what runs past its top (band_rule.h).
   static Status on_span(void* ctx, const Span& s) {

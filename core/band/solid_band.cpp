@@ -54,6 +54,7 @@ struct SolidSink {
   const StrokeStyle* style;
   RawPiece* raw_top = nullptr;  // the current edge's pieces, stacked down from the tail's end
   uint32_t n_raw = 0, raw_edge = 0;
+  uint8_t* low = nullptr;  // the lowest the top of the tail reached (the band's peak counts it)
 
   static void begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3* edges);
   static Status piece(void* ctx, const HiddenPiece& p);
@@ -68,6 +69,9 @@ struct SolidSink {
   // edge) the intersection lines' segments.
   uint8_t* raw_bottom() const {
     return reinterpret_cast<uint8_t*>(raw_top - n_raw) - size_t{a->n_lines} * sizeof(Edge3);
+  }
+  void note_low() {
+    if (low == nullptr || raw_bottom() < low) low = raw_bottom();
   }
 };
 
@@ -88,6 +92,7 @@ void SolidSink::begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3* edges
   a.n_pieces = a.n_carry_out = a.carry_cursor = a.carry_used = a.n_lines = 0;
   self.n_raw = 0;
   self.last_line = nullptr;
+  self.low = end;
   if (pieces > end) {  // no room even for the carry: every piece is then a full sink
     a.carry_capacity = 0;
     a.pieces = reinterpret_cast<StoredPiece*>(end);
@@ -117,6 +122,7 @@ Status SolidSink::piece(void* ctx, const HiddenPiece& p) {
     return Status::kSinkFull;
   self.raw_top[-1 - int64_t{self.n_raw++}] =
       RawPiece{p.t0, p.t1, p.q, uint8_t(p.hidden ? 1 : 0), uint8_t(p.tested ? 1 : 0)};
+  self.note_low();
   return Status::kOk;
 }
 
@@ -139,6 +145,7 @@ Status SolidSink::line_piece(const HiddenPiece& p) {
     Edge3* slot = const_cast<Edge3*>(a->lines_end) - 1 - a->n_lines++;
     *slot = *p.geometry;
     last_line = slot;
+    note_low();
   }
   if (reinterpret_cast<uint8_t*>(a->pieces + a->n_pieces + 1) > raw_bottom())
     return Status::kSinkFull;
@@ -409,6 +416,8 @@ Status BandConductor::gather_vertices(Attempt& a, uint32_t* pairs, Triangle* tri
   a.in.vertices = verts;
   a.in.n_vertices = unique;
   a.after = verts_end;
+  a.gathered = size_t(verts_end - arena_) +
+               size_t(arena_ + arena_bytes_ - reinterpret_cast<uint8_t*>(vids)) + 64;
   return Status::kOk;
 }
 
@@ -468,8 +477,17 @@ Status BandConductor::hide_band(Attempt& a) {
   if (a.carry_used != n_carry_) return Status::kBandCarryLost;
   solid_crossings_ = need_count(report.cut.crossings + report.cut.near_misses);
   stats_.records += report.cut.crossings;
-  note_used(size_t(reinterpret_cast<uint8_t*>(a.pieces + a.n_pieces) - arena_) +
-            size_t(arena_ + arena_bytes_ - a.g.free_hi));
+  // The next band's height follows the bytes the band keeps (note_used); its peak counts every
+  // byte it touched: the run's stages at their highest (transient scratch included), or the
+  // sink's strokes from the tail's start and its stacks from the tail's end, with the front and
+  // the band's own top; or the gathering's, the vertex ids below the top.
+  const size_t top = size_t(arena_ + arena_bytes_ - a.g.free_hi);
+  const size_t run = size_t(space - arena_) + report.bytes_used;
+  const size_t tail = size_t(reinterpret_cast<uint8_t*>(a.pieces + a.n_pieces) - arena_) +
+                      size_t(a.g.free_hi - (sink.low != nullptr ? sink.low : a.g.free_hi));
+  note_used(size_t(reinterpret_cast<uint8_t*>(a.pieces + a.n_pieces) - arena_) + top);
+  const size_t most = (run > tail ? run : tail) + top;
+  note_peak(most > a.gathered ? most : a.gathered);
   return Status::kOk;
 }
 

@@ -169,6 +169,7 @@ Status HiddenRun::build_edges() {
     return out_of_room();
   }
   if (s != Status::kOk) return fail(s);
+  if (params.band) drop_flat_diagonals(&topo, in.facing);  // CUT need not see them
   r.bytes_topology = topo.kept_bytes;
   arena.take(topo.kept_bytes);
   const size_t build_high = arena.used + topo.scratch_bytes;
