@@ -82,5 +82,29 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
   echo 'job still does not fit 64 KB (`sim` with `arena 65536`: arena too small); in 128 KB it takes'
   echo '87 bands (peak 127,488 bytes). The unhatched arrays of the tables above gained as much: 20 x 20'
   echo 'now plots in 64 KB (145 bands; hatched, 184), 28 x 28 in 96 KB takes 111 bands (4,149 before).'
+  echo
+  echo '### The floor measured whole: bands one row high'
+  echo
+  echo 'The figures above are one band'\''s, from a probe. `build/host/tests/bench/band_floor_bench JOB'
+  echo '65536` measures the whole job instead: the conductor plots it in bands one row high'
+  echo '(`BandSpec::max_rows`, no motion) in 1 MB, and a solid band'\''s *peak bytes* now counts every'
+  echo 'byte it touched (its stages'\'' transient scratch, the sink'\''s stacks and the carry, the gathering'\''s'
+  echo 'vertex ids, and the carry from the band below), so the most over the job'\''s bands is the least'
+  echo 'arena it can plot in. The job is the hatched 28 x 28 one above (`scene cubes28.obj`, drawing'
+  echo 'hidden-dashed, view 30,25, outline on, hatch 3 30 90, effects acceleration pen-servo,'
+  echo 'kinematics corexy; its rows are the scene'\''s units, a fraction of a step: 313,227 bands one row'
+  echo 'high). *in 64 KB* is the job as `sim` plans it with `arena 65536`.'
+  echo
+  echo '| step | bands one row high: peak bytes | in 64 KB |'
+  echo '|---|---:|---|'
+  echo '| before (the last row of the table above) | 88,576 | arena too small |'
+  echo '| a band'\''s run drops the diagonals whose faces lie on both sides of them on paper (`drop_flat_diagonals`, solid/topology.h: crossing one changes no cover; a band draws no diagonal) | 69,424 | arena too small |'
+  echo
+  echo 'Still needed for 64 KB: 3,888 bytes (69,424 - 65,536). What is left of the worst band: the input'\''s triangles'
+  echo '(16 bytes each), vertices (12) and vertex pairs (8), copied from the scene (a streamed band'\''s'
+  echo 'staging buffer holds them already, outside the arena); the run'\''s topology edges (20 bytes each)'
+  echo 'and their Edge3 (24 bytes each, what CUT reads), the face grid, the CUTSET'\''s index and'
+  echo 'incidences; the sink'\''s carry (24 bytes per edge crossing the top border) and strokes. The'
+  echo 'solid tables above were measured before the peak counted transient bytes.'
 } > docs/bands.md
 echo "wrote docs/bands.md"
