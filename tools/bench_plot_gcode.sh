@@ -118,9 +118,9 @@ g_sim=$(awk -v a="$(cpu sim)" -v b="$(cpu svg)" 'BEGIN { printf "%.2f", a - b }'
 echo "Beyond the hidden lines both commands work out alike (the first row), getting the G-code and"
 echo "HPGL costs \`plot\` $g_plot CPU s and \`sim\` $g_sim CPU s (the step simulation and its trace):"
 echo "$(ratio "$g_plot" "$g_sim") of it. What is left of \`plot\`'s time is the hidden-line work both"
-echo "commands share (reading, cleaning and projecting the model, QI propagation): at this size about"
-echo "a third of today's \`sim\`'s time, so the whole command does not get below a tenth of today's"
-echo "\`sim\`; only faster hidden lines would take it there."
+echo "commands share (reading, cleaning and projecting the model, topology, CUT, QI propagation, the"
+echo "pen path and the files): at this size $(ratio "$(cpu svg)" "$(cpu sim)") of today's \`sim\`'s CPU time"
+echo "(the first row)."
 echo
 echo "The two G-code files are equal: **$same_gcode** ($(bytes "$work/plot.gcode") bytes); the HPGL"
 echo "files: **$same_hpgl**. The trace \`sim\` writes besides: $(bytes "$work/sim.trace") bytes. The plot"

@@ -170,7 +170,8 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
         const auto& q = geometry(list[j], edges);
         const int32_t qx0 = min_i32(q.a.x, q.b.x), qx1 = max_i32(q.a.x, q.b.x);
         const int32_t qy0 = min_i32(q.a.y, q.b.y), qy1 = max_i32(q.a.y, q.b.y);
-        if (qx1 < px0 || qx0 > px1 || qy1 < py0 || qy0 > py1) continue;
+        // One branch on all four (not four that each mispredict): most pairs are rejected.
+        if ((qx1 < px0) | (qx0 > px1) | (qy1 < py0) | (qy0 > py1)) continue;
         test_pair(g, cb, edges, list[i], list[j], r, rec, st);
       }
     }
@@ -179,6 +180,36 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
     if (++col == g.nx) {
       col = 0;
       ++row;
+    }
+  }
+}
+
+// Moves the records into their behind edge's group ([first[e], first[e + 1]), next[e] its
+// first free slot). When the scratch holds a copy of the records beside `next` (it does when
+// the cell lists were the larger, as on big scenes), they are scattered from the copy: the
+// writes do not wait on one another. Otherwise in place (an American-flag permutation), so
+// the records never need a second buffer; there each move waits on the read before it, a
+// cache miss apiece on a big scene. Either way the groups hold the same records (their order
+// inside a group is the sort's business below).
+void group_records(Crossing* records, uint32_t stored, uint32_t n, const uint32_t* first,
+                   uint32_t* next, void* scratch, size_t scratch_bytes) {
+  const size_t copy_at = carve_round(size_t{n} * sizeof(uint32_t));
+  if (scratch_bytes >= copy_at + size_t{stored} * sizeof(Crossing)) {
+    Crossing* copy = reinterpret_cast<Crossing*>(static_cast<uint8_t*>(scratch) + copy_at);
+    for (uint32_t i = 0; i < stored; ++i) copy[i] = records[i];
+    for (uint32_t i = 0; i < stored; ++i) records[next[copy[i].behind]++] = copy[i];
+    return;
+  }
+  for (uint32_t e = 0; e < n; ++e) {
+    while (next[e] < first[e + 1]) {
+      Crossing x = records[next[e]];
+      while (x.behind != e) {  // park x in its own bucket, pick up what was there
+        const uint32_t j = next[x.behind]++;
+        const Crossing y = records[j];
+        records[j] = x;
+        x = y;
+      }
+      records[next[e]++] = x;
     }
   }
 }
@@ -245,26 +276,14 @@ Status run_cut(const CutPlan& plan, const Edge3* edges, void* scratch, size_t sc
     return Status::kCrossingCapacity;
   }
 
-  // C7-C9: group by behind edge with a counting sort, in place (American-flag permutation),
-  // so the records never need a second buffer. `next` reuses the scratch: the cell lists
-  // are no longer needed.
+  // C7-C9: group by behind edge with a counting sort. `next` reuses the scratch: the cell
+  // lists are no longer needed.
   uint32_t* next = static_cast<uint32_t*>(scratch);
   for (uint32_t e = 0; e <= n; ++e) first[e] = 0;
   for (uint32_t i = 0; i < rec.stored; ++i) ++first[records[i].behind + 1];
   for (uint32_t e = 0; e < n; ++e) first[e + 1] += first[e];
   for (uint32_t e = 0; e < n; ++e) next[e] = first[e];
-  for (uint32_t e = 0; e < n; ++e) {
-    while (next[e] < first[e + 1]) {
-      Crossing x = records[next[e]];
-      while (x.behind != e) {  // park x in its own bucket, pick up what was there
-        const uint32_t j = next[x.behind]++;
-        const Crossing y = records[j];
-        records[j] = x;
-        x = y;
-      }
-      records[next[e]++] = x;
-    }
-  }
+  group_records(records, rec.stored, n, first, next, scratch, scratch_bytes);
   // Order each group along its edge; ties (several edges through one point) by front index
   // so the output never depends on cell order.
   for (uint32_t e = 0; e < n; ++e) {

@@ -201,7 +201,7 @@ void join_ends(const Segment2* spans, uint32_t n, EndKey* ends, uint32_t* link) 
     ends[id].id = id;
     link[id] = kNone;
   }
-  sort_in_place(ends, size_t{2} * n, [](const EndKey& a, const EndKey& b) {
+  sort_total(ends, size_t{2} * n, [](const EndKey& a, const EndKey& b) {
     if (a.x != b.x) return a.x < b.x;
     if (a.y != b.y) return a.y < b.y;
     return a.id < b.id;

@@ -17,21 +17,57 @@ Wide side_times_d(const Point3& u, const Point3& v, const CoverPoint& p) {
   return mul_i64(ex, py) - mul_i64(ey, px);
 }
 
+// A whole point (d = 1, every vertex test of the QI walk) needs no wide product: its side test
+// is a 21-bit difference times a 21-bit one, twice, below 2^43.
+static_assert((int64_t{1} << 21) * (int64_t{1} << 21) * 2 <= (int64_t{1} << 43),
+              "a whole point's side test must fit int64_t");
+
+// The sign of side_times_d.
+int side_sign(const Point3& u, const Point3& v, const CoverPoint& p) {
+  if (p.d == 1) {
+    const int64_t s = int64_t{v.x - u.x} * (p.y - u.y) - int64_t{v.y - u.y} * (p.x - u.x);
+    return (s > 0) - (s < 0);
+  }
+  return wide_sign(side_times_d(u, v, p));
+}
+
 // The sign P takes against u -> v after the nudge; 0 only when P is on the line and the nudge
 // runs along it.
-int nudged_side(const Point3& u, const Point3& v, const CoverPoint& p) {
-  const int s = wide_sign(side_times_d(u, v, p));
-  if (s != 0) return s;
+// The nudge's side of u -> v: what decides when P is on the line.
+int nudge_side(const Point3& u, const Point3& v, const CoverPoint& p) {
   const int64_t c = int64_t{v.x - u.x} * p.dir_y - int64_t{v.y - u.y} * p.dir_x;
   return (c > 0) - (c < 0);
 }
 
-// Halves of cover for a counter-clockwise triangle, by the nudged sides alone.
+int nudged_side(const Point3& u, const Point3& v, const CoverPoint& p) {
+  const int s = side_sign(u, v, p);
+  return s != 0 ? s : nudge_side(u, v, p);
+}
+
+bool on_point(const Point3& u, const CoverPoint& p) { return p.d == 1 && p.x == u.x && p.y == u.y; }
+
+// Halves of cover for a counter-clockwise triangle (area > 0), by the nudged sides alone.
 int inside_halves(const Point3& a, const Point3& b, const Point3& c, const CoverPoint& p) {
-  const int s0 = nudged_side(a, b, p), s1 = nudged_side(b, c, p), s2 = nudged_side(c, a, p);
+  int s0, s1, s2;
+  // P on a corner (a vertex asked about its own faces): both sides through it are 0 before the
+  // nudge, and the side opposite is the doubled area, > 0; the same signs as the tests give.
+  if (on_point(a, p)) {
+    s0 = nudge_side(a, b, p), s1 = 1, s2 = nudge_side(c, a, p);
+  } else if (on_point(b, p)) {
+    s0 = nudge_side(a, b, p), s1 = nudge_side(b, c, p), s2 = 1;
+  } else if (on_point(c, p)) {
+    s0 = 1, s1 = nudge_side(b, c, p), s2 = nudge_side(c, a, p);
+  } else {
+    s0 = nudged_side(a, b, p), s1 = nudged_side(b, c, p), s2 = nudged_side(c, a, p);
+  }
   if (s0 < 0 || s1 < 0 || s2 < 0) return 0;
   const int zeros = (s0 == 0) + (s1 == 0) + (s2 == 0);
   return zeros == 0 ? 2 : (zeros == 1 ? 1 : 0);
+}
+
+// Is P the point of corner u, at u's depth?
+bool at_corner(const Point3& u, const CoverPoint& p) {
+  return p.d == 1 && p.zd == 1 && p.x == u.x && p.y == u.y && p.zn == Wide::from_i64(u.z);
 }
 
 }  // namespace
@@ -98,7 +134,10 @@ int cover_halves(const Point3& a, const Point3& b, const Point3& c, const CoverP
   if (area <= 0) return 0;  // back faces and edge-on faces hide nothing in the count
   const int h = inside_halves(a, b, c, p);
   if (h == 0) return 0;
-  const int s = plane_depth_sign(a, b, c, p);
+  // P on one of T's corners at that corner's depth (a vertex asked about its own faces, the
+  // QI walk's commonest question) is level with T's plane: no need to work the depth out.
+  const int s =
+      at_corner(a, p) || at_corner(b, p) || at_corner(c, p) ? 0 : plane_depth_sign(a, b, c, p);
   if (s != 0) return s > 0 ? h : 0;
   // Level at P: compare the rise along the nudge, both times A.
   const int64_t gx = int64_t{p.dir_x}, gy = int64_t{p.dir_y};

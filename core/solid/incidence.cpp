@@ -33,7 +33,7 @@ void count_scratch(C& c, const Topology& topo) {
 void link_coincident(const Point3* p, uint32_t nv, uint32_t* order, Incidences* out) {
   Incidences& r = *out;
   for (uint32_t v = 0; v < nv; ++v) order[v] = v;
-  heap_sort(order, nv, [p](uint32_t a, uint32_t b) {
+  sort_total(order, nv, [p](uint32_t a, uint32_t b) {
     if (p[a].x != p[b].x) return p[a].x < p[b].x;
     if (p[a].y != p[b].y) return p[a].y < p[b].y;
     return a < b;

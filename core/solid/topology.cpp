@@ -34,6 +34,40 @@ uint32_t find_key(const SideKey* keys, uint32_t n, uint64_t key) {
   return lo < n && keys[lo].key == key ? lo : n;
 }
 
+// The drawn keys, sorted, and where each lesser vertex's keys begin when the buffer had room
+// for that index (by_vertex[v], n_vertices + 1 of them): a lookup then searches the few keys
+// of one vertex instead of all of them, for every side of every triangle, three times over.
+// Without the room it searches them all: the same answers.
+struct DrawnKeys {
+  const SideKey* keys;
+  uint32_t n;
+  const uint32_t* by_vertex = nullptr;
+
+  uint32_t find(uint64_t key) const {
+    if (by_vertex == nullptr) return find_key(keys, n, key);
+    const uint32_t v = static_cast<uint32_t>(key >> 32);
+    const uint32_t lo = by_vertex[v], k = by_vertex[v + 1] - lo;
+    const uint32_t i = find_key(keys + lo, k, key);
+    return i < k ? lo + i : n;
+  }
+  const SideKey& operator[](uint32_t i) const { return keys[i]; }
+};
+
+// Puts the index at [at, end) if it fits there (8-byte aligned); else leaves the search whole.
+void index_drawn(uint8_t* at, const uint8_t* end, uint32_t n_vertices, DrawnKeys* d) {
+  d->by_vertex = nullptr;
+  uint8_t* p = reinterpret_cast<uint8_t*>((reinterpret_cast<uintptr_t>(at) + 7) & ~uintptr_t{7});
+  const size_t need = (size_t{n_vertices} + 1) * sizeof(uint32_t);
+  if (p > end || size_t(end - p) < need) return;
+  uint32_t* first = reinterpret_cast<uint32_t*>(p);
+  uint32_t i = 0;
+  for (uint32_t v = 0; v <= n_vertices; ++v) {
+    while (i < d->n && static_cast<uint32_t>(d->keys[i].key >> 32) < v) ++i;
+    first[v] = i;
+  }
+  d->by_vertex = first;
+}
+
 // The arrays the topology keeps, for n edges in all (drawn and diagonals).
 template <typename C>
 void count_kept(C& c, const SolidInput& in, size_t n) {
@@ -85,7 +119,7 @@ bool side_in_rows(const SolidInput& in, const TopologyOptions& options, uint32_t
 // The triangle sides that are not drawn edges (the diagonals to be), as keys; a band keeps only
 // those meeting its rows. With `side` null they are only counted; otherwise stored and sorted,
 // so the diagonals are numbered independently of the triangle order.
-uint32_t undrawn_sides(const SolidInput& in, const TopologyOptions& options, const SideKey* drawn,
+uint32_t undrawn_sides(const SolidInput& in, const TopologyOptions& options, const DrawnKeys& drawn,
                        uint64_t* side) {
   const uint32_t sides = in.n_triangles * 3;
   uint32_t n_side = 0;
@@ -93,11 +127,11 @@ uint32_t undrawn_sides(const SolidInput& in, const TopologyOptions& options, con
     const Triangle& tri = in.triangles[s / 3];
     const uint32_t a = tri.v[s % 3], b = tri.v[(s % 3 + 1) % 3];
     const uint64_t k = key_of(a, b);
-    if (find_key(drawn, in.n_edges, k) != in.n_edges || !side_in_rows(in, options, a, b)) continue;
+    if (drawn.find(k) != in.n_edges || !side_in_rows(in, options, a, b)) continue;
     if (side != nullptr) side[n_side] = k;
     ++n_side;
   }
-  if (side != nullptr) heap_sort(side, n_side, [](uint64_t x, uint64_t y) { return x < y; });
+  if (side != nullptr) sort_total(side, n_side, [](uint64_t x, uint64_t y) { return x < y; });
   return n_side;
 }
 
@@ -124,12 +158,12 @@ void number_edges(const SolidInput& in, const uint64_t* side, uint32_t n_side, T
 
 // The edge triangle side s lies on: a drawn edge, a diagonal (found among t's diagonals, which
 // are in key order), or kNoFace for a band's side beyond its rows.
-uint32_t side_edge(const SolidInput& in, const TopologyOptions& options, const SideKey* drawn,
+uint32_t side_edge(const SolidInput& in, const TopologyOptions& options, const DrawnKeys& drawn,
                    const Topology& t, uint32_t s) {
   const Triangle& tri = in.triangles[s / 3];
   const uint32_t a = tri.v[s % 3], b = tri.v[(s % 3 + 1) % 3];
   const uint64_t k = key_of(a, b);
-  const uint32_t d = find_key(drawn, in.n_edges, k);
+  const uint32_t d = drawn.find(k);
   if (d < in.n_edges) return drawn[d].ref;
   if (!side_in_rows(in, options, a, b)) return kNoFace;
   uint32_t lo = t.n_drawn, hi = t.n_edges;
@@ -145,7 +179,7 @@ uint32_t side_edge(const SolidInput& in, const TopologyOptions& options, const S
 
 // Attach faces: a side running v0 -> v1 takes slot 0, v1 -> v0 slot 1. Then each edge is
 // checked: loose, a boundary, non-manifold, or two faces that agree (regular) or not.
-void attach_faces(const SolidInput& in, const TopologyOptions& options, const SideKey* drawn,
+void attach_faces(const SolidInput& in, const TopologyOptions& options, const DrawnKeys& drawn,
                   uint8_t* nfaces, Topology& t) {
   const uint32_t sides = in.n_triangles * 3, n = t.n_edges;
   for (uint32_t e = 0; e < n; ++e) nfaces[e] = 0;
@@ -276,19 +310,24 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
   // Drawn edges keep their input order and index; a repeat is an input error.
   for (uint32_t e = 0; e < in.n_edges; ++e)
     drawn[e] = SideKey{key_of(in.edge_pairs[2 * e], in.edge_pairs[2 * e + 1]), e};
-  heap_sort(drawn, in.n_edges, key_less);
+  sort_total(drawn, in.n_edges, key_less);
   for (uint32_t i = 1; i < in.n_edges; ++i)
     if (drawn[i].key == drawn[i - 1].key) return Status::kBadParameter;
 
   // The diagonals' keys come first, so the kept arrays are carved for the exact number of edges.
-  const uint32_t n_side = undrawn_sides(in, options, drawn, nullptr);
+  // The index of the drawn keys goes where the kept arrays will be, then above them (each time
+  // only where nothing written before the next lookup can reach it).
+  DrawnKeys keys{drawn, in.n_edges};
+  index_drawn(lo, reinterpret_cast<uint8_t*>(drawn), in.n_vertices, &keys);
+  const uint32_t n_side = undrawn_sides(in, options, keys, nullptr);
   ByteCounter scratch_size;
   count_scratch(scratch_size, in.n_edges, n_side);
   if (size_t(hi - lo) < scratch_size.total) return Status::kWorkspaceTooSmall;
   Carver scratch(hi - scratch_size.total, scratch_size.total - drawn_bytes);
   uint64_t* side = scratch.take<uint64_t>(n_side);
   uint8_t* nfaces = scratch.take<uint8_t>(size_t{in.n_edges} + n_side);
-  undrawn_sides(in, options, drawn, side);
+  index_drawn(lo, hi - scratch_size.total, in.n_vertices, &keys);  // below the side keys now
+  undrawn_sides(in, options, keys, side);
   uint32_t n_diagonals = 0;
   for (uint32_t i = 0; i < n_side; ++i)
     if (i == 0 || side[i] != side[i - 1]) ++n_diagonals;
@@ -304,7 +343,8 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
   t.kept_bytes = size_t(carve.next - static_cast<uint8_t*>(buffer));
   t.scratch_bytes = scratch_size.total;
   number_edges(in, side, n_side, t);
-  attach_faces(in, options, drawn, nfaces, t);
+  index_drawn(carve.next, hi - scratch_size.total, in.n_vertices, &keys);
+  attach_faces(in, options, keys, nfaces, t);
   if (options.stars) build_stars(in, t);
   *out = t;
   return Status::kOk;

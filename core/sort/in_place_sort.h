@@ -1,6 +1,7 @@
 // In-place sorting without a heap: insertion sort for the short runs DRAW and CUT usually see
 // (a handful of crossings per edge), heapsort beyond that so one edge crossed by thousands of
-// others still costs O(k log k), never O(k^2). Neither needs extra memory.
+// others still costs O(k log k), never O(k^2). Neither needs extra memory. sort_total() is the
+// quicker sort for long arrays whose order has no ties (see there).
 #pragma once
 #include <stddef.h>
 
@@ -55,6 +56,71 @@ void sort_in_place(T* a, size_t n, Less less) {
     insertion_sort(a, n, less);
   else
     heap_sort(a, n, less);
+}
+
+namespace sort_detail {
+
+template <typename T>
+void swap_values(T& a, T& b) {
+  T t = a;
+  a = b;
+  b = t;
+}
+
+// Introsort's loop: quicksort partitions (Hoare's, on the median of the first, middle and last
+// values), the smaller part sorted by a call, the larger by the loop, so calls nest at most
+// log2(n) deep; a part still long after `depth` partitions is heapsorted (O(n log n) whatever
+// the input), a short one insertion-sorted.
+template <typename T, typename Less>
+void intro_sort(T* a, size_t n, unsigned depth, Less less) {
+  while (n > kInsertionSortLimit) {
+    if (depth == 0) {
+      heap_sort(a, n, less);
+      return;
+    }
+    --depth;
+    T* mid = a + n / 2;
+    T* last = a + n - 1;
+    if (less(*mid, *a)) swap_values(*mid, *a);
+    if (less(*last, *mid)) swap_values(*last, *mid);
+    if (less(*mid, *a)) swap_values(*mid, *a);
+    swap_values(*a, *mid);  // the median first: every part then holds at least one value
+    const T pivot = *a;
+    size_t i = 0, j = n;
+    for (bool first = true;; first = false) {
+      if (!first) ++i;
+      while (less(a[i], pivot)) ++i;
+      do --j;
+      while (less(pivot, a[j]));
+      if (i >= j) break;
+      swap_values(a[i], a[j]);
+    }
+    // [0, j] holds no value above the pivot, (j, n) none below; both are shorter than n.
+    const size_t left = j + 1, right = n - left;
+    if (left < right) {
+      intro_sort(a, left, depth, less);
+      a += left;
+      n = right;
+    } else {
+      intro_sort(a + left, right, depth, less);
+      n = left;
+    }
+  }
+  insertion_sort(a, n, less);
+}
+
+}  // namespace sort_detail
+
+// Sorts by `less`, which must order the values totally: no two different values may compare
+// equal (a last tie-break on an index does it; equal values that are the same bits are fine).
+// Then every correct sort gives the same array, and this one (introsort: O(n log n) at worst,
+// no extra memory) is several times quicker than heapsort on long arrays, whose sift-downs
+// jump across memory.
+template <typename T, typename Less>
+void sort_total(T* a, size_t n, Less less) {
+  unsigned depth = 0;
+  for (size_t k = n; k > 1; k >>= 1) depth += 2;
+  sort_detail::intro_sort(a, n, depth, less);
 }
 
 }  // namespace haloplot

@@ -4,6 +4,9 @@
 //   haloplot draw SCENE.cut --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans] [--stats]
 //   haloplot plot SCENE.edges --halo W [--exact-halo] -o OUT.svg [--spans F] [--cut F] [--stats]
 #include <unistd.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include <cstdio>
 #include <fstream>
@@ -798,7 +801,21 @@ int run_command(int argc, char** argv) {
 
 }  // namespace
 
+// The tool is one command that builds and drops many large arrays (a big model's vertices,
+// faces, sides, pieces, path): glibc would give each one back to the system when it is
+// freed and take fresh pages for the next, a page fault per 4 KB every time. Keeping freed
+// memory for reuse instead (as much as glibc allows in the heap: 32 MB per block) cut a
+// 200,000-triangle plot's time by a fifth; the largest buffers come from HostMemory.
+static void keep_freed_memory() {
+#if defined(__GLIBC__)
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  mallopt(M_TOP_PAD, 16 << 20);
+#endif
+}
+
 int main(int argc, char** argv) {
+  keep_freed_memory();
   if (argc < 2) return fail(kUsage);
   // Every output of the command is staged here and put in place only when the command
   // succeeds, all together (io/atomic_file.h); a failed command leaves none behind.

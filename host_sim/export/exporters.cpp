@@ -1,5 +1,6 @@
 #include "export/exporters.h"
 
+#include <charconv>
 #include <ostream>
 #include <string>
 
@@ -7,13 +8,45 @@
 
 namespace haloplot::host {
 
+void append_thousandths(std::string* out, int64_t v) {
+  char buf[32];
+  char* const end = buf + sizeof buf;
+  char* p = end;
+  const bool neg = v < 0;
+  uint64_t a = neg ? 0 - uint64_t(v) : uint64_t(v);
+  const uint64_t frac = a % 1000;
+  a /= 1000;
+  *--p = char('0' + frac % 10);
+  *--p = char('0' + frac / 10 % 10);
+  *--p = char('0' + frac / 100);
+  *--p = '.';
+  do {
+    *--p = char('0' + a % 10);
+    a /= 10;
+  } while (a != 0);
+  if (neg) *--p = '-';
+  out->append(p, size_t(end - p));
+}
+
+void append_int(std::string* out, int64_t v) {
+  char buf[24];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  out->append(buf, size_t(r.ptr - buf));
+}
+
+void append_mm(std::string* out, int64_t steps, uint32_t per_mm) {
+  append_thousandths(out, floor_div(steps * 2000 + per_mm, 2 * int64_t(per_mm)));
+}
+
 std::string mm_text(int64_t steps, uint32_t per_mm) {
-  const int64_t micro = floor_div(steps * 2000 + per_mm, 2 * int64_t(per_mm));  // thousandths
-  const bool neg = micro < 0;
-  const int64_t a = neg ? -micro : micro;
-  std::string frac = std::to_string(a % 1000);
-  return (neg ? "-" : "") + std::to_string(a / 1000) + "." + std::string(3 - frac.size(), '0') +
-         frac;
+  std::string s;
+  append_mm(&s, steps, per_mm);
+  return s;
+}
+
+void BlockWriter::flush() {
+  out_.write(text.data(), std::streamsize(text.size()));
+  text.clear();
 }
 
 bool apply_feeds(const ExportStyle& s, Machine* m, std::string* error) {
@@ -85,10 +118,14 @@ void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Ma
   pen(false);
   bool down = false;
   const std::vector<std::pair<size_t, int>> starts = layer_starts(layers, s);
-  size_t next = 1;  // the first layer needs no change
+  size_t next = 1;         // the first layer needs no change
+  BlockWriter block(out);  // the moves; written out before any pen command
+  std::string& text = block.text;
   for (size_t i = 0; i < path.size(); ++i) {
     const PathPoint& p = path[i];
-    if (next < starts.size() && i == starts[next].first) {
+    const bool change = next < starts.size() && i == starts[next].first;
+    if (change || (p.pen_down != 0) != down) block.flush();
+    if (change) {
       if (down) pen(false);
       down = false;
       out << "; layer " << starts[next++].second << ": change the pen, then resume\nM0\n";
@@ -97,10 +134,16 @@ void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Ma
       down = p.pen_down != 0;
       pen(down);
     }
-    out << (down ? "G1 X" : "G0 X") << mm_text(int64_t(p.x) + s.offset_x, s.steps_per_mm) << " Y"
-        << mm_text(int64_t(p.y) + s.offset_y, s.steps_per_mm) << " F"
-        << (down ? draw_feed : travel_feed) << '\n';
+    text += down ? "G1 X" : "G0 X";
+    append_mm(&text, int64_t(p.x) + s.offset_x, s.steps_per_mm);
+    text += " Y";
+    append_mm(&text, int64_t(p.y) + s.offset_y, s.steps_per_mm);
+    text += " F";
+    text += down ? draw_feed : travel_feed;
+    text += '\n';
+    block.maybe_flush();
   }
+  block.flush();
   if (down) pen(false);
   out << "M2\n";
 }
@@ -111,7 +154,9 @@ void write_hpgl(std::ostream& out, const std::vector<PathPoint>& path, const Exp
   const auto unit = [&](int64_t v) {
     return floor_div(v * 80 + s.steps_per_mm, 2 * int64_t(s.steps_per_mm));
   };
-  out << "IN;SP1;";
+  BlockWriter block(out);
+  std::string& text = block.text;
+  text += "IN;SP1;";
   bool down = false;
   bool open = false;
   const std::vector<std::pair<size_t, int>> starts = layer_starts(layers, s);
@@ -122,22 +167,31 @@ void write_hpgl(std::ostream& out, const std::vector<PathPoint>& path, const Exp
     if (next < starts.size() && i == starts[next].first) {
       if (starts[next].second != pen) {
         pen = starts[next].second;
-        out << (open ? ";" : "") << (down ? "PU;" : "") << "SP" << pen << ";";
+        text += open ? ";" : "";
+        text += down ? "PU;" : "";
+        text += "SP";
+        append_int(&text, pen);
+        text += ';';
         open = down = false;
       }
       ++next;
     }
     const bool want = p.pen_down != 0;
     if (want != down || !open) {
-      out << (open ? ";" : "") << (want ? "PD" : "PU");
+      text += open ? ";" : "";
+      text += want ? "PD" : "PU";
       down = want;
       open = true;
     } else {
-      out << ',';
+      text += ',';
     }
-    out << unit(int64_t(p.x) + s.offset_x) << ',' << unit(int64_t(p.y) + s.offset_y);
+    append_int(&text, unit(int64_t(p.x) + s.offset_x));
+    text += ',';
+    append_int(&text, unit(int64_t(p.y) + s.offset_y));
+    block.maybe_flush();
   }
-  out << (open ? ";" : "") << "PU;SP0;\n";
+  text += open ? ";" : "";
+  text += "PU;SP0;\n";
 }
 
 }  // namespace haloplot::host

@@ -54,5 +54,31 @@ void write_hpgl(std::ostream& out, const std::vector<PathPoint>& path, const Exp
 
 // "12.345": plot steps in millimetres, exactly rounded to 3 decimals (integer arithmetic).
 std::string mm_text(int64_t steps, uint32_t steps_per_mm);
+// The same text appended to *out (the writers' loops build no string per number).
+void append_mm(std::string* out, int64_t steps, uint32_t steps_per_mm);
+// Thousandths as "-12.345" (exactly three decimals), appended to *out.
+void append_thousandths(std::string* out, int64_t thousandths);
+// A decimal integer, appended to *out.
+void append_int(std::string* out, int64_t v);
+
+// Text for a stream gathered in blocks: one write per 64 KB instead of a formatted insertion per
+// number. flush() (or the destructor) writes what is left.
+class BlockWriter {
+ public:
+  explicit BlockWriter(std::ostream& out) : out_(out) { text.reserve(kBlock + 256); }
+  ~BlockWriter() { flush(); }
+  BlockWriter(const BlockWriter&) = delete;
+  BlockWriter& operator=(const BlockWriter&) = delete;
+  // Call after each piece of text: writes the block once it is full.
+  void maybe_flush() {
+    if (text.size() >= kBlock) flush();
+  }
+  void flush();
+  std::string text;
+
+ private:
+  static constexpr size_t kBlock = size_t{1} << 16;
+  std::ostream& out_;
+};
 
 }  // namespace haloplot::host

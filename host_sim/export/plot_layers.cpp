@@ -36,11 +36,14 @@ std::vector<PathPoint> joined_path(const std::vector<PlannedLayer>& layers) {
 std::vector<StrokeLayer> mode_layers(const ModeDrawing& d) {
   // The job's layers (pipeline/drawing_modes.h layer_spans), so G-code and SVG agree.
   std::vector<std::vector<Span>> spans = layer_spans(d);
-  return {{"1 visible", std::move(spans[0]), 1},
-          {"2 hidden", std::move(spans[1]), 1},
-          {"3 intersections", std::move(spans[2]), 1},
-          {"4 hatching", std::move(spans[3]), 1},
-          {"5 outlines", std::move(spans[4]), 2.5}};
+  // Moved in one by one (a braced list would copy every span).
+  static const char* const kLabels[5] = {"1 visible", "2 hidden", "3 intersections", "4 hatching",
+                                         "5 outlines"};
+  std::vector<StrokeLayer> layers;
+  layers.reserve(5);
+  for (size_t k = 0; k < 5; ++k)
+    layers.push_back(StrokeLayer{kLabels[k], std::move(spans[k]), k == 4 ? 2.5 : 1});
+  return layers;
 }
 
 }  // namespace haloplot::host

@@ -94,6 +94,33 @@ bool parse_coordinate(const std::string& s, double* out) {
   return !s.empty() && end == s.c_str() + s.size() && std::isfinite(*out);
 }
 
+// The whole stream, sized from its length when it can seek (a pipe cannot), read in blocks (a
+// byte at a time through an iterator was slow on big files).
+void read_all(std::istream& in, std::string* bytes) {
+  const std::streampos start = in.tellg();
+  if (start != std::streampos(-1) && in.seekg(0, std::ios::end)) {
+    const std::streampos end = in.tellg();
+    in.seekg(start);
+    if (end != std::streampos(-1) && end > start && in) {
+      // Straight into the string; whatever the size said, the reading below takes the rest.
+      bytes->resize(size_t(end - start));
+      in.read(&(*bytes)[0], std::streamsize(bytes->size()));
+      bytes->resize(size_t(in.gcount()));
+    }
+  }
+  if (!in.bad()) in.clear();  // a seek a pipe refused, or the end met: read on
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) bytes->append(chunk, size_t(in.gcount()));
+}
+
+// A stream reading the bytes in place (an istringstream would copy them).
+struct ViewBuffer : std::streambuf {
+  explicit ViewBuffer(const std::string& b) {
+    char* p = const_cast<char*>(b.data());  // only read: the get area is never written
+    setg(p, p, p + b.size());
+  }
+};
+
 InputError read_binary_stl(const std::string& b, const std::string& name, ObjModel* out) {
   if (b.size() < 84)
     return {name, 0,
@@ -222,13 +249,15 @@ InputError read_mesh_file(const std::string& path, ObjModel* out) {
     return {path, 0, "not a model file: the name must end in .obj, .stl or .ply"};
   std::ifstream in(path, std::ios::binary);
   if (const InputError e = open_problem(path, in); e.failed()) return e;
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string bytes;
+  read_all(in, &bytes);
   if (in.bad()) return {path, 0, "read error"};
   const std::string mismatch = content_mismatch(format, bytes);
   if (!mismatch.empty()) return {path, 0, mismatch};
   if (format == MeshFormat::kStl) return read_stl(bytes, path, out);
   if (format == MeshFormat::kPly) return read_ply(bytes, path, out);
-  std::istringstream text(bytes);
+  ViewBuffer view(bytes);
+  std::istream text(&view);
   return read_obj(text, path, out);
 }
 

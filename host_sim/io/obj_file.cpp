@@ -4,27 +4,21 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <unordered_set>
 
 #include "io/line_reader.h"
+#include "io/pair_set.h"
 
 namespace haloplot::host {
 namespace {
 
-bool parse_real(const std::string& s, double* out) {
-  if (s.empty()) return false;
-  char* end = nullptr;
-  *out = std::strtod(s.c_str(), &end);
-  return end == s.c_str() + s.size() && std::isfinite(*out);
-}
-
 // One face or line corner: the vertex index before the first '/', 1-based or negative.
-bool parse_index(const std::string& corner, size_t n_vertices, uint32_t* out, std::string* why) {
-  const std::string v = corner.substr(0, corner.find('/'));
+bool parse_index(std::string_view corner, size_t n_vertices, uint32_t* out, std::string* why) {
+  const std::string_view v = corner.substr(0, corner.find('/'));
   int64_t i = 0;
-  if (!parse_int(v, -int64_t(n_vertices), int64_t(n_vertices), &i) || i == 0) {
-    *why = "vertex index '" + excerpt(v) + "' is not in 1.." + std::to_string(n_vertices) +
-           " or -1..-" + std::to_string(n_vertices) + " (vertices defined so far)";
+  if (!parse_int_field(v, -int64_t(n_vertices), int64_t(n_vertices), &i) || i == 0) {
+    *why = "vertex index '" + excerpt(std::string(v)) + "' is not in 1.." +
+           std::to_string(n_vertices) + " or -1..-" + std::to_string(n_vertices) +
+           " (vertices defined so far)";
     return false;
   }
   *out = uint32_t(i > 0 ? i - 1 : int64_t(n_vertices) + i);
@@ -37,22 +31,23 @@ InputError read_obj(std::istream& in, const std::string& name, ObjModel* out) {
   *out = ObjModel{};
   std::vector<double> xyz;
   LineReader reader(in);
-  std::vector<std::string> f;
-  std::unordered_set<uint64_t> seen;
+  std::vector<std::string_view> f;
+  PairSet seen;
   auto add_edge = [&](uint32_t a, uint32_t b) {
     if (a == b) return;
-    const uint64_t key = uint64_t(std::min(a, b)) << 32 | std::max(a, b);
-    if (seen.insert(key).second) out->edge_pairs.insert(out->edge_pairs.end(), {a, b});
+    if (seen.insert(pair_key(a, b))) out->edge_pairs.insert(out->edge_pairs.end(), {a, b});
   };
+  std::vector<uint32_t> idx;
   while (reader.next(&f)) {
-    const std::string& k = f[0];
+    const std::string_view k = f[0];
     if (k == "v") {
       if (f.size() < 4)
         return {name, reader.line(), "a vertex needs x y z (then w, or r g b, may follow)"};
       double c[3];
       for (int i = 0; i < 3; ++i)
-        if (!parse_real(f[1 + i], &c[i]))
-          return {name, reader.line(), "coordinate '" + excerpt(f[1 + i]) + "' is not a number"};
+        if (!parse_finite(f[1 + i], &c[i]))
+          return {name, reader.line(),
+                  "coordinate '" + excerpt(std::string(f[1 + i])) + "' is not a number"};
       xyz.insert(xyz.end(), c, c + 3);
     } else if (k == "f" || k == "l") {
       const size_t need = k == "f" ? 3 : 2;
@@ -60,7 +55,7 @@ InputError read_obj(std::istream& in, const std::string& name, ObjModel* out) {
         return {name, reader.line(),
                 std::string(k == "f" ? "a face" : "a line") + " needs at least " +
                     std::to_string(need) + " vertices, found " + std::to_string(f.size() - 1)};
-      std::vector<uint32_t> idx;
+      idx.clear();
       for (size_t i = 1; i < f.size(); ++i) {
         uint32_t v;
         std::string why;
@@ -70,7 +65,7 @@ InputError read_obj(std::istream& in, const std::string& name, ObjModel* out) {
       for (size_t i = 0; i + 1 < idx.size(); ++i) add_edge(idx[i], idx[i + 1]);
       if (k == "f") {
         add_edge(idx.back(), idx.front());
-        out->faces.push_back(idx);
+        out->faces.emplace_back(idx.begin(), idx.end());
         out->face_lines.push_back(uint32_t(reader.line()));
       } else {
         ++out->lines;
@@ -97,6 +92,7 @@ void place_vertices(const std::vector<double>& xyz, ObjModel* out) {
   out->scale = scale;
   for (int a = 0; a < 3; ++a) out->centre[a] = (lo[a] + hi[a]) / 2;
   out->vertices.clear();
+  out->vertices.reserve(xyz.size() / 3);
   for (size_t i = 0; i < xyz.size(); i += 3) {
     int32_t c[3];
     for (int a = 0; a < 3; ++a)
@@ -107,12 +103,11 @@ void place_vertices(const std::vector<double>& xyz, ObjModel* out) {
 
 void edges_from_faces(ObjModel* model) {
   model->edge_pairs.clear();
-  std::unordered_set<uint64_t> seen;
+  PairSet seen;
   for (const std::vector<uint32_t>& f : model->faces)
     for (size_t i = 0; i < f.size(); ++i) {
       const uint32_t a = f[i], b = f[(i + 1) % f.size()];
-      const uint64_t key = uint64_t(std::min(a, b)) << 32 | std::max(a, b);
-      if (a != b && seen.insert(key).second)
+      if (a != b && seen.insert(pair_key(a, b)))
         model->edge_pairs.insert(model->edge_pairs.end(), {a, b});
     }
 }

@@ -1,5 +1,6 @@
 #include "link/job_client.h"
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
@@ -18,8 +19,8 @@ constexpr size_t kChunk = 960;  // 40 edges, 80 vertices, 120 index pairs or 20 
 
 }  // namespace
 
-bool JobClient::read_frame(Frame* f, std::vector<uint8_t>* payload) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout_ms);
+bool JobClient::read_frame(Frame* f, std::vector<uint8_t>* payload, int wait_ms) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(wait_ms);
   for (;;) {
     while (!pending_.empty()) {
       const uint8_t b = pending_.front();
@@ -44,7 +45,7 @@ bool JobClient::read_frame(Frame* f, std::vector<uint8_t>* payload) {
 }
 
 bool JobClient::request(FrameType type, const std::vector<uint8_t>& payload, Status* status,
-                        std::vector<uint8_t>* reply_payload) {
+                        std::vector<uint8_t>* reply_payload, int first_wait_ms) {
   std::vector<uint8_t> frame(payload.size() + kFrameOverhead);
   const uint8_t seq = seq_;
   frame.resize(encode_frame(uint8_t(type), seq, payload.data(), uint16_t(payload.size()),
@@ -67,10 +68,13 @@ bool JobClient::request(FrameType type, const std::vector<uint8_t>& payload, Sta
       error_ = "link: closed by the other end";
       return false;
     }
+    const int wait_ms = first_wait_ms > 0 && attempt < 16
+                            ? std::min(timeout_ms, first_wait_ms << attempt)
+                            : timeout_ms;
     for (;;) {
       Frame f;
       std::vector<uint8_t> got;
-      if (!read_frame(&f, &got)) {
+      if (!read_frame(&f, &got, wait_ms)) {
         if (t_.closed()) {
           error_ = "link: closed by the other end";
           return false;
@@ -96,7 +100,7 @@ bool JobClient::request(FrameType type, const std::vector<uint8_t>& payload, Sta
 
 bool JobClient::sync() {
   Status s;
-  return request(FrameType::kSync, {}, &s) && ok(s);
+  return request(FrameType::kSync, {}, &s, nullptr, 100) && ok(s);
 }
 
 bool JobClient::settings(const JobSpec& spec, Status* status) {

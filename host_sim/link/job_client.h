@@ -42,10 +42,16 @@ class JobClient {
   JobClient(Transport& t, FaultPlan faults = {}) : t_(t), faults_(faults) {}
 
   // Sends one request and waits for its reply, resending on NAK or silence (up to `tries`).
-  // On success *status is the controller's answer to the request (kAck's status).
+  // On success *status is the controller's answer to the request (kAck's status). With
+  // `first_wait_ms`, the first try waits that long for a reply and each next one twice as long
+  // as the last, up to timeout_ms.
   bool request(FrameType type, const std::vector<uint8_t>& payload, Status* status,
-               std::vector<uint8_t>* reply_payload = nullptr);
+               std::vector<uint8_t>* reply_payload = nullptr, int first_wait_ms = 0);
 
+  // The session's first request. A controller still starting up misses it without a NAK (its
+  // serial port is not listening yet), so it is resent after 100 ms, then 200 ms, and so on up
+  // to timeout_ms: a controller that comes up is answered at once, not after a whole timeout,
+  // and a slow one on a loaded machine still gets the full timeout in the end.
   bool sync();
   // The whole job: machine, effects, halo, then the scene as projected edges (and, when
   // `curves` is given and not empty, its projected Bézier edges before them: kUploadCurves).
@@ -75,7 +81,7 @@ class JobClient {
   bool settings(const JobSpec& spec, Status* status);
   bool chunks(FrameType type, const std::vector<uint8_t>& records, size_t record_bytes,
               Status* status);
-  bool read_frame(Frame* f, std::vector<uint8_t>* payload);
+  bool read_frame(Frame* f, std::vector<uint8_t>* payload, int wait_ms);
 
   Transport& t_;
   FaultPlan faults_;

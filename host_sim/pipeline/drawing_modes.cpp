@@ -21,6 +21,11 @@ std::string qi_text(int32_t halves) {
 
 ModeDrawing make_mode_drawing(const SolidRun& run, const ModeSpec& spec) {
   ModeDrawing d;
+  // About a span a piece (dashes make more): room up front, not regrown by copying.
+  const size_t pieces = run.pieces.size() + run.contour_diagonals.size() + run.intersections.size();
+  d.spans.reserve(pieces);
+  d.qi.reserve(pieces);
+  d.kind.reserve(pieces);
   const StrokeStyle style{spec.mode, spec.dash_steps, spec.gap_steps};
   // As the core's job strokes them: a hidden run's dashes from its start, across its pieces.
   DashedRuns runs;
@@ -64,6 +69,9 @@ ModeDrawing make_mode_drawing(const SolidRun& run, const ModeSpec& spec) {
 
 std::vector<std::vector<Span>> layer_spans(const ModeDrawing& d) {
   std::vector<std::vector<Span>> layers(kMaxLayers);
+  std::vector<size_t> count(kMaxLayers, 0);
+  for (size_t i = 0; i < d.spans.size(); ++i) ++count[i < d.kind.size() ? size_t(d.kind[i]) : 0];
+  for (size_t k = 0; k < kMaxLayers; ++k) layers[k].reserve(count[k]);
   for (size_t i = 0; i < d.spans.size(); ++i)
     layers[i < d.kind.size() ? size_t(d.kind[i]) : 0].push_back(d.spans[i]);
   layers[3] = d.hatch;
@@ -76,6 +84,9 @@ std::vector<Edge3> mode_strokes(const ModeDrawing& d, LayerCounts* layers) {
   LayerCounts counts;
   counts.n = kMaxLayers;
   const std::vector<std::vector<Span>> by_layer = layer_spans(d);
+  size_t total = 0;
+  for (const std::vector<Span>& l : by_layer) total += l.size();
+  edges.reserve(total);
   for (size_t k = 0; k < by_layer.size(); ++k) {
     counts.count[k] = uint32_t(by_layer[k].size());
     for (const Span& x : by_layer[k]) edges.push_back(Edge3{{x.x0, x.y0, 0}, {x.x1, x.y1, 0}});

@@ -4,14 +4,12 @@
 #include <array>
 #include <cmath>
 #include <unordered_map>
-#include <unordered_set>
+#include <utility>
+
+#include "io/pair_set.h"
 
 namespace haloplot::host {
 namespace {
-
-uint64_t pair_key(uint32_t a, uint32_t b) {
-  return uint64_t(std::min(a, b)) << 32 | std::max(a, b);
-}
 
 // Integer world coordinates (within +-2^20) packed into one key.
 uint64_t position_key(int64_t x, int64_t y, int64_t z) {
@@ -81,21 +79,61 @@ void weld_vertices(ObjModel* model, double tolerance, RepairReport* report) {
   model->faces = faces;
   model->face_lines = lines;
   std::vector<uint32_t> edges;
-  std::unordered_set<uint64_t> seen;
+  PairSet seen;
   for (size_t e = 0; e + 1 < model->edge_pairs.size(); e += 2) {
     const uint32_t a = index[model->edge_pairs[e]], b = index[model->edge_pairs[e + 1]];
-    if (a != b && seen.insert(pair_key(a, b)).second) edges.insert(edges.end(), {a, b});
+    if (a != b && seen.insert(pair_key(a, b))) edges.insert(edges.end(), {a, b});
   }
   model->edge_pairs = edges;
 }
 
 namespace {
 
-// A face's side: the face, whether it runs from the lower vertex to the higher.
-struct Side {
-  uint64_t key;
-  uint32_t face;
-  bool up;
+// Each face's sides listed under their lesser vertex, in face order: the faces on side {a, b}
+// are the entries of min(a, b) naming max(a, b). A few entries per vertex, in two passes over
+// the faces (sorting or hashing every side cost more, most of it in page faults).
+struct SidesByVertex {
+  struct Entry {
+    uint32_t other, face;
+    bool up;  // the face runs the side from the lesser vertex to the greater
+  };
+  std::vector<uint32_t> first;  // vertex v's entries: [first[v], first[v + 1])
+  std::vector<Entry> entry;
+
+  explicit SidesByVertex(const ObjModel& m) : first(m.vertices.size() + 1, 0) {
+    for_each_side(m, [&](uint32_t a, uint32_t b, uint32_t) { ++first[std::min(a, b) + 1]; });
+    for (size_t v = 0; v + 1 < first.size(); ++v) first[v + 1] += first[v];
+    entry.resize(first.back());
+    std::vector<uint32_t> fill(first.begin(), first.end() - 1);
+    for_each_side(m, [&](uint32_t a, uint32_t b, uint32_t f) {
+      entry[fill[std::min(a, b)]++] = Entry{std::max(a, b), f, a < b};
+    });
+  }
+  template <typename Fn>
+  static void for_each_side(const ObjModel& m, Fn fn) {
+    for (uint32_t f = 0; f < m.faces.size(); ++f) {
+      const std::vector<uint32_t>& c = m.faces[f];
+      for (size_t i = 0; i < c.size(); ++i) fn(c[i], c[(i + 1) % c.size()], f);
+    }
+  }
+  // Each vertex's entries by the other vertex, stably (the faces stay in order): every side's
+  // entries together, the sides in key order, each one's faces in order.
+  void sort_each() {
+    for (size_t v = 0; v + 1 < first.size(); ++v)
+      std::stable_sort(entry.begin() + first[v], entry.begin() + first[v + 1],
+                       [](const Entry& x, const Entry& y) { return x.other < y.other; });
+  }
+  // How many faces side {a, b} is on (each face once), and the first two.
+  uint32_t faces(uint32_t a, uint32_t b, uint32_t face[2]) const {
+    const uint32_t lo = std::min(a, b), hi = std::max(a, b);
+    uint32_t n = 0;
+    for (uint32_t k = first[lo]; k < first[lo + 1]; ++k) {
+      if (entry[k].other != hi || (n > 0 && entry[k].face == face[n < 2 ? n - 1 : 1])) continue;
+      if (n < 2) face[n] = entry[k].face;
+      ++n;
+    }
+    return n;
+  }
 };
 
 // The faces next to each face: neighbour, and whether it must be flipped relative to this
@@ -108,31 +146,30 @@ struct Adjacency {
 };
 
 Adjacency adjacency(const ObjModel& m) {
-  std::vector<Side> sides;
-  for (uint32_t f = 0; f < m.faces.size(); ++f)
-    for (size_t i = 0; i < m.faces[f].size(); ++i) {
-      const uint32_t a = m.faces[f][i], b = m.faces[f][(i + 1) % m.faces[f].size()];
-      if (a != b) sides.push_back(Side{pair_key(a, b), f, a < b});
-    }
-  std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
-    return x.key < y.key || (x.key == y.key && x.face < y.face);
-  });
+  SidesByVertex sides(m);
+  sides.sort_each();  // the sides in key order, each one's faces in order
   Adjacency adj;
   adj.on_boundary.assign(m.faces.size(), 0);
   adj.on_nonmanifold.assign(m.faces.size(), 0);
   std::vector<std::array<uint32_t, 3>> links;  // face, neighbour, constraint
-  for (size_t i = 0, j = 0; i < sides.size(); i = j) {
-    while (j < sides.size() && sides[j].key == sides[i].key) ++j;
-    if (j - i == 1) adj.on_boundary[sides[i].face] = 1;
-    if (j - i > 2)
-      for (size_t k = i; k < j; ++k) adj.on_nonmanifold[sides[k].face] = 1;
-    for (size_t p = i; p < j; ++p)
-      for (size_t q = i; q < j; ++q) {
-        if (sides[p].face == sides[q].face) continue;
-        // Two faces on one side agree when they run it opposite ways.
-        const uint32_t c = j - i > 2 ? 2u : sides[p].up == sides[q].up ? 1u : 0u;
-        links.push_back({sides[p].face, sides[q].face, c});
-      }
+  links.reserve(sides.entry.size());
+  for (uint32_t v = 0; v + 1 < sides.first.size(); ++v) {
+    const SidesByVertex::Entry* e = sides.entry.data() + sides.first[v];
+    const size_t k = sides.first[v + 1] - sides.first[v];
+    for (size_t i = 0, j = 0; i < k; i = j) {
+      while (j < k && e[j].other == e[i].other) ++j;
+      if (e[i].other == v) continue;  // a side from a vertex to itself joins nothing
+      if (j - i == 1) adj.on_boundary[e[i].face] = 1;
+      if (j - i > 2)
+        for (size_t q = i; q < j; ++q) adj.on_nonmanifold[e[q].face] = 1;
+      for (size_t p = i; p < j; ++p)
+        for (size_t q = i; q < j; ++q) {
+          if (e[p].face == e[q].face) continue;
+          // Two faces on one side agree when they run it opposite ways.
+          const uint32_t c = j - i > 2 ? 2u : e[p].up == e[q].up ? 1u : 0u;
+          links.push_back({e[p].face, e[q].face, c});
+        }
+    }
   }
   adj.first.assign(m.faces.size() + 1, 0);
   for (const auto& l : links) ++adj.first[l[0] + 1];
@@ -285,22 +322,17 @@ bool flat_between(const ObjModel& m, const std::vector<Normal>& n, uint32_t f, u
 
 void drop_flat_edges(ObjModel* model, double crease_deg, RepairReport* report) {
   if (crease_deg < 0) return;
-  std::unordered_map<uint64_t, std::vector<uint32_t>> faces_of;
-  for (uint32_t f = 0; f < model->faces.size(); ++f) {
-    const std::vector<uint32_t>& c = model->faces[f];
-    for (size_t i = 0; i < c.size(); ++i) {
-      std::vector<uint32_t>& list = faces_of[pair_key(c[i], c[(i + 1) % c.size()])];
-      if (list.empty() || list.back() != f) list.push_back(f);
-    }
-  }
+  const SidesByVertex sides(*model);
   std::vector<Normal> normals;
+  normals.reserve(model->faces.size());
   for (const std::vector<uint32_t>& c : model->faces) normals.push_back(newell(*model, c));
   std::vector<uint32_t> kept;
+  kept.reserve(model->edge_pairs.size());
   for (size_t e = 0; e + 1 < model->edge_pairs.size(); e += 2) {
     const uint32_t a = model->edge_pairs[e], b = model->edge_pairs[e + 1];
-    auto it = faces_of.find(pair_key(a, b));
-    if (it != faces_of.end() && it->second.size() == 2 &&
-        flat_between(*model, normals, it->second[0], it->second[1], crease_deg)) {
+    uint32_t face[2] = {0, 0};
+    if (sides.faces(a, b, face) == 2 &&
+        flat_between(*model, normals, face[0], face[1], crease_deg)) {
       ++report->flat_edges;
       continue;
     }

@@ -127,6 +127,10 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
     out->hatch_faces.clear();
     out->n_drawn = in.n_edges;
   });
+  // Room for the drawn edges and about as many diagonals as faces (a quad mesh's: half that),
+  // so the pieces' edges seldom grow the vector by copying it.
+  out->edges.reserve(size_t{in.n_edges} + in.n_triangles);
+  out->pieces.reserve(2 * size_t{in.n_edges});  // a piece or two a drawn edge
   HostMemory memory;
   const Status s = run_sized(restart, memory.memory(), &needs);
   out->check = r.check;

@@ -102,10 +102,14 @@ std::vector<Triangle> triangulate(const std::vector<Point3>& world,
                                   const std::vector<std::vector<uint32_t>>& faces,
                                   TriangulateStats* stats) {
   std::vector<Triangle> out;
+  out.reserve(2 * faces.size());  // a quad mesh's count; more only grows it
   TriangulateStats st;
+  // Each face's corners and their 2-D points, kept across faces (no allocation per face).
+  std::vector<uint32_t> v;
+  std::vector<P2> p, sorted;
   for (uint32_t f = 0; f < faces.size(); ++f) {
     ++st.polygons;
-    std::vector<uint32_t> v;
+    v.clear();
     for (uint32_t i : faces[f])
       if (v.empty() || v.back() != i) v.push_back(i);
     while (v.size() > 1 && v.front() == v.back()) v.pop_back();
@@ -129,7 +133,7 @@ std::vector<Triangle> triangulate(const std::vector<Point3>& world,
       continue;
     }
     // Drop the largest axis; flip so the polygon's winding is counter-clockwise in 2-D.
-    std::vector<P2> p(v.size());
+    p.resize(v.size());
     for (std::size_t i = 0; i < v.size(); ++i) {
       const Point3& w = world[v[i]];
       if (az >= ax && az >= ay)
@@ -152,7 +156,7 @@ std::vector<Triangle> triangulate(const std::vector<Point3>& world,
     }
     // A corner met twice (a keyhole, or a boundary that wraps round) is no convex polygon even
     // when every corner turns left: the fan would reuse it in one triangle.
-    std::vector<P2> sorted = p;
+    sorted = p;
     std::sort(sorted.begin(), sorted.end(),
               [](const P2& a, const P2& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
     for (std::size_t i = 1; i < sorted.size() && !flat; ++i) flat = same(sorted[i - 1], sorted[i]);

@@ -11,14 +11,6 @@ namespace haloplot::host {
 
 namespace {
 
-// Thousandths as "-12.345" (exactly three decimals).
-std::string thousandths_text(int64_t v) {
-  const bool neg = v < 0;
-  const int64_t a = neg ? -v : v;
-  const std::string f = std::to_string(a % 1000);
-  return (neg ? "-" : "") + std::to_string(a / 1000) + "." + std::string(3 - f.size(), '0') + f;
-}
-
 // One path point on the page, in micrometres, rounded as the G-code's mm_text rounds.
 struct PagePoint {
   const PlotSvgStyle& s;
@@ -26,9 +18,10 @@ struct PagePoint {
     const int64_t per = s.placement.steps_per_mm;
     return floor_div((steps + offset) * 2000 + per, 2 * per);
   }
-  std::string text(const PathPoint& p) const {
-    return thousandths_text(um(p.x, s.placement.offset_x)) + "," +
-           thousandths_text(s.page.height_um - um(p.y, s.placement.offset_y));
+  void append(std::string* out, const PathPoint& p) const {
+    append_thousandths(out, um(p.x, s.placement.offset_x));
+    *out += ',';
+    append_thousandths(out, s.page.height_um - um(p.y, s.placement.offset_y));
   }
 };
 
@@ -42,21 +35,26 @@ void write_layer(std::ostream& out, const PlannedLayer& l, size_t index, const P
   const PagePoint page{s};
   PathPoint at{l.start_x, l.start_y, 0};
   bool open = false;
+  BlockWriter block(out);
+  std::string& text = block.text;
   for (const PathPoint& p : l.path) {
     if (p.pen_down != 0 && !open) {
-      out << "<path d=\"M" << page.text(at) << " L";
+      text += "<path d=\"M";
+      page.append(&text, at);
+      text += " L";
       open = true;
     } else if (p.pen_down != 0) {
-      out << ' ';
+      text += ' ';
     } else if (open) {
-      out << "\"/>\n";
+      text += "\"/>\n";
       open = false;
     }
-    if (p.pen_down != 0) out << page.text(p);
+    if (p.pen_down != 0) page.append(&text, p);
     at = p;
+    block.maybe_flush();
   }
-  if (open) out << "\"/>\n";
-  out << "</g>\n";
+  if (open) text += "\"/>\n";
+  text += "</g>\n";
 }
 
 // Millimetres to three decimals (a micrometre), without a locale's comma.

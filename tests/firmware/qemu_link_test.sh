@@ -51,13 +51,17 @@ job replot.job scene.edges 120
 job huge.job huge.edges 50
 if [ "$solids" = yes ]; then
 cp "$(dirname "$0")/../../scenes/pair_of_cubes.obj" cubes.obj
-printf 'scene cubes.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\nkinematics corexy\nsteps 1/4\n' > solid.job
+# A sixteenth of a motor step (as firmware_stream_solid): the controller's hidden lines, dashes,
+# outline and hatching are worked out in plot steps whatever the motor scale; at 1/4 the
+# hatched plot's step interrupts took a third of the session.
+printf 'scene cubes.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\nkinematics corexy\nsteps 1/16\n' > solid.job
 "$tool" sim solid.job -o host_solid.trace
 source "$repo_root/tests/support/model_files.sh"
 # Two boxes that pass through each other: the QI finds conflicts and the fallback cuts three
-# edges where they pierce a face, on the controller, in the default sub-step units.
+# edges where they pierce a face, on the controller, in the default sub-step units (`substep`;
+# a quarter of a motor step per plot step changes only the motors' scale).
 { box 0 2 0 2 0 -2 1; box 0.7 2.6 0.4 2.5 -0.6 -2.7 9; } > pierced.obj
-printf 'scene pierced.obj\ndrawing hidden-removed\nview 30,25\nkinematics corexy\n' > pierced.job
+printf 'scene pierced.obj\ndrawing hidden-removed\nview 30,25\nkinematics corexy\nsteps 1/4\n' > pierced.job
 "$tool" sim pierced.job -o host_pierced.trace
 # The lines where their faces cross are drawn (on by default): the trace is not the one
 # without them.

@@ -183,9 +183,13 @@ struct ReplayedPath {
 inline ReplayedPath replay_path(const CheckedTrace& t) {
   ReplayedPath p;
   std::vector<std::pair<int64_t, int>> ev;  // (tick, motor)
+  ev.reserve(t.step_tick[0].size() + t.step_tick[1].size());
   for (int m = 0; m < 2; ++m)
     for (int64_t tick : t.step_tick[m]) ev.push_back({tick, m});
   std::stable_sort(ev.begin(), ev.end(), [](auto a, auto b) { return a.first < b.first; });
+  p.x.reserve(ev.size());
+  p.y.reserve(ev.size());
+  for (int m = 0; m < 2; ++m) p.event_of[m].reserve(t.step_tick[m].size());
   size_t next[2] = {0, 0};
   int64_t motor[2] = {0, 0}, slack_left[2] = {0, 0};
   int8_t last_dir[2] = {1, 1};

@@ -14,7 +14,6 @@
 #include <cstdio>
 #include <fstream>
 #include <random>
-#include <set>
 #include <sstream>
 
 #include "../check.h"
@@ -48,6 +47,14 @@ Run run(const JobSpec& spec, const std::vector<Edge3>& edges, const std::vector<
   return r;
 }
 
+// Step events (what --pause-at counts): the steps of one event share its tick.
+uint64_t step_events(const reference::CheckedTrace& t) {
+  std::vector<int64_t> ticks(t.step_tick[0].begin(), t.step_tick[0].end());
+  ticks.insert(ticks.end(), t.step_tick[1].begin(), t.step_tick[1].end());
+  std::sort(ticks.begin(), ticks.end());
+  return uint64_t(std::unique(ticks.begin(), ticks.end()) - ticks.begin());
+}
+
 // `count` holds at random moments, one in each of `count` equal stretches of the plot's step
 // events (so each comes to rest before the next is asked for).
 std::vector<uint32_t> random_holds(uint64_t events, uint32_t count, uint32_t seed) {
@@ -62,10 +69,7 @@ std::vector<uint32_t> random_holds(uint64_t events, uint32_t count, uint32_t see
 void paused_equals_unpaused(const std::string& label, const JobSpec& spec,
                             const std::vector<Edge3>& edges, uint32_t count) {
   const Run plain = run(spec, edges, {});
-  // Step events (what --pause-at counts): the steps of one event share its tick.
-  std::set<int64_t> ticks(plain.trace.step_tick[0].begin(), plain.trace.step_tick[0].end());
-  ticks.insert(plain.trace.step_tick[1].begin(), plain.trace.step_tick[1].end());
-  const uint64_t events = ticks.size();
+  const uint64_t events = step_events(plain.trace);
   const std::vector<uint32_t> at = random_holds(events, count, 7);
   const Run paused = run(spec, edges, at);
   CHECK_MSG(paused.report.holds == count, label + ": " + std::to_string(paused.report.holds) +
@@ -131,27 +135,28 @@ void slow_minor_motor_paused() {
 void resumed_after_abort(const std::string& label, const JobSpec& spec,
                          const std::vector<Edge3>& edges, uint32_t count) {
   const Run plain = run(spec, edges, {});
-  std::set<int64_t> ticks(plain.trace.step_tick[0].begin(), plain.trace.step_tick[0].end());
-  ticks.insert(plain.trace.step_tick[1].begin(), plain.trace.step_tick[1].end());
-  const test::Drawn whole = test::drawn(plain.trace);
+  const uint64_t events = step_events(plain.trace);
+  const std::vector<test::InkedStep> plain_ink = test::inked_steps(plain.trace);
+  const test::Drawn whole = test::drawn(plain_ink);
   reference::Limits lim = test::trace_limits(spec, plain.report.points);
   lim.dwell =
       spec.effects.pen_servo ? spec.machine.pen_travel_ticks + spec.machine.pen_settle_ticks : 0;
   double worst = 0;
   uint32_t gaps_seen = 0;
-  for (uint32_t stop : random_holds(ticks.size(), count, 11)) {
+  for (uint32_t stop : random_holds(events, count, 11)) {
     const Run resumed = run(spec, edges, {}, stop);
-    test::Drawn both = test::drawn(plain.trace, stop);
-    both.add(test::drawn(resumed.trace));
+    const test::Drawn before = test::drawn(plain_ink, stop);
+    const test::Drawn after = test::drawn(resumed.trace);
+    test::Drawn both = before;
+    both.add(after);
     std::string why;
     const bool same = test::same_drawing(both, whole, &why);
     CHECK_MSG(same, label + ", stopped after " + std::to_string(stop) + " events: " + why);
     // The check sees a gap: the aborted part cut short by a tenth leaves ink out (when that
     // tenth drew any).
-    test::Drawn short_by = test::drawn(plain.trace, stop - stop / 10);
-    if (short_by.steps[0] + short_by.steps[1] <
-        test::drawn(plain.trace, stop).steps[0] + test::drawn(plain.trace, stop).steps[1]) {
-      short_by.add(test::drawn(resumed.trace));
+    test::Drawn short_by = test::drawn(plain_ink, stop - stop / 10);
+    if (short_by.steps[0] + short_by.steps[1] < before.steps[0] + before.steps[1]) {
+      short_by.add(after);
       CHECK_MSG(!test::same_drawing(short_by, whole, &why),
                 label + ": a resume that leaves a gap compares equal");
       ++gaps_seen;
