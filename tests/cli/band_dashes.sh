@@ -54,6 +54,12 @@ run() {
 
 run cubes6 cubes6.obj '' 32768
 run cubes6_hatched cubes6.obj 'hatch 3 30 90\n' 32768 49152 65536
+# The hatched cubes at an eighth of a motor step (the pen placed to 8 plot steps, as on the
+# controller) in arenas from 28 to 64 KB, 4 KB apart: every placement of the borders these give
+# (3 to 17 bands) draws the whole-model plot. Here edges run within a step of nearly parallel
+# dashed edges, where a stroke end of one plot can pair with either; the check pairs pieces
+# one to one as a largest matching, not nearest first.
+run cubes6_eighth cubes6.obj 'dash 2 1\nhatch 3 30 90\nsteps 1/8\n' $(seq 28672 4096 65536)
 run torus torus.obj 'hatch 3 30 90\n' 16384 32768 65536
 run torus_sphere torus_sphere.obj 'hatch 3 30 90\n' 16384 32768 65536
 

@@ -8,9 +8,12 @@
 // pieces of an edge meet, so neither trace's moves are the picture's strokes as such. Both sets
 // are cut at every stroke end of either trace that lies on a move (within a step of it, more
 // than a step from its ends): the two are then the same pieces, each with a piece of the other
-// trace whose ends lie within one step of its own, one to one. A dash that starts or ends
-// elsewhere in one plot (a short dash, a long gap, a phase restarted at a border) leaves a piece
-// without its partner, and so does a stroke drawn twice or left out.
+// trace whose ends lie within one step of its own, one to one (a largest matching). A dash that
+// starts or ends elsewhere in one plot (a short dash, a long gap, a phase restarted at a border)
+// leaves a piece without its partner, and so does a stroke drawn twice or left out. Where an
+// edge runs within a step of a nearly parallel one, the cuts can leave a few pieces whose ends
+// lie a little over a step apart; those must then be the same ink on both sides (unpaired()
+// and first_uncovered(), below).
 //
 // "A step" is a plot step, or a motor step where that is coarser (`steps 1/4`): the motors put
 // the pen on their own whole steps only, and an end a plot step away in the other plot may round
@@ -124,6 +127,12 @@ Drawing read_trace(const std::string& path) {
 }
 
 double dist(Pt p, Pt q) { return std::hypot(p.x - q.x, p.y - q.y); }
+
+// How far apart two stroke ends are, as a plotter places them: the larger of the x and y
+// distances. Each axis puts the pen on its own steps, so "within a step" is within a step in x
+// and in y; a stroke end one plot cuts where the other plot's stroke runs on (a border beside
+// the end of a nearly parallel edge) can lie a step away in x and most of a step in y.
+double apart(Pt p, Pt q) { return std::max(std::fabs(p.x - q.x), std::fabs(p.y - q.y)); }
 
 // A step, in plot steps: 1, or den / num with `steps num/den` below 1 (main sets it from the
 // traces). Two ends a plot step apart can round to positions a motor step apart on each motor:
@@ -246,66 +255,107 @@ std::vector<Seg> cut(const std::vector<Seg>& moves, const Ends& ends) {
           }
         }
     }
+    // One cut for a run of ends each within a step of the next, at their mean: where one
+    // drawing's end lies beside another stroke's end (a border beside a dash end, a step
+    // apart), the mean is within a step of both, wherever the stroke comes from.
     std::sort(at.begin(), at.end());
     Pt from = s.a;
-    double last = 0;
-    for (double u : at) {
-      if (u - last <= end_tol) continue;  // one cut for ends within a step of each other
+    for (size_t k = 0; k < at.size();) {
+      size_t e = k + 1;
+      double sum = at[k];
+      while (e < at.size() && at[e] - at[e - 1] <= end_tol) sum += at[e++];
+      const double u = sum / double(e - k);
+      k = e;
       const Pt p{s.a.x + ux * u, s.a.y + uy * u};
       out.push_back({from, p});
       from = p;
-      last = u;
     }
     out.push_back({from, s.b});
   }
   return out;
 }
 
-// Each piece of `a` paired with its own piece of `b` (ends within a step, either way round);
-// the unpaired ones of `a` listed, the worst paired distance in *worst. A piece no longer than a
-// step (a dot: a band's sliver of an edge by a vertex) pairs with nothing: both its ends must lie
-// within a step of a stroke end of the other drawing (`b_ends`); *dots counts them.
-std::vector<Seg> unpaired(const std::vector<Seg>& a, const std::vector<Seg>& b, const Ends& b_ends,
-                          double* worst, size_t* dots) {
+// The pieces of two drawings paired one to one, each with a piece of the other whose ends lie
+// within a step of its own (either way round); the unpaired ones of each listed, the worst paired
+// distance in *worst. The pairing is a largest one (augmenting paths, Kuhn's method), not the
+// nearest partner first: where two strokes run within a step of each other (an edge beside a
+// nearly parallel dashed edge), a piece may pair with either, and taking the nearer one can leave
+// the other drawing's piece without the partner it had. A piece no longer than a step (a dot: a
+// band's sliver of an edge by a vertex) may go unpaired if both its ends lie within a step of a
+// stroke end of the other drawing; *dots counts those.
+struct Unpaired {
+  std::vector<Seg> a, b;
+};
+
+double end_distance(const Seg& s, const Seg& t) {
+  return std::min(std::max(apart(s.a, t.a), apart(s.b, t.b)),
+                  std::max(apart(s.a, t.b), apart(s.b, t.a)));
+}
+
+// For each piece of `a`, the pieces of `b` whose ends lie within a step of its own, nearest
+// first.
+std::vector<std::vector<uint32_t>> partners(const std::vector<Seg>& a, const std::vector<Seg>& b) {
   std::unordered_map<int64_t, std::vector<uint32_t>> by_end;
   for (uint32_t j = 0; j < b.size(); ++j) {
     by_end[cell_key(b[j].a.x, b[j].a.y)].push_back(j);
     by_end[cell_key(b[j].b.x, b[j].b.y)].push_back(j);
   }
-  std::vector<bool> used(b.size(), false);
-  std::vector<Seg> left;
-  for (const Seg& s : a) {
-    if (dist(s.a, s.b) <= end_tol) {
-      if (b_ends.near(s.a) && b_ends.near(s.b))
-        ++*dots;
-      else
-        left.push_back(s);
-      continue;
-    }
-    double best = 1e300;
-    uint32_t pick = UINT32_MAX;
+  std::vector<std::vector<uint32_t>> out(a.size());
+  for (uint32_t i = 0; i < a.size(); ++i) {
+    const Seg& s = a[i];
+    std::vector<std::pair<double, uint32_t>> near;
     for (int dx = -1; dx <= 1; ++dx)
       for (int dy = -1; dy <= 1; ++dy) {
         const auto c = by_end.find(cell_key(s.a.x + dx * cell_size, s.a.y + dy * cell_size));
         if (c == by_end.end()) continue;
         for (uint32_t j : c->second) {
-          if (used[j]) continue;
-          const Seg& t = b[j];
-          const double d = std::min(std::max(dist(s.a, t.a), dist(s.b, t.b)),
-                                    std::max(dist(s.a, t.b), dist(s.b, t.a)));
-          if (d < best) {
-            best = d;
-            pick = j;
-          }
+          const double d = end_distance(s, b[j]);
+          if (d <= end_tol) near.push_back({d, j});
         }
       }
-    if (pick != UINT32_MAX && best <= end_tol) {
-      used[pick] = true;
-      *worst = std::max(*worst, best);
-    } else {
-      left.push_back(s);
+    std::sort(near.begin(), near.end());
+    for (const auto& [d, j] : near)
+      if (out[i].empty() || std::find(out[i].begin(), out[i].end(), j) == out[i].end())
+        out[i].push_back(j);
+  }
+  return out;
+}
+
+// One augmenting path from piece i of `a` (depth-first; `seen` marks the pieces of `b` tried).
+bool augment(uint32_t i, const std::vector<std::vector<uint32_t>>& cand,
+             std::vector<uint32_t>& owner, std::vector<uint32_t>& seen, uint32_t round) {
+  for (uint32_t j : cand[i]) {
+    if (seen[j] == round) continue;
+    seen[j] = round;
+    if (owner[j] == UINT32_MAX || augment(owner[j], cand, owner, seen, round)) {
+      owner[j] = i;
+      return true;
     }
   }
+  return false;
+}
+
+Unpaired unpaired(const std::vector<Seg>& a, const std::vector<Seg>& b, const Ends& a_ends,
+                  const Ends& b_ends, double* worst, size_t* dots) {
+  const std::vector<std::vector<uint32_t>> cand = partners(a, b);
+  std::vector<uint32_t> owner(b.size(), UINT32_MAX), seen(b.size(), UINT32_MAX);
+  for (uint32_t i = 0; i < a.size(); ++i) augment(i, cand, owner, seen, i);
+  std::vector<bool> paired_a(a.size(), false);
+  for (uint32_t j = 0; j < b.size(); ++j)
+    if (owner[j] != UINT32_MAX) {
+      paired_a[owner[j]] = true;
+      *worst = std::max(*worst, end_distance(a[owner[j]], b[j]));
+    }
+  Unpaired left;
+  auto leftover = [dots](const Seg& s, bool paired, const Ends& other_ends, std::vector<Seg>* out) {
+    if (paired) return;
+    if (dist(s.a, s.b) <= end_tol && other_ends.near(s.a) && other_ends.near(s.b))
+      ++*dots;
+    else
+      out->push_back(s);
+  };
+  for (uint32_t i = 0; i < a.size(); ++i) leftover(a[i], paired_a[i], b_ends, &left.a);
+  for (uint32_t j = 0; j < b.size(); ++j) leftover(b[j], owner[j] != UINT32_MAX, a_ends, &left.b);
   return left;
 }
 
@@ -324,7 +374,7 @@ std::vector<Seg> rejoined(std::vector<Seg> left) {
         for (int k = 0; k < 4 && !merged; ++k) {
           const Pt from = k & 1 ? s.a : s.b, p = k & 1 ? s.b : s.a;
           const Pt q = k & 2 ? t.b : t.a, to = k & 2 ? t.a : t.b;
-          if (dist(p, q) > end_tol) continue;
+          if (apart(p, q) > end_tol) continue;
           const bool onward = (to.x - q.x) * (p.x - from.x) + (to.y - q.y) * (p.y - from.y) > 0;
           if (!onward || off_chord(from, to, p) > bend_tol || off_chord(from, to, q) > bend_tol)
             continue;
@@ -335,6 +385,30 @@ std::vector<Seg> rejoined(std::vector<Seg> left) {
       }
   }
   return left;
+}
+
+// How far p lies from the segment s.
+double to_segment(Pt p, const Seg& s) {
+  const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y, len2 = dx * dx + dy * dy;
+  double u = len2 == 0 ? 0 : ((p.x - s.a.x) * dx + (p.y - s.a.y) * dy) / len2;
+  u = std::clamp(u, 0.0, 1.0);
+  return dist(p, Pt{s.a.x + u * dx, s.a.y + u * dy});
+}
+
+// The first piece of `a` with a point (every half step along it, ends included) more than a
+// step from every piece of `b`; `a`'s size when there is none.
+size_t first_uncovered(const std::vector<Seg>& a, const std::vector<Seg>& b) {
+  for (size_t i = 0; i < a.size(); ++i) {
+    const Seg& s = a[i];
+    const int n = int(dist(s.a, s.b) / (step / 2)) + 1;
+    for (int k = 0; k <= n; ++k) {
+      const Pt p{s.a.x + (s.b.x - s.a.x) * k / n, s.a.y + (s.b.y - s.a.y) * k / n};
+      bool near = false;
+      for (const Seg& t : b) near = near || to_segment(p, t) <= end_tol;
+      if (!near) return i;
+    }
+  }
+  return a.size();
 }
 
 }  // namespace
@@ -369,27 +443,34 @@ int main(int argc, char** argv) {
   const std::vector<Seg> pw = cut(sw, ends), pb = cut(sb, ends);
   double worst = 0;
   size_t dots = 0;
-  std::vector<Seg> lw = unpaired(pw, pb, move_ends(sb), &worst, &dots),
-                   lb = unpaired(pb, pw, move_ends(sw), &worst, &dots);
+  const Ends ends_w = move_ends(sw), ends_b = move_ends(sb);
+  Unpaired left = unpaired(pw, pb, ends_w, ends_b, &worst, &dots);
   // The leftovers, each side's joined across sub-step gaps, paired once more.
-  const size_t first_w = lw.size(), first_b = lb.size();
-  if (!lw.empty() || !lb.empty()) {
-    const std::vector<Seg> jw = rejoined(lw), jb = rejoined(lb);
-    lw = unpaired(jw, jb, move_ends(sb), &worst, &dots);
-    lb = unpaired(jb, jw, move_ends(sw), &worst, &dots);
-  }
+  const size_t first_w = left.a.size(), first_b = left.b.size();
+  if (!left.a.empty() || !left.b.empty())
+    left = unpaired(rejoined(left.a), rejoined(left.b), ends_w, ends_b, &worst, &dots);
+  const std::vector<Seg>&lw = left.a, &lb = left.b;
+  // What is left unpaired must be the same ink in both, cut differently: where an edge runs
+  // within a step of a nearly parallel one, the cuts at each other's ends can leave pieces whose
+  // ends lie a little over a step apart. Each side's leftovers within a step of the other's,
+  // every half step along them. A dash moved, a stroke left out or drawn twice leaves ink on one
+  // side only.
+  const size_t bare_w = first_uncovered(lw, lb), bare_b = first_uncovered(lb, lw);
+  const bool same_ink = bare_w == lw.size() && bare_b == lb.size();
   std::printf(
       "whole: %zu pen-down moves in %u pen-downs, %zu strokes; banded: %zu moves in %u "
       "pen-downs, %zu strokes joined; %zu and %zu pieces cut at each other's ends (%zu dots); "
       "unpaired: %zu whole, %zu banded (%zu and %zu before joining leftovers across sub-step "
-      "gaps); worst end distance %.2f plot steps (a step: %g)\n",
+      "gaps), %s; worst end distance %.2f plot steps (a step: %g)\n",
       w.moves.size(), w.pen_downs, sw.size(), b.moves.size(), b.pen_downs, sb.size(), pw.size(),
-      pb.size(), dots, lw.size(), lb.size(), first_w, first_b, worst, step);
+      pb.size(), dots, lw.size(), lb.size(), first_w, first_b,
+      same_ink ? "the same ink within a step" : "not the same ink", worst, step);
   int shown = 0;
   for (const auto* list : {&lw, &lb})
-    for (const Seg& s : *list)
+    for (size_t i = list == &lw ? bare_w : bare_b; i < list->size(); ++i)
       if (shown++ < 8)
         std::printf("  only in the %s plot: (%.1f, %.1f) - (%.1f, %.1f)\n",
-                    list == &lw ? "whole-model" : "banded", s.a.x, s.a.y, s.b.x, s.b.y);
-  return lw.empty() && lb.empty() ? 0 : 1;
+                    list == &lw ? "whole-model" : "banded", (*list)[i].a.x, (*list)[i].a.y,
+                    (*list)[i].b.x, (*list)[i].b.y);
+  return same_ink ? 0 : 1;
 }
