@@ -74,7 +74,9 @@ struct BandConductor::Attempt {
   Carry* carry_out = nullptr;
   const CarryRun* carry_runs_in = nullptr;  // a solid's: the runs beside the carry
   CarryRun* carry_runs_out = nullptr;
-  RowPoint* carry_points = nullptr;  // each carried piece's lower end, rounded (for joining)
+  // Each carried piece's lower end, rounded (for joining): the edge stage's; a solid's band
+  // leaves it null and the commit finds the ends on the band's edges.
+  RowPoint* carry_points = nullptr;
   uint32_t n_carry_out = 0, carry_capacity = 0;
   StoredPiece* pieces = nullptr;
   uint32_t n_pieces = 0, piece_capacity = 0;

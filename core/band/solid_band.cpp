@@ -64,7 +64,7 @@ struct SolidSink {
   const Edge3* last_line = nullptr;  // the segment whose geometry was stacked last
   Status flush_edge();
   Status emit(uint32_t local, bool up, const Run& r);
-  Status carry_up(uint32_t id, const Edge3& e, bool up, const Run& r, int64_t join);
+  Status carry_up(uint32_t id, bool up, const Run& r, int64_t join);
   // The lowest byte the top of the tail uses: the current edge's raw pieces, or (after every
   // edge) the intersection lines' segments.
   uint8_t* raw_bottom() const {
@@ -87,8 +87,7 @@ void SolidSink::begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3* edges
   uint8_t* end = align_down(tail + bytes);
   uint8_t* carry = align_up(tail);
   uint8_t* runs = carry + carve_round(size_t{a.carry_capacity} * sizeof(a.carry_out[0]));
-  uint8_t* points = runs + carve_round(size_t{a.carry_capacity} * sizeof(a.carry_runs_out[0]));
-  uint8_t* pieces = points + carve_round(size_t{a.carry_capacity} * sizeof(RowPoint));
+  uint8_t* pieces = runs + carve_round(size_t{a.carry_capacity} * sizeof(a.carry_runs_out[0]));
   a.n_pieces = a.n_carry_out = a.carry_cursor = a.carry_used = a.n_lines = 0;
   self.n_raw = 0;
   self.last_line = nullptr;
@@ -102,7 +101,7 @@ void SolidSink::begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3* edges
   }
   a.carry_out = reinterpret_cast<decltype(a.carry_out)>(carry);
   a.carry_runs_out = reinterpret_cast<decltype(a.carry_runs_out)>(runs);
-  a.carry_points = reinterpret_cast<RowPoint*>(points);
+  a.carry_points = nullptr;  // the commit finds a carried run's lower end on the band's edge
   a.pieces = reinterpret_cast<StoredPiece*>(pieces);
   self.raw_top = reinterpret_cast<RawPiece*>(end);
   a.lines_end = reinterpret_cast<const Edge3*>(end);
@@ -181,9 +180,8 @@ Status SolidSink::emit(uint32_t local, bool up, const Run& r) {
   });
 }
 
-Status SolidSink::carry_up(uint32_t id, const Edge3& e, bool up, const Run& r, int64_t join) {
+Status SolidSink::carry_up(uint32_t id, bool up, const Run& r, int64_t join) {
   if (a->n_carry_out == a->carry_capacity) return Status::kSinkFull;
-  span_point(e, r.lower, &a->carry_points[a->n_carry_out].x, &a->carry_points[a->n_carry_out].y);
   a->carry_runs_out[a->n_carry_out] = {uint32_t(join), r.q};
   a->carry_out[a->n_carry_out++] = {id, uint32_t(r.lower - (up ? 0 : 1))};
   return Status::kOk;
@@ -227,7 +225,7 @@ Status SolidSink::flush_edge() {
     }
     if (!p.tested && at_top) {  // cut off by the border: the band above tells its q
       if (!have) cur = Run{lower, lower, 0, false};
-      s = carry_up(id, e, up, cur, lower);
+      s = carry_up(id, up, cur, lower);
       have = false;
       break;
     }
@@ -243,7 +241,7 @@ Status SolidSink::flush_edge() {
       have = true;
     }
     if (at_top && ok(s)) {
-      s = carry_up(id, e, up, cur, upper);
+      s = carry_up(id, up, cur, upper);
       have = false;
     }
   }
