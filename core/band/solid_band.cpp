@@ -55,6 +55,12 @@ struct SolidSink {
   RawPiece* raw_top = nullptr;  // the current edge's pieces, stacked down from the tail's end
   uint32_t n_raw = 0, raw_edge = 0;
   uint8_t* low = nullptr;  // the lowest the top of the tail reached (the band's peak counts it)
+  // Bytes right past the run's buffer that the tail takes too (the band's vertex pairs: the
+  // run's topology has read them by the time the sink begins), and whether it has begun: a run
+  // asked again after that would read the tail's bytes as its edges (BandRun).
+  uint8_t* spare = nullptr;
+  size_t spare_bytes = 0;
+  bool begun = false;
 
   static void begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3* edges);
   static Status piece(void* ctx, const HiddenPiece& p);
@@ -75,6 +81,26 @@ struct SolidSink {
   }
 };
 
+// The band's run as a sized stage, each run with the sink afresh. The sink's tail takes the
+// band's vertex pairs once it begins, so a run asked again after that would build its topology
+// from the tail's bytes: refused (kBandInputReused). None is: the counts a run can come short
+// of (CUT's records, the incidences) are found before the sink begins, and a run short of
+// bytes is not run again in a fixed arena (memory/sized_stage.h).
+struct BandRun {
+  HiddenLinesStage* stage;
+  SolidSink* sink;
+  uint32_t capacity;
+  size_t bytes(const StageNeeds& needs) const { return stage->bytes(needs); }
+  Status run(const StageNeeds& needs, void* buffer, size_t bytes, StageNeeds* want) {
+    if (sink->begun) return Status::kBandInputReused;
+    BandConductor::Attempt& a = *sink->a;
+    a.n_pieces = a.n_carry_out = a.carry_cursor = a.carry_used = 0;
+    a.carry_capacity = capacity;
+    sink->n_raw = 0;
+    return stage->run(needs, buffer, bytes, want);
+  }
+};
+
 }  // namespace
 
 // The carry and the pieces take the run's free tail, once every stage of it has carved; the
@@ -84,7 +110,10 @@ void SolidSink::begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3* edges
   SolidSink& self = *static_cast<SolidSink*>(ctx);
   BandConductor::Attempt& a = *self.a;
   a.g.edges = const_cast<Edge3*>(edges);  // the band's drawn edges are the run's first ones
-  uint8_t* end = align_down(tail + bytes);
+  uint8_t* end = tail + bytes;
+  if (end == self.spare) end += self.spare_bytes;
+  end = align_down(end);
+  self.begun = true;
   uint8_t* carry = align_up(tail);
   uint8_t* runs = carry + carve_round(size_t{a.carry_capacity} * sizeof(a.carry_out[0]));
   uint8_t* pieces = runs + carve_round(size_t{a.carry_capacity} * sizeof(a.carry_runs_out[0]));
@@ -309,8 +338,10 @@ const BandConductor::SolidStage BandConductor::kSolidStage = {
 // The band's drawn edges (those meeting its rows), its faces (meeting its rows or the row
 // above: the outline pass asks just beyond each border) and the vertices they use, with
 // local vertex indices: one read of the model to count, one to fill, then the vertices.
-//   [front | pairs | triangles | vertices | free ... | (vertex ids) | edge ids]
+//   [front | triangles | vertices | free ... | (vertex ids) | vertex pairs | edge ids]
 // The band keeps no Edge3 of its own: its edges are the hidden-line run's (SolidSink::begin).
+// Its vertex pairs stand just past the run's buffer: only the run's topology reads them, so the
+// sink's tail takes their bytes once the run has begun (SolidSink::spare).
 Status BandConductor::gather_solid(Attempt& a) {
   const SolidSource& src = solid_;
   const int64_t lo = a.y0, hi = a.y1 - 1;
@@ -355,13 +386,13 @@ Status BandConductor::gather_solid(Attempt& a) {
     stats_.edge_reads += src.n_edges;
     if (pass == 1) break;
     // The layout, now that the counts are known: the vertex ids (every end and corner) are
-    // scratch below the edge ids, dead once the indices are local.
+    // scratch below the vertex pairs, dead once the indices are local.
     uint8_t* base = arena_ + front_bytes();
     uint8_t* top = arena_ + arena_bytes_;
-    const size_t front =
-        carve_round(size_t{m} * 2 * sizeof(uint32_t)) + carve_round(size_t{nt} * sizeof(Triangle));
+    const size_t front = carve_round(size_t{nt} * sizeof(Triangle));
     const size_t ids = carve_round((size_t{2} * m + size_t{3} * nt) * sizeof(uint32_t));
-    const size_t back = carve_round(size_t{m} * sizeof(uint32_t));
+    const size_t back =
+        carve_round(size_t{m} * 2 * sizeof(uint32_t)) + carve_round(size_t{m} * sizeof(uint32_t));
     a.g.n = m;
     if (top < base || front + ids + back + 64 > size_t(top - base)) {
       a.need = front_bytes() + front + ids + back + 64;
@@ -371,8 +402,8 @@ Status BandConductor::gather_solid(Attempt& a) {
     a.g.ids_end = reinterpret_cast<uint32_t*>(top);
     a.g.free_lo = base;
     a.g.free_hi = top - back;
-    pairs = reinterpret_cast<uint32_t*>(base);
-    tris = reinterpret_cast<Triangle*>(base + carve_round(size_t{m} * 2 * sizeof(uint32_t)));
+    pairs = reinterpret_cast<uint32_t*>(a.g.free_hi);
+    tris = reinterpret_cast<Triangle*>(base);
     vids = reinterpret_cast<uint32_t*>(a.g.free_hi - ids);
   }
   a.in.edge_pairs = pairs;
@@ -448,12 +479,11 @@ Status BandConductor::hide_band(Attempt& a) {
   stage.params.closed = closed_;
   stage.params.band_y0 = int32_t(a.y0);
   stage.params.band_y1 = int32_t(a.y1);
-  const uint32_t capacity = a.carry_capacity;
-  auto fresh = restarting(&stage, [&a, &sink, capacity] {
-    a.n_pieces = a.n_carry_out = a.carry_cursor = a.carry_used = 0;
-    a.carry_capacity = capacity;
-    sink.n_raw = 0;
-  });
+  // The vertex pairs stand right past the run's buffer, the edge ids above them.
+  uint8_t* ids = reinterpret_cast<uint8_t*>(a.g.ids_end) - carve_round(size_t{a.g.n} * 4);
+  sink.spare = a.g.free_hi;
+  sink.spare_bytes = size_t(ids - a.g.free_hi);
+  BandRun fresh{&stage, &sink, a.carry_capacity};
   StageNeeds needs;
   // The first guess: the last band's records and a quarter more (a short guess costs a run).
   needs.crossings = solid_crossings_ + solid_crossings_ / 4 + 16;
@@ -476,13 +506,14 @@ Status BandConductor::hide_band(Attempt& a) {
   solid_crossings_ = need_count(report.cut.crossings + report.cut.near_misses);
   stats_.records += report.cut.crossings;
   // The next band's height follows the bytes the band keeps (note_used); its peak counts every
-  // byte it touched: the run's stages at their highest (transient scratch included), or the
-  // sink's strokes from the tail's start and its stacks from the tail's end, with the front and
-  // the band's own top; or the gathering's, the vertex ids below the top.
-  const size_t top = size_t(arena_ + arena_bytes_ - a.g.free_hi);
-  const size_t run = size_t(space - arena_) + report.bytes_used;
+  // byte it touched: the run's stages at their highest (transient scratch included) with the
+  // vertex pairs and the edge ids, or the sink's strokes from the tail's start and its stacks
+  // from the tail's end (the pairs' bytes are the tail's by then) with the edge ids; or the
+  // gathering's, the vertex ids below the pairs.
+  const size_t top = size_t(arena_ + arena_bytes_ - ids);
+  const size_t run = size_t(space - arena_) + report.bytes_used + size_t(ids - a.g.free_hi);
   const size_t tail = size_t(reinterpret_cast<uint8_t*>(a.pieces + a.n_pieces) - arena_) +
-                      size_t(a.g.free_hi - (sink.low != nullptr ? sink.low : a.g.free_hi));
+                      size_t(ids - (sink.low != nullptr ? sink.low : ids));
   note_used(size_t(reinterpret_cast<uint8_t*>(a.pieces + a.n_pieces) - arena_) + top);
   const size_t most = (run > tail ? run : tail) + top;
   note_peak(most > a.gathered ? most : a.gathered);
