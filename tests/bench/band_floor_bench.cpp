@@ -32,12 +32,14 @@ int main(int argc, char** argv) {
     return 2;
   }
   SolidScene solid;
-  HiddenJob hidden;
   std::string error;
-  if (!load_solid_job_scene(jf, &solid, &hidden, &error)) {
+  // The job's hidden-line keys (dash, outline, hatch) and the scene's sub-steps go into its
+  // spec, as `haloplot sim` puts them (host_sim/cli/main.cpp).
+  if (!load_solid_job_scene(jf, &solid, &jf.spec.hidden, &error)) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return 2;
   }
+  jf.spec.substep_bits = solid.substep_bits;
   const SolidInput in = solid_input(solid);
   const bool closed = model_closed(solid);
   auto plan = [&](size_t arena, int32_t max_rows, BandStats* stats) {
