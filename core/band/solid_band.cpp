@@ -54,7 +54,10 @@ struct SolidSink {
   const StrokeStyle* style;
   RawPiece* raw_top = nullptr;  // the current edge's pieces, stacked down from the tail's end
   uint32_t n_raw = 0, raw_edge = 0;
-  uint8_t* low = nullptr;  // the lowest the top of the tail reached (the band's peak counts it)
+  // The tail's start, and the most of it in use at once (its strokes from the start and its
+  // stacks from the end, at the same moment): the band's peak counts it.
+  uint8_t* base = nullptr;
+  size_t high = 0;
   // Bytes right past the run's buffer that the tail takes too (the band's vertex pairs: the
   // run's topology has read them by the time the sink begins), and whether it has begun: a run
   // asked again after that would read the tail's bytes as its edges (BandRun).
@@ -76,8 +79,10 @@ struct SolidSink {
   uint8_t* raw_bottom() const {
     return reinterpret_cast<uint8_t*>(raw_top - n_raw) - size_t{a->n_lines} * sizeof(Edge3);
   }
-  void note_low() {
-    if (low == nullptr || raw_bottom() < low) low = raw_bottom();
+  void note() {
+    const size_t used = size_t(reinterpret_cast<uint8_t*>(a->pieces + a->n_pieces) - base) +
+                        size_t(reinterpret_cast<const uint8_t*>(a->lines_end) - raw_bottom());
+    if (used > high) high = used;
   }
 };
 
@@ -120,7 +125,8 @@ void SolidSink::begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3* edges
   a.n_pieces = a.n_carry_out = a.carry_cursor = a.carry_used = a.n_lines = 0;
   self.n_raw = 0;
   self.last_line = nullptr;
-  self.low = end;
+  self.base = carry;
+  self.high = 0;
   if (pieces > end) {  // no room even for the carry: every piece is then a full sink
     a.carry_capacity = 0;
     a.pieces = reinterpret_cast<StoredPiece*>(end);
@@ -150,7 +156,7 @@ Status SolidSink::piece(void* ctx, const HiddenPiece& p) {
     return Status::kSinkFull;
   self.raw_top[-1 - int64_t{self.n_raw++}] =
       RawPiece{p.t0, p.t1, p.q, uint8_t(p.hidden ? 1 : 0), uint8_t(p.tested ? 1 : 0)};
-  self.note_low();
+  self.note();
   return Status::kOk;
 }
 
@@ -173,13 +179,14 @@ Status SolidSink::line_piece(const HiddenPiece& p) {
     Edge3* slot = const_cast<Edge3*>(a->lines_end) - 1 - a->n_lines++;
     *slot = *p.geometry;
     last_line = slot;
-    note_low();
+    note();
   }
   if (reinterpret_cast<uint8_t*>(a->pieces + a->n_pieces + 1) > raw_bottom())
     return Status::kSinkFull;
   const uint32_t local = a->g.n + a->n_lines - 1;
   const Span s = make_stroke(*last_line, local, p.t0, p.t1);
   a->pieces[a->n_pieces++] = StoredPiece{local, uint32_t(s.t0), uint32_t(s.t1 - 1), s.x0 + s.x1};
+  note();
   return Status::kOk;
 }
 
@@ -193,6 +200,7 @@ Status SolidSink::outline(void* ctx, const HiddenPiece& p) {
     return Status::kSinkFull;
   const Span s = make_stroke(a.g.edges[p.edge], p.edge, p.t0, p.t1);
   a.pieces[a.n_pieces++] = StoredPiece{p.edge, uint32_t(s.t0), uint32_t(s.t1 - 1), s.x0 + s.x1};
+  self.note();
   return Status::kOk;
 }
 
@@ -205,6 +213,7 @@ Status SolidSink::emit(uint32_t local, bool up, const Run& r) {
     if (reinterpret_cast<uint8_t*>(a->pieces + a->n_pieces + 1) > raw_bottom())
       return Status::kSinkFull;
     a->pieces[a->n_pieces++] = StoredPiece{local, uint32_t(s.t0), uint32_t(s.t1 - 1), s.x0 + s.x1};
+    note();
     return Status::kOk;
   });
 }
@@ -507,13 +516,12 @@ Status BandConductor::hide_band(Attempt& a) {
   stats_.records += report.cut.crossings;
   // The next band's height follows the bytes the band keeps (note_used); its peak counts every
   // byte it touched: the run's stages at their highest (transient scratch included) with the
-  // vertex pairs and the edge ids, or the sink's strokes from the tail's start and its stacks
-  // from the tail's end (the pairs' bytes are the tail's by then) with the edge ids; or the
-  // gathering's, the vertex ids below the pairs.
+  // vertex pairs and the edge ids, or the sink's tail at its fullest (its strokes from the
+  // start and its stacks from the end at one moment; the pairs' bytes are the tail's by then)
+  // with the edge ids; or the gathering's, the vertex ids below the pairs.
   const size_t top = size_t(arena_ + arena_bytes_ - ids);
   const size_t run = size_t(space - arena_) + report.bytes_used + size_t(ids - a.g.free_hi);
-  const size_t tail = size_t(reinterpret_cast<uint8_t*>(a.pieces + a.n_pieces) - arena_) +
-                      size_t(ids - (sink.low != nullptr ? sink.low : ids));
+  const size_t tail = sink.base != nullptr ? size_t(sink.base - arena_) + sink.high : 0;
   note_used(size_t(reinterpret_cast<uint8_t*>(a.pieces + a.n_pieces) - arena_) + top);
   const size_t most = (run > tail ? run : tail) + top;
   note_peak(most > a.gathered ? most : a.gathered);
