@@ -74,7 +74,9 @@ struct BandConductor::Attempt {
   Carry* carry_out = nullptr;
   const CarryRun* carry_runs_in = nullptr;  // a solid's: the runs beside the carry
   CarryRun* carry_runs_out = nullptr;
-  RowPoint* carry_points = nullptr;  // each carried piece's lower end, rounded (for joining)
+  // Each carried piece's lower end, rounded (for joining): the edge stage's; a solid's band
+  // leaves it null and the commit finds the ends on the band's edges.
+  RowPoint* carry_points = nullptr;
   uint32_t n_carry_out = 0, carry_capacity = 0;
   StoredPiece* pieces = nullptr;
   uint32_t n_pieces = 0, piece_capacity = 0;
@@ -82,8 +84,9 @@ struct BandConductor::Attempt {
   // whose local index is g.n + k lies on lines_end[-1 - k].
   const Edge3* lines_end = nullptr;
   uint32_t n_lines = 0;
-  size_t need = 0;  // bytes asked for by the stage that did not fit
-  SolidInput in{};  // a solid's band: its faces and drawn edges, local vertex indices
+  size_t need = 0;      // bytes asked for by the stage that did not fit
+  size_t gathered = 0;  // a solid's band: the arena's bytes while its input was gathered
+  SolidInput in{};      // a solid's band: its faces and drawn edges, local vertex indices
 
   // DRAW's sink: keep what this band owns, carry what runs past its top (band_rule.h).
   static Status on_span(void* ctx, const Span& s) {

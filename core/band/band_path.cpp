@@ -129,6 +129,36 @@ Status BandConductor::commit_band(Attempt& a) {
   return Status::kOk;
 }
 
+namespace {
+
+// Each carried piece's lower end, rounded, into pts; returns how many. The edge stage stored
+// them (carry_points); a solid's band keeps 8 bytes less a carried piece and finds each on its
+// edge here, as its sink rounded it: the carry and the band's edges are both in source order,
+// so one pass finds them (a full turn round the edges, should one not be, and an end not
+// found is left out: the piece then joins nothing, and only the pen's path differs).
+uint32_t carried_points(const BandConductor::Attempt& a, RowPoint* pts) {
+  const uint32_t nco = a.n_carry_out;
+  if (a.carry_points != nullptr) {
+    for (uint32_t i = 0; i < nco; ++i) pts[i] = a.carry_points[i];
+    return nco;
+  }
+  uint32_t n = 0, k = 0;
+  for (uint32_t i = 0; i < nco && a.g.n > 0; ++i) {
+    uint32_t tried = 0;
+    while (tried < a.g.n && a.g.id(k) != a.carry_out[i].edge) {
+      k = k + 1 == a.g.n ? 0 : k + 1;
+      ++tried;
+    }
+    if (tried == a.g.n) continue;
+    const Edge3& e = a.g.edges[k];
+    span_point(e, int64_t{a.carry_out[i].lower} + (rising(e) ? 0 : 1), &pts[n].x, &pts[n].y);
+    ++n;
+  }
+  return n;
+}
+
+}  // namespace
+
 // Puts the segments joined to a carried piece's lower end (through shared ends, a few links
 // deep) first, the rest after them in column order, and returns how many are deferred. Only the
 // band's own segments (the first n_own of u) are deferred: those deferred to it from below are
@@ -144,8 +174,7 @@ uint32_t BandConductor::defer_joined(const Attempt& a, Segment2* u, uint32_t n_o
   uint8_t* marks = reinterpret_cast<uint8_t*>(pts + cap);
   uint32_t marked = 0;
   if (marks + nu <= arena_ + arena_bytes_ && nco > 0) {
-    for (uint32_t i = 0; i < nco; ++i) pts[i] = a.carry_points[i];
-    uint32_t n_pts = nco;
+    uint32_t n_pts = carried_points(a, pts);
     for (uint32_t i = 0; i < nu; ++i) marks[i] = 0;
     for (int round = 0; round < kJoinDepth; ++round) {
       sort_in_place(pts, n_pts, &point_less);

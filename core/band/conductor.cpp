@@ -340,8 +340,8 @@ Status BandConductor::next(const PathPoint** points, uint32_t* n) {
       if (n_carry_ != 0 || n_defer_ != 0) return Status::kBandCarryLost;
       break;
     }
-    const int64_t y1 =
-        next_row_ + height_ < int64_t{row_hi_} + 1 ? next_row_ + height_ : int64_t{row_hi_} + 1;
+    const int64_t h = spec_.max_rows > 0 && height_ > spec_.max_rows ? spec_.max_rows : height_;
+    const int64_t y1 = next_row_ + h < int64_t{row_hi_} + 1 ? next_row_ + h : int64_t{row_hi_} + 1;
     bool fitted = false;
     const Status s = try_band(int32_t(y1), &fitted);
     if (!ok(s)) return s;

@@ -54,6 +54,9 @@ struct BandSpec {
   // >= 0: this margin instead of the margin pass's. Unsafe below the measured one (gaps from
   // outside the margin are lost); the band test uses it to show that its check sees that.
   int32_t fixed_margin = -1;
+  // > 0: no band taller than this many rows (the floor bench plots a solid in bands one row
+  // high, each band's peak then its exact bytes).
+  int32_t max_rows = 0;
   // > 0: at most this many edges in a band (a controller that receives bands over its link
   // stages the next band in a buffer of this many edges); more is a band that does not fit.
   uint32_t max_band_edges = 0;
@@ -250,6 +253,9 @@ class BandConductor {
   void note_used(size_t bytes) {
     if (bytes > stats_.peak_bytes) stats_.peak_bytes = bytes;
     if (bytes > band_used_) band_used_ = bytes;
+  }
+  void note_peak(size_t bytes) {  // a band's bytes at their highest, its transient ones too
+    if (bytes > stats_.peak_bytes) stats_.peak_bytes = bytes;
   }
 
   BandSpec spec_{};

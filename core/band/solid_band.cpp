@@ -54,6 +54,16 @@ struct SolidSink {
   const StrokeStyle* style;
   RawPiece* raw_top = nullptr;  // the current edge's pieces, stacked down from the tail's end
   uint32_t n_raw = 0, raw_edge = 0;
+  // The tail's start, and the most of it in use at once (its strokes from the start and its
+  // stacks from the end, at the same moment): the band's peak counts it.
+  uint8_t* base = nullptr;
+  size_t high = 0;
+  // Bytes right past the run's buffer that the tail takes too (the band's vertex pairs: the
+  // run's topology has read them by the time the sink begins), and whether it has begun: a run
+  // asked again after that would read the tail's bytes as its edges (BandRun).
+  uint8_t* spare = nullptr;
+  size_t spare_bytes = 0;
+  bool begun = false;
 
   static void begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3* edges);
   static Status piece(void* ctx, const HiddenPiece& p);
@@ -63,11 +73,36 @@ struct SolidSink {
   const Edge3* last_line = nullptr;  // the segment whose geometry was stacked last
   Status flush_edge();
   Status emit(uint32_t local, bool up, const Run& r);
-  Status carry_up(uint32_t id, const Edge3& e, bool up, const Run& r, int64_t join);
+  Status carry_up(uint32_t id, bool up, const Run& r, int64_t join);
   // The lowest byte the top of the tail uses: the current edge's raw pieces, or (after every
   // edge) the intersection lines' segments.
   uint8_t* raw_bottom() const {
     return reinterpret_cast<uint8_t*>(raw_top - n_raw) - size_t{a->n_lines} * sizeof(Edge3);
+  }
+  void note() {
+    const size_t used = size_t(reinterpret_cast<uint8_t*>(a->pieces + a->n_pieces) - base) +
+                        size_t(reinterpret_cast<const uint8_t*>(a->lines_end) - raw_bottom());
+    if (used > high) high = used;
+  }
+};
+
+// The band's run as a sized stage, each run with the sink afresh. The sink's tail takes the
+// band's vertex pairs once it begins, so a run asked again after that would build its topology
+// from the tail's bytes: refused (kBandInputReused). None is: the counts a run can come short
+// of (CUT's records, the incidences) are found before the sink begins, and a run short of
+// bytes is not run again in a fixed arena (memory/sized_stage.h).
+struct BandRun {
+  HiddenLinesStage* stage;
+  SolidSink* sink;
+  uint32_t capacity;
+  size_t bytes(const StageNeeds& needs) const { return stage->bytes(needs); }
+  Status run(const StageNeeds& needs, void* buffer, size_t bytes, StageNeeds* want) {
+    if (sink->begun) return Status::kBandInputReused;
+    BandConductor::Attempt& a = *sink->a;
+    a.n_pieces = a.n_carry_out = a.carry_cursor = a.carry_used = 0;
+    a.carry_capacity = capacity;
+    sink->n_raw = 0;
+    return stage->run(needs, buffer, bytes, want);
   }
 };
 
@@ -80,14 +115,18 @@ void SolidSink::begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3* edges
   SolidSink& self = *static_cast<SolidSink*>(ctx);
   BandConductor::Attempt& a = *self.a;
   a.g.edges = const_cast<Edge3*>(edges);  // the band's drawn edges are the run's first ones
-  uint8_t* end = align_down(tail + bytes);
+  uint8_t* end = tail + bytes;
+  if (end == self.spare) end += self.spare_bytes;
+  end = align_down(end);
+  self.begun = true;
   uint8_t* carry = align_up(tail);
   uint8_t* runs = carry + carve_round(size_t{a.carry_capacity} * sizeof(a.carry_out[0]));
-  uint8_t* points = runs + carve_round(size_t{a.carry_capacity} * sizeof(a.carry_runs_out[0]));
-  uint8_t* pieces = points + carve_round(size_t{a.carry_capacity} * sizeof(RowPoint));
+  uint8_t* pieces = runs + carve_round(size_t{a.carry_capacity} * sizeof(a.carry_runs_out[0]));
   a.n_pieces = a.n_carry_out = a.carry_cursor = a.carry_used = a.n_lines = 0;
   self.n_raw = 0;
   self.last_line = nullptr;
+  self.base = carry;
+  self.high = 0;
   if (pieces > end) {  // no room even for the carry: every piece is then a full sink
     a.carry_capacity = 0;
     a.pieces = reinterpret_cast<StoredPiece*>(end);
@@ -97,7 +136,7 @@ void SolidSink::begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3* edges
   }
   a.carry_out = reinterpret_cast<decltype(a.carry_out)>(carry);
   a.carry_runs_out = reinterpret_cast<decltype(a.carry_runs_out)>(runs);
-  a.carry_points = reinterpret_cast<RowPoint*>(points);
+  a.carry_points = nullptr;  // the commit finds a carried run's lower end on the band's edge
   a.pieces = reinterpret_cast<StoredPiece*>(pieces);
   self.raw_top = reinterpret_cast<RawPiece*>(end);
   a.lines_end = reinterpret_cast<const Edge3*>(end);
@@ -117,6 +156,7 @@ Status SolidSink::piece(void* ctx, const HiddenPiece& p) {
     return Status::kSinkFull;
   self.raw_top[-1 - int64_t{self.n_raw++}] =
       RawPiece{p.t0, p.t1, p.q, uint8_t(p.hidden ? 1 : 0), uint8_t(p.tested ? 1 : 0)};
+  self.note();
   return Status::kOk;
 }
 
@@ -139,12 +179,14 @@ Status SolidSink::line_piece(const HiddenPiece& p) {
     Edge3* slot = const_cast<Edge3*>(a->lines_end) - 1 - a->n_lines++;
     *slot = *p.geometry;
     last_line = slot;
+    note();
   }
   if (reinterpret_cast<uint8_t*>(a->pieces + a->n_pieces + 1) > raw_bottom())
     return Status::kSinkFull;
   const uint32_t local = a->g.n + a->n_lines - 1;
   const Span s = make_stroke(*last_line, local, p.t0, p.t1);
   a->pieces[a->n_pieces++] = StoredPiece{local, uint32_t(s.t0), uint32_t(s.t1 - 1), s.x0 + s.x1};
+  note();
   return Status::kOk;
 }
 
@@ -158,6 +200,7 @@ Status SolidSink::outline(void* ctx, const HiddenPiece& p) {
     return Status::kSinkFull;
   const Span s = make_stroke(a.g.edges[p.edge], p.edge, p.t0, p.t1);
   a.pieces[a.n_pieces++] = StoredPiece{p.edge, uint32_t(s.t0), uint32_t(s.t1 - 1), s.x0 + s.x1};
+  self.note();
   return Status::kOk;
 }
 
@@ -170,13 +213,13 @@ Status SolidSink::emit(uint32_t local, bool up, const Run& r) {
     if (reinterpret_cast<uint8_t*>(a->pieces + a->n_pieces + 1) > raw_bottom())
       return Status::kSinkFull;
     a->pieces[a->n_pieces++] = StoredPiece{local, uint32_t(s.t0), uint32_t(s.t1 - 1), s.x0 + s.x1};
+    note();
     return Status::kOk;
   });
 }
 
-Status SolidSink::carry_up(uint32_t id, const Edge3& e, bool up, const Run& r, int64_t join) {
+Status SolidSink::carry_up(uint32_t id, bool up, const Run& r, int64_t join) {
   if (a->n_carry_out == a->carry_capacity) return Status::kSinkFull;
-  span_point(e, r.lower, &a->carry_points[a->n_carry_out].x, &a->carry_points[a->n_carry_out].y);
   a->carry_runs_out[a->n_carry_out] = {uint32_t(join), r.q};
   a->carry_out[a->n_carry_out++] = {id, uint32_t(r.lower - (up ? 0 : 1))};
   return Status::kOk;
@@ -220,7 +263,7 @@ Status SolidSink::flush_edge() {
     }
     if (!p.tested && at_top) {  // cut off by the border: the band above tells its q
       if (!have) cur = Run{lower, lower, 0, false};
-      s = carry_up(id, e, up, cur, lower);
+      s = carry_up(id, up, cur, lower);
       have = false;
       break;
     }
@@ -236,7 +279,7 @@ Status SolidSink::flush_edge() {
       have = true;
     }
     if (at_top && ok(s)) {
-      s = carry_up(id, e, up, cur, upper);
+      s = carry_up(id, up, cur, upper);
       have = false;
     }
   }
@@ -304,8 +347,10 @@ const BandConductor::SolidStage BandConductor::kSolidStage = {
 // The band's drawn edges (those meeting its rows), its faces (meeting its rows or the row
 // above: the outline pass asks just beyond each border) and the vertices they use, with
 // local vertex indices: one read of the model to count, one to fill, then the vertices.
-//   [front | pairs | triangles | vertices | free ... | (vertex ids) | edge ids]
+//   [front | triangles | vertices | free ... | (vertex ids) | vertex pairs | edge ids]
 // The band keeps no Edge3 of its own: its edges are the hidden-line run's (SolidSink::begin).
+// Its vertex pairs stand just past the run's buffer: only the run's topology reads them, so the
+// sink's tail takes their bytes once the run has begun (SolidSink::spare).
 Status BandConductor::gather_solid(Attempt& a) {
   const SolidSource& src = solid_;
   const int64_t lo = a.y0, hi = a.y1 - 1;
@@ -350,13 +395,13 @@ Status BandConductor::gather_solid(Attempt& a) {
     stats_.edge_reads += src.n_edges;
     if (pass == 1) break;
     // The layout, now that the counts are known: the vertex ids (every end and corner) are
-    // scratch below the edge ids, dead once the indices are local.
+    // scratch below the vertex pairs, dead once the indices are local.
     uint8_t* base = arena_ + front_bytes();
     uint8_t* top = arena_ + arena_bytes_;
-    const size_t front =
-        carve_round(size_t{m} * 2 * sizeof(uint32_t)) + carve_round(size_t{nt} * sizeof(Triangle));
+    const size_t front = carve_round(size_t{nt} * sizeof(Triangle));
     const size_t ids = carve_round((size_t{2} * m + size_t{3} * nt) * sizeof(uint32_t));
-    const size_t back = carve_round(size_t{m} * sizeof(uint32_t));
+    const size_t back =
+        carve_round(size_t{m} * 2 * sizeof(uint32_t)) + carve_round(size_t{m} * sizeof(uint32_t));
     a.g.n = m;
     if (top < base || front + ids + back + 64 > size_t(top - base)) {
       a.need = front_bytes() + front + ids + back + 64;
@@ -366,8 +411,8 @@ Status BandConductor::gather_solid(Attempt& a) {
     a.g.ids_end = reinterpret_cast<uint32_t*>(top);
     a.g.free_lo = base;
     a.g.free_hi = top - back;
-    pairs = reinterpret_cast<uint32_t*>(base);
-    tris = reinterpret_cast<Triangle*>(base + carve_round(size_t{m} * 2 * sizeof(uint32_t)));
+    pairs = reinterpret_cast<uint32_t*>(a.g.free_hi);
+    tris = reinterpret_cast<Triangle*>(base);
     vids = reinterpret_cast<uint32_t*>(a.g.free_hi - ids);
   }
   a.in.edge_pairs = pairs;
@@ -409,6 +454,8 @@ Status BandConductor::gather_vertices(Attempt& a, uint32_t* pairs, Triangle* tri
   a.in.vertices = verts;
   a.in.n_vertices = unique;
   a.after = verts_end;
+  a.gathered = size_t(verts_end - arena_) +
+               size_t(arena_ + arena_bytes_ - reinterpret_cast<uint8_t*>(vids)) + 64;
   return Status::kOk;
 }
 
@@ -441,12 +488,11 @@ Status BandConductor::hide_band(Attempt& a) {
   stage.params.closed = closed_;
   stage.params.band_y0 = int32_t(a.y0);
   stage.params.band_y1 = int32_t(a.y1);
-  const uint32_t capacity = a.carry_capacity;
-  auto fresh = restarting(&stage, [&a, &sink, capacity] {
-    a.n_pieces = a.n_carry_out = a.carry_cursor = a.carry_used = 0;
-    a.carry_capacity = capacity;
-    sink.n_raw = 0;
-  });
+  // The vertex pairs stand right past the run's buffer, the edge ids above them.
+  uint8_t* ids = reinterpret_cast<uint8_t*>(a.g.ids_end) - carve_round(size_t{a.g.n} * 4);
+  sink.spare = a.g.free_hi;
+  sink.spare_bytes = size_t(ids - a.g.free_hi);
+  BandRun fresh{&stage, &sink, a.carry_capacity};
   StageNeeds needs;
   // The first guess: the last band's records and a quarter more (a short guess costs a run).
   needs.crossings = solid_crossings_ + solid_crossings_ / 4 + 16;
@@ -468,8 +514,17 @@ Status BandConductor::hide_band(Attempt& a) {
   if (a.carry_used != n_carry_) return Status::kBandCarryLost;
   solid_crossings_ = need_count(report.cut.crossings + report.cut.near_misses);
   stats_.records += report.cut.crossings;
-  note_used(size_t(reinterpret_cast<uint8_t*>(a.pieces + a.n_pieces) - arena_) +
-            size_t(arena_ + arena_bytes_ - a.g.free_hi));
+  // The next band's height follows the bytes the band keeps (note_used); its peak counts every
+  // byte it touched: the run's stages at their highest (transient scratch included) with the
+  // vertex pairs and the edge ids, or the sink's tail at its fullest (its strokes from the
+  // start and its stacks from the end at one moment; the pairs' bytes are the tail's by then)
+  // with the edge ids; or the gathering's, the vertex ids below the pairs.
+  const size_t top = size_t(arena_ + arena_bytes_ - ids);
+  const size_t run = size_t(space - arena_) + report.bytes_used + size_t(ids - a.g.free_hi);
+  const size_t tail = sink.base != nullptr ? size_t(sink.base - arena_) + sink.high : 0;
+  note_used(size_t(reinterpret_cast<uint8_t*>(a.pieces + a.n_pieces) - arena_) + top);
+  const size_t most = (run > tail ? run : tail) + top;
+  note_peak(most > a.gathered ? most : a.gathered);
   return Status::kOk;
 }
 

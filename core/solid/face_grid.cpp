@@ -6,8 +6,9 @@
 namespace haloplot {
 namespace {
 
-Grid choose_grid(const Topology& topo) {
-  return grid_over(topo.vertices, topo.n_vertices, isqrt_u64(topo.n_triangles) + 1);
+Grid choose_grid(const Topology& topo, uint32_t coarsen) {
+  const uint32_t per_axis = static_cast<uint32_t>(isqrt_u64(topo.n_triangles) + 1);
+  return grid_over(topo.vertices, topo.n_vertices, per_axis / (coarsen > 1 ? coarsen : 1));
 }
 
 Edge3 face_box(const Topology& topo, uint32_t t) {
@@ -33,8 +34,8 @@ uint64_t count_pairs(const Topology& topo, const Grid& g) {
 
 }  // namespace
 
-size_t face_grid_bytes(const Topology& topo) {
-  const Grid g = choose_grid(topo);
+size_t face_grid_bytes(const Topology& topo, uint32_t coarsen) {
+  const Grid g = choose_grid(topo, coarsen);
   ByteCounter c;
   c.take<uint32_t>(size_t{g.cells()} + 1);
   // More pairs than 32 bits count is refused by the build; size it as if none.
@@ -43,8 +44,9 @@ size_t face_grid_bytes(const Topology& topo) {
   return c.total + 8;
 }
 
-Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGrid* out) {
-  const Grid g = choose_grid(topo);
+Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGrid* out,
+                       uint32_t coarsen) {
+  const Grid g = choose_grid(topo, coarsen);
   const uint64_t pairs = count_pairs(topo, g);
   if (pairs > 0xffffffffu) return Status::kCellPairOverflow;
   Carver carve(buffer, bytes);

@@ -32,7 +32,10 @@ inline Topology faces_only(const SolidInput& in) {
   return t;
 }
 
-size_t face_grid_bytes(const Topology& topo);  // counts the faces' cells (no walk)
-Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGrid* out);
+// `coarsen` > 1: cells that many times wider (and taller) than one face per cell gives, for
+// fewer (cell, face) pairs at more faces a cell asks (solid/hidden_lines.cpp: a band's grid).
+size_t face_grid_bytes(const Topology& topo, uint32_t coarsen = 1);  // counts (no walk)
+Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGrid* out,
+                       uint32_t coarsen = 1);
 
 }  // namespace haloplot

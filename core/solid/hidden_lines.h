@@ -78,7 +78,7 @@ struct HiddenReport {
   bool projected_facing = false;
   FallbackReason reason = FallbackReason::kNone;
   size_t bytes_topology = 0, bytes_cut = 0, bytes_incidence = 0, bytes_qi = 0, bytes_fallback = 0,
-         bytes_outline = 0, bytes_intersections = 0;  // the lines' face grid (and the hatching's)
+         bytes_outline = 0, bytes_intersections = 0;  // the lines' face grid (and a band's)
   size_t bytes_used = 0;                              // the buffer's high-water mark
   size_t bytes_needed = 0;                            // on kWorkspaceTooSmall: at least this many
 };

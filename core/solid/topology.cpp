@@ -1,6 +1,7 @@
 #include "haloplot/solid/topology.h"
 
 #include "haloplot/memory/carve.h"
+#include "haloplot/solid/cover.h"
 #include "haloplot/sort/in_place_sort.h"
 
 namespace haloplot {
@@ -247,7 +248,30 @@ void build_stars(const SolidInput& in, Topology& t) {
   t.vertex_edge_first[0] = t.vertex_face_first[0] = 0;
 }
 
+// A side's face on paper: +1 counter-clockwise, -1 clockwise, 0 on a line.
+int paper_side(const Topology& t, uint32_t f) {
+  const uint32_t* v = t.triangles[f].v;
+  const int64_t a = projected_area2(t.vertices[v[0]], t.vertices[v[1]], t.vertices[v[2]]);
+  return a > 0 ? 1 : (a < 0 ? -1 : 0);
+}
+
 }  // namespace
+
+void drop_flat_diagonals(Topology* topo, const uint8_t* facing) {
+  Topology& t = *topo;
+  if (t.vertex_edges != nullptr) return;
+  uint32_t n = t.n_drawn;
+  for (uint32_t e = t.n_drawn; e < t.n_edges; ++e) {
+    const SolidEdge d = t.edges[e];
+    const bool flat = d.regular && paper_side(t, d.face[0]) != 0 &&
+                      paper_side(t, d.face[0]) == paper_side(t, d.face[1]) &&
+                      (facing == nullptr || facing[d.face[0]] == facing[d.face[1]]);
+    if (!flat) t.edges[n++] = d;
+  }
+  t.kept_bytes = t.kept_bytes - carve_round(size_t{t.n_edges} * sizeof(SolidEdge)) +
+                 carve_round(size_t{n} * sizeof(SolidEdge));
+  t.n_edges = n;
+}
 
 size_t topology_bytes(const SolidInput& in) {
   ByteCounter kept;

@@ -64,4 +64,14 @@ struct TopologyOptions {
 Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology* out,
                       const TopologyOptions& options = TopologyOptions{});
 
+// A band's run (solid/hidden_lines.h, HiddenParams::band) draws no diagonal and reads no star:
+// a diagonal matters there only as an edge that drawn edges pass behind. One whose two faces lie
+// on opposite sides of it on paper (a regular side, both faces' projected areas of one sign and
+// not 0, and of one facing when `facing` is given) changes nothing along an edge passing behind
+// it: where one face stops covering, the other begins, at the same depth order. Those are
+// dropped from the edge list (the drawn edges and the other diagonals keep their order), and
+// their bytes given back: kept_bytes shrinks. A topology with stars is left as it is (the stars
+// name edges by index).
+void drop_flat_diagonals(Topology* topo, const uint8_t* facing);
+
 }  // namespace haloplot

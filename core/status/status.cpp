@@ -72,6 +72,8 @@ const char* status_name(Status s) {
       return "no plot in motion";
     case Status::kMisalignedBuffer:
       return "buffer not on an 8-byte boundary";
+    case Status::kBandInputReused:
+      return "a band's run was asked again after its input was reused";
   }
   return "unknown status";
 }

@@ -40,6 +40,7 @@ enum class Status : uint8_t {
   kBandCarryLost,           // a piece carried across a band border found no continuation (a bug)
   kNotPlotting,             // pause or resume with no plot in motion
   kMisalignedBuffer,        // a caller buffer does not start on a kBufferAlignment boundary
+  kBandInputReused,         // a solid band's run asked again after its input was reused (a bug)
 };
 
 // Every buffer a caller hands the core (scratch, storage, workspace, arena) must start on this
