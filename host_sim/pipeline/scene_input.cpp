@@ -420,6 +420,13 @@ namespace {
 
 // Nothing at all to draw is an error, not an empty picture: no edges, or every edge seen
 // end-on (all vertices equal, or a model of lines along the view direction).
+// A model whose every edge the crease angle left out, drawn without its faces' contours.
+std::string no_edges_left(const Options& o, const std::string& path) {
+  return path + ": every edge lies within --crease " + o.get("--crease", "0") +
+         " degrees of flat, and --mode all works out no contours: lower --crease, or draw it "
+         "in a hidden-line mode (contours kept)";
+}
+
 bool something_to_draw(const std::string& path, const std::vector<Edge3>& edges,
                        std::string* error) {
   if (edges.empty()) {
@@ -479,6 +486,10 @@ bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* e
     *error = path + ": projection failed: " + status_name(s);
     return false;
   }
+  if (edges->empty() && !model.faces.empty()) {  // every side within the crease angle
+    *error = no_edges_left(o, path);
+    return false;
+  }
   return something_to_draw(path, *edges, error) && dump_edges(o, path, *edges, units, error);
 }
 
@@ -525,6 +536,14 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
                          model.edge_pairs.data(), uint32_t(edges.size()), edges.data());
   if (!ok(s)) {
     *error = path + ": " + status_name(s);
+    return false;
+  }
+  // Every edge may lie within the crease angle (a smooth model, --crease above its facets'
+  // angle): the faces still have their contours, which the hidden-line stage finds itself.
+  // The edges-only mode finds none.
+  if (edges.empty() && !scene->triangles.empty()) {
+    if (o.get("--mode") != "all") return dump_edges(o, path, edges, scene->substep_bits, error);
+    *error = no_edges_left(o, path);
     return false;
   }
   return something_to_draw(path, edges, error) &&

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# CTest plot_crease: --crease above a smooth model's facet angle leaves out every edge between
+# its faces, and the hidden-line modes still draw the model's contours (the outline): a torus of
+# 24 x 12 facets (15 and 30 degrees apart) with --crease 40, hidden-removed and hidden-dashed,
+# draws something, and every point it draws is a point of the same view's drawing with every
+# edge kept (--crease off: the contours are mesh edges, at the same fit on the page), with
+# fewer points. `--mode all` works out no contours: it refuses, naming --crease.
+# Usage: plot_crease.sh HALOPLOT
+set -u
+tool="$1"
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+pass=0 fail=0
+ok() { pass=$((pass + 1)); echo "ok: $1"; }
+bad() { fail=$((fail + 1)); echo "FAILED: $1"; }
+# shellcheck source=../support/model_files.sh
+source "$here/../support/model_files.sh"
+torus_obj 1.5 0.6 24 12 > torus.obj
+
+# The points of an SVG's paths, one "x,y" a line, sorted and unique.
+points() { grep -o ' d="[^"]*"' "$1" | tr -s ' MLd="' '\n' | grep , | sort -u; }
+
+for mode in hidden-removed hidden-dashed; do
+  if ! "$tool" plot torus.obj --view 30,25 --mode "$mode" --crease off -o all_"$mode".svg 2> err.txt ||
+     ! "$tool" plot torus.obj --view 30,25 --mode "$mode" --crease 40 -o smooth_"$mode".svg 2>> err.txt; then
+    bad "$mode: a plot failed: $(cat err.txt)"
+    continue
+  fi
+  points all_"$mode".svg > all.txt
+  points smooth_"$mode".svg > smooth.txt
+  n_all=$(wc -l < all.txt) n_smooth=$(wc -l < smooth.txt)
+  extra=$(comm -13 all.txt smooth.txt | wc -l)
+  if [ "$n_smooth" -gt 0 ] && [ "$extra" -eq 0 ] && [ "$n_smooth" -lt "$n_all" ]; then
+    ok "$mode: --crease 40 draws $n_smooth points, all among the $n_all of --crease off"
+  else
+    bad "$mode: --crease 40 draws $n_smooth points, $extra not in --crease off's $n_all"
+  fi
+done
+
+if "$tool" plot torus.obj --view 30,25 --mode all --crease 40 -o x.svg 2> err.txt; then
+  bad "--mode all with every edge creased plotted (an empty drawing)"
+elif grep -q -- "--crease 40" err.txt && [ ! -e x.svg ]; then
+  ok "--mode all refuses: $(cat err.txt)"
+else
+  bad "--mode all: $(cat err.txt)"
+fi
+
+echo "plot_crease: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]
