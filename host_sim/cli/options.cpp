@@ -81,7 +81,7 @@ std::string svg_output_problem(const std::string& path) {
                                                 "tiff",  "webp", "eps", "ps",   "dxf", "emf", "wmf",
                                                 "gcode", "nc",   "ngc", "hpgl", "plt"};
   if (kNotSvg.count(ext) == 0) return "";
-  std::string hint = "convert the SVG (e.g. with Inkscape or rsvg-convert)";
+  std::string hint = "convert the SVG, for example with Inkscape or rsvg-convert";
   if (ext == "gcode" || ext == "nc" || ext == "ngc") hint = "for G-code give --gcode " + path;
   if (ext == "hpgl" || ext == "plt") hint = "for HPGL give --hpgl " + path;
   return "-o " + path + ": -o writes SVG only, not ." + ext + " (" + hint + ")";

@@ -251,16 +251,16 @@ expect '[ $rc -eq 0 ] && [ "$(sed -n "s/^bands=//p" solid_hatch.txt)" -gt 1 ] &&
 rc=$?
 expect '[ $rc -ne 0 ] && grep -q "arena BYTES" err.txt && [ ! -e solid_arena.svg ]' "plot --arena of a solid is refused by name, not ignored: $(cat err.txt)"
 # Intersection lines in bands too: the boxes through each other, with and without them.
-printf 'scene boxes.obj\ndrawing hidden-removed\nview 30,25\narena 4096\n' > lines_arena.job
+printf 'scene boxes.obj\ndrawing hidden-removed\nview 30,25\narena 3072\n' > lines_arena.job
 { cat lines_arena.job; echo "intersections off"; } > nolines_arena.job
 "$tool" sim lines_arena.job -o lines_arena.trace --stats 2> lines_arena.txt
 rc=$?
 "$tool" sim nolines_arena.job -o nolines_arena.trace --stats 2> nolines_arena.txt
 expect '[ $rc -eq 0 ] && [ $? -eq 0 ] && [ "$(sed -n "s/^bands=//p" lines_arena.txt)" -gt 1 ] && [ "$(sed -n "s/^pen_down_length=//p" lines_arena.txt)" -gt "$(sed -n "s/^pen_down_length=//p" nolines_arena.txt)" ]' "intersection lines are drawn in bands, left out with 'intersections off': $(grep -E "^(bands|pen_down_length)=" lines_arena.txt nolines_arena.txt | tr '\n' ' ')"
-sed 's/^arena .*/arena 12288/' solid_arena.job > solid_tiny.job
+sed 's/^arena .*/arena 8192/' solid_arena.job > solid_tiny.job
 "$tool" sim solid_tiny.job -o solid_tiny.trace 2> err.txt
 rc=$?
-expect '[ $rc -ne 0 ] && grep -q "arena of 12288 bytes too small: a band one row high needs [1-9][0-9]*" err.txt && [ ! -e solid_tiny.trace ]' "a solid band that does not fit names the bytes it needs: $(cat err.txt)"
+expect '[ $rc -ne 0 ] && grep -q "arena of 8192 bytes too small: a band one row high needs [1-9][0-9]*" err.txt && [ ! -e solid_tiny.trace ]' "a solid band that does not fit names the bytes it needs: $(cat err.txt)"
 head -c 200 arena.btrace > cut.btrace
 "$tool" replay cut.btrace -o cut.svg 2> err.txt
 rc=$?
