@@ -5,6 +5,7 @@
 
 #include "haloplot/band/band_rule.h"
 #include "haloplot/band/conductor.h"
+#include "haloplot/geometry/quarter_turn.h"
 #include "haloplot/solid/mesh.h"
 
 namespace haloplot {
@@ -60,6 +61,26 @@ inline bool holds(const RowPoint* pts, uint32_t n, int32_t x, int32_t y) {
   return lo < n && pts[lo].x == x && pts[lo].y == y;
 }
 
+// The point at t along a band's edge, rounded as the page rounds it: in a turned plot
+// (geometry/quarter_turn.h) the edge is turned back first, since lerp_round rounds halves up
+// and would round a turned coordinate's half the other way; the point is then turned again.
+inline void frame_point(bool turned, const Edge3& e, int64_t t, int32_t* x, int32_t* y) {
+  if (!turned) return span_point(e, t, x, y);
+  int32_t px = 0, py = 0;
+  span_point(unturn_edge(e), t, &px, &py);
+  const Point3 q = turn_point(Point3{px, py, 0});
+  *x = q.x;
+  *y = q.y;
+}
+
+// x0 + x1 of the piece [t0, t1) of e, rounded as above: the key of its path column.
+inline int32_t frame_x_sum(bool turned, const Edge3& e, int64_t t0, int64_t t1) {
+  int32_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  frame_point(turned, e, t0, &x0, &y0);
+  frame_point(turned, e, t1, &x1, &y1);
+  return x0 + x1;
+}
+
 }  // namespace band_detail
 using namespace band_detail;
 
@@ -87,6 +108,7 @@ struct BandConductor::Attempt {
   size_t need = 0;      // bytes asked for by the stage that did not fit
   size_t gathered = 0;  // a solid's band: the arena's bytes while its input was gathered
   SolidInput in{};      // a solid's band: its faces and drawn edges, local vertex indices
+  bool turned = false;  // the band is in the page turned a quarter (BandSpec::turn_wide)
 
   // DRAW's sink: keep what this band owns, carry what runs past its top (band_rule.h).
   static Status on_span(void* ctx, const Span& s) {

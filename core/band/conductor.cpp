@@ -43,6 +43,7 @@ Status BandConductor::begin(const BandSpec& spec, EdgeSource source, void* arena
   stats_.edge_reads += source.n;
   pen_x_ = spec.start_x;
   pen_y_ = spec.start_y;
+  turned_ = false;                        // begin_solid turns a wide solid
   if (source.n == 0) return Status::kOk;  // done: nothing to draw
   row_lo_ = lo;
   row_hi_ = hi;
@@ -290,6 +291,7 @@ Status BandConductor::try_band(int32_t y1, bool* fitted) {
   Attempt a;
   a.y0 = next_row_;
   a.y1 = y1;
+  a.turned = turned_;
   const int64_t margin = stats_.margin;
   Status s;
   if (solid_mode()) {  // a solid: its faces and edges, then its hidden lines

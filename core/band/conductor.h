@@ -39,6 +39,7 @@
 #include "haloplot/band/solid_source.h"
 #include "haloplot/cut/cut.h"
 #include "haloplot/draw/draw.h"
+#include "haloplot/geometry/quarter_turn.h"
 #include "haloplot/motion/path_plan.h"
 #include "haloplot/solid/modes.h"
 #include "haloplot/status/status.h"
@@ -75,6 +76,14 @@ struct BandSpec {
   // (band_spec() converts a job's), and each column's strokes are rounded to steps before its
   // path is planned (geometry/units.h).
   int32_t substep_bits = 0;
+  // A solid wider than tall (begin_solid) is banded in the page turned a quarter
+  // (geometry/quarter_turn.h): its bands are then columns of the page, and the pen crosses
+  // each along the drawing's shorter side, not its longer (tests/cli/band_pen_up.sh: 10 x 10
+  // hatched cubes in 64 KB, 1.23x of one band's pen-up travel turned, 1.44x in strips of the
+  // page's rows). Every point leaves the conductor turned back, rounded as the page rounds it.
+  // Off: strips of the page's rows. A streamed solid turns as its host's plan did
+  // (begin_streamed_solid's `turned`).
+  bool turn_wide = true;
 };
 
 // A band sent from outside: a host ran the same conductor over the whole scene with the same
@@ -110,7 +119,9 @@ struct BandPiece {
 struct PieceObserver {
   void (*piece)(void* ctx, const BandPiece& p) = nullptr;
   void* ctx = nullptr;
-  void (*band)(void* ctx, int32_t y0, int32_t y1) = nullptr;  // each band as it commits
+  // Each band as it commits: its rows, in a turned plot the turned frame's (page columns
+  // x = kTurnOffset - y, geometry/quarter_turn.h; BandStats::turned).
+  void (*band)(void* ctx, int32_t y0, int32_t y1) = nullptr;
 };
 
 struct BandStats {
@@ -131,6 +142,7 @@ struct BandStats {
   size_t peak_bytes = 0;  // the most of the arena any band used
   size_t need_bytes = 0;  // kArenaTooSmall: what the one-row band asked for
   PathStats path;         // summed over the bands
+  bool turned = false;    // a solid banded in the page turned a quarter (BandSpec::turn_wide)
   // Clock ticks (set_clock) of the drawing pass's committed bands, spent in CUT, in DRAW and
   // in the rest (reading the source, the path); of its attempts that did not fit (all their
   // work); and of the whole margin pass.
@@ -149,8 +161,10 @@ class BandConductor {
   Status begin_solid(const BandSpec& spec, SolidSource source, void* arena, size_t arena_bytes);
   // The same solid plot from streamed bands (StreamedBand::solid), as the host's dry run with
   // this arena cut them; `closed` is the whole model's check, which no band can make.
-  Status begin_streamed_solid(const BandSpec& spec, bool closed, BandStream stream, void* arena,
-                              size_t arena_bytes);
+  // `turned`: the host's plan turned the page (BandStats::turned; its bands' rows are then the
+  // turned frame's, its vertices the page's).
+  Status begin_streamed_solid(const BandSpec& spec, bool closed, bool turned, BandStream stream,
+                              void* arena, size_t arena_bytes);
   // Checks the scene (one read) and the settings; nothing is cut yet. Every begin takes an
   // arena that starts on a kBufferAlignment (8) boundary, or returns kMisalignedBuffer.
   Status begin(const BandSpec& spec, EdgeSource source, void* arena, size_t arena_bytes);
@@ -257,6 +271,18 @@ class BandConductor {
   void note_peak(size_t bytes) {  // a band's bytes at their highest, its transient ones too
     if (bytes > stats_.peak_bytes) stats_.peak_bytes = bytes;
   }
+  // A turned plot (BandSpec::turn_wide): solid_'s vertices are read turned (solid_vertex),
+  // and every point leaves turned back (band_frame.cpp).
+  Status solid_vertex(uint32_t index, Point3* out) const;
+  Segment2 page_segment(const Segment2& g) const;     // a band-frame segment, turned back
+  void steps_to_band(Segment2* g, uint32_t n) const;  // page steps into the band frame's steps
+  void steps_to_page(PathPoint* p, uint32_t n) const;
+  int32_t turn_steps() const { return kTurnOffset >> spec_.substep_bits; }
+  void turn_pen() {  // the pen's page steps into the turned frame's
+    const int32_t x = pen_x_;
+    pen_x_ = pen_y_;
+    pen_y_ = turn_steps() - x;
+  }
 
   BandSpec spec_{};
   EdgeSource source_{};
@@ -270,6 +296,7 @@ class BandConductor {
   const SolidStage* solid_stage_ = nullptr;  // a solid's plot: &kSolidStage
   bool closed_ = false;                      // a solid's model is closed (SolidSource::closed)
   SolidSource solid_{};                      // a solid's model, or (streamed) the band's part
+  bool turned_ = false;                      // the page turned a quarter (band_frame.cpp)
   uint32_t solid_crossings_ = 0;             // the last band's CUT records: the next first guess
   BandStream stream_{};                      // streamed mode when stream_.next is set
   const uint32_t* stream_ids_ = nullptr;     // scene indices of the streamed band's edges

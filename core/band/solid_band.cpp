@@ -184,8 +184,8 @@ Status SolidSink::line_piece(const HiddenPiece& p) {
   if (reinterpret_cast<uint8_t*>(a->pieces + a->n_pieces + 1) > raw_bottom())
     return Status::kSinkFull;
   const uint32_t local = a->g.n + a->n_lines - 1;
-  const Span s = make_stroke(*last_line, local, p.t0, p.t1);
-  a->pieces[a->n_pieces++] = StoredPiece{local, uint32_t(s.t0), uint32_t(s.t1 - 1), s.x0 + s.x1};
+  a->pieces[a->n_pieces++] = StoredPiece{local, uint32_t(p.t0), uint32_t(p.t1 - 1),
+                                         frame_x_sum(a->turned, *last_line, p.t0, p.t1)};
   note();
   return Status::kOk;
 }
@@ -198,8 +198,8 @@ Status SolidSink::outline(void* ctx, const HiddenPiece& p) {
   if (p.edge >= a.in.n_edges || p.t1 <= p.t0) return Status::kOk;
   if (reinterpret_cast<uint8_t*>(a.pieces + a.n_pieces + 1) > self.raw_bottom())
     return Status::kSinkFull;
-  const Span s = make_stroke(a.g.edges[p.edge], p.edge, p.t0, p.t1);
-  a.pieces[a.n_pieces++] = StoredPiece{p.edge, uint32_t(s.t0), uint32_t(s.t1 - 1), s.x0 + s.x1};
+  a.pieces[a.n_pieces++] = StoredPiece{p.edge, uint32_t(p.t0), uint32_t(p.t1 - 1),
+                                       frame_x_sum(a.turned, a.g.edges[p.edge], p.t0, p.t1)};
   self.note();
   return Status::kOk;
 }
@@ -209,10 +209,11 @@ Status SolidSink::emit(uint32_t local, bool up, const Run& r) {
   const int64_t t0 = up ? r.lower : r.upper, t1 = up ? r.upper : r.lower;
   if (t1 <= t0) return Status::kOk;  // an empty run before a sliver
   const Edge3& e = a->g.edges[local];
-  return piece_strokes(e, local, false, t0, t1, r.hidden, *style, [this, local](const Span& s) {
+  return piece_strokes(e, local, false, t0, t1, r.hidden, *style, [this, local, &e](const Span& s) {
     if (reinterpret_cast<uint8_t*>(a->pieces + a->n_pieces + 1) > raw_bottom())
       return Status::kSinkFull;
-    a->pieces[a->n_pieces++] = StoredPiece{local, uint32_t(s.t0), uint32_t(s.t1 - 1), s.x0 + s.x1};
+    const int32_t x_sum = a->turned ? frame_x_sum(true, e, s.t0, s.t1) : s.x0 + s.x1;
+    a->pieces[a->n_pieces++] = StoredPiece{local, uint32_t(s.t0), uint32_t(s.t1 - 1), x_sum};
     note();
     return Status::kOk;
   });
@@ -298,8 +299,8 @@ Status BandConductor::begin_solid(const BandSpec& spec, SolidSource source, void
   if (source.n_edges > kMaxEdges || source.n_triangles > kMaxEdges) return Status::kTooManyEdges;
   Status s = begin(spec, EdgeSource{}, arena, arena_bytes);
   if (!ok(s)) return s;
-  // One read of the vertices: every coordinate in range, and the scene's rows.
-  int32_t lo = kCoordLimit, hi = -1;
+  // One read of the vertices: every coordinate in range, and the drawing's extent.
+  int32_t lo = kCoordLimit, hi = -1, left = kCoordLimit, right = -1;
   for (uint32_t v = 0; v < source.n_vertices; ++v) {
     Point3 p;
     s = source.vertex(source.ctx, v, &p);
@@ -307,11 +308,21 @@ Status BandConductor::begin_solid(const BandSpec& spec, SolidSource source, void
     if (!in_range(Edge3{p, p})) return Status::kCoordinateOutOfRange;
     if (p.y < lo) lo = p.y;
     if (p.y > hi) hi = p.y;
+    if (p.x < left) left = p.x;
+    if (p.x > right) right = p.x;
   }
   solid_ = source;
   solid_stage_ = &kSolidStage;
   closed_ = source.closed;
   if (source.n_edges == 0 || source.n_vertices == 0) return Status::kOk;  // nothing to draw
+  // Wider than tall: bands across the width, each a column of the page (BandSpec::turn_wide).
+  turned_ = spec.turn_wide && right - left > hi - lo;
+  stats_.turned = turned_;
+  if (turned_) {
+    lo = kTurnOffset - right;
+    hi = kTurnOffset - left;
+    turn_pen();
+  }
   row_lo_ = lo;
   row_hi_ = hi;
   next_row_ = lo;
@@ -321,8 +332,8 @@ Status BandConductor::begin_solid(const BandSpec& spec, SolidSource source, void
   return Status::kOk;
 }
 
-Status BandConductor::begin_streamed_solid(const BandSpec& spec, bool closed, BandStream stream,
-                                           void* arena, size_t arena_bytes) {
+Status BandConductor::begin_streamed_solid(const BandSpec& spec, bool closed, bool turned,
+                                           BandStream stream, void* arena, size_t arena_bytes) {
   if (stream.next == nullptr) return Status::kBadParameter;
   if (spec.style.dash < 1 || spec.style.gap < 1 || spec.style.dash > kCoordMax ||
       spec.style.gap > kCoordMax)
@@ -334,6 +345,9 @@ Status BandConductor::begin_streamed_solid(const BandSpec& spec, bool closed, Ba
   closed_ = closed;
   margin_known_ = true;
   done_ = false;
+  turned_ = turned;
+  stats_.turned = turned;
+  if (turned) turn_pen();
   return Status::kOk;
 }
 
@@ -354,7 +368,7 @@ const BandConductor::SolidStage BandConductor::kSolidStage = {
 Status BandConductor::gather_solid(Attempt& a) {
   const SolidSource& src = solid_;
   const int64_t lo = a.y0, hi = a.y1 - 1;
-  auto read_vertex = [&](uint32_t v, Point3* p) { return src.vertex(src.ctx, v, p); };
+  auto read_vertex = [&](uint32_t v, Point3* p) { return solid_vertex(v, p); };
   uint32_t m = 0, nt = 0;
   uint32_t* pairs = nullptr;
   Triangle* tris = nullptr;
@@ -425,7 +439,6 @@ Status BandConductor::gather_solid(Attempt& a) {
 // The vertices the band's edges and triangles use, sorted and once each, read right after its
 // triangles (the ids at `vids` lie above them); then its local indices.
 Status BandConductor::gather_vertices(Attempt& a, uint32_t* pairs, Triangle* tris, uint32_t* vids) {
-  const SolidSource& src = solid_;
   const uint32_t m = a.in.n_edges, nt = a.in.n_triangles;
   uint32_t nv = 0;
   for (uint32_t k = 0; k < 2 * m; ++k) vids[nv++] = pairs[k];
@@ -445,7 +458,7 @@ Status BandConductor::gather_vertices(Attempt& a, uint32_t* pairs, Triangle* tri
     return Status::kWorkspaceTooSmall;
   }
   for (uint32_t k = 0; k < unique; ++k) {
-    const Status s = src.vertex(src.ctx, vids[k], &verts[k]);
+    const Status s = solid_vertex(vids[k], &verts[k]);
     if (!ok(s)) return s;
   }
   for (uint32_t k = 0; k < 2 * m; ++k) pairs[k] = local_vertex(vids, unique, pairs[k]);
@@ -485,6 +498,7 @@ Status BandConductor::hide_band(Attempt& a) {
   stage.params.intersections = spec_.intersections;
   stage.params.hatch = spec_.hatch;
   stage.params.hatch_params = spec_.hatch_params;
+  stage.params.hatch_params.turned = turned_;  // the page's lattice, in the turned frame
   stage.params.closed = closed_;
   stage.params.band_y0 = int32_t(a.y0);
   stage.params.band_y1 = int32_t(a.y1);

@@ -565,7 +565,8 @@ Status JobServer::plot_streamed() {
   const Status s =
       solid_stream()
           ? conductor_.begin_streamed_solid(band_spec(spec_), (stream_.flags & kStreamClosed) != 0,
-                                            stream, arena_, bytes)
+                                            (stream_.flags & kStreamTurned) != 0, stream, arena_,
+                                            bytes)
           : conductor_.begin_streamed(band_spec(spec_), stream_.margin, stream, arena_, bytes);
   if (!ok(s)) return s;
   job_ = PreparedJob{};

@@ -218,8 +218,8 @@ void encode_stream_begin(const StreamBegin& b, uint8_t out[kStreamBeginBytes]) {
 
 Status decode_stream_begin(const uint8_t* p, size_t n, StreamBegin* out) {
   if (n != kStreamBeginBytes || get_i32(p) < 0 || get_i32(p) > 2 * kCoordLimit ||
-      (p[8] & ~(kStreamSolid | kStreamClosed)) != 0 ||
-      ((p[8] & kStreamClosed) != 0 && (p[8] & kStreamSolid) == 0))
+      (p[8] & ~(kStreamSolid | kStreamClosed | kStreamTurned)) != 0 ||
+      ((p[8] & (kStreamClosed | kStreamTurned)) != 0 && (p[8] & kStreamSolid) == 0))
     return Status::kMalformedRequest;
   out->margin = get_i32(p);
   out->arena_bytes = get_u32(p + 4);

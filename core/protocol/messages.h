@@ -60,11 +60,13 @@ inline constexpr size_t kUploadBeginBytes = 13, kUploadBeginCurvesBytes = 17,
 
 // A streamed plot (band/conductor.h begin_streamed): the host's margin and the arena its bands
 // were sized for; then each band's rows and edge count.
-inline constexpr uint8_t kStreamSolid = 1, kStreamClosed = 2;
+// kStreamTurned: the host's plan turned a wide solid's page a quarter (BandSpec::turn_wide).
+inline constexpr uint8_t kStreamSolid = 1, kStreamClosed = 2, kStreamTurned = 4;
 struct StreamBegin {
   int32_t margin = 0;
   uint32_t arena_bytes = 0;
-  uint8_t flags = 0;  // kStreamSolid (begin_streamed_solid), kStreamClosed (the model's check)
+  // kStreamSolid (begin_streamed_solid), kStreamClosed (the model's check), kStreamTurned
+  uint8_t flags = 0;
 };
 struct BandBegin {
   int32_t y0 = 0, y1 = 0;

@@ -1,6 +1,7 @@
 #include "haloplot/solid/hatch_lines.h"
 
 #include "haloplot/geometry/fraction.h"
+#include "haloplot/geometry/quarter_turn.h"
 #include "haloplot/solid/cover.h"
 
 namespace haloplot {
@@ -9,6 +10,8 @@ namespace {
 // w = n . p with n in Q2.30 and coordinates below 2^20: below 2^51; the levels k S likewise. A
 // side's point: a coordinate difference (2^21) times a 31-bit fraction.
 static_assert(kCoordBits + kTrigFractionBits + 1 < 62, "a line's level fits in int64");
+// Turned (HatchParams::turned), a level has a third such term: three below 2^51 each.
+static_assert(kCoordBits + kTrigFractionBits + 3 < 63, "a turned line's level fits in int64");
 static_assert(kCoordBits + 1 + 31 < 63, "a side's point fits in int64");
 
 bool point_before(const Point3& p, const Point3& q) {
@@ -113,7 +116,11 @@ template <typename Lays, typename Line>
 Status polygon_lines(const Topology& topo, uint32_t s, uint32_t e, bool joined,
                      const HatchParams& p, Lays lays, Line line) {
   const SinCos d = hatch_direction(topo.triangles, topo.n_triangles, topo.vertices, s, p);
-  const int64_t nx = -d.sin, ny = d.cos;  // the lines' normal, Q2.30
+  // The lines' normal (Q2.30) and the level of the origin: n . p - w0 is the page's level of
+  // the page point p stands for. Turned, p = (y, kTurnOffset - x) for the page's (x, y), so
+  // the page's normal (-sin, cos) becomes (cos, sin) and the origin's level sin kTurnOffset.
+  const int64_t nx = p.turned ? d.cos : -d.sin, ny = p.turned ? d.sin : d.cos;
+  const int64_t w0 = p.turned ? d.sin * kTurnOffset : 0;
   const int64_t spacing = int64_t{p.spacing} << kTrigFractionBits;
   for (uint32_t first = s; first < e; first = joined ? e : first + 1) {
     const uint32_t last = joined ? e : first + 1;
@@ -124,7 +131,7 @@ Status polygon_lines(const Topology& topo, uint32_t s, uint32_t e, bool joined,
     for (uint32_t t = first; t < last; ++t)
       for (int k = 0; k < 3; ++k) {
         q[t - first][k] = topo.vertices[topo.triangles[t].v[k]];
-        const int64_t wk = nx * q[t - first][k].x + ny * q[t - first][k].y;
+        const int64_t wk = nx * q[t - first][k].x + ny * q[t - first][k].y - w0;
         w[t - first][k] = wk;
         lo = (t == first && k == 0) || wk < lo ? wk : lo;
         hi = (t == first && k == 0) || wk > hi ? wk : hi;

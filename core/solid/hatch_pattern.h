@@ -17,6 +17,9 @@ struct HatchParams {
   // Lines shorter than this on paper along both axes are not laid (solid/hatch_lines.h): a
   // line across a corner's tip would be a dot. The job sets one step.
   int32_t min_length = 0;
+  // The vertices are the page turned a quarter (geometry/quarter_turn.h; a banded plot of a
+  // wide solid): the lines are the page's lattice, found in the turned frame.
+  bool turned = false;
 };
 
 // The lines' direction for triangle t's polygon: its angle grows with the polygon's mean

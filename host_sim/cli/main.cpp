@@ -555,11 +555,11 @@ void print_band_stats(const BandStats& b, size_t arena) {
                "arena=%zu\nbands=%u\nband_splits=%u\nmargin_bands=%u\nband_margin=%d\n"
                "band_peak_bytes=%zu\nband_most_edges=%u\nband_most_pieces=%u\n"
                "band_most_carry=%u\nband_edge_reads=%llu\nband_cut_runs=%llu\nband_edges=%llu\n"
-               "band_deferred=%llu\n",
+               "band_deferred=%llu\nband_turned=%d\n",
                arena, b.bands, b.splits, b.margin_bands, b.margin, b.peak_bytes, b.most_edges,
                b.most_pieces, b.most_carry, (unsigned long long)b.edge_reads,
                (unsigned long long)b.cut_runs, (unsigned long long)b.band_edges,
-               (unsigned long long)b.deferred);
+               (unsigned long long)b.deferred, b.turned ? 1 : 0);
 }
 
 // "12.345" from a count of thousandths.

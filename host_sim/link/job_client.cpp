@@ -164,8 +164,9 @@ bool JobClient::stream(const JobSpec& spec, const BandPlan& plan, uint32_t arena
   if (!settings(spec, status)) return false;
   if (!ok(*status)) return true;
   std::vector<uint8_t> begin(kStreamBeginBytes);
-  const uint8_t flags =
-      plan.solid ? uint8_t(kStreamSolid | (plan.closed ? kStreamClosed : 0)) : uint8_t{0};
+  const uint8_t flags = plan.solid ? uint8_t(kStreamSolid | (plan.closed ? kStreamClosed : 0) |
+                                             (plan.turned ? kStreamTurned : 0))
+                                   : uint8_t{0};
   encode_stream_begin(StreamBegin{plan.margin, arena_bytes, flags}, begin.data());
   if (!request(FrameType::kStreamBegin, begin, status)) return false;
   if (!ok(*status)) return true;

@@ -59,12 +59,18 @@ Status plan_streamed_solid(const SolidInput& in, bool closed, const BandSpec& sp
   if (ok(s)) s = run_all_bands(conductor);
   out->stats = conductor.stats();
   if (!ok(s)) return s;
+  // A turned plan's rows are the turned frame's (geometry/quarter_turn.h): each band gathers
+  // by the turned vertices, and sends the page's.
+  out->turned = out->stats.turned;
+  std::vector<Point3> frame(in.vertices, in.vertices + in.n_vertices);
+  if (out->turned)
+    for (Point3& p : frame) p = turn_point(p);
   // What each band gathers: the conductor's own rule (solid_band.cpp), in scene order.
   for (PlannedBand& b : out->bands) {
     const int64_t lo = b.y0, hi = int64_t{b.y1} - 1;
     for (uint32_t i = 0; i < in.n_edges; ++i) {
       const uint32_t v0 = in.edge_pairs[2 * i], v1 = in.edge_pairs[2 * i + 1];
-      if (!edge_meets_rows(Edge3{in.vertices[v0], in.vertices[v1]}, lo, hi)) continue;
+      if (!edge_meets_rows(Edge3{frame[v0], frame[v1]}, lo, hi)) continue;
       b.ids.push_back(i);
       b.pairs.insert(b.pairs.end(), {v0, v1});
       b.vertex_ids.insert(b.vertex_ids.end(), {v0, v1});
@@ -72,8 +78,7 @@ Status plan_streamed_solid(const SolidInput& in, bool closed, const BandSpec& sp
     auto read = [&](uint32_t t, Triangle* tri, bool* meets) {
       *tri = in.triangles[t];
       const uint32_t* v = tri->v;
-      *meets =
-          triangle_meets_rows(in.vertices[v[0]], in.vertices[v[1]], in.vertices[v[2]], lo, hi + 1);
+      *meets = triangle_meets_rows(frame[v[0]], frame[v[1]], frame[v[2]], lo, hi + 1);
       return Status::kOk;
     };
     s = for_band_triangles(in.n_triangles, spec.hatch, read, [&](uint32_t, Triangle t) {

@@ -25,6 +25,7 @@ struct PlannedBand {
 
 struct BandPlan {
   bool solid = false, closed = false;  // a solid's bands, and its model's check
+  bool turned = false;  // a solid's page turned a quarter: its rows are the turned frame's
   int32_t margin = 0;
   std::vector<PlannedBand> bands;
   BandStats stats;  // the dry run's

@@ -5,7 +5,8 @@
 # job whole and with arenas small enough for several bands; band_dashes_check
 # (tests/tools/band_dashes_check.cpp, which reads the traces alone) compares the pen-down
 # strokes, joined across the borders, with the whole-model trace's: every stroke end, every
-# dash's included, within one step.
+# dash's included, within one step, in bands across the page turned a quarter (a drawing
+# wider than tall) and in the page's rows (one taller than wide).
 #   band_dashes.sh HALOPLOT BAND_DASHES_CHECK
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
@@ -13,7 +14,7 @@ tool="$1"
 check="$2"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-pass=0 fail=0
+pass=0 fail=0 turned_runs=0 row_runs=0
 ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAILED: $*" >&2; }
 cd "$work"
@@ -45,9 +46,12 @@ run() {
       bad "$name in $arena bytes: $bands band(s), not a banded plot"
       continue
     fi
+    turned=$(sed -n 's/^band_turned=//p' "${name}_$arena.stats")
+    if [ "${turned:-}" = 1 ]; then frame="columns"; turned_runs=$((turned_runs + 1)); else
+      frame="rows"; row_runs=$((row_runs + 1)); fi
     out=$("$check" "$name.trace" "${name}_$arena.trace")
     rc=$?
-    echo "$name, arena $arena ($bands bands): $out"
+    echo "$name, arena $arena ($bands bands, $frame): $out"
     if [ "$rc" -eq 0 ]; then ok; else bad "$name in $arena bytes ($bands bands) draws another picture"; fi
   done
 }
@@ -62,6 +66,14 @@ run cubes6_hatched cubes6.obj 'hatch 3 30 90\n' 32768 49152 65536
 run cubes6_eighth cubes6.obj 'dash 2 1\nhatch 3 30 90\nsteps 1/8\n' $(seq 28672 4096 65536)
 run torus torus.obj 'hatch 3 30 90\n' 16384 32768 65536
 run torus_sphere torus_sphere.obj 'hatch 3 30 90\n' 16384 32768 65536
+# The drawings above are wider than tall, so the conductor bands them in the page turned a
+# quarter (bands are columns of the page: BandSpec::turn_wide). Rolled a quarter, the same
+# pictures are taller than wide and banded in the page's rows: both frames draw the picture.
+run cubes6_rolled cubes6.obj 'roll 90\ndash 2 1\nhatch 3 30 90\nsteps 1/8\n' 32768 49152
+run torus_sphere_rolled torus_sphere.obj 'roll 90\nhatch 3 30 90\n' 16384 32768
+if [ "$turned_runs" -eq 0 ] || [ "$row_runs" -eq 0 ]; then
+  bad "banded in columns $turned_runs times, in rows $row_runs times: both frames must be tried"
+fi
 
 echo "band_dashes: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
