@@ -10,7 +10,10 @@
 #           by band;
 #   dashed  the 6 x 6 solid cubes of band_dashes (tests/cli/band_dashes.sh), hidden-dashed with
 #           outlines and hatching, streamed into 48 KB (10 bands), the controller's whole trace
-#           read back (not its digest).
+#           read back (not its digest);
+#   cubes28 the 28 x 28 solid cubes (6,272 vertices, 9,408 edges, 9,408 triangles), hidden-dashed
+#           with outlines and hatching, streamed into 64 KB (54 bands across the page turned a
+#           quarter), the banded plot checked against the whole-model one on the host.
 # Checks that the controller's step trace equals `haloplot sim` of the same job (the same
 # arena), byte for byte (for demo and solid the image sums its trace to a CRC-32 and a length, a
 # test hook; gzip's trailer gives the host's), that it took more than one band (dashed: five or
@@ -20,11 +23,12 @@
 # (tests/tools/band_dashes_check.cpp, which reads the traces alone), and that the check fails
 # against the whole-model plot with other gaps between the dashes. Slow under QEMU (millions of
 # step interrupts: minutes), so the sanitizer build skips it.
-# Usage: qemu_stream_test.sh FIRMWARE_DIR HALOPLOT_TOOL [demo|solid|dashed] [BAND_DASHES_CHECK]
+# Usage: qemu_stream_test.sh FIRMWARE_DIR HALOPLOT_TOOL [demo|solid|dashed|cubes28]
+#          [BAND_DASHES_CHECK]
 kind=${3:-demo}
 check=${4:-}
 source "$(dirname "$0")/qemu_common.sh" "firmware_stream ($kind)" "$1" "$2" fw_plotter_qemu.elf
-if [ "$kind" = dashed ] && [ ! -x "$check" ]; then
+if { [ "$kind" = dashed ] || [ "$kind" = cubes28 ]; } && [ ! -x "$check" ]; then
   echo "FAILED: no band_dashes_check at '$check' (the fourth argument)"
   echo "$test_name: 0 passed, 1 failed"
   exit 1
@@ -44,6 +48,38 @@ if [ "$kind" = solid ]; then
   "$tool" sim demo.job -o host.trace --stats 2> host.stats
   host=$(trace_digest host.trace)
   rm -f host.trace
+elif [ "$kind" = cubes28 ]; then
+  "$tool" demo-scene --cubes 28 -o cubes28.obj
+  # The 28 x 28 cubes (6,272 vertices, 9,408 edges, 9,408 triangles) hidden-dashed with outlines
+  # and hatching in 64 KB, each band's part streamed: the controller works out the hidden lines
+  # of every band itself. A sixteenth of a motor step per plot step, as for solid.
+  printf 'scene cubes28.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\neffects acceleration pen-servo\nkinematics corexy\nsteps 1/16\n' \
+    > whole.job
+  { cat whole.job; echo "arena 65536"; } > demo.job
+  "$tool" sim demo.job -o host.trace --stats 2> host.stats
+  host=$(trace_digest host.trace)
+  min_bands=10
+  # The controller's trace is checked by its digest against this banded plot's; that the
+  # banded plot draws the whole-model one is checked here, on the host, and that the check
+  # tells other gaps apart (as for dashed). At a quarter of a motor step: the same bands and
+  # strokes, rounded to a finer grid. At an eighth or a sixteenth the check fails on a stroke
+  # of one motor step that a border splits at a rounded point within half a step of it (its
+  # pieces pair with nothing; the ink agrees), so it is not the check's grid here.
+  sed 's|^steps 1/16$|steps 1/4|' whole.job > whole4.job
+  { cat whole4.job; echo "arena 65536"; } > banded4.job
+  sed 's/^dash 2 1$/dash 2 1.05/' whole4.job > other_gaps.job
+  "$tool" sim whole4.job -o whole.trace
+  "$tool" sim banded4.job -o banded4.trace
+  "$tool" sim other_gaps.job -o other_gaps.trace
+  out=$("$check" whole.trace banded4.trace)
+  rc=$?
+  echo "sim in bands against the whole-model plot: $out"
+  if [ "$rc" -eq 0 ]; then ok; else bad "the banded plot draws another picture than the whole-model plot"; fi
+  out=$("$check" other_gaps.trace banded4.trace)
+  rc=$?
+  echo "against the whole-model plot with 1.05 mm gaps (must differ): $out"
+  if [ "$rc" -eq 1 ]; then ok; else bad "the check did not tell 1.05 mm gaps from 1 mm ones (exit status $rc)"; fi
+  rm -f whole.trace banded4.trace other_gaps.trace
 elif [ "$kind" = dashed ]; then
   "$tool" demo-scene --cubes 6 -o cubes6.obj
   # band_dashes' hatched cubes (its keys; `dash 2 1` is the default, written out for the other
