@@ -242,18 +242,24 @@ Status BandConductor::plan_column(const PathPoint** points, uint32_t* n) {
                              path_points_max(k), n, &ps, end);
   stats_.other_ticks += now() - t0;
   if (!ok(s)) return s;
+  // A column whose path starts where the last one left the pen down (a stroke continued across
+  // the column's side or the band's border) goes on drawing: no lift and put-down on one spot.
+  const bool goes_on = pen_down_ && *n > 1 && pts[0].pen_down == 0 && pts[0].x == pen_x_ &&
+                       pts[0].y == pen_y_ && pts[1].pen_down != 0;
   if (*n > 0) {
     pen_x_ = pts[*n - 1].x;
     pen_y_ = pts[*n - 1].y;
+    pen_down_ = pts[*n - 1].pen_down != 0;
   }
   steps_to_page(pts, *n);
   stats_.path.polylines += ps.polylines;
   stats_.path.pen_up_length += ps.pen_up_length;
   stats_.path.naive_pen_up_length += ps.naive_pen_up_length;
   stats_.path.pen_down_length += ps.pen_down_length;
-  stats_.path.pen_lifts += ps.pen_lifts + (next_seg_ > 0 && ps.polylines > 0 ? 1 : 0);
+  stats_.path.pen_lifts += ps.pen_lifts + (next_seg_ > 0 && ps.polylines > 0 && !goes_on ? 1 : 0);
   next_seg_ = last;
-  *points = pts;
+  *points = goes_on ? pts + 1 : pts;
+  *n -= goes_on ? 1 : 0;
   return Status::kOk;
 }
 

@@ -43,6 +43,7 @@ Status BandConductor::begin(const BandSpec& spec, EdgeSource source, void* arena
   stats_.edge_reads += source.n;
   pen_x_ = spec.start_x;
   pen_y_ = spec.start_y;
+  pen_down_ = false;
   turned_ = false;                        // begin_solid turns a wide solid
   if (source.n == 0) return Status::kOk;  // done: nothing to draw
   row_lo_ = lo;

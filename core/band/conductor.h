@@ -310,6 +310,7 @@ class BandConductor {
   bool leftward_ = false;
   int64_t band_y0_ = 0, band_y1_ = 0;  // the committed band's rows
   int32_t pen_x_ = 0, pen_y_ = 0;
+  bool pen_down_ = false;  // the last column's path ended drawing
   PieceObserver observer_{};
   uint64_t (*clock_)() = nullptr;
   BandStats stats_{};

@@ -140,7 +140,8 @@ int cmd_plot_curves(const Options& o) {
                 "' must be an integer in [1, 10000]");
   PlotSvgStyle style;
   if (!parse_plot_svg_style(o, false, uint32_t(per_mm), &style, &error)) return fail(error);
-  error = write_plot_page(o.get("-o"), {StrokeLayer{"1 visible", spans, 1}}, false, &style);
+  if (!o.get("-o").empty())  // -o is optional with --gcode or --hpgl
+    error = write_plot_page(o.get("-o"), {StrokeLayer{"1 visible", spans, 1}}, false, &style);
   if (!error.empty()) return fail(error);
   if (!o.get("--spans").empty()) {
     error = write_atomically(o.get("--spans"), [&](std::ostream& out) {

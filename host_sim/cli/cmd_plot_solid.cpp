@@ -154,8 +154,9 @@ int cmd_plot_solid(const Options& o) {
       return fail("the planned path's layers do not match the drawing's (" +
                   std::to_string(job.planned.layer_points.n) + " layers)");
   }
-  error = job.planned_once ? write_planned_page(o.get("-o"), page_layers, true, &style)
-                           : write_plot_page(o.get("-o"), layers, true, &style);
+  if (!o.get("-o").empty())  // -o is optional with --gcode or --hpgl
+    error = job.planned_once ? write_planned_page(o.get("-o"), page_layers, true, &style)
+                             : write_plot_page(o.get("-o"), layers, true, &style);
   if (!error.empty()) return fail(error);
   if (wants_plotter_outputs(o)) {
     const int rc = job.planned_once

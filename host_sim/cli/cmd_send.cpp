@@ -155,9 +155,11 @@ bool plan_bands(const std::string& job_path, SendScene* sc, std::string* error) 
   }
   if (ok(ps)) return true;
   *error = job_path + ": planning the bands: " + status_name(ps) +
-           (ps == Status::kArenaTooSmall ? " (a band one row high needs " +
-                                               std::to_string(sc->plan.stats.need_bytes) + " bytes)"
-                                         : std::string());
+           (ps == Status::kArenaTooSmall
+                ? " (a band one row high needs " + std::to_string(sc->plan.stats.need_bytes) +
+                      " bytes where the plan stopped; bands further on "
+                      "may need more)"
+                : std::string());
   return false;
 }
 

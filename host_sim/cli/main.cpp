@@ -78,7 +78,8 @@ const char* kUsage =
     "               [--crease DEG|off] [--stats]\n"
     "  haloplot plot SCENE.edges|MODEL ... [--gcode OUT.gcode] [--hpgl OUT.hpgl]   (either form\n"
     "               above: the plotter's files from the planned path, no step simulation, and\n"
-    "               the plot time on stderr; the same bytes `sim` writes for the same job)\n"
+    "               the plot time on stderr; the same bytes `sim` writes for the same job;\n"
+    "               -o may then be left out: no SVG)\n"
     "               [--pen servo|z|custom] [--servo-down S] [--z-up MM] [--z-down MM]\n"
     "               [--z-feed MM/MIN] [--pen-up-gcode TEXT] [--pen-down-gcode TEXT]\n"
     "               [--draw-feed MM/MIN] [--travel-feed MM/MIN] [--pen-dwell SECONDS]\n"
@@ -105,6 +106,10 @@ const char* kUsage =
     "               slow emulated controller)\n"
     "  haloplot view2d POLYGON.txt --from X,Y -o OUT.svg [--spans OUT.spans] [--trace OUT.trace]\n"
     "               [--stats]   (which parts of a polygon are visible from a point)\n";
+
+// After "a band one row high needs N": N is the band where the plot stopped, not the job's
+// least arena (what a band needs depends on what the band below hands it).
+const char* const kFurtherBands = " where the plot stopped (bands further on may need more)";
 
 int fail(const std::string& message) {
   std::cerr << "haloplot: " << message << "\n";
@@ -264,7 +269,8 @@ int write_drawing(const Options& o, const HostDraw& d, bool model) {
   PlotSvgStyle style;
   std::string err;
   if (!parse_plot_svg_style(o, model, uint32_t(per_mm), &style, &err)) return fail(err);
-  err = write_plot_page(o.get("-o"), {StrokeLayer{"1 visible", d.spans, 1}}, model, &style);
+  if (!o.get("-o").empty())
+    err = write_plot_page(o.get("-o"), {StrokeLayer{"1 visible", d.spans, 1}}, model, &style);
   if (!err.empty()) return fail(err);
   if (!o.get("--spans").empty()) {
     err = write_atomically(o.get("--spans"), [&](std::ostream& out) {
@@ -443,7 +449,7 @@ int plot_in_bands(const Options& o, const std::vector<Edge3>& edges, const CutPa
                                     size_t(arena), &d, &bands, units);
   if (s == Status::kArenaTooSmall)
     return fail("plot: arena of " + std::to_string(arena) + " bytes too small: a band one row " +
-                "high needs " + std::to_string(bands.need_bytes));
+                "high needs " + std::to_string(bands.need_bytes) + kFurtherBands);
   if (!ok(s)) return fail_status("bands", s);
   spans_to_steps(&d.spans, units);
   if (const int rc = write_drawing(o, d, is_mesh_path(o.positional[0]))) return rc;
@@ -483,7 +489,11 @@ int cmd_plot(int argc, char** argv) {
   flags.insert(std::begin(kPageFlags), std::end(kPageFlags));
   const Options o = parse_options(argc, argv, 2, valued, flags);
   if (!o.error.empty()) return fail(o.error);
-  if (!one_input_and_output(o)) return bad_arguments(o, "plot");
+  // The plotter's files alone need no SVG: -o is then optional.
+  const bool plotter_only =
+      o.get("-o").empty() && (!o.get("--gcode").empty() || !o.get("--hpgl").empty());
+  if (!one_input_and_output(o) && !(plotter_only && o.positional.size() == 1))
+    return bad_arguments(o, "plot");
   if (const std::string bad = svg_output_problem(o.get("-o")); !bad.empty()) return fail(bad);
   for (const char* pen : kPenOptions)
     if (!o.get(pen).empty() && o.get("--gcode").empty())
@@ -501,6 +511,11 @@ int cmd_plot(int argc, char** argv) {
                   " (haloed lines have no faces)");
   // A scene with Bézier edges takes the curve stages (docs/curves.md); any other, CUT and DRAW.
   if (edges_file_has_curves(o.positional[0])) return cmd_plot_curves(o);
+  // A model plots either way: say both when neither is given.
+  if (o.get("--halo").empty() && is_mesh_path(o.positional[0]))
+    return fail(
+        "a model needs --mode all|hidden-removed|hidden-dashed (its hidden lines) or "
+        "--halo W (haloed lines, W in steps)");
   CutParams cp;
   DrawParams dp;
   std::string error;
@@ -707,7 +722,7 @@ int cmd_sim(int argc, char** argv) {
   });
   if (s == Status::kArenaTooSmall)
     return fail("sim: arena of " + std::to_string(jf.arena) + " bytes too small: a band one row " +
-                "high needs " + std::to_string(r.bands.need_bytes));
+                "high needs " + std::to_string(r.bands.need_bytes) + kFurtherBands);
   if (!ok(s)) return fail_status("sim", s);
   warn_if_slow(spec, r);
   if (!error.empty()) return fail(error);

@@ -98,5 +98,21 @@ for f in adir.edges adir.obj; do
   expect '! grep -q "read error" err.txt' "a directory is not a read error: $(cat err.txt)"
 done
 
+# A model with neither --mode nor --halo: the message offers both ways to draw it (it asked
+# for --halo alone, though a model's usual drawing is its hidden lines); an edge scene has
+# only --halo.
+refused "--mode all|hidden-removed|hidden-dashed" m.svg plot cubes.obj -o m.svg
+expect 'grep -qF -- "--halo W" err.txt' "the model's message names --halo too: $(cat err.txt)"
+refused "--halo W (steps) is required" e.svg plot scene.edges -o e.svg
+
+# G-code alone needs no SVG: -o may be left out with --gcode (it was "missing -o OUTPUT").
+mkdir gonly
+(cd gonly && "$tool" plot ../cubes.obj --mode hidden-removed --gcode only.gcode) 2> err.txt
+expect '[ $? -eq 0 ] && grep -q "^G[01] " gonly/only.gcode && [ "$(ls gonly)" = only.gcode ]' \
+  "plot --gcode without -o writes the G-code and nothing else: $(cat err.txt)"
+"$tool" plot cubes.obj --mode hidden-removed -o with.svg --gcode with.gcode 2> /dev/null
+expect 'cmp -s gonly/only.gcode with.gcode' "the G-code is the same with and without -o"
+refused "missing -o OUTPUT" none.svg plot cubes.obj --mode hidden-removed
+
 echo "cli_hygiene: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
