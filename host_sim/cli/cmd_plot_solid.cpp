@@ -103,6 +103,17 @@ bool plotter_job(const Options& o, const SolidOptions& so, const ModeDrawing& d,
   return load_scene(edge_options, o.positional[0], &job->edges, error, &job->spec.substep_bits);
 }
 
+// An OBJ is not welded unless asked, so a triangle soup (each face its own corners) reads as
+// an open surface: say how to join its corners.
+std::string weld_hint(const Options& o, const SolidRun& run) {
+  const std::string& path = o.positional[0];
+  const bool obj = path.size() > 4 && (path.compare(path.size() - 4, 4, ".obj") == 0 ||
+                                       path.compare(path.size() - 4, 4, ".OBJ") == 0);
+  if (!obj || !o.get("--weld").empty() || run.fallback_reason.find("boundary") == std::string::npos)
+    return "";
+  return " (if its faces should share corners, --weld 0 joins the corners at one position)";
+}
+
 }  // namespace
 
 int cmd_plot_solid(const Options& o) {
@@ -135,7 +146,7 @@ int cmd_plot_solid(const Options& o) {
     say_repair_note(scene);
   else if (!run.fallback_reason.empty() && so.method == HiddenMethod::kAuto)
     std::cerr << "haloplot: " << o.positional[0] << ": " << run.fallback_reason
-              << ": hidden lines by the topology-free fallback\n";
+              << ": hidden lines by the topology-free fallback" << weld_hint(o, run) << "\n";
   // Decided in the scene's units (dashes and hatch spacing converted), drawn in steps.
   const int32_t units = scene.substep_bits;
   ModeDrawing d = make_mode_drawing(run, mode_in_units(so.spec, units));

@@ -114,5 +114,19 @@ expect '[ $? -eq 0 ] && grep -q "^G[01] " gonly/only.gcode && [ "$(ls gonly)" = 
 expect 'cmp -s gonly/only.gcode with.gcode' "the G-code is the same with and without -o"
 refused "missing -o OUTPUT" none.svg plot cubes.obj --mode hidden-removed
 
+# A cube as a triangle soup (each face its own corners, as some exporters write OBJ): an open
+# surface until welded, and the message says how (OBJ is not welded unless asked).
+for f in "0 0 0 1 0 0 1 1 0" "0 0 0 1 1 0 0 1 0" "0 0 1 1 1 1 1 0 1" "0 0 1 0 1 1 1 1 1" \
+  "0 0 0 1 0 1 1 0 0" "0 0 0 0 0 1 1 0 1" "0 1 0 1 1 0 1 1 1" "0 1 0 1 1 1 0 1 1" \
+  "0 0 0 0 1 0 0 1 1" "0 0 0 0 1 1 0 0 1" "1 0 0 1 0 1 1 1 1" "1 0 0 1 1 1 1 1 0"; do
+  set -- $f
+  printf 'v %s %s %s\nv %s %s %s\nv %s %s %s\n' "$@"
+done > soup.obj
+awk '/^v/ { n++ } END { for (i = 1; i <= n; i += 3) print "f", i, i + 1, i + 2 }' soup.obj >> soup.obj
+"$tool" plot soup.obj --mode hidden-removed -o soup.svg 2> err.txt
+expect '[ $? -eq 0 ] && grep -qF -- "--weld 0" err.txt' "a soup OBJ's message suggests --weld 0: $(cat err.txt)"
+"$tool" plot soup.obj --mode hidden-removed --weld 0 -o soup.svg 2> err.txt
+expect '[ $? -eq 0 ] && ! grep -q "boundary edges" err.txt' "--weld 0 closes the soup: $(cat err.txt)"
+
 echo "cli_hygiene: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
