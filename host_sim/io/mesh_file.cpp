@@ -122,11 +122,15 @@ struct ViewBuffer : std::streambuf {
 };
 
 InputError read_binary_stl(const std::string& b, const std::string& name, ObjModel* out) {
-  if (b.size() < 84)
+  if (b.size() < 84)  // binary: no 'solid' first, or a NUL byte (many exporters write
+                      // 'solid' into a binary header)
     return {name, 0,
             "byte " + std::to_string(b.size()) +
-                ": the file ends inside the 84-byte header of a binary STL (and does not begin "
-                "with 'solid')"};
+                ": the file ends inside the 84-byte header of a binary STL (" +
+                (b.compare(0, 5, "solid") == 0
+                     ? "it begins with 'solid' but holds a NUL byte, which text does not"
+                     : "it does not begin with 'solid'") +
+                ")"};
   const uint64_t n = u32_le(b, 80);
   if (b.size() != 84 + 50 * n)
     return {name, 0,

@@ -128,5 +128,12 @@ expect '[ $? -eq 0 ] && grep -qF -- "--weld 0" err.txt' "a soup OBJ's message su
 "$tool" plot soup.obj --mode hidden-removed --weld 0 -o soup.svg 2> err.txt
 expect '[ $? -eq 0 ] && ! grep -q "boundary edges" err.txt' "--weld 0 closes the soup: $(cat err.txt)"
 
+# A cut-short binary STL whose header begins with 'solid' (as many exporters write it): the
+# message must not say it does not.
+{ printf 'solid exported'; head -c 36 /dev/zero; } > short.stl
+refused "begins with 'solid' but holds a NUL byte" s.svg plot short.stl --mode hidden-removed -o s.svg
+head -c 50 /dev/zero > zeros.stl
+refused "does not begin with 'solid'" s.svg plot zeros.stl --mode hidden-removed -o s.svg
+
 echo "cli_hygiene: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
