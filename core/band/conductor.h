@@ -79,7 +79,7 @@ struct BandSpec {
   // A solid wider than tall (begin_solid) is banded in the page turned a quarter
   // (geometry/quarter_turn.h): its bands are then columns of the page, and the pen crosses
   // each along the drawing's shorter side, not its longer (tests/cli/band_pen_up.sh: 10 x 10
-  // hatched cubes in 64 KB, 1.23x of one band's pen-up travel turned, 1.44x in strips of the
+  // hatched cubes in 64 KB, 1.21x of one band's pen-up travel turned, 1.33x in strips of the
   // page's rows). Every point leaves the conductor turned back, rounded as the page rounds it.
   // Off: strips of the page's rows. A streamed solid turns as its host's plan did
   // (begin_streamed_solid's `turned`).
@@ -238,6 +238,8 @@ class BandConductor {
   bool solid_mode() const { return solid_stage_ != nullptr; }
   Status commit_band(Attempt& a);
   uint32_t defer_joined(const Attempt& a, Segment2* u, uint32_t n_own, uint32_t nu, uint8_t* free);
+  uint32_t join_at_border(const Attempt& a, Segment2* u, uint32_t n_own, uint32_t nu,
+                          uint8_t* free) const;
   static constexpr int kJoinDepth = 4;  // links followed from a carried piece's lower end
   size_t carry_bytes(uint32_t n) const {
     const size_t runs = solid_mode() ? size_t{n} * sizeof(CarryRun) : 0;

@@ -9,7 +9,7 @@
 #           64 KB, its hidden lines, outlines and hatch lines worked out on the controller band
 #           by band;
 #   dashed  the 6 x 6 solid cubes of band_dashes (tests/cli/band_dashes.sh), hidden-dashed with
-#           outlines and hatching, streamed into 48 KB (7 bands), the controller's whole trace
+#           outlines and hatching, streamed into 48 KB (8 bands), the controller's whole trace
 #           read back (not its digest);
 #   cubes28 the 28 x 28 solid cubes (6,272 vertices, 9,408 edges, 9,408 triangles), hidden-dashed
 #           with outlines and hatching, streamed into 64 KB (54 bands across the page turned a
@@ -85,7 +85,7 @@ elif [ "$kind" = dashed ]; then
   # band_dashes' hatched cubes (its keys; `dash 2 1` is the default, written out for the other
   # gaps below) at an eighth of a motor step per plot step: the same strokes, an eighth of the
   # step interrupts (64 s at a quarter, 36 to 41 s at an eighth, on a 2-core machine with other
-  # builds running). The check's step is then a motor step, 8 plot steps (0.1 mm). 48 KB: 7
+  # builds running). The check's step is then a motor step, 8 plot steps (0.1 mm). 48 KB: 8
   # bands (10 in the page's rows).
   printf 'scene cubes6.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\neffects acceleration pen-servo\nkinematics corexy\nsteps 1/8\n' \
     > whole.job
