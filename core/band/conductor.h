@@ -230,6 +230,8 @@ class BandConductor {
   struct SolidStage {
     Status (*band)(BandConductor& self, Attempt& a);
     SolidSource (*streamed)(const StagedSolidBand& band, bool closed);
+    uint32_t (*join)(const BandConductor& self, const Attempt& a, Segment2* u, uint32_t n_own,
+                     uint32_t nu, uint8_t* free);  // solid_border_join.cpp
   };
   static const SolidStage kSolidStage;
   Status gather_solid(Attempt& a);

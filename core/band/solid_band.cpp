@@ -356,7 +356,9 @@ const BandConductor::SolidStage BandConductor::kSolidStage = {
       const Status s = self.gather_solid(a);
       return ok(s) ? self.hide_band(a) : s;
     },
-    [](const StagedSolidBand& band, bool closed) { return band.source(closed); }};
+    [](const StagedSolidBand& band, bool closed) { return band.source(closed); },
+    [](const BandConductor& self, const Attempt& a, Segment2* u, uint32_t n_own, uint32_t nu,
+       uint8_t* free) { return self.join_at_border(a, u, n_own, nu, free); }};
 
 // The band's drawn edges (those meeting its rows), its faces (meeting its rows or the row
 // above: the outline pass asks just beyond each border) and the vertices they use, with

@@ -35,6 +35,20 @@ if { [ "$kind" = dashed ] || [ "$kind" = cubes28 ]; } && [ ! -x "$check" ]; then
 fi
 
 cd "$work"
+# check_picture BANDED WHAT: BANDED draws whole.trace's picture, stroke for stroke within a
+# step (band_dashes_check), and the check tells it from other_gaps.trace (1.05 mm gaps, not 1):
+# exit status 1 is "the drawings differ"; 2 would be a trace the check could not read.
+check_picture() {
+  local out rc
+  out=$("$check" whole.trace "$1")
+  rc=$?
+  echo "$2 against the whole-model plot: $out"
+  if [ "$rc" -eq 0 ]; then ok; else bad "$2 draws another picture than the whole-model plot"; fi
+  out=$("$check" other_gaps.trace "$1")
+  rc=$?
+  echo "against the whole-model plot with 1.05 mm gaps (must differ): $out"
+  if [ "$rc" -eq 1 ]; then ok; else bad "the check did not tell 1.05 mm gaps from 1 mm ones (exit status $rc)"; fi
+}
 min_bands=2
 send_opts=(--trace-digest)
 if [ "$kind" = solid ]; then
@@ -71,14 +85,7 @@ elif [ "$kind" = cubes28 ]; then
   "$tool" sim whole4.job -o whole.trace
   "$tool" sim banded4.job -o banded4.trace
   "$tool" sim other_gaps.job -o other_gaps.trace
-  out=$("$check" whole.trace banded4.trace)
-  rc=$?
-  echo "sim in bands against the whole-model plot: $out"
-  if [ "$rc" -eq 0 ]; then ok; else bad "the banded plot draws another picture than the whole-model plot"; fi
-  out=$("$check" other_gaps.trace banded4.trace)
-  rc=$?
-  echo "against the whole-model plot with 1.05 mm gaps (must differ): $out"
-  if [ "$rc" -eq 1 ]; then ok; else bad "the check did not tell 1.05 mm gaps from 1 mm ones (exit status $rc)"; fi
+  check_picture banded4.trace "sim in bands"
   rm -f whole.trace banded4.trace other_gaps.trace
 elif [ "$kind" = dashed ]; then
   "$tool" demo-scene --cubes 6 -o cubes6.obj
@@ -120,15 +127,7 @@ if [ "$kind" = dashed ]; then
   else
     bad "controller trace ($(wc -c < fw.trace 2>/dev/null) bytes) differs from haloplot sim of the banded job ($(wc -c < host.trace) bytes)"
   fi
-  out=$("$check" whole.trace fw.trace)
-  rc=$?
-  echo "against the whole-model plot: $out"
-  if [ "$rc" -eq 0 ]; then ok; else bad "the controller's banded plot draws another picture than the whole-model plot"; fi
-  # Exit status 1 is "the drawings differ"; 2 would be a trace the check could not read.
-  out=$("$check" other_gaps.trace fw.trace)
-  rc=$?
-  echo "against the whole-model plot with 1.05 mm gaps (must differ): $out"
-  if [ "$rc" -eq 1 ]; then ok; else bad "the check did not tell 1.05 mm gaps from 1 mm ones (exit status $rc)"; fi
+  check_picture fw.trace "the controller's banded plot"
 elif same_digest fw.out "$host"; then
   ok
   echo "traces identical (CRC-32 and bytes): $host"
