@@ -38,6 +38,37 @@ int front_face_side(const Topology& topo, const uint8_t* front, uint32_t edge) {
   return s > 0 ? 1 : -1;
 }
 
+namespace {
+
+// +1: face f's far corner from edge (a, b) lies left of a -> b on paper, -1 right, 0 on it.
+int corner_side(const Topology& topo, uint32_t f, uint32_t a, uint32_t b) {
+  const Point3 pa = topo.vertices[a], pb = topo.vertices[b];
+  const Point3 p = topo.vertices[far_corner(topo.triangles[f], a, b)];
+  const int64_t s = int64_t{pb.x - pa.x} * (p.y - pa.y) - int64_t{pb.y - pa.y} * (p.x - pa.x);
+  return s > 0 ? 1 : (s < 0 ? -1 : 0);
+}
+
+bool has_corner(const Triangle& t, uint32_t v) { return t.v[0] == v || t.v[1] == v || t.v[2] == v; }
+
+}  // namespace
+
+int paper_jump(const Topology& topo, uint32_t edge) {
+  const SolidEdge& e = topo.edges[edge];
+  int sum = 0;
+  const bool more = !e.regular && e.face[0] != kNoFace && e.face[1] != kNoFace &&
+                    topo.vertex_face_first != nullptr;
+  if (!more) {  // the faces the edge keeps are all its faces
+    for (int k = 0; k < 2; ++k)
+      if (e.face[k] != kNoFace) sum += corner_side(topo, e.face[k], e.v0, e.v1);
+    return sum;
+  }
+  for (uint32_t k = topo.vertex_face_first[e.v0]; k < topo.vertex_face_first[e.v0 + 1]; ++k) {
+    const uint32_t f = topo.vertex_faces[k];
+    if (has_corner(topo.triangles[f], e.v1)) sum += corner_side(topo, f, e.v0, e.v1);
+  }
+  return sum;
+}
+
 ClassCounts classify(Topology* topo, uint8_t* front, const uint8_t* facing) {
   ClassCounts k;
   for (uint32_t t = 0; t < topo->n_triangles; ++t) {

@@ -26,4 +26,18 @@ bool convex_edge(const Topology& topo, uint32_t edge);
 // table's peculiar vertices all ask it.
 int front_face_side(const Topology& topo, const uint8_t* front, uint32_t edge);
 
+// How the faces of an edge lie on paper, whatever their orientation: the sum over its faces of
+// +1 for a face on the left of v0 -> v1, -1 on the right, 0 for one seen edge-on. Every face
+// counts, the third and later of a non-manifold edge too (found in v0's star; without stars,
+// the two the edge keeps). 0: crossing the edge on paper leaves as many faces over a point as
+// before (two faces on either side, the interior of a surface); otherwise the edge is where a
+// surface's image ends, a contour on paper (a fold, a boundary, a fin). Exact.
+int paper_jump(const Topology& topo, uint32_t edge);
+
+// Is the edge a contour on paper for a drawing that counts both sides of every face (an open
+// or non-manifold mesh, solid/qi.h's two-sided mode): paper_jump() != 0.
+inline bool paper_contour(const Topology& topo, uint32_t edge) {
+  return paper_jump(topo, edge) != 0;
+}
+
 }  // namespace haloplot

@@ -19,26 +19,40 @@ constexpr int64_t kOne = int64_t{1} << 32;
 
 enum Vc : uint8_t { kVcUnknown = 0, kVcVisible = 1, kVcHidden = 2, kVcUnusable = 3 };
 
-// Does the outline pass ask about drawn edge e: a contour, or an edge with one face?
-bool outline_candidate(const SolidEdge& e) {
-  return e.cls == EdgeClass::kH3 || ((e.face[0] == kNoFace) != (e.face[1] == kNoFace));
+// Does the outline pass ask about edge e: a contour, or an edge with one face? Counting both
+// sides of every face, any edge whose faces lie on one side of it on paper.
+bool outline_candidate(const Topology& topo, uint32_t e, bool any_facing) {
+  const SolidEdge& se = topo.edges[e];
+  if (any_facing) return paper_contour(topo, e);
+  return se.cls == EdgeClass::kH3 || ((se.face[0] == kNoFace) != (se.face[1] == kNoFace));
+}
+
+// Does the run draw edge e: every drawn edge, and the diagonals that are contours (H3 on a
+// closed solid; counting both sides, any whose faces lie on one side of it on paper).
+bool draws_edge(const Topology& topo, uint32_t e, bool any_facing) {
+  if (e < topo.n_drawn) return true;
+  return any_facing ? paper_contour(topo, e) : topo.edges[e].cls == EdgeClass::kH3;
 }
 
 // The outline pass's table: for each drawn candidate edge, the sorted positions along it where
 // it passes in front of another edge (CUT records those on the edge behind).
 template <typename C>
 void count_outline(C& c, const Topology& topo, size_t fronts) {
-  c.template take<uint32_t>(size_t{topo.n_drawn} + 1);
+  c.template take<uint32_t>(size_t{topo.n_edges} + 1);
   c.template take<uint32_t>(fronts);
 }
 
-size_t count_fronts(const Topology& topo, const CutSet& cs) {
+// Is the crossing record's front edge one the outline pass cuts at it?
+bool front_candidate(const Topology& topo, const Crossing& r, bool any_facing) {
+  const uint32_t f = r.front_edge();
+  return !r.near_miss() && draws_edge(topo, f, any_facing) &&
+         outline_candidate(topo, f, any_facing);
+}
+
+size_t count_fronts(const Topology& topo, const CutSet& cs, bool any_facing) {
   size_t n = 0;
-  for (uint32_t i = 0; i < cs.n_crossings; ++i) {
-    const Crossing& r = cs.crossings[i];
-    const uint32_t f = r.front_edge();
-    if (!r.near_miss() && f < topo.n_drawn && outline_candidate(topo.edges[f])) ++n;
-  }
+  for (uint32_t i = 0; i < cs.n_crossings; ++i)
+    if (front_candidate(topo, cs.crossings[i], any_facing)) ++n;
   return n;
 }
 
@@ -93,6 +107,7 @@ struct OutlineRuns {
   const uint32_t* front_first;
   const uint32_t* front_t;
   FallbackSink sink;
+  bool any_facing = false;
   uint32_t e = 0;
   int32_t dir_x = 0, dir_y = 0;
   bool on = false, have = false, last_pass = false;
@@ -102,7 +117,7 @@ struct OutlineRuns {
   void start(uint32_t edge) {
     e = edge;
     have = last_pass = false;
-    on = outline_candidate(topo.edges[e]);
+    on = outline_candidate(topo, e, any_facing);
     if (on) outward(topo, topo.edges[e], &dir_x, &dir_y);
     on = on && (dir_x != 0 || dir_y != 0);
   }
@@ -170,26 +185,24 @@ struct OutlineRuns {
 
 // The outline pass's table, filled: for each candidate edge, where it passes in front of
 // another (count, place, sort), so its visible pieces are cut there too.
-void place_fronts(const Topology& topo, const CutSet& cutset, uint32_t* front_first,
-                  uint32_t* front_t) {
-  for (uint32_t e = 0; e <= topo.n_drawn; ++e) front_first[e] = 0;
+void place_fronts(const Topology& topo, const CutSet& cutset, bool any_facing,
+                  uint32_t* front_first, uint32_t* front_t) {
+  for (uint32_t e = 0; e <= topo.n_edges; ++e) front_first[e] = 0;
   for (uint32_t i = 0; i < cutset.n_crossings; ++i) {
     const Crossing& r = cutset.crossings[i];
-    const uint32_t f = r.front_edge();
-    if (!r.near_miss() && f < topo.n_drawn && outline_candidate(topo.edges[f]))
-      ++front_first[f + 1];
+    if (front_candidate(topo, r, any_facing)) ++front_first[r.front_edge() + 1];
   }
-  for (uint32_t e = 0; e < topo.n_drawn; ++e) front_first[e + 1] += front_first[e];
+  for (uint32_t e = 0; e < topo.n_edges; ++e) front_first[e + 1] += front_first[e];
   for (uint32_t e = 0; e < topo.n_edges; ++e)  // every record, by the edge behind
     for (const Crossing* r = cutset.begin(e); r != cutset.begin(e) + cutset.count(e); ++r) {
+      if (!front_candidate(topo, *r, any_facing)) continue;
       const uint32_t f = r->front_edge();
-      if (r->near_miss() || f >= topo.n_drawn || !outline_candidate(topo.edges[f])) continue;
       const CrossingTest x = test_crossing(topo.edge3(f), topo.edge3(e));
       front_t[front_first[f]++] = frac_q32_small(x.tn, x.den);
     }
-  for (uint32_t e = topo.n_drawn; e > 0; --e) front_first[e] = front_first[e - 1];
+  for (uint32_t e = topo.n_edges; e > 0; --e) front_first[e] = front_first[e - 1];
   front_first[0] = 0;
-  for (uint32_t e = 0; e < topo.n_drawn; ++e)
+  for (uint32_t e = 0; e < topo.n_edges; ++e)
     sort_in_place(front_t + front_first[e], front_first[e + 1] - front_first[e],
                   [](uint32_t a, uint32_t b) { return a < b; });
 }
@@ -402,9 +415,9 @@ size_t fallback_bytes(const Topology& topo, bool shared_grid) {
   return c.total + 8;
 }
 
-size_t fallback_outline_bytes(const Topology& topo, const CutSet& cutset) {
+size_t fallback_outline_bytes(const Topology& topo, const CutSet& cutset, bool any_facing) {
   ByteCounter c;
-  count_outline(c, topo, count_fronts(topo, cutset));
+  count_outline(c, topo, count_fronts(topo, cutset, any_facing));
   return c.total;
 }
 
@@ -422,8 +435,8 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
   uint32_t* front_first = nullptr;
   uint32_t* front_t = nullptr;
   if (params.outline) {
-    front_first = carve.take<uint32_t>(size_t{topo.n_drawn} + 1);
-    front_t = carve.take<uint32_t>(count_fronts(topo, cutset));
+    front_first = carve.take<uint32_t>(size_t{topo.n_edges} + 1);
+    front_t = carve.take<uint32_t>(count_fronts(topo, cutset, params.any_facing));
     if (carve.short_) return Status::kWorkspaceTooSmall;
   }
   FaceGrid built;
@@ -432,18 +445,19 @@ Status run_fallback(const Topology& topo, const uint8_t* front, const CutSet& cu
     if (gs != Status::kOk) return gs;
   }
   const FaceGrid& fg = grid != nullptr ? *grid : built;
-  if (params.outline) place_fronts(topo, cutset, front_first, front_t);
+  if (params.outline) place_fronts(topo, cutset, params.any_facing, front_first, front_t);
   FallbackStats st;
   st.grid_cells = fg.grid.cells();
   st.cell_faces = fg.pairs;
   start_vc(topo, front, inc, params.use_vc, vc, st);
 
-  OutlineRuns runs{topo, fg, cutset, inc, front_first, front_t, sink};
+  OutlineRuns runs{topo, fg, cutset, inc, front_first, front_t, sink, params.any_facing};
   const bool use_front = !params.any_facing;
   const uint8_t* pierce_front = use_front ? front : nullptr;
   FallbackRun run{topo, front, fg,   cutset, inc,       params,
                   sink, vc,    runs, st,     use_front, pierce_front};
-  for (uint32_t e = 0; e < topo.n_drawn; ++e) {
+  for (uint32_t e = 0; e < topo.n_edges; ++e) {
+    if (!draws_edge(topo, e, params.any_facing)) continue;
     const Status s = run.edge(e);
     if (s != Status::kOk) return s;
   }

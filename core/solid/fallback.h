@@ -1,8 +1,9 @@
-// The topology-free method (Franklin 1980's step 10): cut every drawn edge wherever it passes
-// behind another edge, through a vertex or through a face (solid/pierce.h), and test the middle of
-// each piece against the faces in the grid cell that holds it. It needs no edge-face links, so it
-// is what non-manifold and misoriented meshes get, and it is the independent cross-check of the QI
-// propagation.
+// The topology-free method (Franklin 1980's step 10): cut every drawn edge, and every diagonal
+// that is a contour (H3; counting both sides of every face, any edge whose faces lie on one side
+// of it on paper: classify.h's paper_contour), wherever it passes behind another edge, through a
+// vertex or through a face (solid/pierce.h), and test the middle of each piece against the faces
+// in the grid cell that holds it. It needs no edge-face links, so it is what a band of a banded
+// plot gets (its faces are local), and it is the independent cross-check of the QI propagation.
 //
 // Kira's savings, when the mesh is manifold and classified (use_classes):
 //   - H1 and H2 edges are hidden whole without a test (they cannot be seen on a closed solid);
@@ -37,9 +38,10 @@ struct FallbackParams {
   bool window = false;
   int32_t row_lo = 0, row_hi = 0;
   // Kira's outlines without the QI: every visible piece of a contour edge (H3), or of an edge
-  // with one face (an open surface's rim), is cut wherever it crosses another edge either way
-  // or meets a vertex, and each part is asked Kira's condition (solid/outline.h: no face at all
-  // just outside it, away from its faces). The runs that pass go to FallbackSink::outline.
+  // with one face (an open surface's rim; counting both sides, of every contour on paper), is cut
+  // wherever it crosses another edge either way or meets a vertex, and each part is asked Kira's
+  // condition (solid/outline.h: no face at all just outside it, away from its faces). The runs that
+  // pass go to FallbackSink::outline.
   bool outline = false;
 };
 
@@ -78,7 +80,7 @@ struct FallbackSink {
 // With `shared_grid` the caller builds the face grid (and may use it after: the intersection
 // lines ask the same faces), and it takes no bytes here.
 size_t fallback_bytes(const Topology& topo, bool shared_grid = false);
-size_t fallback_outline_bytes(const Topology& topo, const CutSet& cutset);
+size_t fallback_outline_bytes(const Topology& topo, const CutSet& cutset, bool any_facing);
 
 // `cutset` is CUT over topo's edges in topo's order; `front` may be null unless classes or
 // V.C. are asked for (then classify() must have run). `grid`: every face of topo in a face

@@ -240,7 +240,8 @@ Status HiddenRun::qi_method(bool* gave_up) {
   uint8_t* qi_mem = arena.take(r.bytes_qi);
   if (qi_mem == nullptr) return out_of_room();
   QiState state;
-  Status s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi);
+  const bool pierces = params.method != HiddenMethod::kQiPaperOnly;
+  Status s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi, pierces);
   if (s != Status::kOk) return fail(s);
   // Where a sliver folds over on paper, the model's facing disagrees with the geometry the
   // QI walks and it finds conflicts: once more with the facing the geometry shows, before
@@ -249,7 +250,7 @@ Status HiddenRun::qi_method(bool* gave_up) {
     r.projected_facing = true;
     r.classes = classify(&topo, front, nullptr);
     r.qi = QiStats{};
-    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi);
+    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi, pierces);
     if (s != Status::kOk) return fail(s);
   }
   if (params.method == HiddenMethod::kAuto && r.qi.conflicts > 0) {
@@ -269,7 +270,7 @@ Status HiddenRun::qi_method(bool* gave_up) {
     sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used, edges);
   r.used_qi = true;
   s = emit_qi_pieces(topo, front, cutset, inc, state, QiSink{&qi_piece, &adapter});
-  if (s == Status::kOk) s = lines(front);
+  if (s == Status::kOk) s = lines(state.two_sided ? nullptr : front);
   if (s == Status::kOk && params.outline)
     s = find_outlines(topo, front, cutset, inc, state, outline_mem, r.bytes_outline,
                       OutlineSink{&outline_piece, &adapter}, &r.outline);
@@ -293,8 +294,8 @@ Status HiddenRun::fallback_method(bool manifold) {
   // With lines on the faces, one face grid of every face serves both: the lines skip back
   // faces themselves when only front faces hide.
   const bool share = shares_grid(params);
-  r.bytes_fallback =
-      fallback_bytes(topo, share) + (fp.outline ? fallback_outline_bytes(topo, cutset) : 0);
+  r.bytes_fallback = fallback_bytes(topo, share) +
+                     (fp.outline ? fallback_outline_bytes(topo, cutset, fp.any_facing) : 0);
   uint8_t* fb_mem = arena.take(r.bytes_fallback);
   if (fb_mem == nullptr || !carve_shared_grid(topo, params, &arena, &crossing_grid, &r))
     return out_of_room();
@@ -321,18 +322,12 @@ Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buff
   if (s != Status::kOk) return s;
 
   // The method.
+  // QI on any mesh (two-sided where it is not a closed oriented manifold: solid/qi.h); the
+  // fallback when asked, in a band, or when the QI meets a mesh that pierces itself.
   const Topology& topo = run.topo;
   const bool manifold = params.band ? params.closed : topo.check.manifold();
-  if (params.method == HiddenMethod::kQi && !manifold) return run.fail(Status::kNotManifold);
-  const bool use_qi =
-      !params.band &&
-      (params.method == HiddenMethod::kQi ||
-       (params.method == HiddenMethod::kAuto && manifold && topo.check.loose_edges == 0));
-  if (!use_qi)
-    run.r.reason = params.band                                ? FallbackReason::kBand
-                   : params.method == HiddenMethod::kFallback ? FallbackReason::kAsked
-                   : manifold                                 ? FallbackReason::kLooseEdges
-                                                              : FallbackReason::kNotManifold;
+  const bool use_qi = !params.band && params.method != HiddenMethod::kFallback;
+  if (!use_qi) run.r.reason = params.band ? FallbackReason::kBand : FallbackReason::kAsked;
   if (use_qi) {
     bool gave_up = false;
     s = run.qi_method(&gave_up);

@@ -1,8 +1,9 @@
 // Hidden lines of a solid model in one call, for the host tool and the controller alike:
 // topology and checks, classes, CUT over every edge, incidences, then Appel/Heger QI (with
-// Kira's outlines traced when asked) on a closed oriented manifold, or the topology-free
-// fallback (with Kira's V.C. table and classes when the mesh allows, and Kira's outline
-// condition asked part by part when outlines are asked) otherwise.
+// Kira's outlines traced when asked) on any mesh (counting both sides of every face where the
+// mesh is not a closed oriented manifold: solid/qi.h), or the topology-free fallback (with Kira's
+// V.C. table and classes when the mesh allows, and Kira's outline condition asked part by part when
+// outlines are asked) otherwise.
 //
 // Memory: one caller buffer, carved stage by stage; CUT's scratch is given back before the
 // incidences are found. Before the first piece is emitted every stage has carved what it
@@ -25,16 +26,16 @@
 
 namespace haloplot {
 
-enum class HiddenMethod : uint8_t { kAuto = 0, kQi = 1, kFallback = 2 };
+// kQi: QI whatever conflicts it meets; kQiPaperOnly: the same without looking for edges that
+// pass through faces (what paper alone shows: the control that proves a test sees them).
+enum class HiddenMethod : uint8_t { kAuto = 0, kQi = 1, kFallback = 2, kQiPaperOnly = 3 };
 
 // Why the fallback drew the picture (kNone when QI did).
 enum class FallbackReason : uint8_t {
   kNone = 0,
-  kAsked,        // HiddenMethod::kFallback
-  kNotManifold,  // MeshCheck says how
-  kLooseEdges,   // lines on no face: QI has no faces to carry them
-  kConflicts,    // QI met vertices with two values: the mesh pierces itself
-  kBand,         // a band of a banded plot: the faces are local, the propagation is not
+  kAsked,      // HiddenMethod::kFallback
+  kConflicts,  // QI met vertices with two values: the mesh pierces itself
+  kBand,       // a band of a banded plot: the faces are local, the propagation is not
 };
 
 struct HiddenParams {

@@ -20,6 +20,19 @@ struct Node {
   uint32_t partner_node;
 };
 
+// The contours the outlines run along: H3 on a closed solid; on any other mesh, whose QI counts
+// both sides of every face (solid/qi.h), every edge whose faces lie on one side of it on paper:
+// a fold either way, an open surface's rim, a fin.
+bool outline_contour(const Topology& topo, uint32_t e) {
+  return qi_two_sided(topo) ? paper_contour(topo, e) : topo.edges[e].cls == EdgeClass::kH3;
+}
+
+// The side of contour e its faces lie on: +1 left of v0 -> v1, -1 right.
+int contour_side(const Topology& topo, const uint8_t* front, uint32_t e) {
+  if (!qi_two_sided(topo)) return front_face_side(topo, front, e);
+  return paper_jump(topo, e) > 0 ? 1 : -1;
+}
+
 enum SegState : uint8_t { kOpen = 0, kInWalk = 1, kOutline = 2, kNotOutline = 3 };
 
 // Nodes on one side: incidences (another vertex inside a contour edge) cut it too, so the
@@ -27,23 +40,23 @@ enum SegState : uint8_t { kOpen = 0, kInWalk = 1, kOutline = 2, kNotOutline = 3 
 size_t count_contour_touches(const Topology& topo, const Incidences& inc) {
   size_t n = 0;
   for (uint32_t e = 0; e < topo.n_edges; ++e)
-    if (topo.edges[e].cls == EdgeClass::kH3) n += inc.edge_first[e + 1] - inc.edge_first[e];
+    if (outline_contour(topo, e)) n += inc.edge_first[e + 1] - inc.edge_first[e];
   return n;
 }
 
 size_t count_contour_crossings(const Topology& topo, const CutSet& cs) {
   size_t n = 0;
   for (uint32_t e = 0; e < topo.n_edges; ++e) {
-    if (topo.edges[e].cls != EdgeClass::kH3) continue;
+    if (!outline_contour(topo, e)) continue;
     for (const Crossing* c = cs.begin(e); c != cs.begin(e) + cs.count(e); ++c)
-      if (!c->near_miss() && topo.edges[c->front_edge()].cls == EdgeClass::kH3) ++n;
+      if (!c->near_miss() && outline_contour(topo, c->front_edge())) ++n;
   }
   return n;
 }
 
 uint32_t count_contours(const Topology& topo) {
   uint32_t n = 0;
-  for (uint32_t e = 0; e < topo.n_edges; ++e) n += topo.edges[e].cls == EdgeClass::kH3;
+  for (uint32_t e = 0; e < topo.n_edges; ++e) n += outline_contour(topo, e) ? 1 : 0;
   return n;
 }
 
@@ -213,11 +226,10 @@ void orient_contours(Ctx& c) {
   for (uint32_t v = 0; v < topo.n_vertices; ++v) c.ends[v] = 0;
   for (uint32_t e = 0; e < topo.n_edges; ++e) {
     c.index[e] = kNone;
-    const SolidEdge& se = topo.edges[e];
-    if (se.cls != EdgeClass::kH3) continue;
+    if (!outline_contour(topo, e)) continue;
     c.index[e] = h;
     c.edge[h] = e;
-    c.forward[h] = front_face_side(topo, c.front, e) < 0;  // front face on the right
+    c.forward[h] = contour_side(topo, c.front, e) < 0;  // front face (the faces) on the right
     const uint32_t s = c.start_vertex(h), t = c.end_vertex(h);
     if ((c.ends[t] & 0x0f) < 15) ++c.ends[t];
     if ((c.ends[s] >> 4) < 15) c.ends[s] = static_cast<uint8_t>(c.ends[s] + 0x10);

@@ -63,7 +63,7 @@ int plane_side(int64_t nx, int64_t ny, int64_t nz, const Point3& on, const Point
 }
 
 int64_t pierce_q32(const Point3& a, const Point3& b, const Point3& A, const Point3& B,
-                   const Point3& C) {
+                   const Point3& C, PierceSide* how) {
   const int64_t ux = int64_t{B.x} - A.x, uy = int64_t{B.y} - A.y, uz = int64_t{B.z} - A.z;
   const int64_t vx = int64_t{C.x} - A.x, vy = int64_t{C.y} - A.y, vz = int64_t{C.z} - A.z;
   const int64_t nz = ux * vy - uy * vx;
@@ -84,6 +84,7 @@ int64_t pierce_q32(const Point3& a, const Point3& b, const Point3& A, const Poin
   // d o(a) + n k, with k the side's cross product with the edge's direction.
   const int64_t ex = int64_t{b.x} - a.x, ey = int64_t{b.y} - a.y;
   const Point3* corner[3] = {&A, &B, &C};
+  bool on_side = false;
   for (int s = 0; s < 3; ++s) {
     const Point3& p0 = *corner[s];
     const Point3& p1 = *corner[(s + 1) % 3];
@@ -91,18 +92,28 @@ int64_t pierce_q32(const Point3& a, const Point3& b, const Point3& A, const Poin
     const Wide side = mul_signed(d, orient(p0, p1, a.x, a.y)) + mul_signed(n, k);
     const int ss = sign(side);
     if (ss != 0 && (ss > 0) != (nz > 0)) return -1;  // outside this side
+    on_side = on_side || ss == 0;
+  }
+  if (how != nullptr) {
+    how->on_side = on_side;
+    // a starts in front of the plane (nearer the viewer, +z) where g's sign is nz's.
+    how->a_in_front = (sa > 0) == (nz > 0);
   }
   return fraction_q32(n, d);
 }
 
-int64_t next_pierce(const Topology& topo, const FaceGrid& fg, const uint8_t* front, uint32_t e,
-                    int64_t after, uint64_t* face_tests) {
+namespace {
+
+// Every face of the grid that edge e may pass through (not one of its own, boxes and depth
+// ranges meeting), tested exactly: visit(face, t, how) for each it passes through after `after`.
+template <typename Visit>
+void pierced_faces(const Topology& topo, const FaceGrid& fg, const uint8_t* front, uint32_t e,
+                   int64_t after, uint64_t* face_tests, Visit visit) {
   const SolidEdge& se = topo.edges[e];
   const Point3 a = topo.vertices[se.v0], b = topo.vertices[se.v1];
   const int32_t x0 = min_i32(a.x, b.x), x1 = max_i32(a.x, b.x);
   const int32_t y0 = min_i32(a.y, b.y), y1 = max_i32(a.y, b.y);
   const int32_t z0 = min_i32(a.z, b.z), z1 = max_i32(a.z, b.z);
-  int64_t best = kNoPierce;
   for_each_cell(fg.grid, Edge3{a, b}, CellCover::kExact, 0, [&](uint32_t c) {
     for (const uint32_t* k = fg.faces + fg.first[c]; k != fg.faces + fg.first[c + 1]; ++k) {
       if (front != nullptr && !front[*k]) continue;
@@ -117,11 +128,46 @@ int64_t next_pierce(const Topology& topo, const FaceGrid& fg, const uint8_t* fro
           max_i32(A.z, max_i32(B.z, C.z)) < z0 || min_i32(A.z, min_i32(B.z, C.z)) > z1)
         continue;
       ++*face_tests;
-      const int64_t t = pierce_q32(a, b, A, B, C);
-      if (t > after && t < best) best = t;
+      PierceSide how;
+      const int64_t t = pierce_q32(a, b, A, B, C, &how);
+      if (t > after) visit(*k, t, how);
     }
   });
+}
+
+}  // namespace
+
+int64_t next_pierce(const Topology& topo, const FaceGrid& fg, const uint8_t* front, uint32_t e,
+                    int64_t after, uint64_t* face_tests) {
+  int64_t best = kNoPierce;
+  pierced_faces(topo, fg, front, e, after, face_tests, [&](uint32_t, int64_t t, PierceSide) {
+    if (t < best) best = t;
+  });
   return best;
+}
+
+PierceEvent next_pierce_event(const Topology& topo, const FaceGrid& fg, const uint8_t* front,
+                              uint32_t e, int64_t after, uint64_t* face_tests) {
+  PierceEvent ev{kNoPierce, 0, true};
+  // A face listed in several cells is found once per cell: each counts once at its place.
+  uint32_t seen[kPierceFacesAtOnce];
+  uint32_t n_seen = 0;
+  pierced_faces(topo, fg, front, e, after, face_tests, [&](uint32_t f, int64_t t, PierceSide how) {
+    if (t > ev.t) return;
+    if (t < ev.t) {
+      ev = PierceEvent{t, 0, true};
+      n_seen = 0;
+    }
+    for (uint32_t i = 0; i < n_seen; ++i)
+      if (seen[i] == f) return;
+    if (n_seen == kPierceFacesAtOnce || how.on_side) {
+      ev.exact = false;  // through a face's side, or too many faces at one point
+      return;
+    }
+    seen[n_seen++] = f;
+    ev.change += how.a_in_front ? 2 : -2;
+  });
+  return ev;
 }
 
 }  // namespace haloplot

@@ -34,8 +34,14 @@ int plane_side(int64_t nx, int64_t ny, int64_t nz, const Point3& on, const Point
 
 // floor(2^32 t) where the segment a -> b passes through the inside (or a side) of triangle
 // (A, B, C), strictly between its ends; -1 when it does not. Edge-on triangles: -1.
+// `how` (may be null) says more of a pierce found: whether the point lies on a side of the
+// triangle (on paper), and whether a lies in front of the triangle's plane (nearer the viewer).
+struct PierceSide {
+  bool on_side = false;
+  bool a_in_front = false;
+};
 int64_t pierce_q32(const Point3& a, const Point3& b, const Point3& A, const Point3& B,
-                   const Point3& C);
+                   const Point3& C, PierceSide* how = nullptr);
 
 // The first position after `after` (Q0.32, floor) where drawn or diagonal edge e of topo
 // passes through a face held in the face grid, or kNoPierce. Reads the cells the edge passes
@@ -44,5 +50,20 @@ int64_t pierce_q32(const Point3& a, const Point3& b, const Point3& A, const Poin
 // through one changes what hides the edge by nothing.
 int64_t next_pierce(const Topology& topo, const FaceGrid& fg, const uint8_t* front, uint32_t e,
                     int64_t after, uint64_t* face_tests);
+
+// For the QI walk (solid/qi.h): the first place after `after` where edge e passes through
+// faces, and how the cover changes there walking from v0 to v1, in halves: +2 for each face
+// (of those `front` marks, or every face when null) the edge goes behind, -2 for each it comes
+// out in front of. `exact` is false when a face there is pierced on one of its sides (where
+// the edge also meets that side in 3-D, and the crossing on paper may count it too) or more
+// than kPierceFacesAtOnce faces meet at the point: the walk cannot trust the change.
+inline constexpr uint32_t kPierceFacesAtOnce = 8;
+struct PierceEvent {
+  int64_t t;  // kNoPierce: none
+  int change;
+  bool exact;
+};
+PierceEvent next_pierce_event(const Topology& topo, const FaceGrid& fg, const uint8_t* front,
+                              uint32_t e, int64_t after, uint64_t* face_tests);
 
 }  // namespace haloplot

@@ -4,6 +4,7 @@
 #include "haloplot/solid/classify.h"
 #include "haloplot/solid/cover.h"
 #include "haloplot/solid/face_grid.h"
+#include "haloplot/solid/pierce.h"
 
 namespace haloplot {
 namespace {
@@ -13,18 +14,42 @@ struct Ctx {
   const uint8_t* front;
   const CutSet& cs;
   const Incidences& inc;
+  bool two_sided;  // every face hides, seen from either side (qi.h)
+  // Where edges pass through faces (the mesh pierces itself: qi.h), the faces to ask; null
+  // when the mesh needs none.
+  const FaceGrid* pierce_grid = nullptr;
 };
 
 int face_cover(const Ctx& c, uint32_t t, const CoverPoint& p) {
-  if (!c.front[t]) return 0;
   const uint32_t* v = c.topo.triangles[t].v;
-  return cover_halves(c.topo.vertices[v[0]], c.topo.vertices[v[1]], c.topo.vertices[v[2]], p);
+  const Point3 &a = c.topo.vertices[v[0]], &b = c.topo.vertices[v[1]], &d = c.topo.vertices[v[2]];
+  if (!c.two_sided) return c.front[t] ? cover_halves(a, b, d, p) : 0;
+  // A face seen from behind covers as the same face wound the other way round.
+  return projected_area2(a, b, d) >= 0 ? cover_halves(a, b, d, p) : cover_halves(a, d, b, p);
 }
 
 int faces_of_vertex(const Ctx& c, uint32_t v, const CoverPoint& p) {
   int sum = 0;
   for (uint32_t k = c.topo.vertex_face_first[v]; k < c.topo.vertex_face_first[v + 1]; ++k)
     sum += face_cover(c, c.topo.vertex_faces[k], p);
+  return sum;
+}
+
+// The cover of p by the faces of edge g: its two, or every face of a non-manifold edge (all
+// of v0's star that hold v1) when every face counts.
+int faces_of_edge(const Ctx& c, uint32_t g, const CoverPoint& p) {
+  const SolidEdge& e = c.topo.edges[g];
+  int sum = 0;
+  if (c.two_sided && !e.regular && e.face[0] != kNoFace && e.face[1] != kNoFace) {
+    for (uint32_t k = c.topo.vertex_face_first[e.v0]; k < c.topo.vertex_face_first[e.v0 + 1]; ++k) {
+      const uint32_t* t = c.topo.triangles[c.topo.vertex_faces[k]].v;
+      if (t[0] == e.v1 || t[1] == e.v1 || t[2] == e.v1)
+        sum += face_cover(c, c.topo.vertex_faces[k], p);
+    }
+    return sum;
+  }
+  for (int s = 0; s < 2; ++s)
+    if (e.face[s] != kNoFace) sum += face_cover(c, e.face[s], p);
   return sum;
 }
 
@@ -39,11 +64,8 @@ Local local_cover(const Ctx& c, uint32_t v, const CoverPoint& p) {
   l.star = faces_of_vertex(c, v, p);
   for (uint32_t u = c.inc.same_next[v]; u != v; u = c.inc.same_next[u])
     l.same += faces_of_vertex(c, u, p);
-  for (uint32_t k = c.inc.vertex_first[v]; k < c.inc.vertex_first[v + 1]; ++k) {
-    const SolidEdge& g = c.topo.edges[c.inc.by_edge[c.inc.by_vertex[k]].edge];
-    for (int s = 0; s < 2; ++s)
-      if (g.face[s] != kNoFace) l.through += face_cover(c, g.face[s], p);
-  }
+  for (uint32_t k = c.inc.vertex_first[v]; k < c.inc.vertex_first[v + 1]; ++k)
+    l.through += faces_of_edge(c, c.inc.by_edge[c.inc.by_vertex[k]].edge, p);
   return l;
 }
 
@@ -55,12 +77,17 @@ void count_local(const Local& l, QiStats* st) {
 }
 
 // The change of QI where the walk along e (direction dx, dy, dz) crosses behind edge g.
+// The walk crosses g from its right to its left on paper when s > 0.
 int crossing_change(const Ctx& c, uint32_t g, int64_t dx, int64_t dy) {
   const SolidEdge& ge = c.topo.edges[g];
-  if (!is_fold(ge.cls)) return 0;
+  if (!c.two_sided && !is_fold(ge.cls)) return 0;
+  // Two-sided: each face of g on the side the walk enters starts covering it, each on the side
+  // it leaves stops; faces on both sides (a surface's interior) cancel.
+  const int jump = c.two_sided ? paper_jump(c.topo, g) : front_face_side(c.topo, c.front, g);
+  if (jump == 0) return 0;
   const Point3 a = c.topo.vertices[ge.v0], b = c.topo.vertices[ge.v1];
   const int64_t s = int64_t{b.x - a.x} * dy - int64_t{b.y - a.y} * dx;
-  return ((s > 0 ? 1 : -1) == front_face_side(c.topo, c.front, g)) ? 2 : -2;
+  return 2 * (s > 0 ? jump : -jump);
 }
 
 // The change of QI where the walk passes through the point of vertex w (incidence r), with
@@ -87,6 +114,34 @@ int passage_change(const Ctx& c, const Incidence& r, int sign) {
 
 // Walks edge e from v0 (forward) or from v1, starting with QI q; calls piece(t0, t1, q) for
 // each stretch when forward. Returns the QI on arrival.
+// Where the edge passes through faces (solid/pierce.h), for a mesh that pierces itself: the
+// next such place after `after`, walking from v0. An event that cannot be counted exactly is
+// a conflict (the fallback then decides the picture).
+PierceEvent next_pierce_of(const Ctx& c, uint32_t e, int64_t after, QiStats* st) {
+  if (c.pierce_grid == nullptr) return PierceEvent{kNoPierce, 0, true};
+  uint64_t tests = 0;
+  const PierceEvent ev =
+      next_pierce_event(c.topo, *c.pierce_grid, c.two_sided ? nullptr : c.front, e, after, &tests);
+  if (st != nullptr) {
+    st->pierce_tests += tests;
+    if (ev.t != kNoPierce) ++st->pierces;
+    if (!ev.exact) ++st->conflicts;
+  }
+  return ev;
+}
+
+// The cover change of every pierce along the edge, from v0 to v1.
+int all_pierces(const Ctx& c, uint32_t e, QiStats* st) {
+  int sum = 0;
+  for (PierceEvent ev = next_pierce_of(c, e, -1, st); ev.t != kNoPierce;
+       ev = next_pierce_of(c, e, ev.t, st))
+    sum += ev.change;
+  return sum;
+}
+
+// Walks edge e from v0 (forward) or from v1, starting with QI q; calls piece(t0, t1, q) for
+// each stretch when forward. Returns the QI on arrival. Pierces are found from v0 on, so a
+// walk from v1 (which emits nothing) takes their sum at once.
 template <typename Piece>
 int32_t walk(const Ctx& c, uint32_t e, bool forward, int32_t q, QiStats* st, Piece piece) {
   const SolidEdge& se = c.topo.edges[e];
@@ -98,16 +153,22 @@ int32_t walk(const Ctx& c, uint32_t e, bool forward, int32_t q, QiStats* st, Pie
   const Incidence* ix = c.inc.by_edge + c.inc.edge_first[e];
   const uint32_t nix = c.inc.edge_first[e + 1] - c.inc.edge_first[e];
   int64_t at = forward ? 0 : (int64_t{1} << 32);
+  if (!forward) q -= all_pierces(c, e, st);
+  PierceEvent pe = forward ? next_pierce_of(c, e, -1, st) : PierceEvent{kNoPierce, 0, true};
   uint32_t i = 0, j = 0;  // events taken from each list
-  while (i < ncx || j < nix) {
-    // Next crossing and next incidence in walking order.
+  while (i < ncx || j < nix || pe.t != kNoPierce) {
+    // Next crossing and next incidence in walking order, or the next pierce before both.
     const Crossing* nc = i < ncx ? (forward ? cx + i : cx + (ncx - 1 - i)) : nullptr;
     const Incidence* ni = j < nix ? (forward ? ix + j : ix + (nix - 1 - j)) : nullptr;
     bool take_crossing = ni == nullptr;
     if (nc != nullptr && ni != nullptr) take_crossing = forward ? nc->t <= ni->t : nc->t >= ni->t;
-    const int64_t t = take_crossing ? nc->t : ni->t;
+    int64_t t = nc == nullptr && ni == nullptr ? kNoPierce : (take_crossing ? nc->t : ni->t);
     int change = 0;
-    if (take_crossing) {
+    if (pe.t < t) {  // forward only
+      t = pe.t;
+      change = pe.change;
+      pe = next_pierce_of(c, e, pe.t, st);
+    } else if (take_crossing) {
       change = crossing_change(c, nc->front_edge(), dx, dy);
       if (st != nullptr && change != 0) ++st->crossings;
       ++i;
@@ -145,6 +206,10 @@ int32_t cast_base(const Ctx& c, const FaceGrid& fg, uint32_t v, uint32_t to) {
 
 }  // namespace
 
+bool qi_contour_diagonal(const Topology& topo, const QiState& state, uint32_t e) {
+  return state.two_sided ? paper_contour(topo, e) : topo.edges[e].cls == EdgeClass::kH3;
+}
+
 size_t qi_bytes(const Topology& topo) {
   ByteCounter c;
   c.take<uint8_t>(face_grid_bytes(topo));
@@ -154,27 +219,14 @@ size_t qi_bytes(const Topology& topo) {
   return c.total + 8;
 }
 
-Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cutset,
-                    const Incidences& inc, void* buffer, size_t bytes, QiState* out,
-                    QiStats* stats) {
-  if (!topo.check.manifold()) return Status::kNotManifold;
-  if (cutset.n_edges != topo.n_edges) return Status::kBadParameter;
-  Carver carve(buffer, bytes);
-  const size_t grid_bytes = face_grid_bytes(topo);
-  uint8_t* grid_buffer = carve.take<uint8_t>(grid_bytes);
-  QiState s;
-  s.base = carve.take<int32_t>(topo.n_vertices);
-  s.q_at_v0 = carve.take<int32_t>(topo.n_edges);
-  uint32_t* queue = carve.take<uint32_t>(topo.n_vertices);
-  if (carve.short_) return Status::kWorkspaceTooSmall;
-  const Status gs = build_face_grid(topo, grid_buffer, grid_bytes, &s.grid);
-  if (gs != Status::kOk) return gs;
+namespace {
+
+// One breadth-first propagation over every part of the mesh (qi.h), into s.
+void propagate(const Ctx& c, QiState& s, uint32_t* queue, QiStats& st) {
+  const Topology& topo = c.topo;
   const FaceGrid& fg = s.grid;
-  const Ctx c{topo, front, cutset, inc};
-  QiStats st;
   for (uint32_t v = 0; v < topo.n_vertices; ++v) s.base[v] = kQiUnknown;
   for (uint32_t e = 0; e < topo.n_edges; ++e) s.q_at_v0[e] = kQiUnknown;
-
   for (uint32_t seed = 0; seed < topo.n_vertices; ++seed) {
     if (s.base[seed] != kQiUnknown) continue;
     // A seed needs an edge that is not a point on paper, to ask the faces with a direction.
@@ -227,6 +279,38 @@ Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cu
       }
     }
   }
+}
+
+}  // namespace
+
+Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cutset,
+                    const Incidences& inc, void* buffer, size_t bytes, QiState* out, QiStats* stats,
+                    bool find_pierces) {
+  if (cutset.n_edges != topo.n_edges) return Status::kBadParameter;
+  Carver carve(buffer, bytes);
+  const size_t grid_bytes = face_grid_bytes(topo);
+  uint8_t* grid_buffer = carve.take<uint8_t>(grid_bytes);
+  QiState s;
+  s.base = carve.take<int32_t>(topo.n_vertices);
+  s.q_at_v0 = carve.take<int32_t>(topo.n_edges);
+  uint32_t* queue = carve.take<uint32_t>(topo.n_vertices);
+  if (carve.short_) return Status::kWorkspaceTooSmall;
+  const Status gs = build_face_grid(topo, grid_buffer, grid_bytes, &s.grid);
+  if (gs != Status::kOk) return gs;
+  s.two_sided = qi_two_sided(topo);
+  Ctx c{topo, front, cutset, inc, s.two_sided};
+  QiStats st;
+  propagate(c, s, queue, st);
+  if (st.conflicts > 0 && find_pierces) {
+    // Two paths disagree where edges pass through faces, which nothing on paper marks: once
+    // more, with those places found along every edge (a clean mesh never pays for the look).
+    s.pierces = true;
+    c.pierce_grid = &s.grid;
+    const uint32_t first = st.conflicts;
+    st = QiStats{};
+    st.first_conflicts = first;
+    propagate(c, s, queue, st);
+  }
   *out = s;
   if (stats != nullptr) *stats = st;
   return Status::kOk;
@@ -234,7 +318,7 @@ Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cu
 
 Status emit_edge_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& cutset,
                            const Incidences& inc, const QiState& state, uint32_t e, QiSink sink) {
-  const Ctx c{topo, front, cutset, inc};
+  const Ctx c{topo, front, cutset, inc, state.two_sided, state.pierces ? &state.grid : nullptr};
   if (degenerate(c, e) || state.q_at_v0[e] == kQiUnknown) return Status::kOk;
   Status status = Status::kOk;
   QiPiece pending{e, 0, 0, 0};
@@ -260,7 +344,7 @@ Status emit_edge_qi_pieces(const Topology& topo, const uint8_t* front, const Cut
 Status emit_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& cutset,
                       const Incidences& inc, const QiState& state, QiSink sink) {
   for (uint32_t e = 0; e < topo.n_edges; ++e) {
-    if (e >= topo.n_drawn && topo.edges[e].cls != EdgeClass::kH3) continue;
+    if (e >= topo.n_drawn && !qi_contour_diagonal(topo, state, e)) continue;
     const Status s = emit_edge_qi_pieces(topo, front, cutset, inc, state, e, sink);
     if (s != Status::kOk) return s;
   }

@@ -15,7 +15,24 @@
 //     vertices on the same point (quarter q.i.), and of edges passing through it (delta q.i.:
 //     a vertex on a contour). On an edge running along a face side the cover is a half: the
 //     occluded edges, whose QI is then an odd number of halves.
-// QI values are counted in halves throughout. Two paths that reach a vertex with different
+// QI values are counted in halves throughout.
+//
+// Meshes that pierce themselves (parts that overlap, an eye set into a head): along an edge the
+// QI also changes where it passes through a face, which nothing on paper marks. A first
+// propagation that meets conflicts runs again with those places found along every edge
+// (solid/pierce.h, +-2 for each face the edge goes behind or comes out of), so a clean mesh
+// never pays for the look; conflicts left after that send the picture to the fallback.
+//
+// Open and imperfect meshes (two-sided): on a closed, consistently oriented 2-manifold only
+// front faces need counting (a back face is always behind a front face of the same solid).
+// On any other mesh, an open surface, a shell that cannot be oriented, a side on three faces,
+// both sides of a face show, so every face counts whichever way it turns: the QI is then the
+// number of faces in front of a point, and it changes where the walk passes behind an edge by
+// the faces that lie on one side of it on paper (classify.h's paper_jump: a fold, a boundary
+// edge, a fin; two faces on either side cancel). The rules at vertices are the same, asked of
+// every face of the star. Visible still means QI 0, so the picture of a closed solid is the same
+// either way; only the counts differ. No orientation is needed, so every shell of any mesh
+// takes this one method. Two paths that reach a vertex with different
 // base values trigger a new ray cast there (counted: exact arithmetic should make it 0).
 #pragma once
 #include <stddef.h>
@@ -43,21 +60,32 @@ struct QiStats {
   uint64_t half = 0;        // an edge passing exactly through a vertex changed its QI
   uint64_t occluded = 0;    // pieces lying along a face side (odd number of halves)
   uint64_t degenerate = 0;  // edges seen end-on (a point on paper): QI carried unchanged
+  // A mesh that pierces itself: the first propagation met first_conflicts conflicts, so it
+  // ran again stopping where edges pass through faces (solid/pierce.h).
+  uint32_t first_conflicts = 0;
+  uint64_t pierces = 0;       // places where an edge passes through faces
+  uint64_t pierce_tests = 0;  // exact edge-through-face tests made to find them
 };
 
 struct QiState {
   int32_t* base = nullptr;     // [n_vertices], in halves, kQiUnknown before it is reached
   int32_t* q_at_v0 = nullptr;  // [n_edges]: the QI at the start of each edge, leaving v0
   FaceGrid grid;               // every face, for the ray casts (the intersection lines reuse it)
+  bool two_sided = false;      // every face counts, from either side (qi_two_sided)
+  bool pierces = false;        // the walks stop where edges pass through faces too
 };
+
+// Does the QI count both sides of every face: the mesh is not a closed oriented manifold.
+inline bool qi_two_sided(const Topology& topo) { return !topo.check.manifold(); }
 
 size_t qi_bytes(const Topology& topo);
 
 // `cutset` must be CUT's result over topo's edges in topo's order (reach 0); `front` is from
-// classify(). kNotManifold if topo.check says the mesh is not a closed oriented manifold.
+// classify(). Any mesh: two-sided when it is not a closed oriented manifold.
+// `find_pierces` false: no second propagation where the first met conflicts.
 Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cutset,
-                    const Incidences& inc, void* buffer, size_t bytes, QiState* out,
-                    QiStats* stats);
+                    const Incidences& inc, void* buffer, size_t bytes, QiState* out, QiStats* stats,
+                    bool find_pierces = true);
 
 // A piece of an edge with one QI: positions in Q0.32 along the edge from v0 (t1 <= 2^32).
 struct QiPiece {
@@ -72,11 +100,16 @@ struct QiSink {
 };
 
 // The pieces of every drawn edge, in edge order, then along each edge; then those of the
-// contour (H3) diagonals, numbered from topo.n_drawn up: a triangulated polygon that is not
-// flat can show its silhouette along a diagonal, and a hidden-line drawing needs that line.
+// contour diagonals (qi_contour_diagonal), numbered from topo.n_drawn up: a triangulated
+// polygon that is not flat, or edges left out as smooth (a crease angle), show the silhouette
+// along a diagonal, and a hidden-line drawing needs that line.
 // Neighbouring pieces with the same QI are merged; empty pieces are left out.
 Status emit_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& cutset,
                       const Incidences& inc, const QiState& state, QiSink sink);
+
+// A diagonal (not drawn) that is a contour: H3 on a closed solid; two-sided, any edge whose
+// faces lie on one side on paper (classify.h's paper_contour).
+bool qi_contour_diagonal(const Topology& topo, const QiState& state, uint32_t e);
 
 // The pieces of one edge (any edge, drawn or not), the same way.
 Status emit_edge_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& cutset,

@@ -1,6 +1,7 @@
 // haloplot plot MODEL.obj --mode all|hidden-removed|hidden-dashed [--outline] ...: hidden
 // lines of a solid model (the HALO paper's Figure 1 modes), by Appel/Heger QI propagation on
-// closed oriented meshes and by the topology-free fallback otherwise (said on stderr).
+// any mesh (both sides of every face where it is not a closed oriented manifold), and by the
+// topology-free fallback when asked or when the QI cannot settle (said on stderr).
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -45,11 +46,14 @@ void print_solid_stats(const SolidRun& r, const TriangulateStats& tri) {
     std::fprintf(stderr,
                  "qi_components=%u\nqi_ray_casts=%u\nqi_conflicts=%u\nrule_crossing=%llu\n"
                  "rule_wedge=%llu\nrule_delta=%llu\nrule_quarter=%llu\nrule_half=%llu\n"
-                 "rule_occluded=%llu\nrule_degenerate=%llu\n",
+                 "rule_occluded=%llu\nrule_degenerate=%llu\nqi_two_sided=%d\n"
+                 "qi_first_conflicts=%u\nqi_pierces=%llu\nqi_pierce_tests=%llu\n",
                  q.components, q.ray_casts, q.conflicts, (unsigned long long)q.crossings,
                  (unsigned long long)q.wedge, (unsigned long long)q.delta,
                  (unsigned long long)q.quarter, (unsigned long long)q.half,
-                 (unsigned long long)q.occluded, (unsigned long long)q.degenerate);
+                 (unsigned long long)q.occluded, (unsigned long long)q.degenerate,
+                 r.check.manifold() ? 0 : 1, q.first_conflicts, (unsigned long long)q.pierces,
+                 (unsigned long long)q.pierce_tests);
   else
     std::fprintf(stderr,
                  "fallback_pieces=%llu\nfallback_tests=%llu\nfallback_face_tests=%llu\n"
@@ -105,15 +109,6 @@ bool plotter_job(const Options& o, const SolidOptions& so, const ModeDrawing& d,
 
 // An OBJ is not welded unless asked, so a triangle soup (each face its own corners) reads as
 // an open surface: say how to join its corners.
-std::string weld_hint(const Options& o, const SolidRun& run) {
-  const std::string& path = o.positional[0];
-  const bool obj = path.size() > 4 && (path.compare(path.size() - 4, 4, ".obj") == 0 ||
-                                       path.compare(path.size() - 4, 4, ".OBJ") == 0);
-  if (!obj || !o.get("--weld").empty() || run.fallback_reason.find("boundary") == std::string::npos)
-    return "";
-  return " (if its faces should share corners, --weld 0 joins the corners at one position)";
-}
-
 }  // namespace
 
 int cmd_plot_solid(const Options& o) {
@@ -141,12 +136,10 @@ int cmd_plot_solid(const Options& o) {
   SolidRun run;
   const Status s = run_solid_options(scene, so, &run);
   if (!ok(s)) return fail(o.positional[0] + ": hidden lines failed: " + status_name(s));
-  if (!run.fallback_reason.empty() && so.method == HiddenMethod::kAuto &&
-      !scene.repair_note.empty())
-    say_repair_note(scene);
-  else if (!run.fallback_reason.empty() && so.method == HiddenMethod::kAuto)
+  say_repair_note(scene);
+  if (!run.fallback_reason.empty() && so.method == HiddenMethod::kAuto)
     std::cerr << "haloplot: " << o.positional[0] << ": " << run.fallback_reason
-              << ": hidden lines by the topology-free fallback" << weld_hint(o, run) << "\n";
+              << ": hidden lines by the topology-free fallback\n";
   // Decided in the scene's units (dashes and hatch spacing converted), drawn in steps.
   const int32_t units = scene.substep_bits;
   ModeDrawing d = make_mode_drawing(run, mode_in_units(so.spec, units));

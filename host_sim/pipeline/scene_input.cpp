@@ -504,6 +504,28 @@ std::string not_simple_message(const std::string& path, const ObjModel& model,
          " in the model); split it into simple polygons";
 }
 
+// What the hidden lines decided per shell, when a shell is not a closed solid: such a shell
+// shows both sides of its faces, so every face hides from both sides (core/solid/qi.h).
+std::string shells_note(const std::string& path, const RepairReport& r) {
+  const uint32_t open = r.shells - r.closed_shells - r.unorientable_shells;
+  if (open == 0 && r.unorientable_shells == 0) return "";
+  std::string kinds;
+  auto add = [&](uint32_t n, const std::string& what) {
+    if (n == 0) return;
+    if (!kinds.empty()) kinds += ", ";
+    kinds += std::to_string(n) + " " + what;
+  };
+  add(r.closed_shells, r.closed_shells == 1 ? "closed solid" : "closed solids");
+  add(open, open == 1 ? "open surface" : "open surfaces");
+  add(r.unorientable_shells, r.unorientable_shells == 1
+                                 ? "shell that cannot be oriented (sides on three or more "
+                                   "faces, or a twist like a Moebius strip's)"
+                                 : "shells that cannot be oriented (sides on three or more "
+                                   "faces, or a twist like a Moebius strip's)");
+  return path + ": " + std::to_string(r.shells) + (r.shells == 1 ? " shell: " : " shells: ") +
+         kinds + "; hidden lines by QI with both sides of every face hiding";
+}
+
 bool load_solid_scene(const Options& o, const std::string& path, SolidScene* scene,
                       TriangulateStats* stats, std::string* error) {
   if (!is_mesh_path(path)) {
@@ -514,12 +536,7 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
   View view;
   RepairReport repair;
   if (!project_obj(o, path, &model, &scene->vertices, &view, error, &repair)) return false;
-  scene->repair_note.clear();
-  if (repair.unorientable_shells > 0)
-    scene->repair_note = path + ": " + std::to_string(repair.unorientable_shells) + " of " +
-                         std::to_string(repair.shells) +
-                         " shells cannot be oriented (sides on three or more faces, or a "
-                         "twist like a Moebius strip's)";
+  scene->repair_note = shells_note(path, repair);
   scene->substep_bits = view.substep_bits;
   scene->edge_pairs = model.edge_pairs;
   TriangulateStats ts;
@@ -576,9 +593,7 @@ Options job_options(const JobFile& jf) {
 }  // namespace
 
 void say_repair_note(const SolidScene& scene) {
-  if (!scene.repair_note.empty())
-    std::cerr << "haloplot: " << scene.repair_note
-              << ": hidden lines by the method that needs no orientation\n";
+  if (!scene.repair_note.empty()) std::cerr << "haloplot: " << scene.repair_note << "\n";
 }
 
 bool job_solid_settings(const JobFile& jf, SolidOptions* so, View* view, std::string* error) {

@@ -106,8 +106,7 @@ std::string not_simple_message(const std::string& path, const ObjModel& model,
 bool load_solid_scene(const Options& o, const std::string& path, SolidScene* scene,
                       TriangulateStats* stats, std::string* error);
 
-// scene.repair_note, if any, as one line on stderr ("haloplot: NOTE: hidden lines by the
-// method that needs no orientation").
+// scene.repair_note, if any, as one line on stderr: what the hidden lines decided per shell.
 void say_repair_note(const SolidScene& scene);
 
 }  // namespace haloplot::host

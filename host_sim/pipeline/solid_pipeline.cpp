@@ -41,29 +41,12 @@ Status collect_outline(void* context, const HiddenPiece& p) {
   return Status::kOk;
 }
 
-std::string check_text(const MeshCheck& c) {
-  std::string s;
-  auto add = [&](uint32_t n, const char* what) {
-    if (n == 0) return;
-    if (!s.empty()) s += ", ";
-    s += std::to_string(n) + " " + what;
-  };
-  add(c.boundary_edges, "boundary edges (open surface)");
-  add(c.nonmanifold_edges, "edges on three or more faces");
-  add(c.misoriented_edges, "edges whose faces disagree on orientation");
-  return s;
-}
-
 std::string reason_text(const HiddenReport& r) {
   switch (r.reason) {
     case FallbackReason::kNone:
       return "";
     case FallbackReason::kAsked:
       return "asked for";
-    case FallbackReason::kNotManifold:
-      return check_text(r.check);
-    case FallbackReason::kLooseEdges:
-      return std::to_string(r.check.loose_edges) + " loose edges (lines on no face)";
     case FallbackReason::kBand:
       return "a band of a banded plot (the topology-free method is local to the band)";
     case FallbackReason::kConflicts:

@@ -23,8 +23,8 @@ struct SolidScene {
   std::vector<Triangle> triangles;
   int32_t substep_bits = 0;     // the vertices' units: 2^-S steps (View::substep_bits)
   std::vector<uint8_t> facing;  // per triangle from the model (empty: the projected area)
-  // "FILE: N of M shells cannot be oriented (...)" when the model's cleaning left some shells
-  // as given (pipeline/mesh_repair.h): why the method needing no orientation draws it.
+  // "FILE: M shells: K closed solids, N open surfaces, ...; hidden lines by QI with both sides
+  // of every face hiding" when a shell is not a closed solid (pipeline/mesh_repair.h).
   std::string repair_note;
 };
 

@@ -104,7 +104,7 @@ struct Scene {
   std::string name;
   SolidScene scene;
   std::vector<size_t> arenas;  // each must plot it, in as many bands as it takes
-  bool pierced = false;        // solids through each other: the whole-model run falls back from QI
+  bool pierced = false;        // solids through each other: the whole-model QI looks for pierces
   bool open = false;           // not a closed solid: every face hides, both sides
 };
 
@@ -112,8 +112,9 @@ void check_scene(const Scene& sc) {
   const SolidInput in = solid_input(sc.scene);
   SolidRun qi;
   const Status qs = run_hidden_lines(sc.scene, HiddenMethod::kAuto, FallbackParams{}, &qi);
-  CHECK_MSG(ok(qs) && qi.used_qi == !sc.pierced,
-            sc.name + (sc.pierced ? ": the whole-model fallback run" : ": the whole-model QI run"));
+  CHECK_MSG(ok(qs) && qi.used_qi && (qi.qi.pierces > 0) == sc.pierced,
+            sc.name + (sc.pierced ? ": the whole-model QI run, stopping where edges pierce faces"
+                                  : ": the whole-model QI run"));
   const bool closed = qi.check.manifold();
   CHECK_MSG(closed, sc.name + ": a closed solid");
   std::vector<Stroke> qi_visible;
@@ -339,17 +340,27 @@ void check_hatch(Scene sc, int32_t spacing, std::vector<size_t> arenas_kb = {}) 
             sc.name + ": a turned hatch is seen in the hatching");
 }
 
-// An open surface (a box without its lid) falls back from QI, and now gets outlines too: every
-// run lies on the boundary of what the picture covers (brute force over all faces, both sides).
+// An open surface (a box without its lid) takes the QI counting both sides of every face, and
+// gets outlines too: every run lies on the boundary of what the picture covers (brute force
+// over all faces, both sides), by the QI's traced circuits and by the fallback's condition.
+void check_open_outlines(const Scene& sc, HiddenMethod method);
+
 void check_open_outlines() {
   Mesh m;
   box(&m, 0, 0, 0, 4000, 3000, 2000);
   m.faces.erase(m.faces.begin() + 1);  // the lid (+z) is the box's second face
   Scene sc = make("open box at 30,25", m, 30000, 25000, {16});
+  for (HiddenMethod method : {HiddenMethod::kAuto, HiddenMethod::kFallback})
+    check_open_outlines(sc, method);
+}
+
+void check_open_outlines(const Scene& sc, HiddenMethod method) {
+  const bool qi = method == HiddenMethod::kAuto;
   SolidRun fb;
-  CHECK(ok(run_hidden_lines(sc.scene, HiddenMethod::kAuto, FallbackParams{}, &fb, true)));
-  CHECK_MSG(!fb.used_qi && !fb.outline.empty(),
-            "open box: the fallback draws outlines (" + std::to_string(fb.outline.size()) + ")");
+  CHECK(ok(run_hidden_lines(sc.scene, method, FallbackParams{}, &fb, true)));
+  CHECK_MSG(fb.used_qi == qi && !fb.outline.empty(),
+            std::string("open box: ") + (qi ? "the QI" : "the fallback") + " draws outlines (" +
+                std::to_string(fb.outline.size()) + ")");
   size_t on = 0;
   for (const OutlineSegment& o : fb.outline) {
     const uint32_t v0 = sc.scene.edge_pairs[2 * o.edge], v1 = sc.scene.edge_pairs[2 * o.edge + 1];
