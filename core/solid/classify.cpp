@@ -69,6 +69,21 @@ int paper_jump(const Topology& topo, uint32_t edge) {
   return sum;
 }
 
+bool paper_h3(const Topology& topo, uint32_t edge, int* side) {
+  const SolidEdge& e = topo.edges[edge];
+  if (!e.regular) return false;
+  const uint32_t* f0 = topo.triangles[e.face[0]].v;
+  const uint32_t* f1 = topo.triangles[e.face[1]].v;
+  const bool ccw0 =
+      projected_area2(topo.vertices[f0[0]], topo.vertices[f0[1]], topo.vertices[f0[2]]) > 0;
+  const bool ccw1 =
+      projected_area2(topo.vertices[f1[0]], topo.vertices[f1[1]], topo.vertices[f1[2]]) > 0;
+  if (ccw0 == ccw1 || !convex_edge(topo, edge)) return false;
+  if (side != nullptr)
+    *side = corner_side(topo, ccw0 ? e.face[0] : e.face[1], e.v0, e.v1) >= 0 ? 1 : -1;
+  return true;
+}
+
 ClassCounts classify(Topology* topo, uint8_t* front, const uint8_t* facing) {
   ClassCounts k;
   for (uint32_t t = 0; t < topo->n_triangles; ++t) {

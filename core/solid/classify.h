@@ -34,6 +34,13 @@ int front_face_side(const Topology& topo, const uint8_t* front, uint32_t edge);
 // surface's image ends, a contour on paper (a fold, a boundary, a fin). Exact.
 int paper_jump(const Topology& topo, uint32_t edge);
 
+// H3 as paper shows it: a regular edge whose faces' projected areas have opposite signs (one
+// counter-clockwise, the other clockwise or edge-on) and that is convex. It differs from the
+// class only where the model's facing (SolidInput::facing) overrules a sliver's rounded area;
+// the outlines, the boundary of what paper covers, ask this one. *side (may be null): the side
+// of v0 -> v1 its counter-clockwise face lies on, +1 left, -1 right.
+bool paper_h3(const Topology& topo, uint32_t edge, int* side = nullptr);
+
 // Is the edge a contour on paper for a drawing that counts both sides of every face (an open
 // or non-manifold mesh, solid/qi.h's two-sided mode): paper_jump() != 0.
 inline bool paper_contour(const Topology& topo, uint32_t edge) {

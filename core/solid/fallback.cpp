@@ -19,12 +19,13 @@ constexpr int64_t kOne = int64_t{1} << 32;
 
 enum Vc : uint8_t { kVcUnknown = 0, kVcVisible = 1, kVcHidden = 2, kVcUnusable = 3 };
 
-// Does the outline pass ask about edge e: a contour, or an edge with one face? Counting both
-// sides of every face, any edge whose faces lie on one side of it on paper.
+// Does the outline pass ask about edge e: a contour as paper shows it (classify.h's paper_h3),
+// or an edge with one face? Counting both sides of every face, any edge whose faces lie on one
+// side of it on paper.
 bool outline_candidate(const Topology& topo, uint32_t e, bool any_facing) {
   const SolidEdge& se = topo.edges[e];
   if (any_facing) return paper_contour(topo, e);
-  return se.cls == EdgeClass::kH3 || ((se.face[0] == kNoFace) != (se.face[1] == kNoFace));
+  return paper_h3(topo, e) || ((se.face[0] == kNoFace) != (se.face[1] == kNoFace));
 }
 
 // Does the run draw edge e: every drawn edge, and the diagonals that are contours (H3 on a

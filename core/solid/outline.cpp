@@ -20,17 +20,20 @@ struct Node {
   uint32_t partner_node;
 };
 
-// The contours the outlines run along: H3 on a closed solid; on any other mesh, whose QI counts
-// both sides of every face (solid/qi.h), every edge whose faces lie on one side of it on paper:
-// a fold either way, an open surface's rim, a fin.
+// The contours the outlines run along, as paper shows them: H3 on a closed solid (classify.h's
+// paper_h3); on any other mesh, whose QI counts both sides of every face (solid/qi.h), every
+// edge whose faces lie on one side of it on paper: a fold either way, an open surface's rim, a
+// fin.
 bool outline_contour(const Topology& topo, uint32_t e) {
-  return qi_two_sided(topo) ? paper_contour(topo, e) : topo.edges[e].cls == EdgeClass::kH3;
+  return qi_two_sided(topo) ? paper_contour(topo, e) : paper_h3(topo, e);
 }
 
-// The side of contour e its faces lie on: +1 left of v0 -> v1, -1 right.
-int contour_side(const Topology& topo, const uint8_t* front, uint32_t e) {
-  if (!qi_two_sided(topo)) return front_face_side(topo, front, e);
-  return paper_jump(topo, e) > 0 ? 1 : -1;
+// The side of contour e its (front) faces lie on: +1 left of v0 -> v1, -1 right.
+int contour_side(const Topology& topo, uint32_t e) {
+  if (qi_two_sided(topo)) return paper_jump(topo, e) > 0 ? 1 : -1;
+  int side = 1;
+  paper_h3(topo, e, &side);
+  return side;
 }
 
 enum SegState : uint8_t { kOpen = 0, kInWalk = 1, kOutline = 2, kNotOutline = 3 };
@@ -229,7 +232,7 @@ void orient_contours(Ctx& c) {
     if (!outline_contour(topo, e)) continue;
     c.index[e] = h;
     c.edge[h] = e;
-    c.forward[h] = contour_side(topo, c.front, e) < 0;  // front face (the faces) on the right
+    c.forward[h] = contour_side(topo, e) < 0;  // front face (the faces) on the right
     const uint32_t s = c.start_vertex(h), t = c.end_vertex(h);
     if ((c.ends[t] & 0x0f) < 15) ++c.ends[t];
     if ((c.ends[s] >> 4) < 15) c.ends[s] = static_cast<uint8_t>(c.ends[s] + 0x10);
