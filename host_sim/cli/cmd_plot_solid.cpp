@@ -103,15 +103,13 @@ bool plotter_job(const Options& o, const SolidOptions& so, const ModeDrawing& d,
   return load_scene(edge_options, o.positional[0], &job->edges, error, &job->spec.substep_bits);
 }
 
-// An OBJ is not welded unless asked, so a triangle soup (each face its own corners) reads as
-// an open surface: say how to join its corners.
+// The default weld joins corners within the file's rounding; a model still open may have
+// corners its exporter put farther apart: say how to join those.
 std::string weld_hint(const Options& o, const SolidRun& run) {
-  const std::string& path = o.positional[0];
-  const bool obj = path.size() > 4 && (path.compare(path.size() - 4, 4, ".obj") == 0 ||
-                                       path.compare(path.size() - 4, 4, ".OBJ") == 0);
-  if (!obj || !o.get("--weld").empty() || run.fallback_reason.find("boundary") == std::string::npos)
+  if (!o.get("--weld").empty() || run.fallback_reason.find("boundary") == std::string::npos)
     return "";
-  return " (if its faces should share corners, --weld 0 joins the corners at one position)";
+  return " (if its faces should share corners farther apart than the file's rounding, --weld "
+         "EPS joins the corners within EPS, in the model's units)";
 }
 
 }  // namespace
