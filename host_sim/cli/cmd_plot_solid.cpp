@@ -107,8 +107,6 @@ bool plotter_job(const Options& o, const SolidOptions& so, const ModeDrawing& d,
   return load_scene(edge_options, o.positional[0], &job->edges, error, &job->spec.substep_bits);
 }
 
-// An OBJ is not welded unless asked, so a triangle soup (each face its own corners) reads as
-// an open surface: say how to join its corners.
 }  // namespace
 
 int cmd_plot_solid(const Options& o) {

@@ -91,6 +91,7 @@ bool load_obj(const std::string& job_path, SendScene* sc, std::string* error) {
   model_options.values = jf.solid_options;
   std::string model_error;
   if (jf.landscape) model_options.flags.insert("--landscape");
+  model_options = with_model_defaults(model_options, jf.scene_path);  // an STL is Z-up
   // --scale: the view's area from the model, as `sim` and `plot` shrink it.
   if (!read_model(model_options, jf.scene_path, &sc->model, nullptr, &model_error) ||
       !aim_view(model_options, &sc->model, &sc->view, &model_error) ||

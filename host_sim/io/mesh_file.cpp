@@ -154,7 +154,9 @@ InputError read_binary_stl(const std::string& b, const std::string& name, ObjMod
     out->faces.push_back({v, v + 1, v + 2});
     out->face_lines.push_back(0);
   }
-  place_vertices(xyz, out);
+  CoordinateRounding rounding;
+  rounding.note_binary(23);
+  place_vertices(xyz, rounding, out);
   edges_from_faces(out);
   return {};
 }
@@ -163,6 +165,7 @@ InputError read_binary_stl(const std::string& b, const std::string& name, ObjMod
 struct AsciiStl {
   std::vector<double> xyz;
   std::vector<uint32_t> corners;
+  CoordinateRounding rounding;
   bool in_facet = false;
   int facet_line = 0;
 
@@ -187,6 +190,7 @@ struct AsciiStl {
         if (!parse_coordinate(f[size_t(i)], &c))
           return "coordinate '" + excerpt(f[size_t(i)]) + "' is not a number";
         xyz.push_back(c);
+        rounding.note_text(f[size_t(i)]);
       }
       corners.push_back(uint32_t(xyz.size() / 3 - 1));
       return "";
@@ -218,7 +222,7 @@ InputError read_ascii_stl(const std::string& b, const std::string& name, ObjMode
   if (!reader.error().empty()) return {name, reader.line(), reader.error()};
   if (stl.in_facet) return {name, reader.line(), "the file ends inside a facet"};
   if (out->faces.empty()) return {name, reader.line(), "no facets"};
-  place_vertices(stl.xyz, out);
+  place_vertices(stl.xyz, stl.rounding, out);
   edges_from_faces(out);
   return {};
 }

@@ -38,6 +38,7 @@ InputError read_obj(std::istream& in, const std::string& name, ObjModel* out) {
     if (seen.insert(pair_key(a, b))) out->edge_pairs.insert(out->edge_pairs.end(), {a, b});
   };
   std::vector<uint32_t> idx;
+  CoordinateRounding rounding;
   while (reader.next(&f)) {
     const std::string_view k = f[0];
     if (k == "v") {
@@ -48,6 +49,7 @@ InputError read_obj(std::istream& in, const std::string& name, ObjModel* out) {
         if (!parse_finite(f[1 + i], &c[i]))
           return {name, reader.line(),
                   "coordinate '" + excerpt(std::string(f[1 + i])) + "' is not a number"};
+      for (int i = 0; i < 3; ++i) rounding.note_text(f[1 + i]);
       xyz.insert(xyz.end(), c, c + 3);
     } else if (k == "f" || k == "l") {
       const size_t need = k == "f" ? 3 : 2;
@@ -75,11 +77,12 @@ InputError read_obj(std::istream& in, const std::string& name, ObjModel* out) {
   if (!reader.error().empty()) return {name, reader.line(), reader.error()};
   if (in.bad()) return {name, 0, "read error"};
   if (xyz.empty()) return {name, reader.line(), "no vertices"};
-  place_vertices(xyz, out);
+  place_vertices(xyz, rounding, out);
   return {};
 }
 
-void place_vertices(const std::vector<double>& xyz, ObjModel* out) {
+void place_vertices(const std::vector<double>& xyz, const CoordinateRounding& rounding,
+                    ObjModel* out) {
   // Centre and scale uniformly: the largest extent spans 2^19 world units.
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   for (int a = 0; a < 3 && !xyz.empty(); ++a) {
@@ -90,6 +93,9 @@ void place_vertices(const std::vector<double>& xyz, ObjModel* out) {
   const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
   const double scale = extent > 0 ? double(1 << 19) / extent : 1.0;
   out->scale = scale;
+  out->magnitude = 0;
+  for (double c : xyz) out->magnitude = std::max(out->magnitude, std::fabs(c));
+  out->rounding = rounding.bound(out->magnitude);
   for (int a = 0; a < 3; ++a) out->centre[a] = (lo[a] + hi[a]) / 2;
   out->vertices.clear();
   out->vertices.reserve(xyz.size() / 3);

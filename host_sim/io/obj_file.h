@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "haloplot/geometry/contract.h"
+#include "io/coordinate_rounding.h"
 #include "io/input_error.h"
 
 namespace haloplot::host {
@@ -27,13 +28,18 @@ struct ObjModel {
   uint32_t lines = 0;                        // `l` statements read
   double scale = 1;                          // world units per unit of the file
   double centre[3] = {0, 0, 0};              // the file's bounding-box centre (file units)
+  double magnitude = 0;                      // the largest |coordinate| in the file
+  double rounding =
+      0;  // how far a stored coordinate may be off (file units; coordinate_rounding.h)
 };
 
 InputError read_obj(std::istream& in, const std::string& name, ObjModel* out);
 
 // The file's coordinates (x y z per vertex) into out->vertices, centred on their bounding box
-// and scaled as above (out->scale: world units per file unit). Every reader ends with it.
-void place_vertices(const std::vector<double>& xyz, ObjModel* out);
+// and scaled as above (out->scale: world units per file unit); out->rounding is `rounding`'s
+// bound at the file's largest magnitude. Every reader ends with it.
+void place_vertices(const std::vector<double>& xyz, const CoordinateRounding& rounding,
+                    ObjModel* out);
 // out->edge_pairs anew from the faces' sides, in the order they first appear (formats with no
 // lines: STL, PLY; and after welding).
 void edges_from_faces(ObjModel* model);

@@ -159,6 +159,8 @@ class Values {
     }
     return true;
   }
+  // The word the last ASCII value was read from.
+  std::string_view last_word() const { return words_[next_ - 1]; }
   bool item_done() const { return !ascii() || next_ == words_.size(); }
 
   // The next value as a double; false with *why.
@@ -231,8 +233,17 @@ class Values {
 
 struct PlyData {
   std::vector<double> xyz;
+  CoordinateRounding rounding;
   std::vector<int> face_where;  // each face's line (ASCII) or byte offset (binary)
 };
+
+// A coordinate's rounding: its printed digits, or its binary type's.
+void note_rounding(const Values& in, Kind k, CoordinateRounding* rounding) {
+  if (in.ascii())
+    rounding->note_text(in.last_word());
+  else
+    rounding->note_binary(k == Kind::kF32 ? 23 : k == Kind::kF64 ? 52 : 0);
+}
 
 // One element's items: the vertices' x y z and the faces' corners kept, the rest read past.
 std::string read_element(const Element& e, Values* in, PlyData* d, ObjModel* out) {
@@ -261,7 +272,10 @@ std::string read_element(const Element& e, Values* in, PlyData* d, ObjModel* out
       if (!in->value(p.list ? p.count_kind : p.kind, &v, &why)) return why;
       if (!p.list) {
         for (int a = 0; a < 3; ++a)
-          if (int(i) == xyz_at[a]) c[a] = v;
+          if (int(i) == xyz_at[a]) {
+            c[a] = v;
+            note_rounding(*in, p.kind, &d->rounding);
+          }
         continue;
       }
       if (!(v >= 0 && v < 4294967296.0)) return "a list length that is not a count";
@@ -312,7 +326,7 @@ InputError read_ply(const std::string& bytes, const std::string& name, ObjModel*
         return {name, 0, "byte " + std::to_string(d.face_where[f]) + ": " + what};
       }
   for (int where : d.face_where) out->face_lines.push_back(in.ascii() ? uint32_t(where) : 0u);
-  place_vertices(d.xyz, out);
+  place_vertices(d.xyz, d.rounding, out);
   edges_from_faces(out);
   return {};
 }

@@ -292,47 +292,94 @@ bool planar(const ObjModel& m, const std::vector<uint32_t>& c, const Normal& n) 
 
 bool is_zero(const Normal& n) { return n[0] == 0 && n[1] == 0 && n[2] == 0; }
 
-// Do faces f and g count as one flat surface across their shared side?
-bool flat_between(const ObjModel& m, const std::vector<Normal>& n, uint32_t f, uint32_t g,
-                  double crease_deg) {
-  const Normal& a = n[f];
-  const Normal& b = n[g];
-  if (is_zero(a) || is_zero(b)) return false;
-  if (crease_deg > 0) {
-    const double dot =
-        double(a[0]) * double(b[0]) + double(a[1]) * double(b[1]) + double(a[2]) * double(b[2]);
-    const double la = std::sqrt(double(a[0]) * double(a[0]) + double(a[1]) * double(a[1]) +
-                                double(a[2]) * double(a[2]));
-    const double lb = std::sqrt(double(b[0]) * double(b[0]) + double(b[1]) * double(b[1]) +
-                                double(b[2]) * double(b[2]));
-    const double cos_limit = std::cos(crease_deg * 3.14159265358979323846 / 180);
-    return dot > cos_limit * la * lb;
+double length(const Normal& n) {
+  return std::sqrt(double(n[0]) * double(n[0]) + double(n[1]) * double(n[1]) +
+                   double(n[2]) * double(n[2]));
+}
+
+double distance(const Point3& p, const Point3& q) {
+  const double dx = double(p.x) - q.x, dy = double(p.y) - q.y, dz = double(p.z) - q.z;
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+// A face's normal and what rounding can do to it (mesh_repair.h, drop_flat_edges).
+struct FaceShape {
+  Normal n = {0, 0, 0};
+  double length = 0;      // |n|
+  double normal_off = 0;  // E = sqrt(3) d D + 9 k d^2: how far n may be from the true normal
+};
+
+FaceShape face_shape(const ObjModel& m, const std::vector<uint32_t>& c, double d) {
+  FaceShape s;
+  s.n = newell(m, c);
+  s.length = length(s.n);
+  double around = 0;  // D: the sum of |v[i+1] - v[i-1]|
+  const size_t k = c.size();
+  for (size_t i = 0; i < k; ++i)
+    around += distance(m.vertices[c[(i + 1) % k]], m.vertices[c[(i + k - 1) % k]]);
+  s.normal_off = std::sqrt(3.0) * d * around + 9.0 * double(k) * d * d;
+  return s;
+}
+
+// Every corner of `other` within what rounding d can produce of the plane of face f through a.
+bool corners_near_plane(const ObjModel& m, const FaceShape& f, const std::vector<uint32_t>& other,
+                        const Point3& a, double d) {
+  const double r3 = std::sqrt(3.0) * d;
+  for (uint32_t v : other) {
+    const Point3& p = m.vertices[v];
+    const __int128 s = f.n[0] * (int64_t(p.x) - a.x) + f.n[1] * (int64_t(p.y) - a.y) +
+                       f.n[2] * (int64_t(p.z) - a.z);
+    const double bound = 2 * r3 * f.length + f.normal_off * (distance(p, a) + 6 * r3);
+    if (std::fabs(double(s)) > bound) return false;
   }
-  // Exactly: both planar, normals parallel and the same way (then, sharing a side, one plane).
+  return true;
+}
+
+bool within_angle(const Normal& a, const Normal& b, double deg) {
+  const double dot =
+      double(a[0]) * double(b[0]) + double(a[1]) * double(b[1]) + double(a[2]) * double(b[2]);
+  return dot > std::cos(deg * 3.14159265358979323846 / 180) * length(a) * length(b);
+}
+
+// Do faces f and g, on the side from vertex a, count as one flat surface?
+bool flat_between(const ObjModel& m, const std::vector<FaceShape>& shape, uint32_t f, uint32_t g,
+                  uint32_t a, const CreaseRule& rule) {
+  const Normal& nf = shape[f].n;
+  const Normal& ng = shape[g].n;
+  if (is_zero(nf) || is_zero(ng)) return false;
+  if (rule.deg > 0 && within_angle(nf, ng, rule.deg)) return true;  // as wide as asked
   // Each normal component is below 2^62 (vertices within 2^20), so the products fit.
-  const __int128 cx = a[1] * b[2] - a[2] * b[1];
-  const __int128 cy = a[2] * b[0] - a[0] * b[2];
-  const __int128 cz = a[0] * b[1] - a[1] * b[0];
-  const __int128 dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  return cx == 0 && cy == 0 && cz == 0 && dot > 0 && planar(m, m.faces[f], a) &&
-         planar(m, m.faces[g], b);
+  const __int128 dot = nf[0] * ng[0] + nf[1] * ng[1] + nf[2] * ng[2];
+  if (dot <= 0) return false;  // at 90 degrees or more apart: not the same way
+  if (rule.rounding > 0)
+    return corners_near_plane(m, shape[f], m.faces[g], m.vertices[a], rule.rounding) &&
+           corners_near_plane(m, shape[g], m.faces[f], m.vertices[a], rule.rounding);
+  // Exactly: both planar, normals parallel and the same way (then, sharing a side, one plane).
+  const __int128 cx = nf[1] * ng[2] - nf[2] * ng[1];
+  const __int128 cy = nf[2] * ng[0] - nf[0] * ng[2];
+  const __int128 cz = nf[0] * ng[1] - nf[1] * ng[0];
+  return cx == 0 && cy == 0 && cz == 0 && planar(m, m.faces[f], nf) && planar(m, m.faces[g], ng);
 }
 
 }  // namespace
 
-void drop_flat_edges(ObjModel* model, double crease_deg, RepairReport* report) {
-  if (crease_deg < 0) return;
+double vertex_rounding(const ObjModel& model) { return 0.5 + model.rounding * model.scale; }
+
+double weld_distance(const ObjModel& model) { return 2 * std::sqrt(3.0) * vertex_rounding(model); }
+
+void drop_flat_edges(ObjModel* model, const CreaseRule& rule, RepairReport* report) {
+  if (rule.keep_all) return;
   const SidesByVertex sides(*model);
-  std::vector<Normal> normals;
-  normals.reserve(model->faces.size());
-  for (const std::vector<uint32_t>& c : model->faces) normals.push_back(newell(*model, c));
+  std::vector<FaceShape> shape;
+  shape.reserve(model->faces.size());
+  for (const std::vector<uint32_t>& c : model->faces)
+    shape.push_back(face_shape(*model, c, rule.rounding));
   std::vector<uint32_t> kept;
   kept.reserve(model->edge_pairs.size());
   for (size_t e = 0; e + 1 < model->edge_pairs.size(); e += 2) {
     const uint32_t a = model->edge_pairs[e], b = model->edge_pairs[e + 1];
     uint32_t face[2] = {0, 0};
-    if (sides.faces(a, b, face) == 2 &&
-        flat_between(*model, normals, face[0], face[1], crease_deg)) {
+    if (sides.faces(a, b, face) == 2 && flat_between(*model, shape, face[0], face[1], a, rule)) {
       ++report->flat_edges;
       continue;
     }

@@ -4,7 +4,9 @@
 // triangle with its own three vertices) gets its topology back, each edge drawn once. "The
 // same place" is the same integer world position (the model scaled to span 2^19 units: one
 // unit is 1/524288 of the model's size, below any plotter's resolution), or with a tolerance
-// within that distance of a vertex kept before it (in file order).
+// within that distance of a vertex kept before it (in file order). By default the distance is
+// weld_distance below: corners that could be one point of the exporter's, each stored within
+// the file's rounding of it.
 //
 // Orientation: each shell (faces connected through shared sides) is made consistent: its
 // faces are turned so every side shared by two faces is traversed once each way (breadth
@@ -30,6 +32,16 @@ struct RepairReport {
   uint32_t flat_edges = 0;           // drawn edges between faces within the crease angle
 };
 
+// How far a vertex may lie from where the exporter meant it, per coordinate, in world units:
+// the file's rounding (io/coordinate_rounding.h) times the model's scale, plus the half unit
+// place_vertices rounds each world coordinate by.
+double vertex_rounding(const ObjModel& model);
+// The default weld distance: two stored corners of one point are each within vertex_rounding
+// of it in every coordinate, so within 2 * that per coordinate, 2 * sqrt(3) * that apart. At
+// least 1.7 world units (about 3 millionths of the model's size), so corners that round to
+// neighbouring world positions are joined too.
+double weld_distance(const ObjModel& model);
+
 // Welds vertices within `tolerance` world units (0: the same position only). Faces, their
 // lines and the drawn edges follow (edges in the order they first appeared, each once).
 void weld_vertices(ObjModel* model, double tolerance, RepairReport* report);
@@ -37,12 +49,32 @@ void weld_vertices(ObjModel* model, double tolerance, RepairReport* report);
 // Orients every shell's faces as above.
 void orient_shells(ObjModel* model, RepairReport* report);
 
-// Creases: a drawn edge between exactly two faces whose normals differ by less than
-// `crease_deg` degrees is no longer a drawn edge, so it is drawn only where it is a contour
-// (the core treats it as a diagonal inside a polygon). 0 degrees: only between two planar
-// faces in one plane facing the same way, decided exactly on the integer vertices (the
-// diagonals of a flat face split into triangles). Negative: every edge kept. Run it after
-// orient_shells (the normals of faces wound different ways point apart).
-void drop_flat_edges(ObjModel* model, double crease_deg, RepairReport* report);
+// Which edges count as flat (--crease).
+struct CreaseRule {
+  bool keep_all = false;  // --crease off: every edge drawn
+  double deg = 0;         // faces whose normals are within this angle (degrees); 0: none
+  double rounding = 0;    // vertex_rounding (world units); 0: only exactly coplanar faces
+};
+
+// Creases: a drawn edge between exactly two faces that face the same way and count as flat
+// is no longer a drawn edge, so it is drawn only where it is a contour (the core treats it as
+// a diagonal inside a polygon). An edge on one face (a boundary) or on three or more is always
+// kept. Flat, any of:
+// - exactly: both faces planar, in one plane, facing the same way (decided on the integer
+//   vertices: the diagonals of a flat face split into triangles);
+// - rule.deg > 0: their normals differ by less than rule.deg degrees;
+// - rule.rounding > 0: they could be one flat polygon but for the rounding of their vertices:
+//   normals less than 90 degrees apart, and every corner of each lies within what rounding can
+//   produce of the other's plane. With every coordinate within d = rule.rounding of a
+//   configuration where both are in one plane, the plane's twice-area normal n (Newell's, k
+//   corners, D the sum of the distances |v[i+1] - v[i-1]| around it) is off by at most
+//   E = sqrt(3) d D + 9 k d^2, and a corner p's n . (p - a), a the shared side's first end, is
+//   at most 2 sqrt(3) d |n| + E (|p - a| + 6 sqrt(3) d) (the first-order terms and the rest,
+//   each bounded; exact integers on the left, doubles on the right). A distance, not an angle:
+//   a sliver's plane is only known to an angle as wide as the rounding over its height, and
+//   the bound says so, so a sliver in a flat face leaves no line; a sliver no higher than the
+//   rounding that lies along a real crease leaves it out too (its corners are on both planes).
+// Run it after orient_shells (the normals of faces wound different ways point apart).
+void drop_flat_edges(ObjModel* model, const CreaseRule& rule, RepairReport* report);
 
 }  // namespace haloplot::host

@@ -66,6 +66,15 @@ void roll_about_view_axis(const View& view, double radians,
 
 }  // namespace
 
+Options with_model_defaults(const Options& o, const std::string& path) {
+  MeshFormat format = MeshFormat::kObj;
+  if (!o.get("--up").empty() || !mesh_format_of(path, &format) || format != MeshFormat::kStl)
+    return o;
+  Options stl = o;
+  stl.values["--up"] = "z";  // 3-D printing's convention: OpenSCAD, slicers, Blender's STL
+  return stl;
+}
+
 bool parse_up(const Options& o, UpAxis* up, std::string* error) {
   if (parse_up_axis(o.get("--up", "y"), up)) return true;
   *error = "--up '" + o.get("--up") +
@@ -75,36 +84,43 @@ bool parse_up(const Options& o, UpAxis* up, std::string* error) {
 
 namespace {
 
-// --weld EPS (file units; 0: the same position only) or off. Default: exact for STL and PLY
-// (triangle soups, vertices repeated per face), off for OBJ (its vertex ids are kept as given).
-bool weld_tolerance(const Options& o, const std::string& path, double* tolerance,
+// --weld EPS (file units; 0: the same position only) or off, into world units (-1: off).
+// Default: the file's rounding (weld_distance), in every format: an STL or PLY is a triangle
+// soup, and an OBJ may be one too, or repeat corners its exporter computed twice.
+bool weld_tolerance(const Options& o, const ObjModel& model, double* tolerance,
                     std::string* error) {
-  MeshFormat format = MeshFormat::kObj;
-  mesh_format_of(path, &format);
-  const std::string w = o.get("--weld", format == MeshFormat::kObj ? "off" : "0");
+  const std::string w = o.get("--weld");
   *tolerance = -1;
   if (w == "off") return true;
+  if (w.empty()) {
+    *tolerance = weld_distance(model);
+    return true;
+  }
   char* end = nullptr;
   const double eps = std::strtod(w.c_str(), &end);
-  if (w.empty() || end != w.c_str() + w.size() || !(eps >= 0) || eps > 1e300) {
+  if (end != w.c_str() + w.size() || !(eps >= 0) || eps > 1e300) {
     *error = "--weld '" + w +
              "' must be a distance in the model's units (0: the same position) "
              "or off";
     return false;
   }
-  *tolerance = eps;
+  *tolerance = eps * model.scale;
   return true;
 }
 
-// --crease DEG (0 to 180; default 0: only edges between coplanar faces are left out) or off.
-bool crease_angle(const Options& o, double* deg, std::string* error) {
+// --crease DEG (0 to 180: faces within DEG degrees, or flat but for the file's rounding), exact
+// (exactly coplanar faces only) or off. Default 0: flat but for the rounding. The rounding is
+// the model's, filled in by read_model.
+bool crease_rule(const Options& o, CreaseRule* rule, bool* exact, std::string* error) {
   const std::string c = o.get("--crease", "0");
-  *deg = -1;
-  if (c == "off") return true;
+  *rule = CreaseRule{};
+  *exact = c == "exact";
+  rule->keep_all = c == "off";
+  if (rule->keep_all || *exact) return true;
   char* end = nullptr;
-  *deg = std::strtod(c.c_str(), &end);
-  if (c.empty() || end != c.c_str() + c.size() || !(*deg >= 0 && *deg <= 180)) {
-    *error = "--crease '" + c + "' must be an angle in degrees in [0, 180], or off";
+  rule->deg = std::strtod(c.c_str(), &end);
+  if (c.empty() || end != c.c_str() + c.size() || !(rule->deg >= 0 && rule->deg <= 180)) {
+    *error = "--crease '" + c + "' must be an angle in degrees in [0, 180], exact or off";
     return false;
   }
   return true;
@@ -112,12 +128,15 @@ bool crease_angle(const Options& o, double* deg, std::string* error) {
 
 }  // namespace
 
-bool read_model(const Options& o, const std::string& path, ObjModel* model, RepairReport* repair,
-                std::string* error) {
+bool read_model(const Options& given, const std::string& path, ObjModel* model,
+                RepairReport* repair, std::string* error) {
+  const Options o = with_model_defaults(given, path);
   UpAxis up;
-  double tolerance = -1, crease = 0;
-  if (!parse_up(o, &up, error) || !weld_tolerance(o, path, &tolerance, error) ||
-      !crease_angle(o, &crease, error))
+  CreaseRule crease;
+  bool exact = false;
+  double tolerance = -1;
+  if (!parse_up(o, &up, error) || !weld_tolerance(o, ObjModel{}, &tolerance, error) ||
+      !crease_rule(o, &crease, &exact, error))
     return false;
   const InputError ie = read_mesh_file(path, model);
   if (ie.failed()) {
@@ -125,8 +144,10 @@ bool read_model(const Options& o, const std::string& path, ObjModel* model, Repa
     return false;
   }
   RepairReport report;
-  if (tolerance >= 0) weld_vertices(model, tolerance * model->scale, &report);
+  weld_tolerance(o, *model, &tolerance, error);  // checked above: now in this model's units
+  if (tolerance >= 0) weld_vertices(model, tolerance, &report);
   orient_shells(model, &report);
+  if (!exact) crease.rounding = vertex_rounding(*model);
   drop_flat_edges(model, crease, &report);
   if (repair != nullptr) *repair = report;
   make_z_up(model, up);
@@ -137,9 +158,10 @@ namespace {
 
 // Reads a model, welds and orients it (mesh_repair.h) and projects it; on failure *error is
 // complete. *repair (may be null) says what the cleaning did.
-bool project_obj(const Options& o, const std::string& path, ObjModel* model,
+bool project_obj(const Options& given, const std::string& path, ObjModel* model,
                  std::vector<Point3>* screen, View* view_out, std::string* error,
                  RepairReport* repair = nullptr) {
+  const Options o = with_model_defaults(given, path);
   View view;
   if (!parse_view(o, &view, error)) return false;
   if (!read_model(o, path, model, repair, error) || !aim_view(o, model, &view, error) ||
@@ -423,8 +445,8 @@ namespace {
 // A model whose every edge the crease angle left out, drawn without its faces' contours.
 std::string no_edges_left(const Options& o, const std::string& path) {
   return path + ": every edge lies within --crease " + o.get("--crease", "0") +
-         " degrees of flat, and --mode all works out no contours: lower --crease, or draw it "
-         "in a hidden-line mode (contours kept)";
+         " degrees of flat (or is flat but for the file's rounding), and --mode all works out no "
+         "contours: lower --crease, or draw it in a hidden-line mode (contours kept)";
 }
 
 bool something_to_draw(const std::string& path, const std::vector<Edge3>& edges,
@@ -506,7 +528,9 @@ std::string not_simple_message(const std::string& path, const ObjModel& model,
 
 // What the hidden lines decided per shell, when a shell is not a closed solid: such a shell
 // shows both sides of its faces, so every face hides from both sides (core/solid/qi.h).
-std::string shells_note(const std::string& path, const RepairReport& r) {
+// `weld_hint`: the weld was the default one, which joins corners within the file's rounding;
+// an open shell may have corners its exporter put farther apart: say how to join those.
+std::string shells_note(const std::string& path, const RepairReport& r, bool weld_hint) {
   const uint32_t open = r.shells - r.closed_shells - r.unorientable_shells;
   if (open == 0 && r.unorientable_shells == 0) return "";
   std::string kinds;
@@ -522,8 +546,13 @@ std::string shells_note(const std::string& path, const RepairReport& r) {
                                    "faces, or a twist like a Moebius strip's)"
                                  : "shells that cannot be oriented (sides on three or more "
                                    "faces, or a twist like a Moebius strip's)");
+  const std::string hint = weld_hint && open > 0
+                               ? " (if its faces should share corners farther apart than the "
+                                 "file's rounding, --weld EPS joins the corners within EPS, in "
+                                 "the model's units)"
+                               : "";
   return path + ": " + std::to_string(r.shells) + (r.shells == 1 ? " shell: " : " shells: ") +
-         kinds + "; hidden lines by QI with both sides of every face hiding";
+         kinds + "; hidden lines by QI with both sides of every face hiding" + hint;
 }
 
 bool load_solid_scene(const Options& o, const std::string& path, SolidScene* scene,
@@ -536,7 +565,7 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
   View view;
   RepairReport repair;
   if (!project_obj(o, path, &model, &scene->vertices, &view, error, &repair)) return false;
-  scene->repair_note = shells_note(path, repair);
+  scene->repair_note = shells_note(path, repair, o.get("--weld").empty());
   scene->substep_bits = view.substep_bits;
   scene->edge_pairs = model.edge_pairs;
   TriangulateStats ts;
@@ -583,6 +612,7 @@ namespace {
 Options job_options(const JobFile& jf) {
   Options o;
   o.values = jf.solid_options;
+  o = with_model_defaults(o, jf.scene_path);
   o.values["--steps-per-mm"] = std::to_string(jf.style.steps_per_mm);
   if (jf.outline) o.flags.insert("--outline");
   if (!jf.intersections) o.flags.insert("--no-intersections");

@@ -18,17 +18,23 @@ namespace haloplot::host {
 // The options every scene-taking command accepts (valued): --view AZ,EL (degrees, up to three
 // decimals; default 30,40), --perspective D (world units after the OBJ's scaling to 2^19;
 // default orthographic), --dump-edges FILE (the projected scene, in the order all outputs use).
-// --up x|y|z|-x|-y|-z: the file's up axis (default y, what most OBJ files use). --substep S: fit
-// the projected scene in units of 2^-S steps (core/view/projection.h). --weld EPS|off: weld a
-// model's vertices within EPS (its file's units; 0: at the same position) or not
-// (pipeline/mesh_repair.h); the default welds STL and PLY at the same position, not OBJ.
-// --crease DEG|off: edges between faces within DEG degrees are drawn only as contours (default
-// 0: coplanar faces).
+// --up x|y|z|-x|-y|-z: the file's up axis (default z for STL, y for OBJ and PLY:
+// with_model_defaults). --substep S: fit the projected scene in units of 2^-S steps
+// (core/view/projection.h). --weld EPS|off: weld a model's vertices within EPS (its file's
+// units; 0: at the same position) or not (pipeline/mesh_repair.h); the default welds corners
+// within the file's rounding of each other (weld_distance). --crease DEG|exact|off: edges
+// between faces within DEG degrees, or flat but for the file's rounding, are drawn only as
+// contours (default 0: flat but for the rounding; exact: exactly coplanar only).
 // A camera instead of --view/--perspective: --eye X,Y,Z --look-at X,Y,Z (the model file's
 // coordinates) look along the eye-to-look-at direction (orthographic); --fov DEG makes it a
 // perspective camera (see aim_view). --roll DEG turns the picture counterclockwise about the
 // view axis (with --view or a camera).
 extern const char* const kSceneOptions[11];
+
+// The options with the model file's own defaults filled in where not given: --up z for an STL
+// (3-D printing's convention), y for the rest. Every use of a model's options goes through it,
+// so `plot X.stl` is `plot X.stl --up z` in every output (the --dump-edges header says it).
+Options with_model_defaults(const Options& o, const std::string& path);
 
 // --up from the options (default y); false with *error naming the value.
 bool parse_up(const Options& o, UpAxis* up, std::string* error);

@@ -114,8 +114,9 @@ expect '[ $? -eq 0 ] && grep -q "^G[01] " gonly/only.gcode && [ "$(ls gonly)" = 
 expect 'cmp -s gonly/only.gcode with.gcode' "the G-code is the same with and without -o"
 refused "missing -o OUTPUT" none.svg plot cubes.obj --mode hidden-removed
 
-# A cube as a triangle soup (each face its own corners, as some exporters write OBJ): an open
-# surface until welded, and the message says how (OBJ is not welded unless asked).
+# A cube as a triangle soup (each face its own corners, as some exporters write OBJ): welded by
+# default, a closed surface; with --weld off an open one; with its corners 0.01 apart (more
+# than its rounding) the message says how to join them.
 for f in "0 0 0 1 0 0 1 1 0" "0 0 0 1 1 0 0 1 0" "0 0 1 1 1 1 1 0 1" "0 0 1 0 1 1 1 1 1" \
   "0 0 0 1 0 1 1 0 0" "0 0 0 0 0 1 1 0 1" "0 1 0 1 1 0 1 1 1" "0 1 0 1 1 1 0 1 1" \
   "0 0 0 0 1 0 0 1 1" "0 0 0 0 1 1 0 0 1" "1 0 0 1 0 1 1 1 1" "1 0 0 1 1 1 1 1 0"; do
@@ -124,9 +125,15 @@ for f in "0 0 0 1 0 0 1 1 0" "0 0 0 1 1 0 0 1 0" "0 0 1 1 1 1 1 0 1" "0 0 1 0 1 
 done > soup.obj
 awk '/^v/ { n++ } END { for (i = 1; i <= n; i += 3) print "f", i, i + 1, i + 2 }' soup.obj >> soup.obj
 "$tool" plot soup.obj --mode hidden-removed -o soup.svg 2> err.txt
-expect '[ $? -eq 0 ] && grep -qF -- "--weld 0" err.txt' "a soup OBJ's message suggests --weld 0: $(cat err.txt)"
-"$tool" plot soup.obj --mode hidden-removed --weld 0 -o soup.svg 2> err.txt
-expect '[ $? -eq 0 ] && ! grep -q "boundary edges" err.txt' "--weld 0 closes the soup: $(cat err.txt)"
+expect '[ $? -eq 0 ] && ! grep -q "open surface" err.txt' "the default weld closes the soup: $(cat err.txt)"
+"$tool" plot soup.obj --mode hidden-removed --weld off -o soup.svg 2> err.txt
+expect '[ $? -eq 0 ] && grep -q "open surface" err.txt && ! grep -qF -- "--weld EPS" err.txt' \
+  "--weld off leaves the soup open, no hint: $(cat err.txt)"
+awk '/^v/ { printf "v %.6f %s %s\n", $2 + (NR % 3) * 0.01, $3, $4; next } { print }' soup.obj > far.obj
+"$tool" plot far.obj --mode hidden-removed -o far.svg 2> err.txt
+expect '[ $? -eq 0 ] && grep -qF -- "--weld EPS" err.txt' "corners 0.01 apart: the message names --weld EPS: $(cat err.txt)"
+"$tool" plot far.obj --mode hidden-removed --weld 0.025 -o far.svg 2> err.txt
+expect '[ $? -eq 0 ] && ! grep -q "open surface" err.txt' "--weld 0.025 closes it: $(cat err.txt)"
 
 # A cut-short binary STL whose header begins with 'solid' (as many exporters write it): the
 # message must not say it does not.
