@@ -341,11 +341,22 @@ bool within_angle(const Normal& a, const Normal& b, double deg) {
   return dot > std::cos(deg * 3.14159265358979323846 / 180) * length(a) * length(b);
 }
 
-// Do faces f and g, on the side from vertex a, count as one flat surface?
+// Does face c run from corner a straight to corner b?
+bool runs(const std::vector<uint32_t>& c, uint32_t a, uint32_t b) {
+  for (size_t i = 0; i < c.size(); ++i)
+    if (c[i] == a && c[(i + 1) % c.size()] == b) return true;
+  return false;
+}
+
+// Do faces f and g, on the side a -> b, count as one flat surface? Two faces wound the same way
+// along their side (a shell that cannot be oriented, like a Moebius strip's seam) are compared
+// as if one were turned over: how a surface bends does not depend on how its faces are wound.
 bool flat_between(const ObjModel& m, const std::vector<FaceShape>& shape, uint32_t f, uint32_t g,
-                  uint32_t a, const CreaseRule& rule) {
+                  uint32_t a, uint32_t b, const CreaseRule& rule) {
   const Normal& nf = shape[f].n;
-  const Normal& ng = shape[g].n;
+  const bool turned = runs(m.faces[f], a, b) == runs(m.faces[g], a, b);
+  const Normal& given = shape[g].n;
+  const Normal ng = turned ? Normal{-given[0], -given[1], -given[2]} : given;
   if (is_zero(nf) || is_zero(ng)) return false;
   if (rule.deg > 0 && within_angle(nf, ng, rule.deg)) return true;  // as wide as asked
   // Each normal component is below 2^62 (vertices within 2^20), so the products fit.
@@ -379,7 +390,7 @@ void drop_flat_edges(ObjModel* model, const CreaseRule& rule, RepairReport* repo
   for (size_t e = 0; e + 1 < model->edge_pairs.size(); e += 2) {
     const uint32_t a = model->edge_pairs[e], b = model->edge_pairs[e + 1];
     uint32_t face[2] = {0, 0};
-    if (sides.faces(a, b, face) == 2 && flat_between(*model, shape, face[0], face[1], a, rule)) {
+    if (sides.faces(a, b, face) == 2 && flat_between(*model, shape, face[0], face[1], a, b, rule)) {
       ++report->flat_edges;
       continue;
     }
