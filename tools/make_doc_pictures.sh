@@ -16,12 +16,14 @@ work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 view=120,20
 "$tool" plot "$model" --view $view --halo 60 -o "$work/haloed.svg"
-"$tool" plot "$model" --view $view --mode hidden-removed -o "$work/hidden-removed.svg"
-"$tool" plot "$model" --view $view --mode hidden-dashed --dash 1,1 -o "$work/hidden-dashed.svg"
-"$tool" plot "$model" --view $view --mode hidden-removed --hatch 1 -o "$work/hatched.svg"
+# The hidden-line modes as an illustrator draws a smooth model: contours and creases sharper
+# than 40 degrees (Blender's Line Art's default crease), not the facets.
+"$tool" plot "$model" --view $view --mode hidden-removed --crease 40 -o "$work/hidden-removed.svg"
+"$tool" plot "$model" --view $view --mode hidden-dashed --crease 40 --dash 1,1 -o "$work/hidden-dashed.svg"
+"$tool" plot "$model" --view $view --mode hidden-removed --crease 40 --hatch 1 -o "$work/hatched.svg"
 stl=/usr/share/assimp/models/STL/Wuson.stl
 # assimp's Wuson.stl was written from its Y-up OBJ: --up y (an STL is read Z-up by default).
-"$tool" plot "$stl" --view $view --up y --mode hidden-removed --page a4 --landscape -o "$work/a4.svg" \
+"$tool" plot "$stl" --view $view --up y --mode hidden-removed --crease 40 --page a4 --landscape -o "$work/a4.svg" \
   --gcode "$work/a4.gcode"
 sed 's|viewBox="0 0 297 210">|&<rect x="0" y="0" width="297" height="210" fill="white" stroke="#999" stroke-width="0.6"/>|' \
   "$work/a4.svg" > "$work/a4-edge.svg"
