@@ -49,6 +49,8 @@ cgal=$(dpkg-query -W -f='${Version}' libcgal-dev 2>/dev/null || echo "not instal
   fi
   echo
   bash tools/bench_plot_gcode.sh
+  echo
+  bash tools/bench_open_mesh.sh
 } > "$out/performance.md"
 rm -f "$out/performance.body.md"
 if command -v rsvg-convert >/dev/null 2>&1; then
