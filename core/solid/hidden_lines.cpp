@@ -246,7 +246,9 @@ Status HiddenRun::qi_method(bool* gave_up) {
   // Where a sliver folds over on paper, the model's facing disagrees with the geometry the
   // QI walks and it finds conflicts: once more with the facing the geometry shows, before
   // giving up the QI (a diagonal may then be drawn as contour; the picture stays right).
-  if (params.method == HiddenMethod::kAuto && r.qi.conflicts > 0 && in.facing != nullptr) {
+  // (Counting both sides of every face, the facing plays no part in the walk.)
+  if (params.method == HiddenMethod::kAuto && r.qi.conflicts > 0 && in.facing != nullptr &&
+      !state.two_sided) {
     r.projected_facing = true;
     r.classes = classify(&topo, front, nullptr);
     r.qi = QiStats{};
