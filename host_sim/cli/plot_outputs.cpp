@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <utility>
 
@@ -16,9 +17,10 @@ bool wants_plotter_outputs(const Options& o) {
   return !o.get("--gcode").empty() || !o.get("--hpgl").empty();
 }
 
-const char* const kPenOptions[10] = {
-    "--pen",          "--servo-down",     "--z-up",      "--z-down",      "--z-feed",
-    "--pen-up-gcode", "--pen-down-gcode", "--draw-feed", "--travel-feed", "--pen-dwell"};
+const char* const kPenOptions[14] = {
+    "--pen",          "--servo-down",     "--z-up",         "--z-down",      "--z-feed",
+    "--pen-up-gcode", "--pen-down-gcode", "--draw-feed",    "--travel-feed", "--pen-dwell",
+    "--gcode-flavor", "--servo-up",       "--gcode-header", "--gcode-footer"};
 
 namespace {
 
@@ -52,10 +54,45 @@ std::string command_lines(const std::string& text) {
 
 // Each profile's own options: given with another profile, they are refused by name.
 const char* owner_profile(const std::string& option) {
-  if (option == "--servo-down") return "servo";
+  if (option == "--servo-down" || option == "--servo-up") return "servo";
   if (option == "--z-up" || option == "--z-down" || option == "--z-feed") return "z";
   if (option == "--pen-up-gcode" || option == "--pen-down-gcode") return "custom";
   return nullptr;
+}
+
+// The dialect (--gcode-flavor), the servo's values in it and the header and footer text.
+bool dialect_of(const Options& o, ExportStyle* style, std::string* error,
+                const std::function<std::string(const std::string&)>& name) {
+  const auto bad = [&](const std::string& option, const std::string& form) {
+    *error = name(option) + " '" + o.get(option) + "' must be " + form;
+    return false;
+  };
+  const std::string flavor = o.get("--gcode-flavor", "grbl");
+  if (flavor != "grbl" && flavor != "marlin") return bad("--gcode-flavor", "grbl or marlin");
+  const bool marlin = flavor == "marlin";
+  style->flavor = marlin ? GcodeFlavor::kMarlin : GcodeFlavor::kGrbl;
+  if (!marlin && !o.get("--servo-up").empty()) {
+    *error = name("--servo-up") + " is for " + name("--gcode-flavor") +
+             " marlin (grbl lifts the pen with M5, no value)";
+    return false;
+  }
+  int64_t v = 0;
+  // Marlin's servo takes an angle; a down angle a little off the up one, as pen lifts mount.
+  if (marlin) style->pen_down_s = 30;
+  if (!o.get("--servo-down").empty()) {
+    if (!parse_int(o.get("--servo-down"), 0, marlin ? 180 : 100000, &v))
+      return bad("--servo-down", marlin ? "an angle in [0, 180] (the M280 S value)"
+                                        : "an integer in [0, 100000] (the M3 S value)");
+    style->pen_down_s = int32_t(v);
+  }
+  if (!o.get("--servo-up").empty()) {
+    if (!parse_int(o.get("--servo-up"), 0, 180, &v))
+      return bad("--servo-up", "an angle in [0, 180] (the M280 S value)");
+    style->servo_up_angle = int32_t(v);
+  }
+  style->header_text = command_lines(o.get("--gcode-header"));
+  style->footer_text = command_lines(o.get("--gcode-footer"));
+  return true;
 }
 
 }  // namespace
@@ -84,12 +121,8 @@ bool export_style_of(const Options& o, ExportStyle* style, Machine* machine, std
       return false;
     }
   }
+  if (!dialect_of(o, style, error, name)) return false;
   int64_t v = 0;
-  if (!o.get("--servo-down").empty()) {
-    if (!parse_int(o.get("--servo-down"), 0, 100000, &v))
-      return bad("--servo-down", "an integer in [0, 100000] (the M3 S value)");
-    style->pen_down_s = int32_t(v);
-  }
   const std::pair<const char*, int32_t*> heights[] = {{"--z-up", &style->z_up_um},
                                                       {"--z-down", &style->z_down_um}};
   for (const auto& h : heights) {
