@@ -41,6 +41,8 @@ def check_layers(path):
             fail("layer id %r / label %r: want id layerN and a label starting with N" % (ident, label))
         if int(m.group(1)) != int(n.group(1)):
             fail("layer id %s carries label %r: the numbers differ" % (ident, label))
+    for g in layers:  # the ids first, so each fault is told on its own
+        label = g.get(INK + "label")
         stroke = (g.get("stroke") or "").lower()
         for p in g.iter(SVG + "path"):  # a path's own stroke would override the layer's
             if p.get("stroke") is not None:
