@@ -85,6 +85,8 @@ const char* kUsage =
     "               [--pen servo|z|custom] [--servo-down S] [--z-up MM] [--z-down MM]\n"
     "               [--z-feed MM/MIN] [--pen-up-gcode TEXT] [--pen-down-gcode TEXT]\n"
     "               [--draw-feed MM/MIN] [--travel-feed MM/MIN] [--pen-dwell SECONDS]\n"
+    "               [--gcode-flavor grbl|marlin] [--servo-up ANGLE] [--gcode-header TEXT]\n"
+    "               [--gcode-footer TEXT]\n"
     "               (the G-code's pen commands and feeds; TEXT: G-code, \\n between lines)\n"
     "               [--pause-between-layers]   (hidden-line modes draw layer by layer, as the\n"
     "               SVG's layers; this adds a pen change between layers: M0 in the G-code,\n"

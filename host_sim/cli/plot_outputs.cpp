@@ -1,6 +1,8 @@
 #include "cli/plot_outputs.h"
 
+#include <cmath>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <utility>
 
@@ -15,9 +17,10 @@ bool wants_plotter_outputs(const Options& o) {
   return !o.get("--gcode").empty() || !o.get("--hpgl").empty();
 }
 
-const char* const kPenOptions[10] = {
-    "--pen",          "--servo-down",     "--z-up",      "--z-down",      "--z-feed",
-    "--pen-up-gcode", "--pen-down-gcode", "--draw-feed", "--travel-feed", "--pen-dwell"};
+const char* const kPenOptions[14] = {
+    "--pen",          "--servo-down",     "--z-up",         "--z-down",      "--z-feed",
+    "--pen-up-gcode", "--pen-down-gcode", "--draw-feed",    "--travel-feed", "--pen-dwell",
+    "--gcode-flavor", "--servo-up",       "--gcode-header", "--gcode-footer"};
 
 namespace {
 
@@ -51,10 +54,45 @@ std::string command_lines(const std::string& text) {
 
 // Each profile's own options: given with another profile, they are refused by name.
 const char* owner_profile(const std::string& option) {
-  if (option == "--servo-down") return "servo";
+  if (option == "--servo-down" || option == "--servo-up") return "servo";
   if (option == "--z-up" || option == "--z-down" || option == "--z-feed") return "z";
   if (option == "--pen-up-gcode" || option == "--pen-down-gcode") return "custom";
   return nullptr;
+}
+
+// The dialect (--gcode-flavor), the servo's values in it and the header and footer text.
+bool dialect_of(const Options& o, ExportStyle* style, std::string* error,
+                const std::function<std::string(const std::string&)>& name) {
+  const auto bad = [&](const std::string& option, const std::string& form) {
+    *error = name(option) + " '" + o.get(option) + "' must be " + form;
+    return false;
+  };
+  const std::string flavor = o.get("--gcode-flavor", "grbl");
+  if (flavor != "grbl" && flavor != "marlin") return bad("--gcode-flavor", "grbl or marlin");
+  const bool marlin = flavor == "marlin";
+  style->flavor = marlin ? GcodeFlavor::kMarlin : GcodeFlavor::kGrbl;
+  if (!marlin && !o.get("--servo-up").empty()) {
+    *error = name("--servo-up") + " is for " + name("--gcode-flavor") +
+             " marlin (grbl lifts the pen with M5, no value)";
+    return false;
+  }
+  int64_t v = 0;
+  // Marlin's servo takes an angle; a down angle a little off the up one, as pen lifts mount.
+  if (marlin) style->pen_down_s = 30;
+  if (!o.get("--servo-down").empty()) {
+    if (!parse_int(o.get("--servo-down"), 0, marlin ? 180 : 100000, &v))
+      return bad("--servo-down", marlin ? "an angle in [0, 180] (the M280 S value)"
+                                        : "an integer in [0, 100000] (the M3 S value)");
+    style->pen_down_s = int32_t(v);
+  }
+  if (!o.get("--servo-up").empty()) {
+    if (!parse_int(o.get("--servo-up"), 0, 180, &v))
+      return bad("--servo-up", "an angle in [0, 180] (the M280 S value)");
+    style->servo_up_angle = int32_t(v);
+  }
+  style->header_text = command_lines(o.get("--gcode-header"));
+  style->footer_text = command_lines(o.get("--gcode-footer"));
+  return true;
 }
 
 }  // namespace
@@ -83,12 +121,8 @@ bool export_style_of(const Options& o, ExportStyle* style, Machine* machine, std
       return false;
     }
   }
+  if (!dialect_of(o, style, error, name)) return false;
   int64_t v = 0;
-  if (!o.get("--servo-down").empty()) {
-    if (!parse_int(o.get("--servo-down"), 0, 100000, &v))
-      return bad("--servo-down", "an integer in [0, 100000] (the M3 S value)");
-    style->pen_down_s = int32_t(v);
-  }
   const std::pair<const char*, int32_t*> heights[] = {{"--z-up", &style->z_up_um},
                                                       {"--z-down", &style->z_down_um}};
   for (const auto& h : heights) {
@@ -145,23 +179,24 @@ int write_planned_outputs(const Options& o, const JobSpec& spec, PlannedJob plan
     std::cerr << "haloplot: " << page_error << "\n";
     return 1;
   }
-  const double seconds = estimate_plot_seconds(spec, planned.points);
   add_travel_home(spec, &planned.points);
   if (model) centre_on_page(page, spec.finish_home, &planned.points, &style);
+  // The summary is the files': their pen-downs, travel and time, not the planner's stats.
+  const double seconds = written_plot_seconds(spec, planned.points, style);
+  const WrittenFigures f = written_figures(planned.points, style);
   const std::string error = write_plotter_outputs(o.get("--gcode"), o.get("--hpgl"), planned.points,
                                                   spec.machine, style, planned.layer_points);
   if (!error.empty()) {
     std::cerr << "haloplot: " << error << "\n";
     return 1;
   }
-  const PathStats& p = planned.counters.path;
   const long whole = long(seconds + 0.5);
   std::fprintf(stderr,
                "haloplot: plot time about %ld min %02ld s (%.1f s by the motion planner's "
                "model); %u strokes, pen down %s mm, pen up %s mm\n",
-               whole / 60, whole % 60, seconds, p.polylines,
-               mm_text(int64_t(p.pen_down_length), style.steps_per_mm).c_str(),
-               mm_text(int64_t(p.pen_up_length), style.steps_per_mm).c_str());
+               whole / 60, whole % 60, seconds, f.strokes,
+               mm_text(std::llround(f.pen_down), style.steps_per_mm).c_str(),
+               mm_text(std::llround(f.pen_up), style.steps_per_mm).c_str());
   if (o.has("--stats")) std::fprintf(stderr, "estimate_s=%.3f\n", seconds);
   return 0;
 }

@@ -19,9 +19,10 @@ bool wants_plotter_outputs(const Options& o);
 
 // The G-code's pen profile and feeds (valued): --pen servo|z|custom, --servo-down S,
 // --z-up MM, --z-down MM, --z-feed MM/MIN, --pen-up-gcode TEXT, --pen-down-gcode TEXT,
-// --draw-feed MM/MIN, --travel-feed MM/MIN, --pen-dwell SECONDS. A job file takes the same as
-// keys without the dashes.
-extern const char* const kPenOptions[10];
+// --draw-feed MM/MIN, --travel-feed MM/MIN, --pen-dwell SECONDS, --gcode-flavor grbl|marlin,
+// --servo-up ANGLE (marlin), --gcode-header TEXT, --gcode-footer TEXT. A job file takes the
+// same as keys without the dashes.
+extern const char* const kPenOptions[14];
 
 // The exporters' style from the options (the pen profile, the feeds, --steps-per-mm), and the
 // machine's speeds and pen dwell set from them. `dashes`: how the options are named in

@@ -82,40 +82,51 @@ std::vector<std::pair<size_t, int>> layer_starts(const LayerCounts& layers, cons
   return starts;
 }
 
+// The G-code lines that lower or lift the pen, by the style's profile and dialect. `dwell_ms`:
+// the machine's pen travel and settle time.
+std::string pen_gcode(const ExportStyle& s, bool down, int64_t dwell_ms) {
+  std::string t;
+  if (s.pen == PenProfile::kZ) {
+    if (down)
+      t = "G1 Z" + mm_text(s.z_down_um, 1000) + " F" + mm_text(s.z_feed_milli, 1000) + '\n';
+    else
+      t = "G0 Z" + mm_text(s.z_up_um, 1000) + '\n';
+    return t;
+  }
+  if (s.pen == PenProfile::kCustom) {
+    const std::string& text = down ? s.pen_down_text : s.pen_up_text;
+    return text.empty() ? t : text + '\n';
+  }
+  if (s.flavor == GcodeFlavor::kMarlin) {
+    t = "M400\nM280 P0 S";
+    append_int(&t, down ? s.pen_down_s : s.servo_up_angle);
+    t += "\nG4 P";
+    append_int(&t, dwell_ms);
+  } else {
+    t = down ? "M3 S" + std::to_string(s.pen_down_s) + "\nG4 P" : std::string("M5\nG4 P");
+    append_thousandths(&t, dwell_ms);
+  }
+  return t + '\n';
+}
+
 }  // namespace
 
 void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Machine& m,
                  const ExportStyle& s, const LayerCounts& layers) {
-  const auto seconds = [&](uint32_t ticks) { return mm_text(ticks, m.tick_hz); };  // 3 places
-  const std::string dwell = seconds(m.pen_travel_ticks + m.pen_settle_ticks);
+  // Milliseconds, rounded to the nearest: grbl writes them as seconds to three places.
+  const int64_t dwell_ms =
+      floor_div((int64_t(m.pen_travel_ticks) + m.pen_settle_ticks) * 2000 + m.tick_hz,
+                2 * int64_t(m.tick_hz));
   // Feeds in mm/min: as given, or the machine's speeds.
   const auto feed = [&](int64_t given, uint32_t speed) {
     return given != 0 ? mm_text(given, 1000) : mm_text(int64_t(speed) * 60, s.steps_per_mm);
   };
   const std::string draw_feed = feed(s.draw_feed_milli, m.draw_speed);
   const std::string travel_feed = feed(s.travel_feed_milli, m.travel_speed);
+  const std::string pen_up = pen_gcode(s, false, dwell_ms), pen_down = pen_gcode(s, true, dwell_ms);
   out << "; haloplot G-code\nG21\nG90\n";
-  auto pen = [&](bool down) {
-    if (s.pen == PenProfile::kZ) {
-      if (down)
-        out << "G1 Z" << mm_text(s.z_down_um, 1000) << " F" << mm_text(s.z_feed_milli, 1000)
-            << '\n';
-      else
-        out << "G0 Z" << mm_text(s.z_up_um, 1000) << '\n';
-      return;
-    }
-    if (s.pen == PenProfile::kCustom) {
-      const std::string& text = down ? s.pen_down_text : s.pen_up_text;
-      if (!text.empty()) out << text << '\n';
-      return;
-    }
-    if (down)
-      out << "M3 S" << s.pen_down_s << '\n';
-    else
-      out << "M5\n";
-    out << "G4 P" << dwell << '\n';
-  };
-  pen(false);
+  if (!s.header_text.empty()) out << s.header_text << '\n';
+  out << pen_up;
   bool down = false;
   const std::vector<std::pair<size_t, int>> starts = layer_starts(layers, s);
   size_t next = 1;         // the first layer needs no change
@@ -126,13 +137,13 @@ void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Ma
     const bool change = next < starts.size() && i == starts[next].first;
     if (change || (p.pen_down != 0) != down) block.flush();
     if (change) {
-      if (down) pen(false);
+      if (down) out << pen_up;
       down = false;
       out << "; layer " << starts[next++].second << ": change the pen, then resume\nM0\n";
     }
     if ((p.pen_down != 0) != down) {
       down = p.pen_down != 0;
-      pen(down);
+      out << (down ? pen_down : pen_up);
     }
     text += down ? "G1 X" : "G0 X";
     append_mm(&text, int64_t(p.x) + s.offset_x, s.steps_per_mm);
@@ -144,8 +155,9 @@ void write_gcode(std::ostream& out, const std::vector<PathPoint>& path, const Ma
     block.maybe_flush();
   }
   block.flush();
-  if (down) pen(false);
-  out << "M2\n";
+  if (down) out << pen_up;
+  if (!s.footer_text.empty()) out << s.footer_text << '\n';
+  if (s.flavor == GcodeFlavor::kGrbl) out << "M2\n";
 }
 
 void write_hpgl(std::ostream& out, const std::vector<PathPoint>& path, const ExportStyle& s,

@@ -4,7 +4,7 @@
 // G-code (grbl-style pen plotters): G21 G90, G0 travel and G1 drawing at feeds in mm/min, and
 // the pen by one of three profiles:
 //   servo   "M3 S<value>" down, "M5" up, each followed by "G4 P<seconds>" (the machine's pen
-//           travel and settle time)
+//           travel and settle time); Marlin: "M400", "M280 P0 S<angle>", "G4 P<milliseconds>"
 //   z       "G0 Z<up>" up, "G1 Z<down> F<z feed>" down (a Z axis waits for itself: no dwell)
 //   custom  the given text for each change, line by line, nothing added
 // HPGL: IN; SP1; then PU x,y; / PD x,y,...; in plotter units of 0.025 mm (40 per mm).
@@ -22,11 +22,19 @@
 namespace haloplot::host {
 
 enum class PenProfile : uint8_t { kServo, kZ, kCustom };
+// The G-code's dialect. grbl: G4 P in seconds, the servo on the spindle (M3 S / M5), M2 at the
+// end. Marlin: G4 P in whole milliseconds, the servo on M280 P0 S<angle> (Marlin's servo
+// command, no spindle or laser feature needed) after an M400, which waits for the queued moves
+// (M280 does not), and no M2 (Marlin has none).
+enum class GcodeFlavor : uint8_t { kGrbl, kMarlin };
 
 struct ExportStyle {
   uint32_t steps_per_mm = 80;  // plot steps per millimetre
   PenProfile pen = PenProfile::kServo;
-  int32_t pen_down_s = 1000;               // servo: the M3 S value
+  GcodeFlavor flavor = GcodeFlavor::kGrbl;
+  int32_t pen_down_s = 1000;               // servo: the M3 S value (marlin: the down angle)
+  int32_t servo_up_angle = 90;             // servo, marlin: the M280 angle with the pen up
+  std::string header_text, footer_text;    // as given: after G90, and before the end
   int32_t z_up_um = 2000, z_down_um = 0;   // z: pen heights, micrometres
   int64_t z_feed_milli = 1000000;          // z: the pen-down feed, thousandths of mm/min
   std::string pen_up_text, pen_down_text;  // custom: G-code lines, '\n' between them

@@ -74,4 +74,16 @@ std::vector<StrokeLayer> mode_layers(const ModeDrawing& d) {
   return layers;
 }
 
+int layer_number(const std::string& label) {
+  int n = 0;
+  for (size_t i = 0; i < label.size() && i < 4 && label[i] >= '0' && label[i] <= '9'; ++i)
+    n = n * 10 + (label[i] - '0');
+  return n;
+}
+
+const char* layer_colour(int number) {
+  static const char* const kPalette[5] = {"#000000", "#0072b2", "#d55e00", "#009e73", "#6a3d9a"};
+  return number >= 1 && number <= 5 ? kPalette[number - 1] : "#000000";
+}
+
 }  // namespace haloplot::host

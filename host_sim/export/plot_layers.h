@@ -46,4 +46,13 @@ std::vector<PathPoint> joined_path(const std::vector<PlannedLayer>& layers);
 // The layers of a hidden-line drawing (by ModeDrawing::kind), then hatching and outlines.
 std::vector<StrokeLayer> mode_layers(const ModeDrawing& d);
 
+// A layer's number is the one its label starts with ("3 intersections": 3; 0 if none): the
+// SVG layer's id (layer3), the HPGL pen (SP3) and the G-code's pen-change comment, so a layer
+// is the same pen in every file whichever layers before it are empty.
+int layer_number(const std::string& label);
+// Its stroke colour in the SVG, a palette apart in print and for the common colour-blindnesses
+// (after Okabe and Ito): 1 visible black, 2 hidden blue, 3 intersections vermilion, 4 hatching
+// bluish green, 5 outlines dark purple; black outside it.
+const char* layer_colour(int number);
+
 }  // namespace haloplot::host

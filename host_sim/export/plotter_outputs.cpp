@@ -81,6 +81,33 @@ double estimate_plot_seconds(const JobSpec& spec, const std::vector<PathPoint>& 
   return seconds;
 }
 
+WrittenFigures written_figures(const std::vector<PathPoint>& points, const ExportStyle& style) {
+  WrittenFigures f;
+  double x = -double(style.offset_x), y = -double(style.offset_y);
+  bool down = false;
+  for (const PathPoint& p : points) {
+    const double length = std::hypot(p.x - x, p.y - y);
+    if (p.pen_down != 0 && !down) ++f.strokes;
+    down = p.pen_down != 0;
+    (down ? f.pen_down : f.pen_up) += length;
+    x = p.x, y = p.y;
+  }
+  return f;
+}
+
+double written_plot_seconds(const JobSpec& spec, const std::vector<PathPoint>& points,
+                            const ExportStyle& style) {
+  std::vector<PathPoint> paper;
+  paper.reserve(points.size());
+  for (const PathPoint& p : points)
+    paper.push_back(PathPoint{p.x + style.offset_x, p.y + style.offset_y, p.pen_down});
+  // The motion planner adds the travel home itself when the job ends there.
+  if (spec.finish_home && !paper.empty() && paper.back().pen_down == 0 && paper.back().x == 0 &&
+      paper.back().y == 0)
+    paper.pop_back();
+  return estimate_plot_seconds(spec, paper);
+}
+
 void centre_on_page(const Page& page, bool finish_home, std::vector<PathPoint>* points,
                     ExportStyle* style) {
   centring_offset(page, style->steps_per_mm, *points, &style->offset_x, &style->offset_y);

@@ -46,6 +46,22 @@ double estimate_plot_seconds(const JobSpec& spec, const std::vector<PathPoint>& 
 void centre_on_page(const Page& page, bool finish_home, std::vector<PathPoint>* points,
                     ExportStyle* style);
 
+// What the plotter's files draw, read off the path as they write it (after add_travel_home and
+// centre_on_page): the pen-downs, and the lengths pen down and pen up in plot steps, the pen-up
+// travel starting at the paper's origin (where the plotter starts: the path's point minus the
+// style's offset) and ending with the trip home. The planner's own PathStats count the strokes
+// before consecutive ones that meet are drawn as one and its travel from the unplaced origin.
+struct WrittenFigures {
+  uint32_t strokes = 0;
+  double pen_down = 0, pen_up = 0;
+};
+WrittenFigures written_figures(const std::vector<PathPoint>& points, const ExportStyle& style);
+
+// The plot's time as the files move it: estimate_plot_seconds() of the path in paper
+// coordinates, from the paper's origin, its travel home (if any) left to the motion planner.
+double written_plot_seconds(const JobSpec& spec, const std::vector<PathPoint>& points,
+                            const ExportStyle& style);
+
 // Writes the G-code to `gcode_path` and the HPGL to `hpgl_path` (each when not empty), through
 // the command's output set (io/atomic_file.h), with the path's layers (pen changes between
 // them when the style asks). "" or the error.

@@ -25,12 +25,15 @@ struct PagePoint {
   }
 };
 
-// One layer: a <path> per pen-down stroke, from the point the pen went down at.
-void write_layer(std::ostream& out, const PlannedLayer& l, size_t index, const PlotSvgStyle& s) {
+// One layer: a <path> per pen-down stroke, from the point the pen went down at. Its id is its
+// label's number, not its place among the layers drawn (an empty layer is left out), so vpype
+// and the AxiDraw extension, which go by either, see the same layer; its colour is its kind's.
+void write_layer(std::ostream& out, const PlannedLayer& l, const PlotSvgStyle& s) {
   char width[32];
   std::snprintf(width, sizeof width, "%.3f", s.pen_width_mm * l.pen_width);
-  out << "<g inkscape:groupmode=\"layer\" inkscape:label=\"" << l.label << "\" id=\"layer"
-      << index + 1 << "\" fill=\"none\" stroke=\"black\" stroke-width=\"" << width
+  const int number = layer_number(l.label);
+  out << "<g inkscape:groupmode=\"layer\" inkscape:label=\"" << l.label << "\" id=\"layer" << number
+      << "\" fill=\"none\" stroke=\"" << layer_colour(number) << "\" stroke-width=\"" << width
       << "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
   const PagePoint page{s};
   PathPoint at{l.start_x, l.start_y, 0};
@@ -75,7 +78,7 @@ void write_plot_svg(std::ostream& out, const std::vector<PlannedLayer>& layers,
       << "mm\" height=\"" << h << "mm\" viewBox=\"0 0 " << w << ' ' << h << "\">\n";
   if (style.background)
     out << "<rect x=\"0\" y=\"0\" width=\"" << w << "\" height=\"" << h << "\" fill=\"white\"/>\n";
-  for (size_t i = 0; i < layers.size(); ++i) write_layer(out, layers[i], i, style);
+  for (const PlannedLayer& l : layers) write_layer(out, l, style);
   out << "</svg>\n";
 }
 
