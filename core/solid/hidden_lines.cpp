@@ -240,8 +240,7 @@ Status HiddenRun::qi_method(bool* gave_up) {
   uint8_t* qi_mem = arena.take(r.bytes_qi);
   if (qi_mem == nullptr) return out_of_room();
   QiState state;
-  const bool pierces = params.method != HiddenMethod::kQiPaperOnly;
-  Status s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi, pierces);
+  Status s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi);
   if (s != Status::kOk) return fail(s);
   // Where a sliver folds over on paper, the model's facing disagrees with the geometry the
   // QI walks and it finds conflicts: once more with the facing the geometry shows, before
@@ -252,8 +251,17 @@ Status HiddenRun::qi_method(bool* gave_up) {
     r.projected_facing = true;
     r.classes = classify(&topo, front, nullptr);
     r.qi = QiStats{};
-    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi, pierces);
+    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi);
     if (s != Status::kOk) return fail(s);
+  }
+  // Conflicts left: does the mesh pierce itself? Once more, stopping where edges pass through
+  // faces (the dearer walk, for the meshes that need it only).
+  if (r.qi.conflicts > 0 && params.method != HiddenMethod::kQiPaperOnly) {
+    const uint32_t first = r.qi.conflicts;
+    r.qi = QiStats{};
+    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi, true);
+    if (s != Status::kOk) return fail(s);
+    r.qi.first_conflicts = first;
   }
   if (params.method == HiddenMethod::kAuto && r.qi.conflicts > 0) {
     *gave_up = true;  // the mesh pierces itself: ask the faces directly

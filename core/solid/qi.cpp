@@ -299,18 +299,12 @@ Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cu
   if (gs != Status::kOk) return gs;
   s.two_sided = qi_two_sided(topo);
   Ctx c{topo, front, cutset, inc, s.two_sided};
-  QiStats st;
-  propagate(c, s, queue, st);
-  if (st.conflicts > 0 && find_pierces) {
-    // Two paths disagree where edges pass through faces, which nothing on paper marks: once
-    // more, with those places found along every edge (a clean mesh never pays for the look).
+  if (find_pierces) {
     s.pierces = true;
     c.pierce_grid = &s.grid;
-    const uint32_t first = st.conflicts;
-    st = QiStats{};
-    st.first_conflicts = first;
-    propagate(c, s, queue, st);
   }
+  QiStats st;
+  propagate(c, s, queue, st);
   *out = s;
   if (stats != nullptr) *stats = st;
   return Status::kOk;

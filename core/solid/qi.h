@@ -18,10 +18,10 @@
 // QI values are counted in halves throughout.
 //
 // Meshes that pierce themselves (parts that overlap, an eye set into a head): along an edge the
-// QI also changes where it passes through a face, which nothing on paper marks. A first
-// propagation that meets conflicts runs again with those places found along every edge
-// (solid/pierce.h, +-2 for each face the edge goes behind or comes out of), so a clean mesh
-// never pays for the look; conflicts left after that send the picture to the fallback.
+// QI also changes where it passes through a face, which nothing on paper marks. A propagation
+// that meets conflicts is run again with those places found along every edge (find_pierces:
+// solid/pierce.h, +-2 for each face the edge goes behind or comes out of), so a clean mesh
+// never pays for the look (solid/hidden_lines.cpp orders the retries).
 //
 // Open and imperfect meshes (two-sided): on a closed, consistently oriented 2-manifold only
 // front faces need counting (a back face is always behind a front face of the same solid).
@@ -60,8 +60,8 @@ struct QiStats {
   uint64_t half = 0;        // an edge passing exactly through a vertex changed its QI
   uint64_t occluded = 0;    // pieces lying along a face side (odd number of halves)
   uint64_t degenerate = 0;  // edges seen end-on (a point on paper): QI carried unchanged
-  // A mesh that pierces itself: the first propagation met first_conflicts conflicts, so it
-  // ran again stopping where edges pass through faces (solid/pierce.h).
+  // A mesh that pierces itself: a propagation met first_conflicts conflicts, so it ran again
+  // stopping where edges pass through faces (solid/pierce.h); set by the caller.
   uint32_t first_conflicts = 0;
   uint64_t pierces = 0;       // places where an edge passes through faces
   uint64_t pierce_tests = 0;  // exact edge-through-face tests made to find them
@@ -82,10 +82,11 @@ size_t qi_bytes(const Topology& topo);
 
 // `cutset` must be CUT's result over topo's edges in topo's order (reach 0); `front` is from
 // classify(). Any mesh: two-sided when it is not a closed oriented manifold.
-// `find_pierces` false: no second propagation where the first met conflicts.
+// `find_pierces`: the walks also stop where edges pass through faces (a mesh that pierces
+// itself; the caller asks for it once a propagation without has met conflicts).
 Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cutset,
                     const Incidences& inc, void* buffer, size_t bytes, QiState* out, QiStats* stats,
-                    bool find_pierces = true);
+                    bool find_pierces = false);
 
 // A piece of an edge with one QI: positions in Q0.32 along the edge from v0 (t1 <= 2^32).
 struct QiPiece {

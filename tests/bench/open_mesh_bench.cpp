@@ -97,10 +97,11 @@ void row(const char* name, const Sized& s, double base_per_tri) {
   const HiddenReport& r = s.report;
   std::fprintf(stderr,
                "%s: bytes per triangle: topology %.0f, CUT scratch + CUTSET %.0f, incidences %.0f, "
-               "QI %.0f; crossings %llu\n",
+               "QI %.0f; crossings %llu; conflicts %u then %u, pierces %llu, projected facing %d\n",
                name, double(r.bytes_topology) / tris, double(r.bytes_cut) / tris,
                double(r.bytes_incidence) / tris, double(r.bytes_qi) / tris,
-               (unsigned long long)r.cut.crossings);
+               (unsigned long long)r.cut.crossings, r.qi.first_conflicts, r.qi.conflicts,
+               (unsigned long long)r.qi.pierces, r.projected_facing ? 1 : 0);
 }
 
 }  // namespace
