@@ -101,8 +101,8 @@ struct BandConductor::Attempt {
   uint32_t n_carry_out = 0, carry_capacity = 0;
   StoredPiece* pieces = nullptr;
   uint32_t n_pieces = 0, piece_capacity = 0;
-  // A solid's intersection lines: their segments, stacked down from lines_end; a stored piece
-  // whose local index is g.n + k lies on lines_end[-1 - k].
+  // A solid's lines on its faces and contour diagonals: their segments, stacked down from
+  // lines_end; a stored piece whose local index is g.n + k lies on lines_end[-1 - k].
   const Edge3* lines_end = nullptr;
   uint32_t n_lines = 0;
   size_t need = 0;      // bytes asked for by the stage that did not fit

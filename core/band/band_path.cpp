@@ -88,7 +88,7 @@ Status BandConductor::commit_band(Attempt& a) {
   Segment2* u = reinterpret_cast<Segment2*>(a.pieces);
   for (uint32_t i = 0; i < np; ++i) {
     const StoredPiece sp = a.pieces[i];
-    const bool line = sp.local >= a.g.n;  // a solid's intersection line (solid_band.cpp)
+    const bool line = sp.local >= a.g.n;  // a line on the faces, a diagonal (solid_band.cpp)
     const Edge3& e = line ? a.lines_end[-1 - int64_t{sp.local - a.g.n}] : a.g.edges[sp.local];
     Segment2 g;
     frame_point(a.turned, e, sp.t0, &g.x0, &g.y0);

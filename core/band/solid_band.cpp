@@ -2,7 +2,8 @@
 // begin_solid). A band gathers the faces and drawn edges meeting its rows with the vertices
 // they use, runs the topology-free method in its rows only, and keeps the strokes of the
 // pieces it owns; a piece running past the top is carried up with its q. Intersection lines
-// (where its faces cross) are drawn in its rows too, cut at its borders.
+// (where its faces cross) and the visible parts of contour diagonals (sides of its triangles
+// that are no drawn edge but a contour) are drawn in its rows too, cut at its borders.
 #include "haloplot/band/band_attempt.h"
 #include "haloplot/band/conductor.h"
 #include "haloplot/memory/carve.h"
@@ -70,7 +71,17 @@ struct SolidSink {
   static Status outline(void* ctx, const HiddenPiece& p);
   Status finish() { return n_raw > 0 ? flush_edge() : Status::kOk; }
   Status line_piece(const HiddenPiece& p);
+  Status diagonal_piece(const HiddenPiece& p);
+  Status store_line(const Edge3& g, int64_t t0, int64_t t1, bool extends);
   const Edge3* last_line = nullptr;  // the segment whose geometry was stacked last
+  // The stored piece of the last line that a piece of it starting at its end goes on (a
+  // band's run emits a diagonal's pieces unmerged), or kNoPiece.
+  static constexpr uint32_t kNoPiece = ~uint32_t{0};
+  uint32_t extend_at = kNoPiece;
+  // A contour diagonal's sliver at the low end of its window (too short to test: the border cut
+  // it off a piece that began in the band beyond), held for the verdict of the piece after it.
+  int64_t sliver_t0 = -1, sliver_t1 = -1;
+  uint32_t sliver_edge = 0;
   Status flush_edge();
   Status emit(uint32_t local, bool up, const Run& r);
   Status carry_up(uint32_t id, bool up, const Run& r, int64_t join);
@@ -125,6 +136,8 @@ void SolidSink::begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3* edges
   a.n_pieces = a.n_carry_out = a.carry_cursor = a.carry_used = a.n_lines = 0;
   self.n_raw = 0;
   self.last_line = nullptr;
+  self.extend_at = kNoPiece;
+  self.sliver_t1 = -1;
   self.base = carry;
   self.high = 0;
   if (pieces > end) {  // no room even for the carry: every piece is then a full sink
@@ -145,7 +158,7 @@ void SolidSink::begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3* edges
 Status SolidSink::piece(void* ctx, const HiddenPiece& p) {
   SolidSink& self = *static_cast<SolidSink*>(ctx);
   if (p.face[0] != kNoFace) return self.line_piece(p);
-  if (p.edge >= self.a->in.n_edges) return Status::kOk;  // a contour diagonal: not drawn in bands
+  if (p.edge >= self.a->in.n_edges) return self.diagonal_piece(p);
   if (self.n_raw > 0 && p.edge != self.raw_edge) {
     const Status s = self.flush_edge();
     if (!ok(s)) return s;
@@ -163,29 +176,74 @@ Status SolidSink::piece(void* ctx, const HiddenPiece& p) {
 // A piece of an intersection line in the band's rows (they come after every edge's pieces): a
 // visible one is stored as a stroke of this band, its segment stacked at the tail's top once.
 // The band above draws the line's next part from the same segment (found from the same two
-// faces), so the strokes of two bands meet end to end.
+// faces), so the strokes of two bands meet end to end, and the border join (solid_border_join.cpp)
+// draws them as one.
 Status SolidSink::line_piece(const HiddenPiece& p) {
   if (n_raw > 0) {  // the last edge's pieces first: their space is the lines' now
     const Status s = flush_edge();
     if (!ok(s)) return s;
   }
   if (p.hidden || p.t1 <= p.t0 || style->mode == SolidMode::kAll) return Status::kOk;
-  if (last_line == nullptr || last_line->a.x != p.geometry->a.x ||
-      last_line->a.y != p.geometry->a.y || last_line->a.z != p.geometry->a.z ||
-      last_line->b.x != p.geometry->b.x || last_line->b.y != p.geometry->b.y ||
-      last_line->b.z != p.geometry->b.z) {
+  return store_line(*p.geometry, p.t0, p.t1, false);
+}
+
+// A piece of a contour diagonal (a side of the band's triangles drawn only where it is a contour,
+// after every drawn edge: solid/fallback.h). Its visible parts are drawn, as in the whole-model
+// plot (solid/modes.h), and like an intersection line's: a diagonal is the band's own, found
+// from its triangles, so no index of it carries to the band above, but its segment does (the
+// same two vertices), and the border join joins the two bands' strokes.
+Status SolidSink::diagonal_piece(const HiddenPiece& p) {
+  if (n_raw > 0) {  // the last drawn edge's pieces first: their space is the lines' now
+    const Status s = flush_edge();
+    if (!ok(s)) return s;
+  }
+  if (p.t1 <= p.t0 || style->mode == SolidMode::kAll) return Status::kOk;
+  int64_t t0 = p.t0;
+  if (!p.tested) {
+    // The band's run has not seen the piece a sliver at the window's low end belongs to (its
+    // default verdict, visible, would draw a stray dot where that piece is hidden): it takes the
+    // verdict of the piece after it, which differs from the true one by less than a step. One at
+    // the high end takes the piece's before it, as unbanded, and likewise.
+    const RowWindow w = row_window(*p.geometry, a->y0, a->y1);
+    if (p.t0 == w.lo && w.lo > 0) {
+      sliver_edge = p.edge;
+      sliver_t0 = p.t0;
+      sliver_t1 = p.t1;
+      return Status::kOk;
+    }
+  }
+  if (sliver_t1 == p.t0 && sliver_edge == p.edge) t0 = sliver_t0;
+  sliver_t1 = -1;
+  if (p.hidden) return Status::kOk;
+  return store_line(*p.geometry, t0, p.t1, true);
+}
+
+// [t0, t1) of segment g as a stroke of this band: g stacked at the tail's top unless it is the
+// last one stacked; with `extends`, a stroke of g ending at t0 goes on instead of a new one.
+Status SolidSink::store_line(const Edge3& g, int64_t t0, int64_t t1, bool extends) {
+  if (last_line == nullptr || last_line->a.x != g.a.x || last_line->a.y != g.a.y ||
+      last_line->a.z != g.a.z || last_line->b.x != g.b.x || last_line->b.y != g.b.y ||
+      last_line->b.z != g.b.z) {
     if (raw_bottom() - sizeof(Edge3) < reinterpret_cast<uint8_t*>(a->pieces + a->n_pieces))
       return Status::kSinkFull;
     Edge3* slot = const_cast<Edge3*>(a->lines_end) - 1 - a->n_lines++;
-    *slot = *p.geometry;
+    *slot = g;
     last_line = slot;
+    extend_at = kNoPiece;
     note();
+  }
+  const uint32_t local = a->g.n + a->n_lines - 1;
+  if (extends && extend_at != kNoPiece && a->pieces[extend_at].t1_minus_1 + int64_t{1} == t0) {
+    StoredPiece& sp = a->pieces[extend_at];
+    sp.t1_minus_1 = uint32_t(t1 - 1);
+    sp.x_sum = frame_x_sum(a->turned, *last_line, sp.t0, t1);
+    return Status::kOk;
   }
   if (reinterpret_cast<uint8_t*>(a->pieces + a->n_pieces + 1) > raw_bottom())
     return Status::kSinkFull;
-  const uint32_t local = a->g.n + a->n_lines - 1;
-  a->pieces[a->n_pieces++] = StoredPiece{local, uint32_t(p.t0), uint32_t(p.t1 - 1),
-                                         frame_x_sum(a->turned, *last_line, p.t0, p.t1)};
+  if (extends) extend_at = a->n_pieces;
+  a->pieces[a->n_pieces++] = StoredPiece{local, uint32_t(t0), uint32_t(t1 - 1),
+                                         frame_x_sum(a->turned, *last_line, t0, t1)};
   note();
   return Status::kOk;
 }
@@ -195,7 +253,14 @@ Status SolidSink::line_piece(const HiddenPiece& p) {
 Status SolidSink::outline(void* ctx, const HiddenPiece& p) {
   SolidSink& self = *static_cast<SolidSink*>(ctx);
   BandConductor::Attempt& a = *self.a;
-  if (p.edge >= a.in.n_edges || p.t1 <= p.t0) return Status::kOk;
+  if (p.t1 <= p.t0) return Status::kOk;
+  if (p.edge >= a.in.n_edges) {  // along a contour diagonal: kept as its pieces are
+    if (self.n_raw > 0) {
+      const Status s = self.flush_edge();
+      if (!ok(s)) return s;
+    }
+    return self.store_line(*p.geometry, p.t0, p.t1, false);
+  }
   if (reinterpret_cast<uint8_t*>(a.pieces + a.n_pieces + 1) > self.raw_bottom())
     return Status::kSinkFull;
   a.pieces[a.n_pieces++] = StoredPiece{p.edge, uint32_t(p.t0), uint32_t(p.t1 - 1),
@@ -314,7 +379,10 @@ Status BandConductor::begin_solid(const BandSpec& spec, SolidSource source, void
   solid_ = source;
   solid_stage_ = &kSolidStage;
   closed_ = source.closed;
-  if (source.n_edges == 0 || source.n_vertices == 0) return Status::kOk;  // nothing to draw
+  // Nothing to draw: no vertices, or neither drawn edges nor faces (a model whose every side is
+  // smooth (a crease angle) still draws the contour diagonals of its faces).
+  if (source.n_vertices == 0 || (source.n_edges == 0 && source.n_triangles == 0))
+    return Status::kOk;
   // Wider than tall: bands across the width, each a column of the page (BandSpec::turn_wide).
   turned_ = spec.turn_wide && right - left > hi - lo;
   stats_.turned = turned_;

@@ -1,8 +1,8 @@
-// A solid's lines across band borders (conductor.h): a band cuts its outlines, hatch lines and
-// intersection lines at its borders, and the band below defers its piece ending on the border
-// (band_path.cpp defer_joined); here the band above joins it to its own piece starting there.
-// Part of the solid stage (reached through SolidStage::join), so a program that plots edges
-// in bands never links it (test lean_link).
+// A solid's lines across band borders (conductor.h): a band cuts its outlines, hatch lines,
+// intersection lines and contour diagonals at its borders, and the band below defers its piece
+// ending on the border (band_path.cpp defer_joined); here the band above joins it to its own piece
+// starting there. Part of the solid stage (reached through SolidStage::join), so a program that
+// plots edges in bands never links it (test lean_link).
 #include "haloplot/band/band_attempt.h"
 #include "haloplot/band/conductor.h"
 #include "haloplot/sort/in_place_sort.h"
@@ -35,10 +35,10 @@ bool joins_in_line(const RowPoint& a, const RowPoint& p, const RowPoint& b) {
 
 }  // namespace
 
-// A solid's band cuts its outlines, hatch lines and intersection lines at its borders, both
-// bands at the same rounded point. The band below defers its piece ending on the border
-// (defer_joined); here each such deferred segment that meets one of the band's own segments
-// there, in line with it, becomes part of it: one stroke, the whole-model plot's, drawn
+// A solid's band cuts its outlines, hatch lines, intersection lines and contour diagonals at
+// its borders, both bands at the same rounded point. The band below defers its piece ending on
+// the border (defer_joined); here each such deferred segment that meets one of the band's own
+// segments there, in line with it, becomes part of it: one stroke, the whole-model plot's, drawn
 // without lifting the pen at the border. The merged deferred segments are dropped from u;
 // returns how many segments are left. Workspace from `free`; too little room joins none.
 uint32_t BandConductor::join_at_border(const Attempt& a, Segment2* u, uint32_t n_own, uint32_t nu,

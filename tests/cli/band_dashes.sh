@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # A hidden-line plot in bands draws the whole-model plot, dash for dash. For each
 # solid (the 6 x 6 cubes of Figure 4, a torus, a sphere through a torus), hidden-dashed with
-# outlines and hatching (the cubes also without hatching, as reported), `haloplot sim` plots the
+# outlines and hatching (the cubes also without hatching, as reported), and for smooth solids
+# drawn with a crease angle (their silhouettes are contour diagonals: triangle sides that are
+# no drawn edge), hidden-removed and hidden-dashed with outlines, `haloplot sim` plots the
 # job whole and with arenas small enough for several bands; band_dashes_check
 # (tests/tools/band_dashes_check.cpp, which reads the traces alone) compares the pen-down
 # strokes, joined across the borders, with the whole-model trace's: every stroke end, every
@@ -24,13 +26,16 @@ cd "$work"
 source "$here/../support/model_files.sh"
 torus_obj 1.5 0.6 12 6 > torus.obj
 torus_sphere_obj > torus_sphere.obj
+# A torus of 24 x 12 facets: 15 and 30 degrees apart, every side smooth at a crease angle of 40.
+torus_obj 1.5 0.6 24 12 > smooth_torus.obj
 
-# NAME SCENE EXTRA-KEYS ARENA...: the whole-model trace, then one banded trace per arena.
+# NAME SCENE EXTRA-KEYS ARENA...: the whole-model trace, then one banded trace per arena;
+# hidden-dashed, or DRAWING=MODE.
 run() {
   local name="$1" scene="$2" extra="$3"
   shift 3
-  printf 'scene %s\ndrawing hidden-dashed\nview 30,25\noutline on\n%beffects acceleration pen-servo\nkinematics corexy\n' \
-    "$scene" "$extra" > "$name.job"
+  printf 'scene %s\ndrawing %s\nview 30,25\noutline on\n%beffects acceleration pen-servo\nkinematics corexy\n' \
+    "$scene" "${DRAWING:-hidden-dashed}" "$extra" > "$name.job"
   if ! "$tool" sim "$name.job" -o "$name.trace"; then
     bad "$name: the whole-model plot failed"
     return
@@ -71,6 +76,21 @@ run torus_sphere torus_sphere.obj 'hatch 3 30 90\n' 16384 32768 65536
 # pictures are taller than wide and banded in the page's rows: both frames draw the picture.
 run cubes6_rolled cubes6.obj 'roll 90\ndash 2 1\nhatch 3 30 90\nsteps 1/8\n' 32768 49152
 run torus_sphere_rolled torus_sphere.obj 'roll 90\nhatch 3 30 90\n' 16384 32768
+# Smooth solids at a crease angle (`crease 40`): the sides left out as smooth are drawn only
+# where they are contours, and a band finds them among its own triangles (no drawn edge to carry
+# across a border), so their visible parts and the outlines along them are cut at the borders
+# and joined there. The smooth torus has no drawn edge at all: its whole drawing is contour
+# diagonals, in both frames. The sphere through the torus has creases too, and lines where the
+# two cross. Not rolled: from this view one of its faces is seen nearly edge-on, and rolled a
+# quarter its corners round onto one row, so a band, which has only the projected areas to tell
+# a face's facing, takes it for a back face and its diagonal for a contour, where the
+# whole-model plot has the model's facing (view/facing.h): front, no contour.
+for drawing in hidden-removed hidden-dashed; do
+  DRAWING=$drawing run "smooth_torus_$drawing" smooth_torus.obj 'crease 40\n' 8192 16384 24576
+  DRAWING=$drawing run "smooth_torus_rolled_$drawing" smooth_torus.obj 'roll 90\ncrease 40\n' 8192 16384
+done
+DRAWING=hidden-removed run torus_sphere_crease torus_sphere.obj 'crease 40\n' 8192 12288
+run torus_sphere_crease_dashed torus_sphere.obj 'crease 40\n' 8192 16384 32768
 if [ "$turned_runs" -eq 0 ] || [ "$row_runs" -eq 0 ]; then
   bad "banded in columns $turned_runs times, in rows $row_runs times: both frames must be tried"
 fi

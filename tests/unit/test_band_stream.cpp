@@ -5,7 +5,9 @@
 // byte, however often the plot waits for a band. A band with an edge missing must show. The
 // same for a solid's hidden lines in bands (10 x 10 cubes, hidden-dashed, outlined, and
 // hatched; a hatched torus): its bands carry vertices, edges and triangles, and a band missing
-// faces must show, as must the torus's bands without the triangles that complete a polygon.
+// faces must show, as must the torus's bands without the triangles that complete a polygon. A
+// smooth torus (no drawn edge: every side left out, as a crease angle above its facets' leaves
+// them) draws its contour diagonals only, which each band finds among the triangles it is sent.
 #include <algorithm>
 #include <sstream>
 #include <string>
@@ -26,7 +28,7 @@ constexpr size_t kArena = 64 * 1024;
 // A solid's bands streamed: the trace equals the banded `sim` of the same job. Hatched too: then
 // each band carries every triangle of each polygon it holds (the lines' direction reads the
 // whole polygon), and bands planned without that rule must change the plot.
-void check_solid(bool hatch, bool torus = false) {
+void check_solid(bool hatch, bool torus = false, bool smooth = false) {
   solid_scenes::Mesh m;
   if (torus)  // quads whose diagonals do not span them in y: a band can meet half of one
     solid_scenes::torus(&m, 0, 0, 0, 6000, 2000, 48, 24, true);
@@ -36,6 +38,7 @@ void check_solid(bool hatch, bool torus = false) {
         solid_scenes::box(&m, i * 3000, j * 3000, 0, i * 3000 + 2000, j * 3000 + 2000, 2000);
   SolidScene scene;
   CHECK(solid_scenes::project(m, solid_scenes::view(30000, 25000), &scene));
+  if (smooth) scene.edge_pairs.clear();
   const SolidInput in = solid_input(scene);
   const bool closed = model_closed(scene);
   CHECK(closed);
@@ -50,6 +53,7 @@ void check_solid(bool hatch, bool torus = false) {
   std::ostringstream reference;
   SimReport report;
   CHECK(simulate_solid(job, in, closed, &reference, &report, kArena) == Status::kOk);
+  CHECK_MSG(!report.spans.empty(), "the banded plot draws strokes");
   BandPlan plan;
   CHECK(plan_streamed_solid(in, closed, band_spec(job), kArena, &plan) == Status::kOk);
   CHECK_EQ(plan.bands.size(), size_t(report.bands.bands));
@@ -62,9 +66,10 @@ void check_solid(bool hatch, bool torus = false) {
   }
   std::printf(
       "%s%s streamed: %zu bands; %zu vertices, %zu edges, %zu triangles "
-      "sent for %u, %u, %u\n",
-      torus ? "a torus" : "10 x 10 solid cubes", hatch ? " hatched" : "", plan.bands.size(), v, e,
-      t, in.n_vertices, in.n_edges, in.n_triangles);
+      "sent for %u, %u, %u; %zu strokes\n",
+      smooth ? "a smooth torus" : (torus ? "a torus" : "10 x 10 solid cubes"),
+      hatch ? " hatched" : "", plan.bands.size(), v, e, t, in.n_vertices, in.n_edges,
+      in.n_triangles, report.spans.size());
   for (int busy : {0, 2}) {
     PlanStream stream;
     stream.plan = &plan;
@@ -87,7 +92,9 @@ void check_solid(bool hatch, bool torus = false) {
   SimReport streamed;
   const Status s = simulate_streamed(job, stream.stream(), 0, kArena, &out, &streamed, &broken);
   CHECK_MSG(!ok(s) || out.str() != reference.str(), "a band missing faces must change the plot");
-  if (!torus) return;  // (a cube's quads: both halves span the quad's rows, so no band cuts one)
+  // (A cube's quads: both halves span the quad's rows, so no band cuts one; and only a hatched
+  // plot's bands hold whole polygons.)
+  if (!torus || !hatch) return;
   // The same bands, each without the triangles that only complete a polygon.
   BandPlan cut = plan;
   size_t fewer = 0;
@@ -175,5 +182,6 @@ int main() {
   check_solid(false);
   check_solid(true);
   check_solid(true, true);
+  check_solid(false, true, true);
   return check::finish("band_stream");
 }
