@@ -552,7 +552,7 @@ std::string shells_note(const std::string& path, const RepairReport& r, bool wel
                                  "the model's units)"
                                : "";
   return path + ": " + std::to_string(r.shells) + (r.shells == 1 ? " shell: " : " shells: ") +
-         kinds + "; hidden lines by QI with both sides of every face hiding" + hint;
+         kinds + "; every face hides from both sides" + hint;
 }
 
 bool load_solid_scene(const Options& o, const std::string& path, SolidScene* scene,

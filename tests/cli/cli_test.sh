@@ -153,7 +153,7 @@ expect '[ $rc -eq 0 ] && [ "$(grep -c "^haloplot: " err.txt)" = 1 ] && grep -q "
 printf 'v 0 0 0\nv 4 0 0\nv 4 4 0\nv 0 4 1\nf 1 2 3 4\n' > sheet.obj
 "$tool" plot sheet.obj --mode hidden-removed -o sheet.svg 2> err.txt
 rc=$?
-expect '[ $rc -eq 0 ] && grep -q "sheet.obj: 1 shell: 1 open surface; hidden lines by QI with both sides of every face hiding" err.txt' "an open surface is reported: $(cat err.txt)"
+expect '[ $rc -eq 0 ] && grep -q "sheet.obj: 1 shell: 1 open surface; every face hides from both sides" err.txt' "an open surface is reported: $(cat err.txt)"
 "$tool" plot good.obj --mode hidden-sketchy -o x.svg 2> err.txt
 expect '[ $? -ne 0 ] && grep -q -- "--mode .hidden-sketchy. must be" err.txt && [ ! -e x.svg ]' "a bad --mode is named"
 "$tool" plot obj.edges --mode hidden-removed -o x.svg 2> err.txt
