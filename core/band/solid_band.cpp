@@ -214,8 +214,12 @@ Status SolidSink::diagonal_piece(const HiddenPiece& p) {
   }
   if (sliver_t1 == p.t0 && sliver_edge == p.edge) t0 = sliver_t0;
   sliver_t1 = -1;
-  if (p.hidden) return Status::kOk;
-  return store_line(*p.geometry, t0, p.t1, true);
+  if (!p.hidden) return store_line(*p.geometry, t0, p.t1, true);
+  // Hidden: its dashes hang on the diagonal's ends (solid/modes.h), so this band's are the
+  // whole-model plot's wherever the band cuts it.
+  return piece_strokes(
+      *p.geometry, p.edge, PieceKind::kContour, t0, p.t1, true, *style,
+      [this, &p](const Span& d) { return store_line(*p.geometry, d.t0, d.t1, false); });
 }
 
 // [t0, t1) of segment g as a stroke of this band: g stacked at the tail's top unless it is the
@@ -274,14 +278,15 @@ Status SolidSink::emit(uint32_t local, bool up, const Run& r) {
   const int64_t t0 = up ? r.lower : r.upper, t1 = up ? r.upper : r.lower;
   if (t1 <= t0) return Status::kOk;  // an empty run before a sliver
   const Edge3& e = a->g.edges[local];
-  return piece_strokes(e, local, false, t0, t1, r.hidden, *style, [this, local, &e](const Span& s) {
-    if (reinterpret_cast<uint8_t*>(a->pieces + a->n_pieces + 1) > raw_bottom())
-      return Status::kSinkFull;
-    const int32_t x_sum = a->turned ? frame_x_sum(true, e, s.t0, s.t1) : s.x0 + s.x1;
-    a->pieces[a->n_pieces++] = StoredPiece{local, uint32_t(s.t0), uint32_t(s.t1 - 1), x_sum};
-    note();
-    return Status::kOk;
-  });
+  return piece_strokes(
+      e, local, PieceKind::kEdge, t0, t1, r.hidden, *style, [this, local, &e](const Span& s) {
+        if (reinterpret_cast<uint8_t*>(a->pieces + a->n_pieces + 1) > raw_bottom())
+          return Status::kSinkFull;
+        const int32_t x_sum = a->turned ? frame_x_sum(true, e, s.t0, s.t1) : s.x0 + s.x1;
+        a->pieces[a->n_pieces++] = StoredPiece{local, uint32_t(s.t0), uint32_t(s.t1 - 1), x_sum};
+        note();
+        return Status::kOk;
+      });
 }
 
 Status SolidSink::carry_up(uint32_t id, bool up, const Run& r, int64_t join) {

@@ -272,8 +272,11 @@ struct StrokeCollector {
   static Status piece(void* ctx, const HiddenPiece& p) {
     auto* self = static_cast<StrokeCollector*>(ctx);
     const uint32_t before = self->count;
-    const Status s = self->runs.piece(*p.geometry, p.edge, p.edge >= self->n_drawn, p.t0, p.t1,
-                                      p.hidden, p.q, self->style, Emit{self});
+    const PieceKind kind = p.edge < self->n_drawn ? PieceKind::kEdge
+                           : p.face[0] != kNoFace ? PieceKind::kLine
+                                                  : PieceKind::kContour;
+    const Status s = self->runs.piece(*p.geometry, p.edge, kind, p.t0, p.t1, p.hidden, p.q,
+                                      self->style, Emit{self});
     if (ok(s) && !p.hidden && self->count > before)
       self->layer_end[-int64_t{self->count}] = p.hatch                ? kHatching
                                                : p.face[0] != kNoFace ? kIntersection

@@ -4,6 +4,7 @@
 //   hidden-removed  pieces with QI 0 (and the visible parts of contour diagonals)
 //   hidden-dashed   those, plus the hidden parts cut into dashes: `dash` steps drawn, `gap`
 //                   steps skipped, measured along the edge from where its hidden run starts
+//                   (along a contour diagonal, from its middle: diagonal_dashes)
 // A hidden run is the hidden pieces of an edge that meet end to end: where it is cut inside (a
 // change of QI behind the front faces, a band's border) starts no new pattern, so the dashes
 // depend only on where the run starts on the edge, and a plot in bands (band/solid_band.cpp)
@@ -18,25 +19,30 @@ namespace haloplot {
 
 enum class SolidMode : uint8_t { kAll = 0, kHiddenRemoved = 1, kHiddenDashed = 2 };
 
+// What a piece belongs to: an input edge (its hidden runs dashed from where they start), a
+// contour diagonal (a side drawn only where it is a contour: its hidden parts dashed from its
+// lower end), or a line on the faces (an intersection or hatch line: visible parts only).
+enum class PieceKind : uint8_t { kEdge = 0, kContour = 1, kLine = 2 };
+
 struct StrokeStyle {
   SolidMode mode = SolidMode::kHiddenRemoved;
   int32_t dash = 160, gap = 80;  // steps (2 mm and 1 mm at 80 steps per mm), both >= 1
 };
 
-// Calls emit(span) for each stroke of the piece [t0, t1) of edge e (index `edge`; a contour
-// diagonal when `diagonal`). Returns the first status emit returns that is not kOk.
+// Calls emit(span) for each stroke of the piece [t0, t1) of edge e (index `edge`, of `kind`).
+// Returns the first status emit returns that is not kOk.
 template <typename Emit>
-Status piece_strokes(const Edge3& e, uint32_t edge, bool diagonal, int64_t t0, int64_t t1,
+Status piece_strokes(const Edge3& e, uint32_t edge, PieceKind kind, int64_t t0, int64_t t1,
                      bool hidden, const StrokeStyle& style, Emit emit);
 
 // Strokes of pieces given edge by edge and along each edge (t0 ascending, as the QI method and
 // the fallback emit them), a hidden run's dashes measured from its start: a hidden piece
-// (hidden-dashed, not a diagonal) is held until the next piece shows whether its run goes on,
+// (hidden-dashed, of an input edge) is held until the next piece shows whether its run goes on,
 // and finish() strokes the last one. emit(span, q): q the piece's, for a dash its run's first.
 class DashedRuns {
  public:
   template <typename Emit>
-  Status piece(const Edge3& e, uint32_t edge, bool diagonal, int64_t t0, int64_t t1, bool hidden,
+  Status piece(const Edge3& e, uint32_t edge, PieceKind kind, int64_t t0, int64_t t1, bool hidden,
                int32_t q, const StrokeStyle& style, Emit emit);
   template <typename Emit>
   Status finish(const StrokeStyle& style, Emit emit);
@@ -60,16 +66,42 @@ inline Span make_stroke(const Edge3& e, uint32_t edge, int64_t t0, int64_t t1) {
   return s;
 }
 
+// A contour diagonal's hidden part [t0, t1) as dashes laid out from the diagonal's middle, one
+// centred there and the rest a period apart both ways, wherever the part starts: a diagonal is
+// found afresh in every band of a banded plot (its number, the way it runs and, in a band
+// turned a quarter, its coordinates are the band's), and the middle alone is the same in all of
+// them, so every band draws the whole-model plot's dashes.
 template <typename Emit>
-Status piece_strokes(const Edge3& e, uint32_t edge, bool diagonal, int64_t t0, int64_t t1,
+Status diagonal_dashes(const Edge3& e, uint32_t edge, int64_t t0, int64_t t1, int64_t dash,
+                       int64_t period, Emit emit) {
+  constexpr int64_t kHalf = int64_t{1} << 31;
+  const int64_t half_dash = (dash + 1) / 2;  // the same either way along the diagonal
+  // Dash k covers [kHalf - half_dash + k period, kHalf + half_dash + k period).
+  const int64_t first = kHalf - half_dash;
+  int64_t k = (t0 - first) / period - 1;  // at or before the first dash meeting [t0, t1)
+  for (;; ++k) {
+    const int64_t d0 = first + k * period;
+    if (d0 >= t1) break;
+    const int64_t a = d0 < t0 ? t0 : d0, b = d0 + 2 * half_dash > t1 ? t1 : d0 + 2 * half_dash;
+    if (b <= a) continue;
+    const Status s = emit(make_stroke(e, edge, a, b));
+    if (s != Status::kOk) return s;
+  }
+  return Status::kOk;
+}
+
+template <typename Emit>
+Status piece_strokes(const Edge3& e, uint32_t edge, PieceKind kind, int64_t t0, int64_t t1,
                      bool hidden, const StrokeStyle& style, Emit emit) {
-  if (style.mode == SolidMode::kAll && diagonal) return Status::kOk;  // not an input edge
-  if (!hidden || style.mode == SolidMode::kAll) return emit(make_stroke(e, edge, t0, t1));
-  if (style.mode != SolidMode::kHiddenDashed || diagonal) return Status::kOk;
+  const bool all = style.mode == SolidMode::kAll;
+  if (all && kind != PieceKind::kEdge) return Status::kOk;  // not an input edge
+  if (!hidden || all) return emit(make_stroke(e, edge, t0, t1));
+  if (style.mode != SolidMode::kHiddenDashed || kind == PieceKind::kLine) return Status::kOk;
   // Dashes in Q0.32 of this edge; the dash rounds up so it is never shorter than asked.
   const int64_t len = paper_length(e);
   const int64_t dash = (int64_t{style.dash} << 32) / len + 1;
   const int64_t period = dash + (int64_t{style.gap} << 32) / len;
+  if (kind == PieceKind::kContour) return diagonal_dashes(e, edge, t0, t1, dash, period, emit);
   for (int64_t t = t0; t < t1; t += period) {
     const Status s = emit(make_stroke(e, edge, t, t + dash < t1 ? t + dash : t1));
     if (s != Status::kOk) return s;
@@ -78,15 +110,16 @@ Status piece_strokes(const Edge3& e, uint32_t edge, bool diagonal, int64_t t0, i
 }
 
 template <typename Emit>
-Status DashedRuns::piece(const Edge3& e, uint32_t edge, bool diagonal, int64_t t0, int64_t t1,
+Status DashedRuns::piece(const Edge3& e, uint32_t edge, PieceKind kind, int64_t t0, int64_t t1,
                          bool hidden, int32_t q, const StrokeStyle& style, Emit emit) {
-  if (held_ && hidden && !diagonal && edge == edge_ && t0 == t1_) {  // the run goes on
+  const bool run = hidden && kind == PieceKind::kEdge;
+  if (held_ && run && edge == edge_ && t0 == t1_) {  // the run goes on
     t1_ = t1;
     return Status::kOk;
   }
   const Status s = finish(style, emit);
   if (s != Status::kOk) return s;
-  if (hidden && !diagonal && style.mode == SolidMode::kHiddenDashed) {
+  if (run && style.mode == SolidMode::kHiddenDashed) {
     held_ = true;
     e_ = e;
     edge_ = edge;
@@ -95,7 +128,7 @@ Status DashedRuns::piece(const Edge3& e, uint32_t edge, bool diagonal, int64_t t
     q_ = q;
     return Status::kOk;
   }
-  return piece_strokes(e, edge, diagonal, t0, t1, hidden, style,
+  return piece_strokes(e, edge, kind, t0, t1, hidden, style,
                        [&emit, q](const Span& span) { return emit(span, q); });
 }
 
@@ -104,7 +137,7 @@ Status DashedRuns::finish(const StrokeStyle& style, Emit emit) {
   if (!held_) return Status::kOk;
   held_ = false;
   const int32_t q = q_;
-  return piece_strokes(e_, edge_, false, t0_, t1_, true, style,
+  return piece_strokes(e_, edge_, PieceKind::kEdge, t0_, t1_, true, style,
                        [&emit, q](const Span& span) { return emit(span, q); });
 }
 

@@ -36,30 +36,33 @@ ModeDrawing make_mode_drawing(const SolidRun& run, const ModeSpec& spec) {
   };
   // A piece's call first strokes the hidden run held before it (dashes), then the piece's own
   // stroke, if it makes one now (one span: a visible piece, or any piece in mode all).
-  auto add = [&](const SolidPiece& p, bool diagonal, bool intersection) {
-    runs.piece(run.edges[p.edge], p.edge, diagonal, p.t0, p.t1, p.hidden, p.q, style, keep);
+  auto add = [&](const SolidPiece& p, PieceKind kind) {
+    runs.piece(run.edges[p.edge], p.edge, kind, p.t0, p.t1, p.hidden, p.q, style, keep);
     const bool all = spec.mode == SolidMode::kAll;
-    const bool own = !(all && diagonal) && (!p.hidden || all);
+    const bool intersection = kind == PieceKind::kLine;
+    const bool own = !(all && kind != PieceKind::kEdge) && (!p.hidden || all);
     const size_t before = d.kind.size();
     d.kind.resize(d.spans.size(), LineKind::kHidden);
     if (own && d.kind.size() > before)
       d.kind.back() = intersection ? LineKind::kIntersection
                                    : (p.hidden ? LineKind::kHidden : LineKind::kVisible);
   };
-  for (const SolidPiece& p : run.pieces) add(p, false, false);
-  for (const SolidPiece& p : run.contour_diagonals) add(p, true, false);
-  // Intersection lines as the core's job draws them: visible parts only, like a contour diagonal.
-  for (const SolidPiece& p : run.intersections) add(p, true, true);
+  for (const SolidPiece& p : run.pieces) add(p, PieceKind::kEdge);
+  // Contour diagonals: visible parts, and in hidden-dashed their hidden parts dashed.
+  for (const SolidPiece& p : run.contour_diagonals) add(p, PieceKind::kContour);
+  // Intersection lines as the core's job draws them: visible parts only.
+  for (const SolidPiece& p : run.intersections) add(p, PieceKind::kLine);
   runs.finish(style, keep);
   d.kind.resize(d.spans.size(), LineKind::kHidden);
   // Hatching likewise, after them (Span::edge = the polygon).
   for (size_t k = 0; k < run.hatch.size(); ++k) {
     const SolidPiece& p = run.hatch[k];
-    piece_strokes(run.edges[p.edge], p.edge, true, p.t0, p.t1, p.hidden, style, [&](Span s) {
-      s.edge = run.hatch_polygons[k];
-      d.hatch.push_back(s);
-      return Status::kOk;
-    });
+    piece_strokes(run.edges[p.edge], p.edge, PieceKind::kLine, p.t0, p.t1, p.hidden, style,
+                  [&](Span s) {
+                    s.edge = run.hatch_polygons[k];
+                    d.hatch.push_back(s);
+                    return Status::kOk;
+                  });
   }
   if (spec.outline)
     for (const OutlineSegment& o : run.outline)
