@@ -2,8 +2,9 @@
 // begin_solid). A band gathers the faces and drawn edges meeting its rows with the vertices
 // they use, runs the topology-free method in its rows only, and keeps the strokes of the
 // pieces it owns; a piece running past the top is carried up with its q. Intersection lines
-// (where its faces cross) and the visible parts of contour diagonals (sides of its triangles
-// that are no drawn edge but a contour) are drawn in its rows too, cut at its borders.
+// (where its faces cross) and contour diagonals (sides of its triangles that are no drawn edge
+// but a contour: visible parts, and hidden ones dashed) are drawn in its rows too, cut at its
+// borders.
 #include "haloplot/band/band_attempt.h"
 #include "haloplot/band/conductor.h"
 #include "haloplot/memory/carve.h"

@@ -21,7 +21,7 @@ enum class SolidMode : uint8_t { kAll = 0, kHiddenRemoved = 1, kHiddenDashed = 2
 
 // What a piece belongs to: an input edge (its hidden runs dashed from where they start), a
 // contour diagonal (a side drawn only where it is a contour: its hidden parts dashed from its
-// lower end), or a line on the faces (an intersection or hatch line: visible parts only).
+// middle), or a line on the faces (an intersection or hatch line: visible parts only).
 enum class PieceKind : uint8_t { kEdge = 0, kContour = 1, kLine = 2 };
 
 struct StrokeStyle {
