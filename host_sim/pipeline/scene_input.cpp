@@ -445,8 +445,9 @@ namespace {
 // A model whose every edge the crease angle left out, drawn without its faces' contours.
 std::string no_edges_left(const Options& o, const std::string& path) {
   return path + ": every edge lies within --crease " + o.get("--crease", "0") +
-         " degrees of flat (or is flat but for the file's rounding), and --mode all works out no "
-         "contours: lower --crease, or draw it in a hidden-line mode (contours kept)";
+         " degrees of flat (or is flat but for the file's rounding), and a drawing of the edges "
+         "alone (haloed, or --mode all) has no faces to find contours with: lower --crease, or "
+         "draw it with --mode hidden-removed or hidden-dashed (contours kept)";
 }
 
 bool something_to_draw(const std::string& path, const std::vector<Edge3>& edges,
@@ -547,9 +548,8 @@ std::string shells_note(const std::string& path, const RepairReport& r, bool wel
                                  : "shells that cannot be oriented (sides on three or more "
                                    "faces, or a twist like a Moebius strip's)");
   const std::string hint = weld_hint && open > 0
-                               ? " (if its faces should share corners farther apart than the "
-                                 "file's rounding, --weld EPS joins the corners within EPS, in "
-                                 "the model's units)"
+                               ? " (not meant to be open? --weld EPS joins corners within EPS "
+                                 "model units)"
                                : "";
   return path + ": " + std::to_string(r.shells) + (r.shells == 1 ? " shell: " : " shells: ") +
          kinds + "; every face hides from both sides" + hint;

@@ -50,8 +50,9 @@ std::string reason_text(const HiddenReport& r) {
     case FallbackReason::kBand:
       return "a band of a banded plot (the topology-free method is local to the band)";
     case FallbackReason::kConflicts:
-      return std::to_string(r.qi.conflicts) +
-             " vertices reached with two different QIs (does the mesh pierce itself?)";
+      return "parts that pass through each other where faces touch or overlap exactly (" +
+             std::to_string(r.qi.conflicts) +
+             " vertices the QI reached two ways), drawn as exactly";
   }
   return "";
 }

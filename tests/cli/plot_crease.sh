@@ -4,7 +4,8 @@
 # 24 x 12 facets (15 and 30 degrees apart) with --crease 40, hidden-removed and hidden-dashed,
 # draws something, and every point it draws is a point of the same view's drawing with every
 # edge kept (--crease off: the contours are mesh edges, at the same fit on the page), with
-# fewer points. `--mode all` works out no contours: it refuses, naming --crease.
+# fewer points (in the visible layer; hidden-dashed also dashes the hidden contours). `--mode
+# all` works out no contours: it refuses, naming --crease.
 # Usage: plot_crease.sh HALOPLOT
 set -u
 tool="$1"
@@ -19,8 +20,12 @@ bad() { fail=$((fail + 1)); echo "FAILED: $1"; }
 source "$here/../support/model_files.sh"
 torus_obj 1.5 0.6 24 12 > torus.obj
 
-# The points of an SVG's paths, one "x,y" a line, sorted and unique.
-points() { grep -o ' d="[^"]*"' "$1" | tr -s ' MLd="' '\n' | grep , | sort -u; }
+# The points of an SVG layer's paths (its label, e.g. "1 visible"), one "x,y" a line, sorted
+# and unique.
+points() {
+  awk -v label="inkscape:label=\"$2\"" 'index($0, "<g ") { on = index($0, label) > 0 } on' "$1" |
+    grep -o ' d="[^"]*"' | tr -s ' MLd="' '\n' | grep , | sort -u
+}
 
 for mode in hidden-removed hidden-dashed; do
   if ! "$tool" plot torus.obj --view 30,25 --mode "$mode" --crease off -o all_"$mode".svg 2> err.txt ||
@@ -28,8 +33,8 @@ for mode in hidden-removed hidden-dashed; do
     bad "$mode: a plot failed: $(cat err.txt)"
     continue
   fi
-  points all_"$mode".svg > all.txt
-  points smooth_"$mode".svg > smooth.txt
+  points all_"$mode".svg "1 visible" > all.txt
+  points smooth_"$mode".svg "1 visible" > smooth.txt
   n_all=$(wc -l < all.txt) n_smooth=$(wc -l < smooth.txt)
   extra=$(comm -13 all.txt smooth.txt | wc -l)
   if [ "$n_smooth" -gt 0 ] && [ "$extra" -eq 0 ] && [ "$n_smooth" -lt "$n_all" ]; then
@@ -38,6 +43,14 @@ for mode in hidden-removed hidden-dashed; do
     bad "$mode: --crease 40 draws $n_smooth points, $extra not in --crease off's $n_all"
   fi
 done
+# Hidden-dashed draws the hidden parts of the contours dashed (the torus's back rim, its inner
+# contour behind the tube), with no edge of the mesh left to carry them.
+n_hidden=$(points smooth_hidden-dashed.svg "2 hidden" | wc -l)
+if [ "$n_hidden" -gt 20 ]; then
+  ok "hidden-dashed: --crease 40 dashes the hidden contours ($n_hidden points)"
+else
+  bad "hidden-dashed: --crease 40 draws $n_hidden points of hidden contours"
+fi
 
 if "$tool" plot torus.obj --view 30,25 --mode all --crease 40 -o x.svg 2> err.txt; then
   bad "--mode all with every edge creased plotted (an empty drawing)"
