@@ -84,6 +84,17 @@ bool paper_h3(const Topology& topo, uint32_t edge, int* side) {
   return true;
 }
 
+bool edge_on_contour(const Topology& topo, uint32_t edge) {
+  const SolidEdge& e = topo.edges[edge];
+  if (!e.regular || !paper_h3(topo, edge)) return false;
+  for (int k = 0; k < 2; ++k) {
+    const uint32_t* v = topo.triangles[e.face[k]].v;
+    if (projected_area2(topo.vertices[v[0]], topo.vertices[v[1]], topo.vertices[v[2]]) == 0)
+      return true;
+  }
+  return false;
+}
+
 ClassCounts classify(Topology* topo, uint8_t* front, const uint8_t* facing) {
   ClassCounts k;
   for (uint32_t t = 0; t < topo->n_triangles; ++t) {

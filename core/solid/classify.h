@@ -41,6 +41,13 @@ int paper_jump(const Topology& topo, uint32_t edge);
 // of v0 -> v1 its counter-clockwise face lies on, +1 left, -1 right.
 bool paper_h3(const Topology& topo, uint32_t edge, int* side = nullptr);
 
+// A contour that the model's facing hides from the class: paper_h3, next to a face seen exactly
+// edge-on after rounding (its projected area 0) that the model calls front. The silhouette
+// then runs along the edge-on face's other side, the two on one line on paper, and the class
+// puts the contour on that other side, where the face beside it lies along it: drawn only from
+// here. (A sliver whose rounded area flipped sign is not one: the model is right about it.)
+bool edge_on_contour(const Topology& topo, uint32_t edge);
+
 // Is the edge a contour on paper for a drawing that counts both sides of every face (an open
 // or non-manifold mesh, solid/qi.h's two-sided mode): paper_jump() != 0.
 inline bool paper_contour(const Topology& topo, uint32_t edge) {

@@ -32,7 +32,8 @@ bool outline_candidate(const Topology& topo, uint32_t e, bool any_facing) {
 // closed solid; counting both sides, any whose faces lie on one side of it on paper).
 bool draws_edge(const Topology& topo, uint32_t e, bool any_facing) {
   if (e < topo.n_drawn) return true;
-  return any_facing ? paper_contour(topo, e) : topo.edges[e].cls == EdgeClass::kH3;
+  if (any_facing) return paper_contour(topo, e);
+  return topo.edges[e].cls == EdgeClass::kH3 || edge_on_contour(topo, e);
 }
 
 // The outline pass's table: for each drawn candidate edge, the sorted positions along it where

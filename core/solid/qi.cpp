@@ -207,7 +207,8 @@ int32_t cast_base(const Ctx& c, const FaceGrid& fg, uint32_t v, uint32_t to) {
 }  // namespace
 
 bool qi_contour_diagonal(const Topology& topo, const QiState& state, uint32_t e) {
-  return state.two_sided ? paper_contour(topo, e) : topo.edges[e].cls == EdgeClass::kH3;
+  if (state.two_sided) return paper_contour(topo, e);
+  return topo.edges[e].cls == EdgeClass::kH3 || edge_on_contour(topo, e);
 }
 
 size_t qi_bytes(const Topology& topo) {

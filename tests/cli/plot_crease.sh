@@ -52,6 +52,22 @@ else
   bad "hidden-dashed: --crease 40 draws $n_hidden points of hidden contours"
 fi
 
+# A torus whose tube faces are 20 degrees apart, seen from 20 degrees up: at its back a ring of
+# faces is exactly edge-on, and the silhouette runs along it. Kira's outline (the boundary of
+# what the picture covers) must be drawn whole in the visible layer; it once had a 21 mm gap
+# there, the contour put on the edge-on face's far side.
+torus_obj 3 1 36 18 > torus20.obj
+for view in 30,20 10,20 30,25; do
+  if ! "$tool" plot torus20.obj --view $view --mode hidden-removed --crease 40 --outline \
+       -o edge_on.svg 2> err.txt; then
+    bad "torus20 at $view: the plot failed: $(cat err.txt)"
+  elif out=$(python3 "$here/outline_covered.py" edge_on.svg); then
+    ok "torus20 at $view: $out"
+  else
+    bad "torus20 at $view: $out"
+  fi
+done
+
 if "$tool" plot torus.obj --view 30,25 --mode all --crease 40 -o x.svg 2> err.txt; then
   bad "--mode all with every edge creased plotted (an empty drawing)"
 elif grep -q -- "--crease 40" err.txt && [ ! -e x.svg ]; then
