@@ -111,8 +111,10 @@ q=$work/demo_qi.txt f=$work/demo_fb.txt
   echo "answers about a quarter of those tests from a neighbour, and the H1/H2 classes skip the"
   echo "back edges outright, which makes the fallback with Kira the fastest route on these scenes."
   echo "On the cube arrays, where every cube is its own component and the pieces are few, the plain"
-  echo "fallback is already cheaper than QI. QI remains the method of record on manifold meshes:"
-  echo "it yields QI counts (the sixth field of \`.spans\`) and the outlines need its visibility."
+  echo "fallback is already cheaper than QI. QI remains the method of record, on every mesh (both"
+  echo "sides of every face counted where it is not a closed solid; docs/performance.md section 10:"
+  echo "open meshes cost no more per triangle): it yields QI counts (the sixth field of \`.spans\`)"
+  echo "and the outlines need its visibility."
   echo
   echo "The fallback also cuts every edge where it passes through a face (core/solid/pierce.h):"
   echo "one look along the edge's cells per edge, and one more per face it pierces. On these"
