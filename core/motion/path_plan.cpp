@@ -507,6 +507,8 @@ Status plan_path_layers(Segment2* spans, uint32_t n, const LayerCounts& layers, 
   // Each layer in the same workspace (a smaller plan carves less of it), its points after the
   // previous layer's.
   PathStats sum;
+  // The input order as given, before each layer's clean-up changes its spans in place.
+  sum.naive_pen_up_length = naive_pen_up(spans, n, start_x, start_y);
   uint32_t first = 0, count = 0;
   int32_t x = start_x, y = start_y;
   for (uint32_t k = 0; k < layers.n; ++k) {
@@ -525,7 +527,6 @@ Status plan_path_layers(Segment2* spans, uint32_t n, const LayerCounts& layers, 
     count += wrote;
     if (wrote > 0) x = out[count - 1].x, y = out[count - 1].y;
   }
-  sum.naive_pen_up_length = naive_pen_up(spans, n, start_x, start_y);
   *out_count = count;
   if (points_per_layer != nullptr) *points_per_layer = written;
   if (stats) *stats = sum;
