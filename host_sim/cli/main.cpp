@@ -742,6 +742,7 @@ int cmd_sim(int argc, char** argv) {
   if (const int rc = write_exports(o, r, spec, jf)) return rc;
   if (o.has("--stats")) {
     print_sim_stats(spec, r, edges.size() + curve_scene.curves.size());
+    print_clean_stats(r.job.path, jf.style.steps_per_mm);
     if (curves)  // the curve job's stages (job/job.h job_prepare_curves)
       std::fprintf(stderr, "curve_pieces=%u\ncrossings=%u\ngaps=%llu\nchords=%llu\n",
                    r.job.curve_cross.pieces, r.job.curve_cross.crossings,
