@@ -259,7 +259,7 @@ Status BandConductor::plan_column(const PathPoint** points, uint32_t* n) {
   end.y = int32_t((last == n_segs_ ? band_y1_ : band_y0_ + (band_y1_ - band_y0_) / 2) >> sub);
   steps_to_band(segs_ + next_seg_, k);  // the column's strokes to steps, after its choice
   const Status s = plan_path(segs_ + next_seg_, k, pen_x_, pen_y_, ws, ws_size, pts,
-                             path_points_max(k), n, &ps, end);
+                             path_points_max(k), n, &ps, end, spec_.clean);
   stats_.other_ticks += now() - t0;
   if (!ok(s)) return s;
   // A column whose path starts where the last one left the pen down (a stroke continued across
@@ -272,11 +272,8 @@ Status BandConductor::plan_column(const PathPoint** points, uint32_t* n) {
     pen_down_ = pts[*n - 1].pen_down != 0;
   }
   steps_to_page(pts, *n);
-  stats_.path.polylines += ps.polylines;
-  stats_.path.pen_up_length += ps.pen_up_length;
-  stats_.path.naive_pen_up_length += ps.naive_pen_up_length;
-  stats_.path.pen_down_length += ps.pen_down_length;
-  stats_.path.pen_lifts += ps.pen_lifts + (next_seg_ > 0 && ps.polylines > 0 && !goes_on ? 1 : 0);
+  ps.pen_lifts += next_seg_ > 0 && ps.polylines > 0 && !goes_on ? 1 : 0;
+  add_path_stats(&stats_.path, ps);
   next_seg_ = last;
   *points = goes_on ? pts + 1 : pts;
   *n -= goes_on ? 1 : 0;

@@ -76,6 +76,10 @@ struct BandSpec {
   // (band_spec() converts a job's), and each column's strokes are rounded to steps before its
   // path is planned (geometry/units.h).
   int32_t substep_bits = 0;
+  // The planner's clean-up of each column's strokes (motion/path_plan.h). band_spec() keeps a
+  // job's switch but no minimum stroke: a column's strokes end at its sides, so a short piece
+  // there goes on in the next column and is no crumb.
+  PathClean clean;
   // A solid wider than tall (begin_solid) is banded in the page turned a quarter
   // (geometry/quarter_turn.h): its bands are then columns of the page, and the pen crosses
   // each along the drawing's shorter side, not its longer (tests/cli/band_pen_up.sh: 10 x 10

@@ -93,6 +93,7 @@ BandSpec band_spec(const JobSpec& steps) {
   bs.cut = spec.cut;
   bs.start_x = spec.start_x;
   bs.start_y = spec.start_y;
+  bs.clean = PathClean{spec.clean.on, 0};
   bs.style = StrokeStyle{spec.drawing == DrawingEffect::kHiddenDashed ? SolidMode::kHiddenDashed
                                                                       : SolidMode::kHiddenRemoved,
                          spec.hidden.dash, spec.hidden.gap};
@@ -149,7 +150,7 @@ Status plan_stage(const JobSpec& spec, uint8_t* base, size_t spans_offset, size_
   const Status s = plan_path_layers(
       collect.out, collect.count, layers, spec.start_x, spec.start_y, points_mem + stage.points,
       stage.path, reinterpret_cast<PathPoint*>(points_mem), path_points_max(collect.count),
-      &n_points, &layer_points, &c->path);
+      &n_points, &layer_points, &c->path, spec.clean);
   if (!ok(s)) return s;
   job->layer_points = layer_points;
   job->points = reinterpret_cast<PathPoint*>(points_mem);

@@ -59,6 +59,9 @@ struct JobSpec {
   // (motion/path_plan.h plan_path_layers). n = 0: one layer. A hidden-line job groups its
   // strokes itself; a haloed one has one layer.
   LayerCounts layers;
+  // The path planner's clean-up (motion/path_plan.h): no dots, overlaps drawn once, and strokes
+  // shorter than clean.min_stroke (plot steps, like start_x: not scaled to units) dropped.
+  PathClean clean;
 };
 
 // Bytes each stage takes from the job buffer (0: the stage does not run), and the peak the

@@ -3,6 +3,7 @@
 #include "haloplot/geometry/units.h"
 #include "haloplot/geometry/wide.h"
 #include "haloplot/memory/carve.h"
+#include "haloplot/motion/stroke_clean.h"
 #include "haloplot/sort/in_place_sort.h"
 
 namespace haloplot {
@@ -42,10 +43,12 @@ uint32_t walk(const uint32_t* link, uint32_t start, Visit visit) {
 }
 
 // The workspace, in carving order (memory/carve.h): the links, the chains, their done flags,
-// then the endpoint sort. The sort is dead once the chains exist, so the nearest-neighbour
-// grid (cell starts and items) is carved from the same place by a second carver. C is a
-// Carver for the run, or a ByteCounter for path_plan_bytes().
+// then the endpoint sort. The clean-up's scratch is dead before the links are made, so a third
+// carver takes it from the same place (it needs less than they do). The sort is dead once the
+// chains exist, so the nearest-neighbour grid (cell starts and items) is carved from the same
+// place by a second carver. C is a Carver for the run, or a ByteCounter for path_plan_bytes().
 struct Workspace {
+  void* clean_scratch;
   uint32_t* link;
   Chain* chains;
   uint32_t* order;  // the tour: 2 * chain + (1 when walked from its last end)
@@ -168,8 +171,10 @@ void improve_tour(Tour& t) {
 }
 
 template <typename C>
-Workspace carve_workspace(C* front, C* grid, uint32_t n) {
+Workspace carve_workspace(C* front, C* grid, C* scratch, uint32_t n) {
   Workspace w;
+  *scratch = *front;
+  w.clean_scratch = scratch->template take<uint8_t>(stroke_clean_bytes(n));
   w.link = front->template take<uint32_t>(size_t{2} * n);
   w.chains = front->template take<Chain>(n);
   w.order = front->template take<uint32_t>(n);
@@ -229,9 +234,12 @@ void join_ends(const Segment2* spans, uint32_t n, EndKey* ends, uint32_t* link) 
 }
 
 // 2. Chains: open ones start at an unlinked end (so each is drawn end to end); what is left
-//    over forms closed loops. Returns the number of chains.
-uint32_t make_chains(uint32_t n, const uint32_t* link, Chain* chains, uint8_t* done) {
-  for (uint32_t s = 0; s < n; ++s) done[s] = 0;
+//    over forms closed loops. Returns the number of chains. `skip_dots`: the clean-up ran, and
+//    a dot (one found or one a merge left) is no stroke.
+uint32_t make_chains(const Segment2* spans, uint32_t n, const uint32_t* link, Chain* chains,
+                     uint8_t* done, bool skip_dots) {
+  for (uint32_t s = 0; s < n; ++s)
+    done[s] = skip_dots && spans[s].x0 == spans[s].x1 && spans[s].y0 == spans[s].y1;
   uint32_t n_chains = 0;
   auto make_chain = [&](uint32_t start) {
     Chain c{start, 0, 0};
@@ -376,6 +384,32 @@ uint32_t write_path(const Segment2* spans, const uint32_t* link, const Chain* ch
   return count;
 }
 
+// 2b. Chains shorter than min_stroke dropped (joining has made every stroke as long as its
+//     neighbours allow, so what is short now touches nothing it could go on into).
+uint32_t drop_crumbs(const Segment2* spans, const uint32_t* link, Chain* chains, uint32_t n_chains,
+                     uint32_t min_stroke, PathStats& st) {
+  if (min_stroke == 0) return n_chains;
+  uint32_t kept = 0;
+  for (uint32_t c = 0; c < n_chains; ++c) {
+    uint64_t length = 0;
+    uint32_t remaining = chains[c].spans;
+    walk(link, chains[c].first_end, [&](uint32_t s, bool) {
+      if (remaining == 0) return false;
+      --remaining;
+      length +=
+          length_floor(int64_t{spans[s].x1} - spans[s].x0, int64_t{spans[s].y1} - spans[s].y0);
+      return true;
+    });
+    if (length < min_stroke) {
+      ++st.crumbs_dropped;
+      st.crumb_length += length;
+    } else {
+      chains[kept++] = chains[c];
+    }
+  }
+  return kept;
+}
+
 }  // namespace
 
 void round_to_steps(Segment2* spans, uint32_t n, int substep_bits) {
@@ -392,23 +426,42 @@ uint32_t length_floor(int64_t dx, int64_t dy) {
 }
 
 size_t path_plan_bytes(uint32_t n_spans) {
-  ByteCounter front, grid;
-  carve_workspace(&front, &grid, n_spans);
-  return front.total > grid.total ? front.total : grid.total;
+  ByteCounter front, grid, scratch;
+  carve_workspace(&front, &grid, &scratch, n_spans);
+  const size_t most = front.total > grid.total ? front.total : grid.total;
+  return most > scratch.total ? most : scratch.total;
 }
 
-Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t start_y,
-                 void* workspace, size_t workspace_bytes, PathPoint* out, uint32_t out_capacity,
-                 uint32_t* out_count, PathStats* stats, PathEnd end) {
+void add_path_stats(PathStats* a, const PathStats& b) {
+  a->polylines += b.polylines;
+  a->pen_up_length += b.pen_up_length;
+  a->naive_pen_up_length += b.naive_pen_up_length;
+  a->pen_down_length += b.pen_down_length;
+  a->pen_lifts += b.pen_lifts;
+  a->dots_dropped += b.dots_dropped;
+  a->overlaps_merged += b.overlaps_merged;
+  a->crumbs_dropped += b.crumbs_dropped;
+  a->overlap_length += b.overlap_length;
+  a->crumb_length += b.crumb_length;
+}
+
+Status plan_path(Segment2* spans, uint32_t n, int32_t start_x, int32_t start_y, void* workspace,
+                 size_t workspace_bytes, PathPoint* out, uint32_t out_capacity, uint32_t* out_count,
+                 PathStats* stats, PathEnd end, PathClean clean) {
   if (buffer_misaligned(workspace)) return Status::kMisalignedBuffer;
-  Carver front(workspace, workspace_bytes), grid = front;
-  const Workspace ws = carve_workspace(&front, &grid, n);
-  if (front.short_ || grid.short_) return Status::kWorkspaceTooSmall;
+  Carver front(workspace, workspace_bytes), grid = front, scratch = front;
+  const Workspace ws = carve_workspace(&front, &grid, &scratch, n);
+  if (front.short_ || grid.short_ || scratch.short_) return Status::kWorkspaceTooSmall;
   if (out_capacity < path_points_max(n)) return Status::kBadParameter;
   PathStats st;
   st.naive_pen_up_length = naive_pen_up(spans, n, start_x, start_y);
+  if (clean.on) {  // 0. The clean-up, in place
+    const Status s = clean_spans(spans, n, ws.clean_scratch, stroke_clean_bytes(n), &st);
+    if (!ok(s)) return s;
+  }
   join_ends(spans, n, ws.ends, ws.link);
-  const uint32_t n_chains = make_chains(n, ws.link, ws.chains, ws.done);
+  uint32_t n_chains = make_chains(spans, n, ws.link, ws.chains, ws.done, clean.on);
+  n_chains = drop_crumbs(spans, ws.link, ws.chains, n_chains, clean.on ? clean.min_stroke : 0, st);
   st.polylines = n_chains;
 
   // 3. Greedy nearest neighbour over chain ends, then 2-opt on that tour.
@@ -432,10 +485,10 @@ Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t sta
   return Status::kOk;
 }
 
-Status plan_path_layers(const Segment2* spans, uint32_t n, const LayerCounts& layers,
-                        int32_t start_x, int32_t start_y, void* workspace, size_t workspace_bytes,
-                        PathPoint* out, uint32_t out_capacity, uint32_t* out_count,
-                        LayerCounts* points_per_layer, PathStats* stats) {
+Status plan_path_layers(Segment2* spans, uint32_t n, const LayerCounts& layers, int32_t start_x,
+                        int32_t start_y, void* workspace, size_t workspace_bytes, PathPoint* out,
+                        uint32_t out_capacity, uint32_t* out_count, LayerCounts* points_per_layer,
+                        PathStats* stats, PathClean clean) {
   if (buffer_misaligned(workspace)) return Status::kMisalignedBuffer;  // even with no spans
   if (layers.n > kMaxLayers) return Status::kBadParameter;
   uint64_t total = 0;
@@ -446,7 +499,7 @@ Status plan_path_layers(const Segment2* spans, uint32_t n, const LayerCounts& la
   written.n = layers.n;
   if (layers.n <= 1) {
     const Status s = plan_path(spans, n, start_x, start_y, workspace, workspace_bytes, out,
-                               out_capacity, out_count, stats);
+                               out_capacity, out_count, stats, PathEnd{}, clean);
     written.count[0] = *out_count;
     if (ok(s) && points_per_layer != nullptr) *points_per_layer = written;
     return s;
@@ -454,6 +507,8 @@ Status plan_path_layers(const Segment2* spans, uint32_t n, const LayerCounts& la
   // Each layer in the same workspace (a smaller plan carves less of it), its points after the
   // previous layer's.
   PathStats sum;
+  // The input order as given, before each layer's clean-up changes its spans in place.
+  sum.naive_pen_up_length = naive_pen_up(spans, n, start_x, start_y);
   uint32_t first = 0, count = 0;
   int32_t x = start_x, y = start_y;
   for (uint32_t k = 0; k < layers.n; ++k) {
@@ -462,19 +517,16 @@ Status plan_path_layers(const Segment2* spans, uint32_t n, const LayerCounts& la
     uint32_t wrote = 0;
     PathStats st;
     const Status s = plan_path(spans + first, m, x, y, workspace, workspace_bytes, out + count,
-                               path_points_max(m), &wrote, &st);
+                               path_points_max(m), &wrote, &st, PathEnd{}, clean);
     if (!ok(s)) return s;
-    if (count > 0) ++sum.pen_lifts;  // the move to this layer's first stroke
-    sum.polylines += st.polylines;
-    sum.pen_up_length += st.pen_up_length;
-    sum.pen_down_length += st.pen_down_length;
-    sum.pen_lifts += st.pen_lifts;
+    if (count > 0 && wrote > 0) ++sum.pen_lifts;  // the move to this layer's first stroke
+    st.naive_pen_up_length = 0;                   // counted over all layers below
+    add_path_stats(&sum, st);
     written.count[k] = wrote;
     first += m;
     count += wrote;
-    x = out[count - 1].x, y = out[count - 1].y;
+    if (wrote > 0) x = out[count - 1].x, y = out[count - 1].y;
   }
-  sum.naive_pen_up_length = naive_pen_up(spans, n, start_x, start_y);
   *out_count = count;
   if (points_per_layer != nullptr) *points_per_layer = written;
   if (stats) *stats = sum;

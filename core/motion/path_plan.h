@@ -1,7 +1,11 @@
 // Path planning: turn DRAW's visible spans into pen strokes a plotter can draw quickly.
+//   0. Clean (motion/stroke_clean.h, unless PathClean::on is false), in place: drop
+//      zero-length spans, draw collinear overlapping spans once (as their union).
 //   1. Join spans that share an endpoint (exact integer equality) into polylines.
 //   2. Order the polylines greedily: from the pen's position, go to the nearest free polyline
 //      end, found by ring search in a uniform grid; flip the polyline if its far end was nearer.
+//   2b. Drop strokes (joined chains) shorter than PathClean::min_stroke: crumbs a pen cannot
+//      draw as lines, each a lift and a put-down for a blot.
 //   3. Improve the order by 2-opt: reverse a run of the tour when that shortens the two pen-up
 //      moves at its ends (runs of up to 48 polylines, at most 4 passes: linear in the tour).
 // The output is a list of path points: travel to a point with the pen up, or draw to it.
@@ -28,7 +32,24 @@ struct PathStats {
   uint64_t naive_pen_up_length = 0;  // spans drawn one by one in input order
   uint64_t pen_down_length = 0;
   uint32_t pen_lifts = 0;  // pen-up moves between strokes in the planned order
+  // The clean-up's work (motion/stroke_clean.h): zero-length spans dropped, spans drawn inside
+  // another collinear one (and the length they would have drawn twice), strokes dropped as
+  // shorter than PathClean::min_stroke (and their length). Lengths in plot steps.
+  uint32_t dots_dropped = 0, overlaps_merged = 0, crumbs_dropped = 0;
+  uint64_t overlap_length = 0, crumb_length = 0;
 };
+
+// What the planner cleans from the strokes before it plans them (motion/stroke_clean.h).
+// Every consumer of the path (the controller's job, the band conductor, the host's files)
+// gets the same clean-up by planning through plan_path().
+struct PathClean {
+  bool on = true;  // false: the spans are planned exactly as given (a test's control)
+  // Plot steps: a stroke (a chain of joined spans) shorter than this is dropped; 0 keeps all.
+  uint32_t min_stroke = 0;
+};
+
+// Adds b's counts to a's (the layers of a plan, the columns of a band).
+void add_path_stats(PathStats* a, const PathStats& b);
 
 // Workspace bytes plan_path() needs for n spans, and the most path points it can write (2n).
 size_t path_plan_bytes(uint32_t n_spans);
@@ -41,11 +62,13 @@ struct PathEnd {
   int32_t x = 0, y = 0;
 };
 
-// Plan from pen position (start_x, start_y). `out` must hold path_points_max(n) points.
+// Plan from pen position (start_x, start_y). `out` must hold path_points_max(n) points. With
+// clean.on the spans are cleaned in place first (motion/stroke_clean.h: merged spans and dots
+// left as dots, none moved); with it off they are planned as given, a dot as a dot.
 // `workspace` starts on a kBufferAlignment (8) boundary, or the plan returns kMisalignedBuffer.
-Status plan_path(const Segment2* spans, uint32_t n, int32_t start_x, int32_t start_y,
-                 void* workspace, size_t workspace_bytes, PathPoint* out, uint32_t out_capacity,
-                 uint32_t* out_count, PathStats* stats, PathEnd end = PathEnd{});
+Status plan_path(Segment2* spans, uint32_t n, int32_t start_x, int32_t start_y, void* workspace,
+                 size_t workspace_bytes, PathPoint* out, uint32_t out_capacity, uint32_t* out_count,
+                 PathStats* stats, PathEnd end = PathEnd{}, PathClean clean = PathClean{});
 
 // Line kinds drawn one after another, a pen each (the plot SVG's layers): visible edges,
 // hidden dashes, intersection lines, hatching, outlines. A count per layer, in that order.
@@ -60,12 +83,13 @@ struct LayerCounts {
 // from where the previous one ended, so no layer's strokes mix with another's and a pen can be
 // changed between them. A non-empty layer after another starts with a pen-up point even where
 // the previous one ended (the pen lifts for the change). *points_per_layer (may be null): how
-// many of the path points each layer wrote. With layers.n <= 1 this is plan_path() exactly.
+// many of the path points each layer wrote (0 for a layer whose strokes were all cleaned
+// away). With layers.n <= 1 this is plan_path() exactly.
 // The stats add up over the layers (naive_pen_up_length: the input order as given).
-Status plan_path_layers(const Segment2* spans, uint32_t n, const LayerCounts& layers,
-                        int32_t start_x, int32_t start_y, void* workspace, size_t workspace_bytes,
-                        PathPoint* out, uint32_t out_capacity, uint32_t* out_count,
-                        LayerCounts* points_per_layer, PathStats* stats);
+Status plan_path_layers(Segment2* spans, uint32_t n, const LayerCounts& layers, int32_t start_x,
+                        int32_t start_y, void* workspace, size_t workspace_bytes, PathPoint* out,
+                        uint32_t out_capacity, uint32_t* out_count, LayerCounts* points_per_layer,
+                        PathStats* stats, PathClean clean = PathClean{});
 
 // Spans in units of 2^-s steps (geometry/units.h) to whole steps, in place: the one rounding
 // between a scene fitted finer than the pen moves and the path.

@@ -52,8 +52,9 @@ void encode_effects(const JobSpec& spec, uint8_t out[kEffectsBytes]) {
   const PlotterEffects& e = spec.effects;
   out[0] = uint8_t(spec.drawing);
   out[1] = uint8_t((e.acceleration ? 1 : 0) | (e.pen_servo ? 2 : 0) | (e.backlash ? 4 : 0) |
-                   (spec.finish_home ? 0 : 8));
+                   (spec.finish_home ? 0 : 8) | (spec.clean.on ? 0 : 16));
   out[2] = uint8_t(spec.substep_bits);
+  put_u32(out + 3, spec.clean.min_stroke);
 }
 
 namespace {
@@ -126,8 +127,8 @@ Status decode_halo(const uint8_t* p, size_t n, DrawParams* out) {
 }
 
 Status decode_effects(const uint8_t* p, size_t n, JobSpec* spec) {
-  if (n != kEffectsBytes || p[0] > uint8_t(DrawingEffect::kHatch) || (p[1] & ~15u) ||
-      p[2] > kMaxSubstepBits)
+  if ((n != kEffectsBytes && n != kEffectsShortBytes) || p[0] > uint8_t(DrawingEffect::kHatch) ||
+      (p[1] & ~31u) || p[2] > kMaxSubstepBits)
     return Status::kMalformedRequest;
   spec->substep_bits = p[2];
   spec->drawing = DrawingEffect(p[0]);
@@ -135,6 +136,8 @@ Status decode_effects(const uint8_t* p, size_t n, JobSpec* spec) {
   spec->effects.pen_servo = p[1] & 2;
   spec->effects.backlash = p[1] & 4;
   spec->finish_home = (p[1] & 8) == 0;
+  spec->clean.on = (p[1] & 16) == 0;
+  spec->clean.min_stroke = n == kEffectsBytes ? get_u32(p + 3) : 0;
   return Status::kOk;
 }
 

@@ -129,7 +129,9 @@ int cmd_plot_curves(const Options& o) {
     spec.drawing = DrawingEffect::kAllEdges;  // the chords, drawn whole
     spec.substep_bits = units;
     ExportStyle style;
-    if (!export_style_of(o, &style, &spec.machine, &error)) return fail(error);
+    if (!export_style_of(o, &style, &spec.machine, &error) ||
+        !parse_path_clean(o, style.steps_per_mm, &spec.clean, &error))
+      return fail(error);
     if (const int rc = write_plot_outputs(o, spec, chord_edges(d.chords), style, false)) return rc;
   }
   std::vector<Span> spans = d.chords;

@@ -96,7 +96,9 @@ struct PlotterJob {
 bool plotter_job(const Options& o, const SolidOptions& so, const ModeDrawing& d, PlotterJob* job,
                  std::string* error) {
   job->spec.drawing = DrawingEffect::kAllEdges;
-  if (!export_style_of(o, &job->style, &job->spec.machine, error)) return false;
+  if (!export_style_of(o, &job->style, &job->spec.machine, error) ||
+      !parse_path_clean(o, job->style.steps_per_mm, &job->spec.clean, error))
+    return false;
   if (so.spec.mode != SolidMode::kAll) {
     job->edges = mode_strokes(d, &job->spec.layers);
     job->planned_once = true;
@@ -176,6 +178,8 @@ int cmd_plot_solid(const Options& o) {
   }
   if (o.has("--stats")) {
     print_solid_stats(run, tri);
+    // With --gcode or --hpgl the job's own plan reports its clean-up (write_planned_outputs).
+    if (!wants_plotter_outputs(o)) print_clean_stats(style.path_stats, so.steps_per_mm);
     if (so.hatch) {
       const HatchLineStats& h = run.hatch_stats;
       std::fprintf(stderr,

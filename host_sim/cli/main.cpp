@@ -56,7 +56,8 @@ const char* kUsage =
     "               [--reach R] [--stats]\n"
     "  haloplot draw SCENE.cut --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans] [--stats]\n"
     "               [--steps-per-mm N]   (plot steps per mm on the page; default 80)\n"
-    "               [page options: --page, --landscape, --margin, --pen-width, --background;\n"
+    "               [page options: --page, --landscape, --margin, --pen-width, --background,\n"
+    "               --min-stroke, --no-cleanup;\n"
     "               --fit and --scale place a model, and a .cut scene is in steps: refused]\n"
     "  haloplot plot SCENE.edges|MODEL --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans]\n"
     "               [--cut OUT.cut] [--arena BYTES] [--steps-per-mm N] [--stats]\n"
@@ -93,6 +94,9 @@ const char* kUsage =
     "               the layer's pen SP1..SP5 in the HPGL)\n"
     "  page options (plot, draw): [--page a4|a3|a5|letter|legal|tabloid|WxH] [--landscape]\n"
     "               [--margin MM] [--fit | --scale S] [--pen-width MM] [--background]\n"
+    "               [--min-stroke MM] [--no-cleanup]   (strokes shorter than MM, default\n"
+    "               the pen width, are not drawn, 0 keeps all; dots are never drawn and\n"
+    "               collinear overlaps once; --no-cleanup: the strokes as found, for tests)\n"
     "               (the SVG is the page, default A4 landscape, 10 mm margins; a model is\n"
     "               fitted and centred, or drawn at S mm per model unit; named pages are\n"
     "               portrait; --pen-width: stroke width, default 0.3; --background: a white\n"
@@ -276,6 +280,9 @@ int write_drawing(const Options& o, const HostDraw& d, bool model) {
   if (!o.get("-o").empty())
     err = write_plot_page(o.get("-o"), {StrokeLayer{"1 visible", d.spans, 1}}, model, &style);
   if (!err.empty()) return fail(err);
+  // With --gcode or --hpgl the job's own plan reports its clean-up (write_planned_outputs).
+  if (o.has("--stats") && !wants_plotter_outputs(o))
+    print_clean_stats(style.path_stats, style.placement.steps_per_mm);
   if (!o.get("--spans").empty()) {
     err = write_atomically(o.get("--spans"), [&](std::ostream& out) {
       write_spans(out, d.spans);
@@ -541,7 +548,9 @@ int cmd_plot(int argc, char** argv) {
     spec.cut = cp;
     spec.substep_bits = units;
     ExportStyle style;
-    if (!export_style_of(o, &style, &spec.machine, &error)) return fail(error);
+    if (!export_style_of(o, &style, &spec.machine, &error) ||
+        !parse_path_clean(o, style.steps_per_mm, &spec.clean, &error))
+      return fail(error);
     if (const int rc = write_plot_outputs(o, spec, edges, style, is_mesh_path(o.positional[0])))
       return rc;
   }
@@ -733,6 +742,7 @@ int cmd_sim(int argc, char** argv) {
   if (const int rc = write_exports(o, r, spec, jf)) return rc;
   if (o.has("--stats")) {
     print_sim_stats(spec, r, edges.size() + curve_scene.curves.size());
+    print_clean_stats(r.job.path, jf.style.steps_per_mm);
     if (curves)  // the curve job's stages (job/job.h job_prepare_curves)
       std::fprintf(stderr, "curve_pieces=%u\ncrossings=%u\ngaps=%llu\nchords=%llu\n",
                    r.job.curve_cross.pieces, r.job.curve_cross.crossings,

@@ -1,5 +1,7 @@
 #include "cli/page_options.h"
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 
@@ -7,8 +9,23 @@
 
 namespace haloplot::host {
 
-const char* const kPageValued[4] = {"--page", "--margin", "--scale", "--pen-width"};
-const char* const kPageFlags[3] = {"--landscape", "--fit", "--background"};
+const char* const kPageValued[5] = {"--page", "--margin", "--scale", "--pen-width", "--min-stroke"};
+const char* const kPageFlags[4] = {"--landscape", "--fit", "--background", "--no-cleanup"};
+
+bool parse_path_clean(const Options& o, uint32_t steps_per_mm, PathClean* clean,
+                      std::string* error) {
+  // The pen's width by default: a stroke shorter than the pen is wide draws a blot, not a line.
+  const std::string w = o.get("--min-stroke", o.get("--pen-width", "0.3"));
+  char* end = nullptr;
+  const double mm = std::strtod(w.c_str(), &end);
+  if (w.empty() || end != w.c_str() + w.size() || !(mm >= 0) || mm > 100) {
+    *error = "--min-stroke '" + w + "' must be a length in mm in [0, 100] (0: keep every stroke)";
+    return false;
+  }
+  clean->on = !o.has("--no-cleanup");
+  clean->min_stroke = uint32_t(std::llround(mm * steps_per_mm));
+  return true;
+}
 
 bool parse_plot_svg_style(const Options& o, bool model, uint32_t steps_per_mm, PlotSvgStyle* style,
                           std::string* error) {
@@ -29,6 +46,7 @@ bool parse_plot_svg_style(const Options& o, bool model, uint32_t steps_per_mm, P
   }
   s.background = o.has("--background");
   s.placement.steps_per_mm = steps_per_mm;
+  if (!parse_path_clean(o, steps_per_mm, &s.clean, error)) return false;
   *style = s;
   return true;
 }
@@ -57,9 +75,18 @@ void warn_off_page(const std::vector<PathPoint>& path, const PlotSvgStyle& style
 std::string write_plot_page(const std::string& path, const std::vector<StrokeLayer>& layers,
                             bool model, PlotSvgStyle* style, std::vector<PathPoint>* joined) {
   std::vector<PlannedLayer> planned;
-  const Status s = plan_layers(layers, &planned);
+  const Status s = plan_layers(layers, &planned, style->clean, &style->path_stats);
   if (!ok(s)) return path + ": planning the pen path failed: " + status_name(s);
   return write_planned_page(path, planned, model, style, joined);
+}
+
+void print_clean_stats(const PathStats& st, uint32_t steps_per_mm) {
+  const double per = steps_per_mm;
+  std::fprintf(stderr,
+               "clean_dots=%u\nclean_overlaps=%u\nclean_overlap_mm=%.1f\nclean_crumbs=%u\n"
+               "clean_crumb_mm=%.1f\n",
+               st.dots_dropped, st.overlaps_merged, double(st.overlap_length) / per,
+               st.crumbs_dropped, double(st.crumb_length) / per);
 }
 
 std::string write_planned_page(const std::string& path, const std::vector<PlannedLayer>& planned,

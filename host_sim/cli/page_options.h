@@ -11,12 +11,22 @@
 
 namespace haloplot::host {
 
-extern const char* const kPageValued[4];  // --page --margin --scale --pen-width
-extern const char* const kPageFlags[3];   // --landscape --fit --background
+// --page --margin --scale --pen-width --min-stroke
+extern const char* const kPageValued[5];
+extern const char* const kPageFlags[4];  // --landscape --fit --background --no-cleanup
 
-// The SVG style from the options: the page, --pen-width (default 0.3 mm), --background, and
-// the steps per mm. `model`: the scene is a model the projection fitted; for an .edges or
-// .cut scene, already in steps, --fit and --scale are refused (nothing to fit).
+// The path planner's clean-up (motion/path_plan.h PathClean): --min-stroke MM, by default the
+// --pen-width (0.3 mm), 0 keeps every stroke; --no-cleanup (a test's control) plans the strokes
+// as drawn, dots and overlaps too.
+bool parse_path_clean(const Options& o, uint32_t steps_per_mm, PathClean* clean,
+                      std::string* error);
+// --stats: what the clean-up dropped and merged (clean_*), lengths in mm.
+void print_clean_stats(const PathStats& st, uint32_t steps_per_mm);
+
+// The SVG style from the options: the page, --pen-width (default 0.3 mm), --background, the
+// clean-up (parse_path_clean), and the steps per mm. `model`: the scene is a model the projection
+// fitted; for an .edges or .cut scene, already in steps, --fit and --scale are refused (nothing to
+// fit).
 bool parse_plot_svg_style(const Options& o, bool model, uint32_t steps_per_mm, PlotSvgStyle* style,
                           std::string* error);
 

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <utility>
 
+#include "cli/page_options.h"
 #include "export/plotter_outputs.h"
 #include "io/line_reader.h"
 
@@ -197,7 +198,10 @@ int write_planned_outputs(const Options& o, const JobSpec& spec, PlannedJob plan
                whole / 60, whole % 60, seconds, f.strokes,
                mm_text(std::llround(f.pen_down), style.steps_per_mm).c_str(),
                mm_text(std::llround(f.pen_up), style.steps_per_mm).c_str());
-  if (o.has("--stats")) std::fprintf(stderr, "estimate_s=%.3f\n", seconds);
+  if (o.has("--stats")) {
+    std::fprintf(stderr, "estimate_s=%.3f\n", seconds);
+    print_clean_stats(planned.counters.path, style.steps_per_mm);
+  }
   return 0;
 }
 

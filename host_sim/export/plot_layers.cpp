@@ -5,8 +5,10 @@
 
 namespace haloplot::host {
 
-Status plan_layers(const std::vector<StrokeLayer>& layers, std::vector<PlannedLayer>* out) {
+Status plan_layers(const std::vector<StrokeLayer>& layers, std::vector<PlannedLayer>* out,
+                   PathClean clean, PathStats* sum) {
   out->clear();
+  if (sum != nullptr) *sum = PathStats{};
   int32_t x = 0, y = 0;
   for (const StrokeLayer& l : layers) {
     if (l.spans.empty()) continue;
@@ -19,8 +21,10 @@ Status plan_layers(const std::vector<StrokeLayer>& layers, std::vector<PlannedLa
     uint32_t count = 0;
     PathStats stats;
     const Status s = plan_path(segs.data(), n, x, y, work.data(), work.size() * 8, p.path.data(),
-                               uint32_t(p.path.size()), &count, &stats);
+                               uint32_t(p.path.size()), &count, &stats, PathEnd{}, clean);
     if (!ok(s)) return s;
+    if (sum != nullptr) add_path_stats(sum, stats);
+    if (count == 0) continue;  // every stroke cleaned away: no layer in the files
     p.path.resize(count);
     if (!p.path.empty()) x = p.path.back().x, y = p.path.back().y;
     out->push_back(std::move(p));
@@ -37,8 +41,8 @@ bool cut_planned_layers(const std::vector<StrokeLayer>& layers,
   int32_t x = 0, y = 0;
   for (size_t k = 0; k < layers.size(); ++k) {
     const size_t count = layer_points.count[k];
-    // plan_layers() plans every layer with strokes, and a planned stroke is two points or more.
-    if (layers[k].spans.empty() != (count == 0) || count > points.size() - first) {
+    // A layer without strokes plans to nothing (one with strokes may too: all cleaned away).
+    if ((layers[k].spans.empty() && count > 0) || count > points.size() - first) {
       out->clear();
       return false;
     }

@@ -30,7 +30,9 @@ struct PlannedLayer {
 // starts), each next from where the previous one ended: the path the controller's job plans
 // for the same strokes, layer by layer (motion/path_plan.h plan_path_layers).
 // A planner failure (a coordinate out of its range) is returned as its status.
-Status plan_layers(const std::vector<StrokeLayer>& layers, std::vector<PlannedLayer>* out);
+// `clean`: the planner's clean-up; *stats (may be null): the layers' path stats added up.
+Status plan_layers(const std::vector<StrokeLayer>& layers, std::vector<PlannedLayer>* out,
+                   PathClean clean = PathClean{}, PathStats* stats = nullptr);
 
 // The same layers cut from the path a job planned for their strokes, grouped layer by layer
 // (pipeline/drawing_modes.h mode_strokes, then motion/path_plan.h plan_path_layers, as `sim` plans

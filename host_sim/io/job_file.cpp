@@ -6,6 +6,7 @@
 #include <map>
 
 #include "cli/options.h"
+#include "cli/page_options.h"
 #include "cli/plot_outputs.h"
 #include "cli/solid_options.h"
 #include "io/line_reader.h"
@@ -39,6 +40,7 @@ const std::map<std::string, std::string> kKeys = {
     {"halo-mode", "paper | exact"},
     {"effects", "acceleration pen-servo backlash | none"},
     {"finish", "home | stay"},
+    {"cleanup", "on | off (off: dots and overlaps plotted as found, for tests)"},
     {"kinematics", "cartesian | corexy"},
     {"steps", "N/D (motor steps per plot step)"},
     {"backlash", "A B (motor steps)"},
@@ -53,6 +55,7 @@ const std::map<std::string, std::string> kKeys = {
     {"pen-settle-ticks", "TICKS"},
     {"arena", "BYTES"},
     {"steps-per-mm", "STEPS"},
+    {"min-stroke", "MM (strokes shorter are not drawn; default 0.3, 0: all drawn)"},
     {"pen", "servo | z | custom (the G-code's pen commands)"},
     {"servo-down", "S (the M3 S value; marlin: the M280 angle, 0 to 180)"},
     {"servo-up", "ANGLE (marlin: the M280 angle with the pen up)"},
@@ -221,6 +224,7 @@ bool is_view_setting(const std::string& key) {
 // The G-code's pen profile and feeds (cli/plot_outputs.h kPenOptions), checked together once
 // the whole file is read.
 bool is_pen_setting(const std::string& key) {
+  if (key == "min-stroke") return true;  // in mm: steps once steps-per-mm is known, as these
   for (const char* option : kPenOptions)
     if (key == option + 2) return true;
   return false;
@@ -237,9 +241,13 @@ InputError read_pen_settings(const std::string& path, const std::map<std::string
               std::string(ours) + " and " + theirs + " set the same thing: give one"};
   Options o;
   o.values = out->pen_options;
+  if (out->no_cleanup) o.flags.insert("--no-cleanup");
   o.values["--steps-per-mm"] = std::to_string(out->style.steps_per_mm);
   std::string error;
-  if (export_style_of(o, &out->style, &out->spec.machine, &error, "")) return {};
+  // The clean-up as `plot` sets it: the pen's 0.3 mm unless the job says.
+  if (export_style_of(o, &out->style, &out->spec.machine, &error, "") &&
+      parse_path_clean(o, out->style.steps_per_mm, &out->spec.clean, &error))
+    return {};
   int line = 0;
   for (const auto& [key, at] : key_lines)
     if (is_pen_setting(key) && error.rfind(key + " ", 0) == 0) line = at;
@@ -351,6 +359,10 @@ InputError read_setting(const JobLine& l, JobFile* out) {
     std::string v = f[1];  // a custom command's words, as the line gives them
     for (size_t k = 2; k < f.size(); ++k) v += " " + f[k];
     out->pen_options["--" + key] = v;
+    return {};
+  }
+  if (key == "cleanup" && l.on_off()) {  // off: plot --no-cleanup (a test's control)
+    out->no_cleanup = f[1] == "off";
     return {};
   }
   if (key == "outline" && l.on_off()) {

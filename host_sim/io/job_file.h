@@ -56,6 +56,7 @@ struct JobFile {
   std::map<std::string, std::string> solid_options;
   // The G-code's pen profile and feeds, as the plot command's options (--pen, --z-up, ...).
   std::map<std::string, std::string> pen_options;
+  bool no_cleanup = false;  // `cleanup off`
   bool outline = false;
   bool intersections = true;
   bool landscape = false;  // `landscape on` (the page options are kept in solid_options)

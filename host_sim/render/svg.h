@@ -26,6 +26,8 @@ struct PlotSvgStyle {
   ExportStyle placement;      // steps_per_mm and the page offset, as the G-code's
   double pen_width_mm = 0.3;  // --pen-width: the stroke width (outlines: times their factor)
   bool background = false;    // --background: a white page-sized rectangle, for viewing
+  PathClean clean;            // --min-stroke, --no-cleanup: the planner's clean-up
+  PathStats path_stats;       // out: what write_plot_page()'s planning did (its clean-up)
 };
 
 void write_plot_svg(std::ostream& out, const std::vector<PlannedLayer>& layers,

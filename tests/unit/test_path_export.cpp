@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
+#include <random>
 #include <sstream>
 #include <tuple>
 
@@ -23,13 +25,15 @@ static Key undirected(int32_t a, int32_t b, int32_t c, int32_t d) {
   return std::make_pair(a, b) <= std::make_pair(c, d) ? Key{a, b, c, d} : Key{c, d, a, b};
 }
 
+// The planner as such: the spans planned exactly as given (the clean-up has its own tests).
 static std::vector<PathPoint> plan(const std::vector<Segment2>& spans, PathStats* st,
-                                   PathEnd end = PathEnd{}) {
+                                   PathEnd end = PathEnd{}, PathClean clean = PathClean{false, 0}) {
   std::vector<uint64_t> ws(path_plan_bytes(uint32_t(spans.size())) / 8 + 1);
   std::vector<PathPoint> out(path_points_max(uint32_t(spans.size())));
   uint32_t n = 0;
-  CHECK(ok(plan_path(spans.data(), uint32_t(spans.size()), 0, 0, ws.data(), ws.size() * 8,
-                     out.data(), uint32_t(out.size()), &n, st, end)));
+  std::vector<Segment2> cleaned = spans;  // the clean-up works in place
+  CHECK(ok(plan_path(cleaned.data(), uint32_t(spans.size()), 0, 0, ws.data(), ws.size() * 8,
+                     out.data(), uint32_t(out.size()), &n, st, end, clean)));
   out.resize(n);
   return out;
 }
@@ -146,8 +150,9 @@ static void layered(scenes::Rng& r) {
   uint32_t count = 0;
   LayerCounts written;
   PathStats st;
+  // The planner's layers as such: every span as given (dots and overlaps too).
   CHECK(ok(plan_path_layers(s.data(), n, layers, 50, -70, ws.data(), ws.size() * 8, out.data(),
-                            uint32_t(out.size()), &count, &written, &st)));
+                            uint32_t(out.size()), &count, &written, &st, PathClean{false, 0})));
   CHECK_EQ(written.n, kMaxLayers);
   uint32_t at = 0, first = 0, lifts = 0;
   uint64_t up = 0, naive = 0;
@@ -180,10 +185,126 @@ static void layered(scenes::Rng& r) {
                          uint32_t(out.size()), &count, nullptr, nullptr) == Status::kBadParameter);
 }
 
+// The unit steps a span covers on the integer lattice: (line direction, line offset, position
+// of the step's start along the line), the line's direction primitive and pointing right (or
+// up). Written here, apart from the clean-up's own keys.
+using Cell = std::tuple<int64_t, int64_t, int64_t, int64_t>;
+static void add_cells(int32_t x0, int32_t y0, int32_t x1, int32_t y1, std::map<Cell, int>* cells) {
+  int64_t dx = int64_t{x1} - x0, dy = int64_t{y1} - y0;
+  const int64_t g = std::gcd(std::abs(dx), std::abs(dy));
+  if (g == 0) return;
+  dx /= g, dy /= g;
+  int64_t sx = x0, sy = y0;
+  if (dx < 0 || (dx == 0 && dy < 0)) dx = -dx, dy = -dy, sx = x1, sy = y1;
+  for (int64_t k = 0; k < g; ++k) {
+    const int64_t px = sx + k * dx, py = sy + k * dy;
+    ++(*cells)[Cell{dx, dy, dy * px - dx * py, dx * px + dy * py}];
+  }
+}
+
+// The planned strokes cover exactly the spans' unit steps, each once; no stroke is a dot.
+static bool drawn_once(const std::vector<Segment2>& spans, const std::vector<PathPoint>& pts) {
+  std::map<Cell, int> want, got;
+  for (const Segment2& g : spans) add_cells(g.x0, g.y0, g.x1, g.y1, &want);
+  for (auto& c : want) c.second = 1;
+  for (size_t i = 1; i < pts.size(); ++i) {
+    if (!pts[i].pen_down) continue;
+    if (pts[i].x == pts[i - 1].x && pts[i].y == pts[i - 1].y) return false;
+    add_cells(pts[i - 1].x, pts[i - 1].y, pts[i].x, pts[i].y, &got);
+  }
+  return got == want;
+}
+
+// Hand-worked clean-up cases: a join after a merge, the minimum stroke, a short workspace, a
+// layer cleaned away.
+static void clean_cases() {
+  {  // (5,0)-(20,0) overlaps (0,0)-(10,0); their union meets (20,0)-(20,10): one stroke.
+    const std::vector<Segment2> s = {{0, 0, 10, 0}, {5, 0, 20, 0}, {20, 0, 20, 10}};
+    PathStats st;
+    const auto pts = plan(s, &st, PathEnd{}, PathClean{});
+    CHECK_EQ(st.polylines, 1u);
+    CHECK_EQ(pts.size(), size_t{3});
+    CHECK_EQ(st.overlaps_merged, 1u);
+    CHECK_EQ(st.overlap_length, uint64_t{5});
+    CHECK(drawn_once(s, pts));
+    plan(s, &st);
+    CHECK_EQ(st.polylines, 2u);  // without the merge: (0,0)-(10,0) apart
+  }
+  {  // Minimum 10: a lone 5 is dropped, two joined 6s (12) and a lone 10 are kept.
+    const std::vector<Segment2> s = {
+        {0, 0, 5, 0}, {100, 0, 106, 0}, {106, 0, 106, 6}, {200, 0, 210, 0}};
+    PathStats st;
+    const auto pts = plan(s, &st, PathEnd{}, PathClean{true, 10});
+    CHECK_EQ(st.crumbs_dropped, 1u);
+    CHECK_EQ(st.crumb_length, uint64_t{5});
+    CHECK_EQ(st.polylines, 2u);
+    CHECK(drawn_once({s[1], s[2], s[3]}, pts));
+  }
+  {  // A workspace one word short is a status, not a crash.
+    std::vector<Segment2> s = {{0, 0, 10, 0}, {5, 0, 20, 0}};
+    std::vector<uint64_t> ws(path_plan_bytes(2) / 8 - 1);
+    std::vector<PathPoint> out(path_points_max(2));
+    uint32_t n = 0;
+    CHECK(plan_path(s.data(), 2, 0, 0, ws.data(), ws.size() * 8, out.data(), 4, &n, nullptr) ==
+          Status::kWorkspaceTooSmall);
+  }
+  {  // A layer of dots plans to nothing; the next starts from the start.
+    std::vector<Segment2> s = {{3, 3, 3, 3}, {7, 7, 7, 7}, {10, 0, 20, 0}};
+    LayerCounts layers;
+    layers.n = 2, layers.count[0] = 2, layers.count[1] = 1;
+    std::vector<uint64_t> ws(path_plan_bytes(3) / 8 + 1);
+    std::vector<PathPoint> out(path_points_max(3));
+    uint32_t n = 0;
+    LayerCounts per;
+    PathStats st;
+    CHECK(ok(plan_path_layers(s.data(), 3, layers, 0, 0, ws.data(), ws.size() * 8, out.data(),
+                              uint32_t(out.size()), &n, &per, &st)));
+    CHECK_EQ(n, 2u);
+    CHECK_EQ(per.count[0], 0u);
+    CHECK_EQ(per.count[1], 2u);
+    CHECK_EQ(st.dots_dropped, 2u);
+    CHECK_EQ(st.pen_lifts, 0u);
+  }
+}
+
+// The clean-up (motion/stroke_clean.h): collinear families of overlapping spans, duplicates
+// and dots among random spans are drawn once, exactly their union; with the clean-up off the
+// same check fails (it sees the overlaps).
+static void cleaned(scenes::Rng& r) {
+  static const int32_t kDirs[6][2] = {{1, 0}, {0, 1}, {1, 1}, {2, 1}, {3, -2}, {-1, 4}};
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<Segment2> s;
+    uint32_t dots = 0;
+    for (int line = 0; line < 12; ++line) {
+      const int32_t* d = kDirs[r.uniform(0, 5)];
+      const int32_t bx = int32_t(r.uniform(1000, 4000)), by = int32_t(r.uniform(1000, 4000));
+      for (int k = 0; k < 5; ++k) {
+        const int32_t a = int32_t(r.uniform(-60, 60)), b = a + int32_t(r.uniform(1, 50));
+        s.push_back({bx + a * d[0], by + a * d[1], bx + b * d[0], by + b * d[1]});
+        if (k % 2) std::swap(s.back().x0, s.back().x1), std::swap(s.back().y0, s.back().y1);
+      }
+    }
+    for (int i = 0; i < 40; ++i) {
+      const int32_t x = int32_t(r.uniform(0, 5000)), y = int32_t(r.uniform(0, 5000));
+      s.push_back({x, y, int32_t(x + r.uniform(-300, 300)), int32_t(y + r.uniform(-300, 300))});
+      if (i % 8 == 0) s.push_back({x, y, x, y}), ++dots;
+    }
+    s.push_back(s[3]);
+    std::shuffle(s.begin(), s.end(), std::mt19937(uint32_t(trial)));
+    PathStats st;
+    CHECK_MSG(drawn_once(s, plan(s, &st, PathEnd{}, PathClean{})), "clean-up: each step once");
+    CHECK_EQ(st.dots_dropped, dots);
+    CHECK(st.overlaps_merged > 0 && st.overlap_length > 0);
+    CHECK_MSG(!drawn_once(s, plan(s, &st)), "clean-up off: the check must see the overlaps");
+  }
+}
+
 int main() {
   scenes::Rng r(21);
   against_optimum(r);
   layered(r);
+  cleaned(r);
+  clean_cases();
   {  // Chains in shuffled order and mixed directions become one stroke.
     const std::vector<Segment2> chain = {
         {200, 0, 300, 50}, {100, 0, 200, 0}, {300, 50, 400, 0}, {100, 0, 0, 0}};

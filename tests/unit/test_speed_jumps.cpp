@@ -105,6 +105,7 @@ void triangles_peak_in_the_middle() {
     spec.drawing = DrawingEffect::kAllEdges;
     spec.effects.pen_servo = false;
     spec.finish_home = false;  // the one travel alone
+    spec.clean.on = false;     // to a lone dot, which the planner's clean-up would drop
     const int32_t x = 1000 + len, y = 1000 + len / 3;
     std::ostringstream out;
     SimReport r;

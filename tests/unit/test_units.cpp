@@ -152,5 +152,20 @@ int main() {
     buf[2] = uint8_t(kMaxSubstepBits + 1);
     CHECK(decode_effects(buf, sizeof buf, &got) == Status::kMalformedRequest);
   }
+  // The path's clean-up travels with the effects too; a host that sends none (3 bytes) gets
+  // dots and overlaps cleaned and no minimum stroke.
+  {
+    JobSpec spec;
+    spec.clean = PathClean{false, 24};
+    uint8_t buf[kEffectsBytes];
+    encode_effects(spec, buf);
+    JobSpec got;
+    CHECK(ok(decode_effects(buf, sizeof buf, &got)) && !got.clean.on && got.clean.min_stroke == 24);
+    CHECK(ok(decode_effects(buf, kEffectsShortBytes, &got)) && !got.clean.on &&
+          got.clean.min_stroke == 0);
+    buf[1] = 0;
+    CHECK(ok(decode_effects(buf, kEffectsShortBytes, &got)) && got.clean.on);
+    CHECK(decode_effects(buf, kEffectsBytes - 1, &got) == Status::kMalformedRequest);
+  }
   return check::finish("units");
 }
