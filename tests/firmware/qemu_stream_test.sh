@@ -67,7 +67,9 @@ elif [ "$kind" = cubes28 ]; then
   # The 28 x 28 cubes (6,272 vertices, 9,408 edges, 9,408 triangles) hidden-dashed with outlines
   # and hatching in 64 KB, each band's part streamed: the controller works out the hidden lines
   # of every band itself. A sixteenth of a motor step per plot step, as for solid.
-  printf 'scene cubes28.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\neffects acceleration pen-servo\nkinematics corexy\nsteps 1/16\n' \
+  # (Clean-up off: a band has one pen and merges overlaps across kinds of line, the whole-model
+  # plot only within a layer, as in band_dashes.)
+  printf 'scene cubes28.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\neffects acceleration pen-servo\nkinematics corexy\nsteps 1/16\ncleanup off\n' \
     > whole.job
   { cat whole.job; echo "arena 65536"; } > demo.job
   "$tool" sim demo.job -o host.trace --stats 2> host.stats
@@ -94,7 +96,8 @@ elif [ "$kind" = dashed ]; then
   # step interrupts (64 s at a quarter, 36 to 41 s at an eighth, on a 2-core machine with other
   # builds running). The check's step is then a motor step, 8 plot steps (0.1 mm). 48 KB: 8
   # bands (10 in the page's rows).
-  printf 'scene cubes6.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\neffects acceleration pen-servo\nkinematics corexy\nsteps 1/8\n' \
+  # (Clean-up off, as for cubes28.)
+  printf 'scene cubes6.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\neffects acceleration pen-servo\nkinematics corexy\nsteps 1/8\ncleanup off\n' \
     > whole.job
   { cat whole.job; echo "arena 49152"; } > demo.job
   "$tool" sim whole.job -o whole.trace
