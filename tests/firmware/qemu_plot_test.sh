@@ -20,7 +20,8 @@ sed -n '/^haloplot-trace 2$/,/^end /p' "$work/fw.out" > "$work/fw.trace"
 
 cd "$work"
 "$tool" demo-scene --cubes 6 -o scene.edges
-printf 'scene scene.edges\ndrawing haloed\nhalo 50\nhalo-mode paper\nkinematics corexy\n' > job.job
+# (min-stroke 0: the self-test image plans with the core's clean-up default, no minimum stroke.)
+printf 'scene scene.edges\ndrawing haloed\nhalo 50\nhalo-mode paper\nkinematics corexy\nmin-stroke 0\n' > job.job
 "$tool" sim job.job -o host.trace
 if [ -s fw.trace ] && cmp -s fw.trace host.trace; then
   ok
