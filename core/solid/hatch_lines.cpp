@@ -191,7 +191,12 @@ Status draw_hatch_lines(const Topology& topo, const uint8_t* front, const FaceGr
       const int32_t y0 = min_i32(e.a.y, e.b.y), y1 = max_i32(e.a.y, e.b.y);
       if (rows.on && (y1 < rows.lo || y0 >= rows.hi)) return Status::kOk;  // not in the band
       ++st.lines;
-      const SegmentPass pass{topo, front, fg, &st, e, {t, kNoFace}, polygon, begin, stop};
+      // A line across the polygon ends on its sides; one laid in triangle t ends on t's, so
+      // only t's neighbours can meet its rounded ends (and a large flat region, thousands of
+      // slivers, is not searched for every face asked).
+      const bool small = stop - begin <= kJoined;
+      const uint32_t near0 = joined || small ? begin : t, near1 = joined || small ? stop : t + 1;
+      const SegmentPass pass{topo, front, fg, &st, e, {t, kNoFace}, polygon, near0, near1};
       return pass.run(index++, sink, rows);
     });
   }

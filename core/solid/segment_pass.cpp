@@ -66,11 +66,11 @@ int SegmentPass::next_cuts(int64_t after, int64_t cuts[kBatch]) const {
   };
   for_each_cell(fg.grid, s, CellCover::kExact, 0, [&](uint32_t c) {
     for (const uint32_t* k = fg.faces + fg.first[c]; k != fg.faces + fg.first[c + 1]; ++k) {
-      if (!asks(*k)) continue;
       const uint32_t* v = topo.triangles[*k].v;
       const Point3 p[3] = {topo.vertices[v[0]], topo.vertices[v[1]], topo.vertices[v[2]]};
       const FaceBox fb = box_of(p[0], p[1], p[2]);
-      if (!overlap_on_paper(sb, fb)) continue;
+      // The box first: asks() may test a plane exactly (a large flat region's own faces).
+      if (!overlap_on_paper(sb, fb) || !asks(*k)) continue;
       for (int i = 0; i < 3; ++i) {
         const CrossingTest x = test_crossing(s, Edge3{p[i], p[(i + 1) % 3]});
         if (x.crosses) consider(frac_q32_small(x.tn, x.den));
@@ -90,12 +90,12 @@ int32_t SegmentPass::cover_at(int64_t m) const {
   const int32_t cx = cell_x(p), cy = cell_y(p);
   int32_t q = 0;
   for (const uint32_t* k = fg.begin(cx, cy); k != fg.end(cx, cy); ++k) {
-    if (!asks(*k)) continue;
     const uint32_t* v = topo.triangles[*k].v;
     const Point3 &a = topo.vertices[v[0]], &b = topo.vertices[v[1]], &c = topo.vertices[v[2]];
     // Outside the face's box on paper: no cover, exactly (p is (x / d, y / d), d <= 2^32).
     const FaceBox fb = box_of(a, b, c);
     if (p.x < fb.x0 * p.d || p.x > fb.x1 * p.d || p.y < fb.y0 * p.d || p.y > fb.y1 * p.d) continue;
+    if (!asks(*k)) continue;
     ++st->face_tests;
     if (front != nullptr)
       q += cover_halves(a, b, c, p);

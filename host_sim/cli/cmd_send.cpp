@@ -102,7 +102,7 @@ bool load_obj(const std::string& job_path, SendScene* sc, std::string* error) {
   jf.spec.hidden = hidden_job(so);
   if (hidden_line_drawing(jf.spec)) {
     TriangulateStats ts;
-    sc->triangles = triangulate(sc->model.vertices, sc->model.faces, &ts);
+    sc->triangles = triangulate(sc->model.vertices, sc->model.faces, sc->model.face_region, &ts);
     if (ts.first_not_simple >= 0) {
       *error = not_simple_message(jf.scene_path, sc->model, ts);
       return false;

@@ -25,10 +25,13 @@ struct ObjModel {
   std::vector<uint32_t> edge_pairs;          // 2 vertex indices per edge
   std::vector<std::vector<uint32_t>> faces;  // vertex indices per face, as given
   std::vector<uint32_t> face_lines;          // the line each face was read from
-  uint32_t lines = 0;                        // `l` statements read
-  double scale = 1;                          // world units per unit of the file
-  double centre[3] = {0, 0, 0};              // the file's bounding-box centre (file units)
-  double magnitude = 0;                      // the largest |coordinate| in the file
+  // The flat region each face belongs to (its first face; mesh_repair.h, find_flat_regions):
+  // hatched as one surface. Empty: each face is its own.
+  std::vector<uint32_t> face_region;
+  uint32_t lines = 0;            // `l` statements read
+  double scale = 1;              // world units per unit of the file
+  double centre[3] = {0, 0, 0};  // the file's bounding-box centre (file units)
+  double magnitude = 0;          // the largest |coordinate| in the file
   double rounding =
       0;  // how far a stored coordinate may be off (file units; coordinate_rounding.h)
 };

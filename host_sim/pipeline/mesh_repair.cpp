@@ -399,4 +399,36 @@ void drop_flat_edges(ObjModel* model, const CreaseRule& rule, RepairReport* repo
   model->edge_pairs = kept;
 }
 
+void find_flat_regions(ObjModel* model, double rounding) {
+  const SidesByVertex sides(*model);
+  std::vector<FaceShape> shape;
+  shape.reserve(model->faces.size());
+  for (const std::vector<uint32_t>& c : model->faces)
+    shape.push_back(face_shape(*model, c, rounding));
+  // Union-find whose root is the region's first face, so the id does not depend on the order
+  // the sides are met in.
+  std::vector<uint32_t>& up = model->face_region;
+  up.resize(model->faces.size());
+  for (uint32_t f = 0; f < up.size(); ++f) up[f] = f;
+  auto root = [&](uint32_t f) {
+    while (up[f] != f) f = up[f] = up[up[f]];
+    return f;
+  };
+  const CreaseRule flat{false, 0, rounding};
+  for (uint32_t f = 0; f < model->faces.size(); ++f) {
+    const std::vector<uint32_t>& c = model->faces[f];
+    for (size_t i = 0; i < c.size(); ++i) {
+      const uint32_t a = c[i], b = c[(i + 1) % c.size()];
+      uint32_t face[2] = {0, 0};
+      if (sides.faces(a, b, face) != 2) continue;
+      const uint32_t g = face[0] == f ? face[1] : face[0];
+      if (g <= f) continue;  // each side once, from its lesser face
+      const uint32_t rf = root(f), rg = root(g);
+      if (rf == rg || !flat_between(*model, shape, f, g, a, b, flat)) continue;
+      up[std::max(rf, rg)] = std::min(rf, rg);
+    }
+  }
+  for (uint32_t f = 0; f < up.size(); ++f) up[f] = root(f);
+}
+
 }  // namespace haloplot::host

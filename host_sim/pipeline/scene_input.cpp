@@ -149,6 +149,7 @@ bool read_model(const Options& given, const std::string& path, ObjModel* model,
   orient_shells(model, &report);
   if (!exact) crease.rounding = vertex_rounding(*model);
   drop_flat_edges(model, crease, &report);
+  find_flat_regions(model, crease.rounding);
   if (repair != nullptr) *repair = report;
   make_z_up(model, up);
   return true;
@@ -569,7 +570,7 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
   scene->substep_bits = view.substep_bits;
   scene->edge_pairs = model.edge_pairs;
   TriangulateStats ts;
-  scene->triangles = triangulate(model.vertices, model.faces, &ts);
+  scene->triangles = triangulate(model.vertices, model.faces, model.face_region, &ts);
   if (stats != nullptr) *stats = ts;
   if (ts.first_not_simple >= 0) {
     *error = not_simple_message(path, model, ts);

@@ -100,7 +100,7 @@ bool clip_ears(const std::vector<P2>& p, const std::vector<uint32_t>& v, uint32_
 
 std::vector<Triangle> triangulate(const std::vector<Point3>& world,
                                   const std::vector<std::vector<uint32_t>>& faces,
-                                  TriangulateStats* stats) {
+                                  const std::vector<uint32_t>& regions, TriangulateStats* stats) {
   std::vector<Triangle> out;
   out.reserve(2 * faces.size());  // a quad mesh's count; more only grows it
   TriangulateStats st;
@@ -173,6 +173,13 @@ std::vector<Triangle> triangulate(const std::vector<Point3>& world,
   }
   st.triangles = uint32_t(out.size());
   if (stats != nullptr) *stats = st;
+  if (!regions.empty()) {
+    // A region's triangles one run with its id, the runs in the order of their first faces:
+    // the region's id is its first face, and triangles came out in face order.
+    for (Triangle& t : out) t.polygon = regions[t.polygon];
+    std::stable_sort(out.begin(), out.end(),
+                     [](const Triangle& a, const Triangle& b) { return a.polygon < b.polygon; });
+  }
   return out;
 }
 

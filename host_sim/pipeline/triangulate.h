@@ -24,8 +24,15 @@ struct TriangulateStats {
   int64_t first_not_simple = -1;  // the first face whose boundary crosses itself
 };
 
+// Each triangle's polygon is its face, or with `regions` (one per face, ObjModel::face_region)
+// its face's region, a region's triangles one run (solid/mesh.h: a polygon is a run).
 std::vector<Triangle> triangulate(const std::vector<Point3>& world,
                                   const std::vector<std::vector<uint32_t>>& faces,
-                                  TriangulateStats* stats);
+                                  const std::vector<uint32_t>& regions, TriangulateStats* stats);
+inline std::vector<Triangle> triangulate(const std::vector<Point3>& world,
+                                         const std::vector<std::vector<uint32_t>>& faces,
+                                         TriangulateStats* stats) {
+  return triangulate(world, faces, {}, stats);
+}
 
 }  // namespace haloplot::host
