@@ -627,6 +627,7 @@ bool parse_pause_at(const std::string& list_text, std::vector<uint32_t>* pause_a
 // The plot as a G-code and an HPGL file too, when asked for: a model's drawing centred on the
 // job's page as `plot` centres it (export/page.h); the travel home ends at the paper's origin.
 int write_exports(const Options& o, const SimReport& r, const JobSpec& spec, JobFile jf) {
+  if (o.get("--gcode").empty() && o.get("--hpgl").empty()) return 0;
   std::vector<PathPoint> points = r.points;
   if (is_mesh_path(jf.scene_path)) {
     Options page_options;
@@ -639,7 +640,10 @@ int write_exports(const Options& o, const SimReport& r, const JobSpec& spec, Job
   }
   const std::string error = write_plotter_outputs(o.get("--gcode"), o.get("--hpgl"), points,
                                                   spec.machine, jf.style, r.layer_points);
-  return error.empty() ? 0 : fail(error);
+  if (!error.empty()) return fail(error);
+  // What the files draw, as `plot` says it (whole or in bands).
+  std::cerr << written_summary(spec, points, jf.style) << "\n";
+  return 0;
 }
 
 void print_sim_stats(const JobSpec& spec, const SimReport& r, size_t edges) {

@@ -182,24 +182,16 @@ int write_planned_outputs(const Options& o, const JobSpec& spec, PlannedJob plan
   }
   add_travel_home(spec, &planned.points);
   if (model) centre_on_page(page, spec.finish_home, &planned.points, &style);
-  // The summary is the files': their pen-downs, travel and time, not the planner's stats.
-  const double seconds = written_plot_seconds(spec, planned.points, style);
-  const WrittenFigures f = written_figures(planned.points, style);
   const std::string error = write_plotter_outputs(o.get("--gcode"), o.get("--hpgl"), planned.points,
                                                   spec.machine, style, planned.layer_points);
   if (!error.empty()) {
     std::cerr << "haloplot: " << error << "\n";
     return 1;
   }
-  const long whole = long(seconds + 0.5);
-  std::fprintf(stderr,
-               "haloplot: plot time about %ld min %02ld s (%.1f s by the motion planner's "
-               "model); %u strokes, pen down %s mm, pen up %s mm\n",
-               whole / 60, whole % 60, seconds, f.strokes,
-               mm_text(std::llround(f.pen_down), style.steps_per_mm).c_str(),
-               mm_text(std::llround(f.pen_up), style.steps_per_mm).c_str());
+  // The summary is the files': their pen-downs, travel and time, not the planner's stats.
+  std::cerr << written_summary(spec, planned.points, style) << "\n";
   if (o.has("--stats")) {
-    std::fprintf(stderr, "estimate_s=%.3f\n", seconds);
+    std::fprintf(stderr, "estimate_s=%.3f\n", written_plot_seconds(spec, planned.points, style));
     print_clean_stats(planned.counters.path, style.steps_per_mm);
   }
   return 0;

@@ -1,7 +1,9 @@
 #include "export/plotter_outputs.h"
 
 #include <cmath>
+#include <cstdio>
 
+#include "export/exporters.h"
 #include "haloplot/memory/sized_stage.h"
 #include "haloplot/motion/planner.h"
 #include "io/atomic_file.h"
@@ -106,6 +108,20 @@ double written_plot_seconds(const JobSpec& spec, const std::vector<PathPoint>& p
       paper.back().y == 0)
     paper.pop_back();
   return estimate_plot_seconds(spec, paper);
+}
+
+std::string written_summary(const JobSpec& spec, const std::vector<PathPoint>& points,
+                            const ExportStyle& style) {
+  const double seconds = written_plot_seconds(spec, points, style);
+  const WrittenFigures f = written_figures(points, style);
+  const long whole = long(seconds + 0.5);
+  char time[96];
+  std::snprintf(time, sizeof time,
+                "plot time about %ld min %02ld s (%.1f s by the motion planner's model)",
+                whole / 60, whole % 60, seconds);
+  return "haloplot: " + std::string(time) + "; " + std::to_string(f.strokes) +
+         " strokes, pen down " + mm_text(std::llround(f.pen_down), style.steps_per_mm) +
+         " mm, pen up " + mm_text(std::llround(f.pen_up), style.steps_per_mm) + " mm";
 }
 
 void centre_on_page(const Page& page, bool finish_home, std::vector<PathPoint>* points,

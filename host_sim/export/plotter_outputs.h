@@ -62,6 +62,12 @@ WrittenFigures written_figures(const std::vector<PathPoint>& points, const Expor
 double written_plot_seconds(const JobSpec& spec, const std::vector<PathPoint>& points,
                             const ExportStyle& style);
 
+// The line stderr gives for the files: "haloplot: plot time about M min SS s (S s by the
+// motion planner's model); N strokes, pen down D mm, pen up U mm", from written_figures and
+// written_plot_seconds, so `plot` and `sim` (whole or in bands) say what their files draw.
+std::string written_summary(const JobSpec& spec, const std::vector<PathPoint>& points,
+                            const ExportStyle& style);
+
 // Writes the G-code to `gcode_path` and the HPGL to `hpgl_path` (each when not empty), through
 // the command's output set (io/atomic_file.h), with the path's layers (pen changes between
 // them when the style asks). "" or the error.

@@ -9,7 +9,8 @@
 #    says (the header right after G90, the footer after the last move, before the end).
 #  - The summary on stderr is the file: its strokes are the G-code's pen-downs and its pen-up
 #    travel the G-code's G0 travel from (0, 0) through the trip home, within 0.5 %, for assimp's
-#    spider (when installed) and a generated torus, hidden-removed, hidden-dashed and haloed.
+#    spider (when installed) and a generated torus, in every mode (haloed, all, hidden-removed,
+#    hidden-dashed, hatched), and `sim`'s of a job in bands for the torus.
 # Usage: pen_output.sh HALOPLOT
 set -u
 tool="$1"
@@ -88,7 +89,21 @@ for model in $models; do
   summary "${base}_removed" "$model" --mode hidden-removed
   summary "${base}_dashed" "$model" --mode hidden-dashed
   summary "${base}_haloed" "$model" --halo 40
+  summary "${base}_hatched" "$model" --mode hidden-removed --hatch 1
+  summary "${base}_all" "$model" --mode all
 done
+
+# In bands: `sim` of a job with an arena writes the G-code and says the same summary.
+banded() {  # NAME MODEL JOB-LINES
+  local name="$1" model="$2"
+  printf 'scene %s\nview 20,30\narena 65536\n%b' "$model" "$3" > "$name.job"
+  "$tool" sim "$name.job" -o "$name.trace" --gcode "$name.gcode" 2> "$name.err"
+  expect "$check summary $name.gcode $name.err" "$name in bands: the summary is the G-code's"
+}
+banded torus_bands_removed torus.obj 'drawing hidden-removed\n'
+banded torus_bands_dashed torus.obj 'drawing hidden-dashed\n'
+banded torus_bands_hatched torus.obj 'drawing hidden-removed\nhatch 1\n'
+banded torus_bands_haloed torus.obj 'halo 40\n'
 
 echo "pen_output: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
