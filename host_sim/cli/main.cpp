@@ -817,6 +817,22 @@ int run_command(int argc, char** argv) {
       std::cout << usage_of(cmd);
       return 0;
     }
+  // Every output the command will write, checked before any work: a missing folder is said
+  // at once, not after a long plot. These names are outputs in every command that has them.
+  for (int i = 2; i < argc; ++i) {
+    const std::string arg = argv[i];
+    for (const char* name :
+         {"-o", "--gcode", "--hpgl", "--spans", "--cut", "--trace", "--dump-edges"}) {
+      const std::string n = name;
+      std::string path;
+      if (arg == n && i + 1 < argc)
+        path = argv[i + 1];
+      else if (arg.compare(0, n.size() + 1, n + "=") == 0)
+        path = arg.substr(n.size() + 1);
+      const std::string problem = path.empty() ? "" : output_problem(path);
+      if (!problem.empty()) return fail(problem);
+    }
+  }
   if (cmd == "demo-scene") return cmd_demo_scene(argc, argv);
   if (cmd == "random-scene") return cmd_random_scene(argc, argv);
   if (cmd == "cut") return cmd_cut(argc, argv);

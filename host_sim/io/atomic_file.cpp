@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <climits>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -66,12 +67,75 @@ bool copy_into(const std::string& tmp, std::ostream& out) {
   return bool(out);
 }
 
+// The temporary files that exist now, for the signal handler: fixed slots it can read at any
+// moment (no allocation, no container that may be moving), each a path and a flag set last.
+constexpr int kTmpSlots = 64;
+char tmp_path[kTmpSlots][PATH_MAX];
+volatile sig_atomic_t tmp_used[kTmpSlots];
+
+void note_tmp(const std::string& path) {
+  if (path.size() >= PATH_MAX) return;
+  for (int i = 0; i < kTmpSlots; ++i)
+    if (!tmp_used[i]) {
+      std::memcpy(tmp_path[i], path.c_str(), path.size() + 1);
+      tmp_used[i] = 1;
+      return;
+    }
+}
+
+void forget_tmp(const std::string& path) {
+  for (int i = 0; i < kTmpSlots; ++i)
+    if (tmp_used[i] && path == tmp_path[i]) tmp_used[i] = 0;
+}
+
+extern "C" void remove_tmp_and_die(int sig) {
+  for (int i = 0; i < kTmpSlots; ++i)
+    if (tmp_used[i]) unlink(tmp_path[i]);  // async-signal-safe
+  signal(sig, SIG_DFL);
+  raise(sig);
+}
+
 }  // namespace
 
-OutputSet::OutputSet() : previous_(current) { current = this; }
+void remove_staged_on_signal() {
+  static bool installed = false;
+  if (installed) return;
+  installed = true;
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction was = {};
+    if (sigaction(sig, nullptr, &was) == 0 && was.sa_handler == SIG_IGN) continue;  // nohup
+    struct sigaction sa = {};
+    sa.sa_handler = remove_tmp_and_die;
+    sigemptyset(&sa.sa_mask);
+    sigaction(sig, &sa, nullptr);
+  }
+}
+
+std::string output_problem(const std::string& path) {
+  std::string target, why;
+  const Kind kind = classify(path, &target, &why);
+  if (kind == Kind::kRefused) return path + ": cannot write there (" + why + ")";
+  if (kind == Kind::kThrough) return "";
+  const size_t slash = target.rfind('/');
+  const std::string folder = slash == std::string::npos ? "." : target.substr(0, slash + 1);
+  struct stat st;
+  if (stat(folder.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+    return path + ": cannot write there (no folder '" + folder + "')";
+  if (access(folder.c_str(), W_OK) != 0)
+    return path + ": cannot write there (folder '" + folder + "' is not writable)";
+  return "";
+}
+
+OutputSet::OutputSet() : previous_(current) {
+  current = this;
+  remove_staged_on_signal();
+}
 
 OutputSet::~OutputSet() {
-  for (const Staged& s : staged_) std::remove(s.tmp.c_str());
+  for (const Staged& s : staged_) {
+    std::remove(s.tmp.c_str());
+    forget_tmp(s.tmp);
+  }
   current = previous_;
 }
 
@@ -85,6 +149,7 @@ std::string OutputSet::stage(const std::string& path,
   s.through = kind == Kind::kThrough;
   s.tmp = s.through ? through_tmp() : s.target + ".tmp";
   if (s.tmp.empty()) return path + ": cannot create a temporary file";
+  note_tmp(s.tmp);
   {
     std::ofstream out(s.tmp, std::ios::binary);
     if (!out) return path + ": cannot open for writing";
@@ -93,6 +158,7 @@ std::string OutputSet::stage(const std::string& path,
     if (!fine || !out) {
       out.close();
       std::remove(s.tmp.c_str());
+      forget_tmp(s.tmp);
       return path + ": write failed";
     }
   }
@@ -118,7 +184,10 @@ std::string OutputSet::commit() {
     }
     if (!fine) error = s.path + ": write failed";
   }
-  for (const Staged& s : staged_) std::remove(s.tmp.c_str());  // renamed ones are gone already
+  for (const Staged& s : staged_) {
+    std::remove(s.tmp.c_str());  // renamed ones are gone already
+    forget_tmp(s.tmp);
+  }
   staged_.clear();
   return error;
 }

@@ -37,6 +37,17 @@ class OutputSet {
   OutputSet* previous_;
 };
 
+// Why PATH cannot be written as an output, checked before a command does its work (so a
+// missing folder is said at once, not after minutes of work): "" when it can. The same rules
+// as staging (above), and for a file its folder must exist and take a new file (PATH.tmp).
+std::string output_problem(const std::string& path);
+
+// SIGINT, SIGTERM and SIGHUP remove every temporary file the current outputs have staged or are
+// writing before the signal ends the process as it would have (nothing half-written is left,
+// neither PATH.tmp nor a staged copy). Installed by the first OutputSet; a signal the process
+// was started ignoring (nohup) stays ignored.
+void remove_staged_on_signal();
+
 // Stages PATH in the current OutputSet (the haloplot tool keeps one per command and commits
 // it when the command succeeds); with none current, writes and commits at once. Returns "" or
 // an error message.

@@ -142,5 +142,19 @@ refused "begins with 'solid' but holds a NUL byte" s.svg plot short.stl --mode h
 head -c 50 /dev/zero > zeros.stl
 refused "does not begin with 'solid'" s.svg plot zeros.stl --mode hidden-removed -o s.svg
 
+# An output that cannot be written is said before any work: one line, naming the path and why,
+# whichever output it is and in whichever command, and nothing else is written.
+refused "nodir/x.svg: cannot write there (no folder 'nodir/')" fine2.svg \
+  plot cubes.obj --mode hidden-removed -o fine2.svg --gcode nodir/x.svg
+expect '[ "$(wc -l < err.txt)" -eq 1 ]' "the missing folder is the only line: $(cat err.txt)"
+refused "nodir/p.gcode: cannot write there" x.svg plot scene.edges --halo 5 -o x.svg --gcode=nodir/p.gcode
+printf 'scene scene.edges\nhalo 5\n' > ok.job
+refused "nodir/t.trace: cannot write there" nodir/t.trace sim ok.job -o nodir/t.trace
+mkdir ro && chmod a-w ro
+if [ "$(id -u)" != 0 ]; then
+  refused "ro/x.svg: cannot write there (folder 'ro/' is not writable)" ro/x.svg \
+    plot scene.edges --halo 5 -o ro/x.svg
+fi
+
 echo "cli_hygiene: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
