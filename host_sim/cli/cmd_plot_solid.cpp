@@ -12,6 +12,7 @@
 #include "cli/page_options.h"
 #include "cli/plot_outputs.h"
 #include "cli/solid_options.h"
+#include "cli/stage_progress.h"
 #include "io/atomic_file.h"
 #include "io/line_reader.h"
 #include "io/spans_file.h"
@@ -132,9 +133,16 @@ int cmd_plot_solid(const Options& o) {
                 "controller would, give its job 'arena BYTES' and run `haloplot sim JOB.job`");
   SolidScene scene;
   TriangulateStats tri;
-  if (!load_solid_scene(o, o.positional[0], &scene, &tri, &error)) return fail(error);
+  {
+    const StageProgress stage("reading " + o.positional[0]);
+    if (!load_solid_scene(o, o.positional[0], &scene, &tri, &error)) return fail(error);
+  }
   SolidRun run;
-  const Status s = run_solid_options(scene, so, &run);
+  Status s = Status::kOk;
+  {
+    const StageProgress stage("hidden lines");
+    s = run_solid_options(scene, so, &run);
+  }
   if (!ok(s)) return fail(o.positional[0] + ": hidden lines failed: " + status_name(s));
   say_repair_note(scene);
   if (!run.fallback_reason.empty() && so.method == HiddenMethod::kAuto)
@@ -151,6 +159,7 @@ int cmd_plot_solid(const Options& o) {
   PlotterJob job;
   if (wants_plotter_outputs(o)) {
     if (!plotter_job(o, so, d, &job, &error)) return fail(error);
+    const StageProgress stage("planning the pen path");
     if (job.planned_once && !plan_plot_job(job.spec, job.edges, &job.planned)) return 1;
     // The SVG's layers are the job's path cut at its layers: planned once, for both.
     if (job.planned_once &&
@@ -158,6 +167,7 @@ int cmd_plot_solid(const Options& o) {
       return fail("the planned path's layers do not match the drawing's (" +
                   std::to_string(job.planned.layer_points.n) + " layers)");
   }
+  const StageProgress writing("writing the files");
   if (!o.get("-o").empty())  // -o is optional with --gcode or --hpgl
     error = job.planned_once ? write_planned_page(o.get("-o"), page_layers, true, &style)
                              : write_plot_page(o.get("-o"), layers, true, &style);

@@ -11,12 +11,14 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "cli/cmd_plot_curves.h"
 #include "cli/options.h"
 #include "cli/page_options.h"
 #include "cli/plot_outputs.h"
+#include "cli/stage_progress.h"
 #include "demo/cube_array.h"
 #include "demo/random_scene.h"
 #include "export/exporters.h"
@@ -463,6 +465,7 @@ int plot_in_bands(const Options& o, const std::vector<Edge3>& edges, const CutPa
                 "high needs " + std::to_string(bands.need_bytes) + kFurtherBands);
   if (!ok(s)) return fail_status("bands", s);
   spans_to_steps(&d.spans, units);
+  const StageProgress writing("writing the files");
   if (const int rc = write_drawing(o, d, is_mesh_path(o.positional[0]))) return rc;
   if (o.has("--stats")) {
     std::fprintf(stderr, "edges=%zu\nspans=%zu\nband_ms=%.3f\n", edges.size(), d.spans.size(),
@@ -535,7 +538,10 @@ int cmd_plot(int argc, char** argv) {
   if (dp.mode == HaloMode::kExact && o.get("--reach").empty()) cp.reach = dp.halo;
   std::vector<Edge3> edges;
   int32_t units = 0;
-  if (!load_scene(o, o.positional[0], &edges, &error, &units)) return fail(error);
+  {
+    const StageProgress stage("reading " + o.positional[0]);
+    if (!load_scene(o, o.positional[0], &edges, &error, &units)) return fail(error);
+  }
   if (wants_plotter_outputs(o)) {
     if (!o.get("--arena").empty())
       return fail(
@@ -546,11 +552,13 @@ int cmd_plot(int argc, char** argv) {
     spec.drawing = DrawingEffect::kHaloed;
     spec.draw = dp;
     spec.cut = cp;
+    spec.cut.progress = nullptr;  // CUT's counter shows once, for the drawing's own CUT below
     spec.substep_bits = units;
     ExportStyle style;
     if (!export_style_of(o, &style, &spec.machine, &error) ||
         !parse_path_clean(o, style.steps_per_mm, &spec.clean, &error))
       return fail(error);
+    const StageProgress stage("the plotter's path (CUT, DRAW and the pen path, as sim's job)");
     if (const int rc = write_plot_outputs(o, spec, edges, style, is_mesh_path(o.positional[0])))
       return rc;
   }
@@ -559,7 +567,10 @@ int cmd_plot(int argc, char** argv) {
   Status s = host_cut(std::move(edges), cut_in_units(cp, units), &c);
   if (!ok(s)) return fail_status("CUT", s);
   HostDraw d;
-  s = host_draw(c.set, draw_in_units(dp, units), &d);
+  {
+    const StageProgress stage("DRAW");
+    s = host_draw(c.set, draw_in_units(dp, units), &d);
+  }
   if (!ok(s)) return fail_status("DRAW", s);
   warn_reach(d, dp.halo, c.set.reach >> units);
   if (!o.get("--cut").empty()) {
@@ -570,6 +581,7 @@ int cmd_plot(int argc, char** argv) {
     if (!error.empty()) return fail(error);
   }
   spans_to_steps(&d.spans, units);
+  const StageProgress writing("writing the files");
   if (const int rc = write_drawing(o, d, is_mesh_path(o.positional[0]))) return rc;
   if (o.has("--stats")) {
     print_cut_stats(c);
@@ -708,6 +720,10 @@ int cmd_sim(int argc, char** argv) {
   // path), the one the controller runs on a curve scene from `send`.
   const bool curves = !solid_bands && edges_file_has_curves(jf.scene_path);
   EdgesWithCurves curve_scene;
+  std::optional<StageProgress> stage;
+  const bool hidden_on_host = !solid_bands && (jf.spec.drawing == DrawingEffect::kHiddenRemoved ||
+                                               jf.spec.drawing == DrawingEffect::kHiddenDashed);
+  stage.emplace("reading " + jf.scene_path + (hidden_on_host ? " and its hidden lines" : ""));
   if (curves) {
     if (!load_curve_job(jf.scene_path, jf.spec, jf.arena, &curve_scene, &jf.spec.substep_bits,
                         &error))
@@ -719,6 +735,7 @@ int cmd_sim(int argc, char** argv) {
   } else if (!load_job_scene(jf, &edges, &error, &jf.spec.substep_bits, &jf.spec.layers)) {
     return fail(error);
   }
+  stage.reset();
   if (isatty(2)) jf.spec.cut.progress = &progress;
   JobSpec spec = jf.spec;
   // Hidden-line drawings are decided on the host; the controller's job then draws the chosen
@@ -730,6 +747,8 @@ int cmd_sim(int argc, char** argv) {
     spec.machine.backlash[0] = spec.machine.backlash[1] = 0;  // not simulated
   SimReport r;
   Status s = Status::kOk;
+  // A haloed job's CUT shows its own counter (the same line would be overwritten).
+  if (spec.drawing != DrawingEffect::kHaloed) stage.emplace("simulating the plotter");
   error = write_atomically(o.get("-o"), [&](std::ostream& out) {
     s = solid_bands ? simulate_solid(spec, solid_input(solid), model_closed(solid), &out, &r,
                                      jf.arena, form, pause_at, uint32_t(resume_at))
@@ -737,6 +756,7 @@ int cmd_sim(int argc, char** argv) {
                                curves ? &curve_scene.curves : nullptr);
     return ok(s);
   });
+  stage.reset();
   if (s == Status::kArenaTooSmall)
     return fail("sim: arena of " + std::to_string(jf.arena) + " bytes too small: a band one row " +
                 "high needs " + std::to_string(r.bands.need_bytes) + kFurtherBands);
