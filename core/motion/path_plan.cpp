@@ -4,6 +4,7 @@
 #include "haloplot/geometry/wide.h"
 #include "haloplot/memory/carve.h"
 #include "haloplot/motion/stroke_clean.h"
+#include "haloplot/motion/stroke_simplify.h"
 #include "haloplot/sort/in_place_sort.h"
 
 namespace haloplot {
@@ -441,6 +442,7 @@ void add_path_stats(PathStats* a, const PathStats& b) {
   a->dots_dropped += b.dots_dropped;
   a->overlaps_merged += b.overlaps_merged;
   a->crumbs_dropped += b.crumbs_dropped;
+  a->points_simplified += b.points_simplified;
   a->overlap_length += b.overlap_length;
   a->crumb_length += b.crumb_length;
 }
@@ -481,6 +483,8 @@ Status plan_path(Segment2* spans, uint32_t n, int32_t start_x, int32_t start_y, 
   improve_tour(tour);  // the grid's items are dead now: they hold the moves' lengths
 
   *out_count = write_path(spans, ws.link, ws.chains, ws.order, n_chains, start_x, start_y, out, st);
+  if (clean.on && clean.simplify > 0)  // 4. Fewer points along the same lines
+    *out_count = simplify_strokes(out, *out_count, clean.simplify, &st.points_simplified);
   if (stats) *stats = st;
   return Status::kOk;
 }

@@ -8,6 +8,8 @@
 //      draw as lines, each a lift and a put-down for a blot.
 //   3. Improve the order by 2-opt: reverse a run of the tour when that shortens the two pen-up
 //      moves at its ends (runs of up to 48 polylines, at most 4 passes: linear in the tour).
+//   4. With PathClean::simplify, leave out points of each stroke within that of the line drawn
+//      instead (motion/stroke_simplify.h).
 // The output is a list of path points: travel to a point with the pen up, or draw to it.
 #pragma once
 #include <stddef.h>
@@ -36,6 +38,7 @@ struct PathStats {
   // another collinear one (and the length they would have drawn twice), strokes dropped as
   // shorter than PathClean::min_stroke (and their length). Lengths in plot steps.
   uint32_t dots_dropped = 0, overlaps_merged = 0, crumbs_dropped = 0;
+  uint32_t points_simplified = 0;  // path points left out by PathClean::simplify
   uint64_t overlap_length = 0, crumb_length = 0;
 };
 
@@ -46,6 +49,9 @@ struct PathClean {
   bool on = true;  // false: the spans are planned exactly as given (a test's control)
   // Plot steps: a stroke (a chain of joined spans) shorter than this is dropped; 0 keeps all.
   uint32_t min_stroke = 0;
+  // Plot steps: points of a stroke within this of the line drawn instead are left out
+  // (motion/stroke_simplify.h); 0 keeps every point.
+  uint32_t simplify = 0;
 };
 
 // Adds b's counts to a's (the layers of a plan, the columns of a band).

@@ -55,6 +55,7 @@ void encode_effects(const JobSpec& spec, uint8_t out[kEffectsBytes]) {
                    (spec.finish_home ? 0 : 8) | (spec.clean.on ? 0 : 16));
   out[2] = uint8_t(spec.substep_bits);
   put_u32(out + 3, spec.clean.min_stroke);
+  put_u32(out + 7, spec.clean.simplify);
 }
 
 namespace {
@@ -127,8 +128,8 @@ Status decode_halo(const uint8_t* p, size_t n, DrawParams* out) {
 }
 
 Status decode_effects(const uint8_t* p, size_t n, JobSpec* spec) {
-  if ((n != kEffectsBytes && n != kEffectsShortBytes) || p[0] > uint8_t(DrawingEffect::kHatch) ||
-      (p[1] & ~31u) || p[2] > kMaxSubstepBits)
+  if ((n != kEffectsBytes && n != kEffectsNoSimplifyBytes && n != kEffectsShortBytes) ||
+      p[0] > uint8_t(DrawingEffect::kHatch) || (p[1] & ~31u) || p[2] > kMaxSubstepBits)
     return Status::kMalformedRequest;
   spec->substep_bits = p[2];
   spec->drawing = DrawingEffect(p[0]);
@@ -137,7 +138,8 @@ Status decode_effects(const uint8_t* p, size_t n, JobSpec* spec) {
   spec->effects.backlash = p[1] & 4;
   spec->finish_home = (p[1] & 8) == 0;
   spec->clean.on = (p[1] & 16) == 0;
-  spec->clean.min_stroke = n == kEffectsBytes ? get_u32(p + 3) : 0;
+  spec->clean.min_stroke = n >= kEffectsNoSimplifyBytes ? get_u32(p + 3) : 0;
+  spec->clean.simplify = n == kEffectsBytes ? get_u32(p + 7) : 0;
   return Status::kOk;
 }
 

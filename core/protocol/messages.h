@@ -52,13 +52,14 @@ namespace haloplot {
 
 inline constexpr size_t kUploadBeginBytes = 13, kUploadBeginCurvesBytes = 17,
                         kCurveRecordBytes = 48, kEdgeRecordBytes = 24, kVertexRecordBytes = 12,
-                        kIndexRecordBytes = 8, kViewBytes = 24, kHaloBytes = 5, kEffectsBytes = 7,
+                        kIndexRecordBytes = 8, kViewBytes = 24, kHaloBytes = 5, kEffectsBytes = 11,
                         kMachineBytes = 61, kStatusBytes = 32, kFaceRecordBytes = 16,
                         kHiddenBytes = 22, kStreamBeginBytes = 9, kBandBeginBytes = 20,
                         kBandEdgeRecordBytes = 4 + kEdgeRecordBytes, kBandVertexRecordBytes = 16,
                         kBandSolidEdgeRecordBytes = 12, kBandTriangleRecordBytes = 16;
-// The effects as a host before the path clean-up sent them (no minimum stroke): still taken.
-inline constexpr size_t kEffectsShortBytes = 3;
+// The effects as a host before the path clean-up sent them (no minimum stroke), and before the
+// simplification (a minimum stroke, no tolerance): still taken.
+inline constexpr size_t kEffectsShortBytes = 3, kEffectsNoSimplifyBytes = 7;
 
 // A streamed plot (band/conductor.h begin_streamed): the host's margin and the arena its bands
 // were sized for; then each band's rows and edge count.

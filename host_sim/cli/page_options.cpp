@@ -9,7 +9,8 @@
 
 namespace haloplot::host {
 
-const char* const kPageValued[5] = {"--page", "--margin", "--scale", "--pen-width", "--min-stroke"};
+const char* const kPageValued[6] = {"--page",      "--margin",     "--scale",
+                                    "--pen-width", "--min-stroke", "--simplify"};
 const char* const kPageFlags[4] = {"--landscape", "--fit", "--background", "--no-cleanup"};
 
 bool parse_path_clean(const Options& o, uint32_t steps_per_mm, PathClean* clean,
@@ -24,6 +25,14 @@ bool parse_path_clean(const Options& o, uint32_t steps_per_mm, PathClean* clean,
   }
   clean->on = !o.has("--no-cleanup");
   clean->min_stroke = uint32_t(std::llround(mm * steps_per_mm));
+  // Off unless asked: a plot keeps every point the hidden lines found.
+  const std::string t = o.get("--simplify", "0");
+  const double tol = std::strtod(t.c_str(), &end);
+  if (t.empty() || end != t.c_str() + t.size() || !(tol >= 0) || tol > 10) {
+    *error = "--simplify '" + t + "' must be a tolerance in mm in [0, 10] (0: every point kept)";
+    return false;
+  }
+  clean->simplify = uint32_t(std::llround(tol * steps_per_mm));
   return true;
 }
 
@@ -84,9 +93,9 @@ void print_clean_stats(const PathStats& st, uint32_t steps_per_mm) {
   const double per = steps_per_mm;
   std::fprintf(stderr,
                "clean_dots=%u\nclean_overlaps=%u\nclean_overlap_mm=%.1f\nclean_crumbs=%u\n"
-               "clean_crumb_mm=%.1f\n",
+               "clean_crumb_mm=%.1f\nclean_points_simplified=%u\n",
                st.dots_dropped, st.overlaps_merged, double(st.overlap_length) / per,
-               st.crumbs_dropped, double(st.crumb_length) / per);
+               st.crumbs_dropped, double(st.crumb_length) / per, st.points_simplified);
 }
 
 std::string write_planned_page(const std::string& path, const std::vector<PlannedLayer>& planned,

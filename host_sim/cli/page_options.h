@@ -12,7 +12,7 @@
 namespace haloplot::host {
 
 // --page --margin --scale --pen-width --min-stroke
-extern const char* const kPageValued[5];
+extern const char* const kPageValued[6];
 extern const char* const kPageFlags[4];  // --landscape --fit --background --no-cleanup
 
 // The path planner's clean-up (motion/path_plan.h PathClean): --min-stroke MM, by default the

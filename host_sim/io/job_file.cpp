@@ -56,6 +56,8 @@ const std::map<std::string, std::string> kKeys = {
     {"arena", "BYTES"},
     {"steps-per-mm", "STEPS"},
     {"min-stroke", "MM (strokes shorter are not drawn; default 0.3, 0: all drawn)"},
+    {"simplify",
+     "MM (points of a stroke within MM of the line drawn left out; default 0: all kept)"},
     {"pen", "servo | z | custom (the G-code's pen commands)"},
     {"servo-down", "S (the M3 S value; marlin: the M280 angle, 0 to 180)"},
     {"servo-up", "ANGLE (marlin: the M280 angle with the pen up)"},
@@ -224,7 +226,8 @@ bool is_view_setting(const std::string& key) {
 // The G-code's pen profile and feeds (cli/plot_outputs.h kPenOptions), checked together once
 // the whole file is read.
 bool is_pen_setting(const std::string& key) {
-  if (key == "min-stroke") return true;  // in mm: steps once steps-per-mm is known, as these
+  if (key == "min-stroke" || key == "simplify")
+    return true;  // in mm: steps once steps-per-mm is known, as these
   for (const char* option : kPenOptions)
     if (key == option + 2) return true;
   return false;

@@ -156,11 +156,14 @@ int main() {
   // dots and overlaps cleaned and no minimum stroke.
   {
     JobSpec spec;
-    spec.clean = PathClean{false, 24};
+    spec.clean = PathClean{false, 24, 9};
     uint8_t buf[kEffectsBytes];
     encode_effects(spec, buf);
     JobSpec got;
-    CHECK(ok(decode_effects(buf, sizeof buf, &got)) && !got.clean.on && got.clean.min_stroke == 24);
+    CHECK(ok(decode_effects(buf, sizeof buf, &got)) && !got.clean.on &&
+          got.clean.min_stroke == 24 && got.clean.simplify == 9);
+    CHECK(ok(decode_effects(buf, kEffectsNoSimplifyBytes, &got)) && got.clean.min_stroke == 24 &&
+          got.clean.simplify == 0);
     CHECK(ok(decode_effects(buf, kEffectsShortBytes, &got)) && !got.clean.on &&
           got.clean.min_stroke == 0);
     buf[1] = 0;
