@@ -17,7 +17,11 @@ std::chrono::milliseconds announce_after() {
 }  // namespace
 
 StageProgress::StageProgress(std::string name) : name_(std::move(name)) {
-  if (isatty(2)) watcher_ = std::thread([this] { watch(); });
+  if (!isatty(2)) return;
+  if (announce_after().count() == 0)  // every stage, said at once (tests: no race with the clock)
+    std::fprintf(stderr, "haloplot: %s ...\n", name_.c_str());
+  else
+    watcher_ = std::thread([this] { watch(); });
 }
 
 StageProgress::~StageProgress() {
