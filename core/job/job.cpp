@@ -93,7 +93,9 @@ BandSpec band_spec(const JobSpec& steps) {
   bs.cut = spec.cut;
   bs.start_x = spec.start_x;
   bs.start_y = spec.start_y;
-  bs.clean = PathClean{spec.clean.on, 0};
+  // No minimum stroke in a band (a border cuts strokes a band cannot see whole); the
+  // simplification holds for each part as for a whole stroke.
+  bs.clean = PathClean{spec.clean.on, 0, spec.clean.simplify};
   bs.style = StrokeStyle{spec.drawing == DrawingEffect::kHiddenDashed ? SolidMode::kHiddenDashed
                                                                       : SolidMode::kHiddenRemoved,
                          spec.hidden.dash, spec.hidden.gap};

@@ -57,7 +57,8 @@ if [ "$kind" = solid ]; then
   # worked out on the chip and the same link traffic, a sixteenth of the step interrupts, where
   # QEMU's time goes (161,000 steps a motor; at a quarter, 200 s of the test command's time).
   # The step interrupt at finer steps is firmware_link's and firmware_stream_dashed's.
-  printf 'scene cubes10.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\nkinematics corexy\nsteps 1/16\narena 65536\n' \
+  # With --simplify: the controller leaves out the same points as the host (motion/stroke_simplify.h).
+  printf 'scene cubes10.obj\ndrawing hidden-dashed\nview 30,25\ndash 2 1\noutline on\nhatch 3 30 90\nkinematics corexy\nsteps 1/16\narena 65536\nsimplify 0.1\n' \
     > demo.job
   "$tool" sim demo.job -o host.trace --stats 2> host.stats
   host=$(trace_digest host.trace)
