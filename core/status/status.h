@@ -5,7 +5,9 @@
 
 namespace haloplot {
 
-enum class Status : uint8_t {
+// [[nodiscard]]: a status returned and not looked at is a compile error (-Werror); where one is
+// rightly ignored, the call says so with a (void) cast and a comment.
+enum class [[nodiscard]] Status : uint8_t {
   kOk = 0,
   kCoordinateOutOfRange,    // an input coordinate is outside [0, 2^20)
   kTooManyEdges,            // more edges than the 32-bit indices and counters allow

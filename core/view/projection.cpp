@@ -163,7 +163,7 @@ Status project_points_with(const View& view, const Point3* world, uint32_t n, Po
       fd(bd.lo, uint64_t(bd.hi - bd.lo), 0, kCoordMax);
   for (uint32_t i = 0; i < n; ++i) {
     Rotated r;
-    place(world[i], &r);  // succeeded in the first pass
+    (void)place(world[i], &r);  // succeeded in the first pass: its status is kOk
     out[i] = Point3{fx(r.x), fy(r.y), fd(r.d)};
   }
   return Status::kOk;

@@ -37,7 +37,8 @@ ModeDrawing make_mode_drawing(const SolidRun& run, const ModeSpec& spec) {
   // A piece's call first strokes the hidden run held before it (dashes), then the piece's own
   // stroke, if it makes one now (one span: a visible piece, or any piece in mode all).
   auto add = [&](const SolidPiece& p, PieceKind kind) {
-    runs.piece(run.edges[p.edge], p.edge, kind, p.t0, p.t1, p.hidden, p.q, style, keep);
+    // keep() only appends (it cannot fail), so neither can the strokes.
+    (void)runs.piece(run.edges[p.edge], p.edge, kind, p.t0, p.t1, p.hidden, p.q, style, keep);
     const bool all = spec.mode == SolidMode::kAll;
     const bool intersection = kind == PieceKind::kLine;
     const bool own = !(all && kind != PieceKind::kEdge) && (!p.hidden || all);
@@ -52,17 +53,17 @@ ModeDrawing make_mode_drawing(const SolidRun& run, const ModeSpec& spec) {
   for (const SolidPiece& p : run.contour_diagonals) add(p, PieceKind::kContour);
   // Intersection lines as the core's job draws them: visible parts only.
   for (const SolidPiece& p : run.intersections) add(p, PieceKind::kLine);
-  runs.finish(style, keep);
+  (void)runs.finish(style, keep);  // keep() cannot fail
   d.kind.resize(d.spans.size(), LineKind::kHidden);
   // Hatching likewise, after them (Span::edge = the polygon).
   for (size_t k = 0; k < run.hatch.size(); ++k) {
     const SolidPiece& p = run.hatch[k];
-    piece_strokes(run.edges[p.edge], p.edge, PieceKind::kLine, p.t0, p.t1, p.hidden, style,
-                  [&](Span s) {
-                    s.edge = run.hatch_polygons[k];
-                    d.hatch.push_back(s);
-                    return Status::kOk;
-                  });
+    (void)piece_strokes(run.edges[p.edge], p.edge, PieceKind::kLine, p.t0, p.t1, p.hidden, style,
+                        [&](Span s) {
+                          s.edge = run.hatch_polygons[k];
+                          d.hatch.push_back(s);
+                          return Status::kOk;
+                        });
   }
   if (spec.outline)
     for (const OutlineSegment& o : run.outline)

@@ -16,6 +16,7 @@
 #include <sstream>
 #include <string>
 
+#include "../support/must.h"
 #include "chart.h"
 #include "demo/cube_array.h"
 #include "demo/random_scene.h"
@@ -257,13 +258,13 @@ int main(int argc, char** argv) {
       for (int r = 0; r < runs; ++r) {
         spans.clear();
         const double t0 = now_ms();
-        draw(set, DrawParams{50, mode}, scratch.data(), scratch.size() * sizeof(Gap),
-             SpanSink{[](void* c, const Span& s) {
-                        static_cast<std::vector<Span>*>(c)->push_back(s);
-                        return Status::kOk;
-                      },
-                      &spans},
-             nullptr);
+        must(draw(set, DrawParams{50, mode}, scratch.data(), scratch.size() * sizeof(Gap),
+                  SpanSink{[](void* c, const Span& s) {
+                             static_cast<std::vector<Span>*>(c)->push_back(s);
+                             return Status::kOk;
+                           },
+                           &spans},
+                  nullptr));
         t.push_back(now_ms() - t0);
       }
       const auto ref = reference::draw_ref(edges, cuts, 50, mode == HaloMode::kExact);

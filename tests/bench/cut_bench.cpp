@@ -17,6 +17,8 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Sweep_line_2_algorithms.h>
+
+#include "../support/must.h"
 #endif
 
 using namespace haloplot;
@@ -319,8 +321,8 @@ int main(int argc, char** argv) {
         std::vector<double> v;
         for (int r = 0; r < runs; ++r) {
           const double t0 = now_ms();
-          draw(set, DrawParams{50, mode}, scratch.data(), scratch.size() * sizeof(Gap), sink,
-               nullptr);
+          must(draw(set, DrawParams{50, mode}, scratch.data(), scratch.size() * sizeof(Gap), sink,
+                    nullptr));
           v.push_back(now_ms() - t0);
         }
         return median(v);

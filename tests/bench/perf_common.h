@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/must.h"
 #include "haloplot/haloplot.h"
 
 namespace bench {
@@ -53,7 +54,7 @@ inline CutTiming time_cut(const std::vector<haloplot::Edge3>& edges, haloplot::C
   params.phase = &PhaseClock::mark;
   params.phase_context = &clock;
   CutPlan plan;
-  plan_cut(edges.data(), n, params, &plan);
+  must(plan_cut(edges.data(), n, params, &plan));
   std::vector<uint64_t> scratch(plan.scratch_bytes / 8 + 1);
   uint32_t capacity = 4 * n + 1024;
   std::vector<uint64_t> storage(cutset_bytes(n, capacity) / 8 + 1);
@@ -67,9 +68,9 @@ inline CutTiming time_cut(const std::vector<haloplot::Edge3>& edges, haloplot::C
   std::vector<double> t1, t2, tg, tt;
   for (int r = 0; r < runs; ++r) {
     const double t0 = now_ms();
-    plan_cut(edges.data(), n, params, &plan);
-    run_cut(plan, edges.data(), scratch.data(), scratch.size() * 8, storage.data(),
-            storage.size() * 8, &set, &st);
+    must(plan_cut(edges.data(), n, params, &plan));
+    must(run_cut(plan, edges.data(), scratch.data(), scratch.size() * 8, storage.data(),
+                 storage.size() * 8, &set, &st));
     const double end = now_ms();
     t1.push_back(clock.cells_filled - t0);
     t2.push_back(clock.pairs_tested - clock.cells_filled);

@@ -7,6 +7,7 @@
 #include <set>
 #include <vector>
 
+#include "../support/must.h"
 #include "chart.h"
 #include "demo/random_scene.h"
 #include "haloplot/cut/cut.h"
@@ -133,14 +134,14 @@ ModeResult run_draw_mode(const std::string& name, const CutSet& set,
   for (int r = 0; r < runs + 1; ++r) {  // the first run warms caches and is not counted
     spans.clear();
     const double t0 = now_ms();
-    draw_with<P>(set, DrawParams{50, HaloMode::kPaper}, scratch.data(),
-                 scratch.size() * sizeof(Gap),
-                 SpanSink{[](void* c, const Span& s) {
-                            static_cast<std::vector<Span>*>(c)->push_back(s);
-                            return Status::kOk;
-                          },
-                          &spans},
-                 nullptr);
+    must(draw_with<P>(set, DrawParams{50, HaloMode::kPaper}, scratch.data(),
+                      scratch.size() * sizeof(Gap),
+                      SpanSink{[](void* c, const Span& s) {
+                                 static_cast<std::vector<Span>*>(c)->push_back(s);
+                                 return Status::kOk;
+                               },
+                               &spans},
+                      nullptr));
     if (r > 0) t.push_back(now_ms() - t0);
   }
   ModeResult m{name, median(t), 0, 0, 0};
@@ -223,20 +224,21 @@ void precision_modes_section(const std::string& dir, int runs, std::ostringstrea
       const char* name;
       std::vector<Point3> (*fn)(const View&, const std::vector<Point3>&);
     };
-    const Mode modes[] = {{"Q16.16 (core)",
-                           [](const View& v, const std::vector<Point3>& p) {
-                             std::vector<Point3> o(p.size());
-                             project_points_with<16>(v, p.data(), uint32_t(p.size()), o.data());
-                             return o;
-                           }},
-                          {"Q2.30 (core, default)",
-                           [](const View& v, const std::vector<Point3>& p) {
-                             std::vector<Point3> o(p.size());
-                             project_points_with<30>(v, p.data(), uint32_t(p.size()), o.data());
-                             return o;
-                           }},
-                          {"float (bench only)", &project_float<float>},
-                          {"double (bench only)", &project_float<double>}};
+    const Mode modes[] = {
+        {"Q16.16 (core)",
+         [](const View& v, const std::vector<Point3>& p) {
+           std::vector<Point3> o(p.size());
+           must(project_points_with<16>(v, p.data(), uint32_t(p.size()), o.data()));
+           return o;
+         }},
+        {"Q2.30 (core, default)",
+         [](const View& v, const std::vector<Point3>& p) {
+           std::vector<Point3> o(p.size());
+           must(project_points_with<30>(v, p.data(), uint32_t(p.size()), o.data()));
+           return o;
+         }},
+        {"float (bench only)", &project_float<float>},
+        {"double (bench only)", &project_float<double>}};
     for (const Mode& m : modes) {
       std::vector<double> t;
       std::vector<Point3> got;
@@ -284,7 +286,7 @@ void precision_modes_section(const std::string& dir, int runs, std::ostringstrea
   std::vector<std::pair<std::string, std::vector<Edge3>>> scenes;
   for (const World& w : worlds) {
     std::vector<Point3> p(w.vertices.size());
-    project_points(view, w.vertices.data(), uint32_t(p.size()), p.data());
+    must(project_points(view, w.vertices.data(), uint32_t(p.size()), p.data()));
     scenes.push_back({w.name, edges_of(p, w.pairs)});
   }
   scenes.push_back({"random, N = 20,000, L = 0.02", host::paper_random(20000, 20000, 8)});
@@ -378,7 +380,7 @@ size_t draw_once_in_mode(int k) {
   View view;
   const World w = cube_world(28);
   std::vector<Point3> p(w.vertices.size());
-  project_points(view, w.vertices.data(), uint32_t(p.size()), p.data());
+  must(project_points(view, w.vertices.data(), uint32_t(p.size()), p.data()));
   const std::vector<Edge3> edges = edges_of(p, w.pairs);
   std::vector<uint64_t> storage;
   CutSet set;
@@ -395,22 +397,22 @@ size_t draw_once_in_mode(int k) {
   const size_t b = scratch.size() * sizeof(Gap);
   switch (k) {
     case 0:
-      draw_with<DrawPrecision<SqrtExact, PositionBits<32>>>(set, dp, s, b, sink, nullptr);
+      must(draw_with<DrawPrecision<SqrtExact, PositionBits<32>>>(set, dp, s, b, sink, nullptr));
       break;
     case 1:
-      draw_with<DrawPrecision<SqrtNewton, PositionBits<32>>>(set, dp, s, b, sink, nullptr);
+      must(draw_with<DrawPrecision<SqrtNewton, PositionBits<32>>>(set, dp, s, b, sink, nullptr));
       break;
     case 2:
-      draw_with<DrawPrecision<SqrtTable, PositionBits<32>>>(set, dp, s, b, sink, nullptr);
+      must(draw_with<DrawPrecision<SqrtTable, PositionBits<32>>>(set, dp, s, b, sink, nullptr));
       break;
     case 3:
-      draw_with<DrawPrecision<SqrtExact, PositionBits<16>>>(set, dp, s, b, sink, nullptr);
+      must(draw_with<DrawPrecision<SqrtExact, PositionBits<16>>>(set, dp, s, b, sink, nullptr));
       break;
     case 4:
-      draw_with<DrawPrecision<SqrtNewton, PositionBits<16>>>(set, dp, s, b, sink, nullptr);
+      must(draw_with<DrawPrecision<SqrtNewton, PositionBits<16>>>(set, dp, s, b, sink, nullptr));
       break;
     default:
-      draw_with<DrawPrecision<SqrtTable, PositionBits<16>>>(set, dp, s, b, sink, nullptr);
+      must(draw_with<DrawPrecision<SqrtTable, PositionBits<16>>>(set, dp, s, b, sink, nullptr));
       break;
   }
   return spans;

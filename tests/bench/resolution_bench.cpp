@@ -18,6 +18,7 @@
 #include <tuple>
 #include <vector>
 
+#include "../support/must.h"
 #include "bench/perf_common.h"
 #include "cli/options.h"
 #include "haloplot/view/projection.h"
@@ -110,8 +111,8 @@ std::vector<double> time_resolutions(const Model& m) {
     for (size_t i = 0; i < k; ++i) {
       SolidRun run;
       const double t0 = bench::now_ms();
-      run_hidden_lines(scenes[i], HiddenMethod::kAuto, FallbackParams{}, &run, false,
-                       kVariants[i].lines);
+      must(run_hidden_lines(scenes[i], HiddenMethod::kAuto, FallbackParams{}, &run, false,
+                            kVariants[i].lines));
       ms[i].push_back(bench::now_ms() - t0);
     }
   std::vector<double> out;

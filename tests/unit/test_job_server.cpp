@@ -22,6 +22,7 @@
 #include "pipeline/drawing_modes.h"
 #include "pipeline/surface_pipeline.h"
 #include "sim/simulator.h"
+#include "support/must.h"
 
 using namespace haloplot;
 using namespace haloplot::host;
@@ -74,7 +75,7 @@ std::vector<Edge3> cubes(int n) {
   CubeArrayParams p;
   p.cubes = n;
   std::vector<Edge3> e(cube_array_edges(p));
-  cube_array(p, e.data(), uint32_t(e.size()));
+  must(cube_array(p, e.data(), uint32_t(e.size())));
   return e;
 }
 
