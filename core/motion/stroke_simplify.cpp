@@ -1,5 +1,7 @@
 #include "haloplot/motion/stroke_simplify.h"
 
+#include <stdint.h>
+
 #include "haloplot/geometry/wide.h"
 
 namespace haloplot {
@@ -29,6 +31,20 @@ bool near_segment(const PathPoint& a, const PathPoint& b, const PathPoint& p, ui
 }  // namespace
 
 uint32_t simplify_strokes(PathPoint* p, uint32_t n, uint32_t tol, uint32_t* dropped) {
+  // The box of the strokes' points: a point on its edge is kept, so the box, and with it where
+  // the drawing is placed on the page, stays as it was.
+  int32_t x0 = INT32_MAX, y0 = INT32_MAX, x1 = INT32_MIN, y1 = INT32_MIN;
+  for (uint32_t i = 1; i < n; ++i) {
+    if (p[i].pen_down == 0) continue;
+    const PathPoint* ends[2] = {&p[i - 1], &p[i]};
+    for (const PathPoint* q : ends) {
+      x0 = q->x < x0 ? q->x : x0, x1 = q->x > x1 ? q->x : x1;
+      y0 = q->y < y0 ? q->y : y0, y1 = q->y > y1 ? q->y : y1;
+    }
+  }
+  auto on_box = [&](const PathPoint& q) {
+    return q.x == x0 || q.x == x1 || q.y == y0 || q.y == y1;
+  };
   uint32_t w = 0;  // points kept so far: p[0, w)
   for (uint32_t i = 0; i < n;) {
     p[w++] = p[i];
@@ -42,7 +58,7 @@ uint32_t simplify_strokes(PathPoint* p, uint32_t n, uint32_t tol, uint32_t* drop
       for (uint32_t c = a + 2; c < end && c <= a + kSimplifyWindow; ++c) {
         bool fits = in_budget(p[a]) && in_budget(p[c]);
         for (uint32_t k = a + 1; k < c && fits; ++k)
-          fits = in_budget(p[k]) && near_segment(p[a], p[c], p[k], tol);
+          fits = in_budget(p[k]) && !on_box(p[k]) && near_segment(p[a], p[c], p[k], tol);
         if (!fits) break;
         b = c;
       }

@@ -7,7 +7,9 @@
 // the segment a-b (a point beyond an end, of that end); the point before the first candidate
 // that fails is kept and becomes a. So every dropped point is within the tolerance of the
 // drawn line, exactly (integers, no rounding), which test stroke_simplify reads back from the
-// G-code. The look ahead stops kWindow points on, so the work is linear in the points.
+// G-code. A point on the edge of the strokes' box is always kept, so the box (where the host
+// places the drawing on its page) does not move. The look ahead stops kWindow points on, so the
+// work is linear in the points.
 #pragma once
 #include <stdint.h>
 

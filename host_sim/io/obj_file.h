@@ -25,7 +25,7 @@ struct ObjModel {
   std::vector<uint32_t> edge_pairs;          // 2 vertex indices per edge
   std::vector<std::vector<uint32_t>> faces;  // vertex indices per face, as given
   std::vector<uint32_t> face_lines;          // the line each face was read from
-  // The flat region each face belongs to (its first face; mesh_repair.h, find_flat_regions):
+  // The region each face belongs to (its first face; mesh_repair.h, find_regions):
   // hatched as one surface. Empty: each face is its own.
   std::vector<uint32_t> face_region;
   uint32_t lines = 0;            // `l` statements read

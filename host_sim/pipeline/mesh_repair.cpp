@@ -399,12 +399,14 @@ void drop_flat_edges(ObjModel* model, const CreaseRule& rule, RepairReport* repo
   model->edge_pairs = kept;
 }
 
-void find_flat_regions(ObjModel* model, double rounding) {
+void find_regions(ObjModel* model) {
   const SidesByVertex sides(*model);
-  std::vector<FaceShape> shape;
-  shape.reserve(model->faces.size());
-  for (const std::vector<uint32_t>& c : model->faces)
-    shape.push_back(face_shape(*model, c, rounding));
+  std::vector<std::pair<uint32_t, uint32_t>> drawn;  // each drawn edge, lesser vertex first
+  drawn.reserve(model->edge_pairs.size() / 2);
+  for (size_t e = 0; e + 1 < model->edge_pairs.size(); e += 2)
+    drawn.emplace_back(std::min(model->edge_pairs[e], model->edge_pairs[e + 1]),
+                       std::max(model->edge_pairs[e], model->edge_pairs[e + 1]));
+  std::sort(drawn.begin(), drawn.end());
   // Union-find whose root is the region's first face, so the id does not depend on the order
   // the sides are met in.
   std::vector<uint32_t>& up = model->face_region;
@@ -414,7 +416,6 @@ void find_flat_regions(ObjModel* model, double rounding) {
     while (up[f] != f) f = up[f] = up[up[f]];
     return f;
   };
-  const CreaseRule flat{false, 0, rounding};
   for (uint32_t f = 0; f < model->faces.size(); ++f) {
     const std::vector<uint32_t>& c = model->faces[f];
     for (size_t i = 0; i < c.size(); ++i) {
@@ -424,7 +425,9 @@ void find_flat_regions(ObjModel* model, double rounding) {
       const uint32_t g = face[0] == f ? face[1] : face[0];
       if (g <= f) continue;  // each side once, from its lesser face
       const uint32_t rf = root(f), rg = root(g);
-      if (rf == rg || !flat_between(*model, shape, f, g, a, b, flat)) continue;
+      if (rf == rg || std::binary_search(drawn.begin(), drawn.end(),
+                                         std::make_pair(std::min(a, b), std::max(a, b))))
+        continue;
       up[std::max(rf, rg)] = std::min(rf, rg);
     }
   }

@@ -77,12 +77,12 @@ struct CreaseRule {
 // Run it after orient_shells (the normals of faces wound different ways point apart).
 void drop_flat_edges(ObjModel* model, const CreaseRule& rule, RepairReport* report);
 
-// Flat regions: faces joined through sides on exactly two faces that are flat by the rule
-// above with no angle (in one plane exactly, or but for `rounding`, world units; 0: exactly)
-// make one region, whatever --crease draws: a flat cap exported as a fan of slivers, or a
-// float32 box's triangulated sides, is one surface to hatch with one family of lines, not a
-// fan of directions. model->face_region[f] is the region's first face. Run it after
-// orient_shells.
-void find_flat_regions(ObjModel* model, double rounding);
+// Regions: faces joined through sides on exactly two faces that are not drawn edges (left out
+// by drop_flat_edges: flat but for the rounding, or within --crease) make one region, a surface
+// the drawn lines bound: a flat cap exported as a fan of slivers, a float32 box's triangulated
+// sides, a smooth body between its creases at --crease 40. It is hatched with one family of
+// lines, not a fan of directions. model->face_region[f] is the region's first face. Run it
+// after drop_flat_edges.
+void find_regions(ObjModel* model);
 
 }  // namespace haloplot::host

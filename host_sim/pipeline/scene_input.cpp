@@ -149,7 +149,7 @@ bool read_model(const Options& given, const std::string& path, ObjModel* model,
   orient_shells(model, &report);
   if (!exact) crease.rounding = vertex_rounding(*model);
   drop_flat_edges(model, crease, &report);
-  find_flat_regions(model, crease.rounding);
+  find_regions(model);
   if (repair != nullptr) *repair = report;
   make_z_up(model, up);
   return true;

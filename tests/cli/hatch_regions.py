@@ -6,8 +6,8 @@ Two shapes, each written twice with the same float32 corners: once as a slicer o
 printing export writes it (a binary STL, every flat side split into triangles, a cap as a fan
 of slivers from one rim corner), once with each flat side one polygon (an OBJ of quads and an
 n-gon cap). Both are plotted `--mode hidden-removed --hatch 1`; the triangles must hatch in at
-most 1.2 times the strokes of the polygons: coplanar faces hatch as one region with one family
-of lines, not a fan of directions.
+most 1.2 times the strokes of the polygons: faces joined by sides that are not drawn (flat but
+for the rounding) hatch as one region with one family of lines, not a fan of directions.
 
   hatch_regions.py TOOL WORKDIR [control]
 
