@@ -11,17 +11,15 @@ namespace {
 //   a point or a tangent in Q.32           |.| < 3 * 2^20 * 2^32 < 2^54
 //   a tangent, normalised                  components below 2^30 after `shift` halvings
 //   cross of two normalised tangents       < 2^61 (int64_t)
-//   half-gap numerator W |b| 2^(64 - s)    < 2^20 * 2^31 * 2^64 = 2^115 (Wide)
-//   carried overhang o |a| 2^(sA - sC)     o <= kHuge = 2^34, |a| < 2^31: < 2^65 * 2^24 (Wide)
+//   a half-gap's arc W |a| |b| 2^32        < 2^20 * 2^31 * 2^31 * 2^32 = 2^114 (Wide)
+//   a chord or a leg of a walk's step       Q.32, below 2^57; halved below 2^31 for its length
 //   chord count factor 3 * 64 * D_c        D_c < 2^22: < 2^30
 inline constexpr int kQ = 32;
 inline constexpr int64_t kOne = int64_t{1} << kQ;
-inline constexpr int64_t kHuge = int64_t{1} << 34;  // a half-gap past any edge and its neighbour
 inline constexpr int64_t kNormLimit = int64_t{1} << 30;
 inline constexpr uint32_t kNoLink = 0xffffffffu;
 static_assert(kCoordBits + 2 + kQ < 63, "a tangent in Q.32 fits int64_t");
 static_assert(2 * 30 + 1 < 63, "a cross of normalised tangents fits int64_t");
-static_assert(kCoordBits + 31 + 64 < 126, "a half-gap numerator fits Wide");
 
 // An edge's control points in units; a segment keeps its ends (p0 = p1, p2 = p3) and is
 // evaluated linearly, as run_curve_cross() parameterises it.
@@ -111,50 +109,102 @@ Dir tangent_dir(const Ctl& c, uint64_t t) {
   tangent_at(c, t, &x, &y);
   return normalized(x, y);
 }
-uint64_t length_floor(const Dir& d) {
-  return isqrt_u64(static_cast<uint64_t>(d.x * d.x + d.y * d.y));
-}
 uint64_t length_ceil(const Dir& d) {
   const uint64_t v = static_cast<uint64_t>(d.x * d.x + d.y * d.y);
   const uint64_t s = isqrt_u64(v);
   return s * s < v ? s + 1 : s;
 }
 
-Wide shl(Wide v, int n) {
-  for (int i = 0; i < n; ++i) {
-    v.hi = (v.hi << 1) | (v.lo >> 63);
-    v.lo <<= 1;
+// ---- arc length ----
+//
+// A half-gap is W / sin(theta) of arc, walked along the curve (docs/curves.md, "The gap").
+// Lengths are Q.32 units in int64_t. A step [t, t + h] of the walk is the sub-cubic with
+// control points B(t), B(t) + h/3 B'(t), B(t + h) - h/3 B'(t + h), B(t + h) (exact Bézier
+// subdivision), so its arc lies between its chord c and its control polygon p, and the step
+// counts (2c + p) / 3 (Gravesen's estimate), within 2 (p - c) / 3 of the arc. A step is halved
+// until p - c <= c 2^-14 + 2^-20 units, so the walk's count is within 2^-14.5 of the arc it
+// covers plus 2^-20.6 units a step; a flat step lets the next one double, up to 2^-6 of the
+// edge. The walk ends by bisection: a step that would pass the arc left is halved until it
+// does not, or until its estimate is below kArcEndTol (1/64 unit), which is then taken whole.
+inline constexpr int64_t kArcHuge = int64_t{1} << 62;     // no end: a gap along the chain
+inline constexpr int64_t kArcStepMax = int64_t{1} << 26;  // 2^-6 of an edge's parameter
+inline constexpr int64_t kArcStepMin = int64_t{1} << 8;   // 2^-24
+inline constexpr int64_t kArcAbsTol = int64_t{1} << 12;   // 2^-20 units
+inline constexpr int64_t kArcEndTol = int64_t{1} << 26;   // 1/64 unit
+inline constexpr int kArcRelBits = 14;
+static_assert(kCoordBits + 3 + kQ < 63, "a chord or a control leg in Q.32 fits int64_t");
+
+// |(dx, dy)| in Q.32 for Q.32 components below 2^56: halved until they are below 2^31, so the
+// squares' sum fits uint64_t (relative error below 2^-29, never above the length).
+int64_t length32(int64_t dx, int64_t dy) {
+  int shift = 0;
+  while (abs64(dx) >= (int64_t{1} << 31) || abs64(dy) >= (int64_t{1} << 31)) {
+    dx /= 2;
+    dy /= 2;
+    ++shift;
   }
-  return v;
+  return static_cast<int64_t>(uint64_t{isqrt_u64(static_cast<uint64_t>(dx * dx + dy * dy))}
+                              << shift);
 }
 
-// ceil-ish num / den (rounded, plus one), saturated at kHuge.
-int64_t quotient_up(Wide num, uint64_t den) {
-  if (den == 0) return kHuge;
-  bool over = false;
-  const uint64_t q = divide_round(num, den, &over);
-  return over || q >= static_cast<uint64_t>(kHuge) ? kHuge : static_cast<int64_t>(q) + 1;
+// A third of h (Q0.32) times a Q.32 tangent: a control leg of the step's sub-cubic.
+int64_t leg(int64_t d, int64_t h) { return lerp32(0, d, static_cast<uint64_t>(h)) / 3; }
+
+// Walks the arc *left (Q.32 units; kArcHuge: no end) along edge c from t in direction dir (+1
+// or -1). Returns the parameter where the arc runs out (*left then 0) or the edge's end.
+int64_t walk_arc(const Ctl& c, int64_t t, int dir, int64_t* left) {
+  const int64_t end = dir > 0 ? kOne : 0;
+  const bool endless = *left >= kArcHuge;
+  int64_t h = kArcStepMax, px, py, tx, ty;
+  bool closing = false;
+  point_at(c, static_cast<uint64_t>(t), &px, &py);
+  tangent_at(c, static_cast<uint64_t>(t), &tx, &ty);
+  while (t != end && *left > 0) {
+    if (h > dir * (end - t)) h = dir * (end - t);
+    const int64_t q = t + dir * h;
+    int64_t qx, qy, ux, uy;
+    point_at(c, static_cast<uint64_t>(q), &qx, &qy);
+    tangent_at(c, static_cast<uint64_t>(q), &ux, &uy);
+    const int64_t ax = dir * leg(tx, h), ay = dir * leg(ty, h);
+    const int64_t bx = dir * leg(ux, h), by = dir * leg(uy, h);
+    const int64_t chord = length32(qx - px, qy - py);
+    const int64_t poly =
+        length32(ax, ay) + length32(qx - px - ax - bx, qy - py - ay - by) + length32(bx, by);
+    const int64_t excess = poly > chord ? poly - chord : 0;
+    if (excess > (chord >> kArcRelBits) + kArcAbsTol && h > kArcStepMin) {
+      h /= 2;
+      continue;
+    }
+    const int64_t est = (2 * chord + poly) / 3;
+    if (!endless && est > *left) {
+      closing = true;
+      if (est > kArcEndTol && h > 1) {
+        h /= 2;
+        continue;
+      }
+      *left = 0;
+      return q;
+    }
+    if (!endless) *left -= est;
+    t = q, px = qx, py = qy, tx = ux, ty = uy;
+    if (!closing && excess <= (chord >> (kArcRelBits + 3)) + kArcAbsTol / 8 && h < kArcStepMax)
+      h *= 2;
+  }
+  return t;
 }
 
-// The half-gap in A's parameter (Q0.32): W |b| / |cross(a, b)| with A' = a 2^(a.shift - 32).
-int64_t half_gap(const Dir& a, const Dir& b, int32_t halo) {
+// W / sin(theta) of arc for tangents a and b: W |a| |b| / |cross(a, b)|, Q.32 units, rounded
+// up; kArcHuge when the tangents are parallel as rounded.
+static_assert(kCoordBits + 31 + 31 + kQ < 126, "a half-gap's arc numerator fits Wide");
+int64_t half_arc(const Dir& a, const Dir& b, int32_t halo) {
   const int64_t cr = abs64(a.x * b.y - a.y * b.x);
-  if (cr == 0) return kHuge;  // parallel as rounded: the paper's gap has no bound
-  const Wide num = shl(mul_u64(static_cast<uint64_t>(halo), length_ceil(b)), 64 - a.shift);
-  return quotient_up(num, static_cast<uint64_t>(cr));
-}
-
-// The arc o (in A's parameter at A's speed |a|) carried onto C, whose speed at the joint is
-// |c|: o |a| 2^(a.shift - c.shift) / |c|, in C's parameter.
-int64_t carried(int64_t o, const Dir& a, const Dir& c) {
-  if (o > kHuge) o = kHuge;
-  Wide num = mul_u64(static_cast<uint64_t>(o), length_ceil(a));
-  uint64_t den = length_floor(c);
-  if (a.shift >= c.shift)
-    num = shl(num, a.shift - c.shift);
-  else
-    den <<= (c.shift - a.shift);
-  return quotient_up(num, den);
+  if (cr == 0) return kArcHuge;
+  Wide num = mul_wide_u64(mul_u64(length_ceil(a), length_ceil(b)), static_cast<uint64_t>(halo));
+  num.hi = (num.hi << kQ) | (num.lo >> (64 - kQ));
+  num.lo <<= kQ;
+  bool over = false;
+  const uint64_t q = divide_round(num, static_cast<uint64_t>(cr), &over);
+  return over || q >= static_cast<uint64_t>(kArcHuge) ? kArcHuge : static_cast<int64_t>(q) + 1;
 }
 
 struct Scene {
@@ -163,6 +213,10 @@ struct Scene {
   const Edge3* segments;
   const CurveHit* hits;
   uint32_t n_hits;
+  int32_t halo;
+  const uint32_t* link;  // link_joints()'s
+  int64_t* end_gap;      // per end: how far from it gaps arriving over a joint reach
+  CurveDrawStats* st;
   Ctl edge(uint32_t k) const { return ctl_of(curves, nc, segments, k); }
   // The first hit on edge k (hits are sorted by curve).
   uint32_t first_hit(uint32_t k) const {
@@ -178,13 +232,43 @@ struct Scene {
   }
 };
 
-// The gap a crossing hit cuts on its own edge, unclipped, with the edge's tangent there.
-Gap hit_gap(const Scene& s, const CurveHit& h, int32_t halo, Dir* a) {
-  *a = tangent_dir(s.edge(h.curve), h.t);
+// A gap side that ran past an edge's end with arc `left` to go, entering the next edge at
+// its end e: along the chain across every joint, each edge it enters marked in end_gap (how far
+// from that end it is covered), until the arc runs out, the chain ends or every edge is walked.
+void walk_chain(const Scene& s, uint32_t e, int64_t left) {
+  for (uint32_t hops = 0; hops < s.n && left > 0 && e != kNoLink; ++hops) {
+    const int64_t stop = walk_arc(s.edge(e / 2), (e & 1) ? kOne : 0, (e & 1) ? -1 : 1, &left);
+    const int64_t cover = (e & 1) ? kOne - stop : stop;
+    if (cover > s.end_gap[e]) s.end_gap[e] = cover;
+    e = s.link[e ^ 1];
+  }
+}
+
+// The gap of arc L on each side of [lo, hi] on edge k. With `carry`, a side that runs past
+// one of k's ends goes on along the chain (walk_chain: end_gap) and is counted as carried.
+Gap arc_gap(const Scene& s, uint32_t k, int64_t lo, int64_t hi, int64_t L, bool carry) {
+  const Ctl c = s.edge(k);
+  int64_t left = L;
+  const int64_t a = walk_arc(c, lo < 0 ? 0 : lo, -1, &left);
+  if (carry && left > 0 && s.link[2 * k] != kNoLink) {
+    ++s.st->carried;
+    walk_chain(s, s.link[2 * k], left);
+  }
+  left = L;
+  const int64_t b = walk_arc(c, hi > kOne ? kOne : hi, 1, &left);
+  if (carry && left > 0 && s.link[2 * k + 1] != kNoLink) {
+    ++s.st->carried;
+    walk_chain(s, s.link[2 * k + 1], left);
+  }
+  return Gap{a, b};
+}
+
+// The gap a crossing hit cuts: W / sin(theta) of arc beyond its parameter bound on each side.
+Gap hit_gap(const Scene& s, const CurveHit& h, bool carry) {
+  const Dir a = tangent_dir(s.edge(h.curve), h.t);
   const Dir b = tangent_dir(s.edge(h.other), h.other_t);
-  const int64_t dt = half_gap(*a, b, halo);
   const int64_t t = static_cast<int64_t>(h.t), e = static_cast<int64_t>(h.t_err);
-  return Gap{t - e - dt, t + e + dt};
+  return arc_gap(s, h.curve, t - e, t + e, half_arc(a, b, s.halo), carry);
 }
 
 bool cuts_gap(const CurveHit& h) { return h.kind == CurveHitKind::kCrossing && h.front < 0; }
@@ -265,23 +349,26 @@ int side_of_path(const int64_t u[2], const int64_t v[2], const int64_t w[2]) {
   return inside ? 1 : -1;
 }
 
-// The half-gap on the edge of end `e` (its tangent at the joint) against the front chain's two
-// ends f[0], f[1]: the larger of the two, so the gap covers either side's angle.
-int64_t joint_half_gap(const Scene& s, uint32_t e, const uint32_t f[2], int32_t halo) {
-  const Dir a = tangent_dir(s.edge(e / 2), (e & 1) ? kCurveParamOne : 0);
+// The tangent of end e's edge at that end.
+Dir end_dir(const Scene& s, uint32_t e) {
+  return tangent_dir(s.edge(e / 2), (e & 1) ? kCurveParamOne : 0);
+}
+
+// The half-gap's arc on the edge of end `e` (its tangent at the joint) against the front
+// chain's two ends f[0], f[1]: the larger of the two, so the gap covers either side's angle.
+int64_t joint_half_arc(const Scene& s, uint32_t e, const uint32_t f[2]) {
+  const Dir a = end_dir(s, e);
   int64_t most = 0;
   for (int i = 0; i < 2; ++i) {
-    const Dir b = tangent_dir(s.edge(f[i] / 2), (f[i] & 1) ? kCurveParamOne : 0);
-    const int64_t dt = half_gap(a, b, halo);
-    most = dt > most ? dt : most;
+    const int64_t L = half_arc(a, end_dir(s, f[i]), s.halo);
+    most = L > most ? L : most;
   }
   return most;
 }
 
 // Joints j (ends j[0], j[1]) and k at one projected point: when they cross at different
-// depths, the gap on both edges of the joint behind (end_gap, per end, in its edge's parameter).
-void joint_pair(const Scene& s, const uint32_t j[2], const uint32_t k[2], int32_t halo,
-                int64_t* end_gap, CurveDrawStats& st) {
+// depths, the gap on both edges of the joint behind, walked from the joint (walk_chain).
+void joint_pair(const Scene& s, const uint32_t j[2], const uint32_t k[2]) {
   int64_t pj[3], pk[3], uj[2], vj[2], uk[2], vk[2];
   end_of(s, j[0], pj, uj);
   end_of(s, j[1], pj, vj);
@@ -291,20 +378,16 @@ void joint_pair(const Scene& s, const uint32_t j[2], const uint32_t k[2], int32_
   if (side_of_path(uj, vj, uk) * side_of_path(uj, vj, vk) != -1) return;  // a touch
   const uint32_t* back = pj[2] < pk[2] ? j : k;                           // larger z is nearer
   const uint32_t* front = pj[2] < pk[2] ? k : j;
-  for (int i = 0; i < 2; ++i) {
-    const int64_t dt = joint_half_gap(s, back[i], front, halo);
-    end_gap[back[i]] = dt > end_gap[back[i]] ? dt : end_gap[back[i]];
-  }
-  ++st.gaps;
-  ++st.joint_crossings;
+  for (int i = 0; i < 2; ++i) walk_chain(s, back[i], joint_half_arc(s, back[i], front));
+  ++s.st->gaps;
+  ++s.st->joint_crossings;
 }
 
 // Over the ends sorted by (x, y, z) (link_joints' order): the joints at each projected point,
 // taken in pairs.
-void joint_crossings(const Scene& s, const uint32_t* order, const uint32_t* link, int32_t halo,
-                     int64_t* end_gap, CurveDrawStats& st) {
+void joint_crossings(const Scene& s, const uint32_t* order) {
+  const uint32_t* link = s.link;
   const uint32_t ends = 2 * s.n;
-  for (uint32_t i = 0; i < ends; ++i) end_gap[i] = 0;
   for (uint32_t i = 0; i < ends;) {
     int64_t pa[3], pb[3], d[2];
     end_of(s, order[i], pa, d);
@@ -321,7 +404,7 @@ void joint_crossings(const Scene& s, const uint32_t* order, const uint32_t* link
         const uint32_t ey = order[y];
         if (link[ey] == kNoLink || link[ey] < ey) continue;
         const uint32_t jx[2] = {ex, link[ex]}, jy[2] = {ey, link[ey]};
-        joint_pair(s, jx, jy, halo, end_gap, st);
+        joint_pair(s, jx, jy);
       }
     }
     i = j;
@@ -390,12 +473,11 @@ int through_front(const Scene& s, const uint32_t j[2], const Through& th) {
   return z < th.z ? -1 : 1;
 }
 
-// The half-gap on edge k at the pass (or, joint = true, on the joint's end e) against the other.
-int64_t through_half_gap(const Scene& s, uint32_t k, uint64_t t, uint32_t e, bool on_joint,
-                         int32_t halo) {
-  const Dir dk = tangent_dir(s.edge(k), t);
-  const Dir de = tangent_dir(s.edge(e / 2), (e & 1) ? kCurveParamOne : 0);
-  return on_joint ? half_gap(de, dk, halo) : half_gap(dk, de, halo);
+// The half-gap's arc on edge k at the pass (or, on_joint, on the joint's end e) against the
+// other.
+int64_t through_half_arc(const Scene& s, uint32_t k, uint64_t t, uint32_t e, bool on_joint) {
+  const Dir dk = tangent_dir(s.edge(k), t), de = end_dir(s, e);
+  return on_joint ? half_arc(de, dk, s.halo) : half_arc(dk, de, s.halo);
 }
 
 // The first end in `order` (sorted by x, then y, z) whose x is not below x.
@@ -414,11 +496,12 @@ uint32_t first_end_at(const Scene& s, const uint32_t* order, int64_t x) {
 }
 
 // Edges k in [from, to) through the joints of other chains: the joints whose x lies within
-// k's box are found by a binary search in the ends sorted by x. Joints behind: their end_gap.
-// Edges behind: with `gaps` given, their gaps, else counted.
-uint32_t through_joints(const Scene& s, const uint32_t* order, const uint32_t* link, int32_t halo,
-                        uint32_t from, uint32_t to, CurvePiece* stack, int64_t* end_gap, Gap* gaps,
-                        CurveDrawStats& st) {
+// k's box are found by a binary search in the ends sorted by x. With `gaps` null (the first
+// pass): counted, and joints behind walked from (walk_chain), edges behind carried past their
+// ends; else the gaps of edges behind into `gaps`.
+uint32_t through_joints(const Scene& s, const uint32_t* order, uint32_t from, uint32_t to,
+                        CurvePiece* stack, Gap* gaps) {
+  const uint32_t* link = s.link;
   uint32_t n = 0;
   for (uint32_t k = from; k < to; ++k) {
     const Ctl c = s.edge(k);
@@ -435,18 +518,22 @@ uint32_t through_joints(const Scene& s, const uint32_t* order, const uint32_t* l
       if (k == j[0] / 2 || k == j[1] / 2 || !passes_through(s, k, p, stack, &th)) continue;
       const int f = through_front(s, j, th);
       if (f == 0) continue;
-      if (gaps == nullptr) {
-        ++st.gaps;
-        ++st.joint_crossings;
+      const bool first_pass = gaps == nullptr;
+      if (first_pass) {
+        ++s.st->gaps;
+        ++s.st->joint_crossings;
       }
       int64_t most = 0;
       for (int m = 0; m < 2; ++m) {
-        const int64_t dt = through_half_gap(s, k, th.t, j[m], f < 0, halo);
-        if (f < 0 && gaps == nullptr) end_gap[j[m]] = dt > end_gap[j[m]] ? dt : end_gap[j[m]];
-        most = dt > most ? dt : most;
+        const int64_t L = through_half_arc(s, k, th.t, j[m], f < 0);
+        if (f < 0 && first_pass) walk_chain(s, j[m], L);
+        most = L > most ? L : most;
       }
       const int64_t t = static_cast<int64_t>(th.t);
-      if (f > 0 && gaps != nullptr) gaps[n++] = Gap{t - most, t + most};
+      if (f > 0) {
+        const Gap g = arc_gap(s, k, t, t, most, first_pass);
+        if (!first_pass) gaps[n++] = g;
+      }
     }
   }
   return n;
@@ -454,42 +541,36 @@ uint32_t through_joints(const Scene& s, const uint32_t* order, const uint32_t* l
 
 // ---- one edge ----
 
-// The gaps on edge k: its own crossings behind, and what its joined neighbours' gaps carry
-// over the joints, the crossings at its joints (end_gap) and its passes through other chains'
-// joints (at most one a joint). Returns the count (at most 3 * most_hits + 2 + edges).
-uint32_t collect_gaps(const Scene& s, uint32_t k, const uint32_t* order, const uint32_t* link,
-                      int64_t* end_gap, CurvePiece* stack, int32_t halo, Gap* gaps,
-                      CurveDrawStats& st) {
-  uint32_t n = through_joints(s, order, link, halo, k, k + 1, stack, end_gap, gaps, st);
-  if (end_gap[2 * k] > 0) gaps[n++] = Gap{0, end_gap[2 * k]};
-  if (end_gap[2 * k + 1] > 0) gaps[n++] = Gap{kOne - end_gap[2 * k + 1], kOne};
-  Dir a;
+// The gaps of the crossings behind on edge k, walked along it. With `gaps` null (the first
+// pass), sides that run past k's ends are carried on along the chain (end_gap) and nothing is
+// stored; else the gaps go into `gaps`, with the undecided crossings and the gaps counted.
+uint32_t hit_gaps(const Scene& s, uint32_t k, Gap* gaps) {
+  uint32_t n = 0;
   for (uint32_t i = s.first_hit(k); i < s.n_hits && s.hits[i].curve == k; ++i) {
     const CurveHit& h = s.hits[i];
+    if (gaps == nullptr) {
+      if (cuts_gap(h)) hit_gap(s, h, true);
+      continue;
+    }
     // Each crossing is seen from both edges: count it from one side.
     const bool first_side = h.curve < h.other || (h.curve == h.other && h.t < h.other_t);
-    if (h.kind == CurveHitKind::kCrossing && h.front == 0 && first_side) ++st.undecided;
+    if (h.kind == CurveHitKind::kCrossing && h.front == 0 && first_side) ++s.st->undecided;
     if (!cuts_gap(h)) continue;
-    gaps[n++] = hit_gap(s, h, halo, &a);
-    ++st.gaps;
-  }
-  const Ctl self = s.edge(k);
-  for (uint32_t end = 0; end < 2; ++end) {
-    const uint32_t other = link[2 * k + end];
-    if (other == kNoLink) continue;
-    const uint32_t m = other / 2;
-    const Dir c = tangent_dir(self, end ? kCurveParamOne : 0);
-    for (uint32_t i = s.first_hit(m); i < s.n_hits && s.hits[i].curve == m; ++i) {
-      if (!cuts_gap(s.hits[i])) continue;
-      const Gap g = hit_gap(s, s.hits[i], halo, &a);
-      const int64_t over = (other & 1) ? g.hi - kOne : -g.lo;  // past m's joined end
-      if (over <= 0) continue;
-      const int64_t dt = carried(over, a, c);
-      gaps[n++] = end ? Gap{kOne - dt, kOne} : Gap{0, dt};
-      ++st.carried;
-    }
+    gaps[n++] = hit_gap(s, h, false);
+    ++s.st->gaps;
   }
   return n;
+}
+
+// The gaps on edge k: its own crossings behind, what gaps from along its chain reach over its
+// ends (end_gap: carried gaps, crossings at its joints) and its passes through other chains'
+// joints. Returns the count (at most 3 * most_hits + 2 + edges).
+uint32_t collect_gaps(const Scene& s, uint32_t k, const uint32_t* order, CurvePiece* stack,
+                      Gap* gaps) {
+  uint32_t n = through_joints(s, order, k, k + 1, stack, gaps);
+  if (s.end_gap[2 * k] > 0) gaps[n++] = Gap{0, s.end_gap[2 * k]};
+  if (s.end_gap[2 * k + 1] > 0) gaps[n++] = Gap{kOne - s.end_gap[2 * k + 1], kOne};
+  return n + hit_gaps(s, k, gaps + n);
 }
 
 // The largest second-difference coordinate of a curve's control points (0 for a segment).
@@ -625,16 +706,18 @@ Status run_curve_draw(const CurveDrawPlan& plan, const BezierEdge3* curves, cons
   Gap* gaps;
   carve(carver, n, plan.most_hits, &order, &link, &end_gap, &stack, &gaps);
   if (carver.short_) return Status::kWorkspaceTooSmall;
-  const Scene s{curves, plan.n_curves, n, segments, hits, n_hits};
+  const Scene s{curves, plan.n_curves,    n,    segments, hits,
+                n_hits, plan.params.halo, link, end_gap,  &st};
   st.joints = link_joints(s, order, link);
-  const int32_t halo = plan.params.halo;
-  if (halo > 0) {
-    joint_crossings(s, order, link, halo, end_gap, st);
-    through_joints(s, order, link, halo, 0, n, stack, end_gap, nullptr, st);
+  for (uint32_t i = 0; i < 2 * n; ++i) end_gap[i] = 0;
+  const bool haloed = plan.params.halo > 0;
+  if (haloed) {  // the first pass: what reaches each edge over its ends
+    joint_crossings(s, order);
+    through_joints(s, order, 0, n, stack, nullptr);
+    for (uint32_t k = 0; k < n; ++k) hit_gaps(s, k, nullptr);
   }
   for (uint32_t k = 0; k < n; ++k) {
-    const uint32_t g =
-        halo > 0 ? collect_gaps(s, k, order, link, end_gap, stack, halo, gaps, st) : 0;
+    const uint32_t g = haloed ? collect_gaps(s, k, order, stack, gaps) : 0;
     const Status r = draw_edge(s, k, gaps, g, plan.params, chords, intervals, st);
     if (!ok(r)) return r;
   }
