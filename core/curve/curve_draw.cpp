@@ -232,14 +232,17 @@ struct Scene {
   }
 };
 
+bool smooth(const Scene& s, uint32_t id);
+
 // A gap side that ran past an edge's end with arc `left` to go, entering the next edge at
 // its end e: along the chain across every joint, each edge it enters marked in end_gap (how far
 // from that end it is covered), until the arc runs out, the chain ends or every edge is walked.
 void walk_chain(const Scene& s, uint32_t e, int64_t left) {
-  for (uint32_t hops = 0; hops < s.n && left > 0 && e != kNoLink; ++hops) {
+  for (uint32_t hops = 0; hops < s.n && left > 0; ++hops) {
     const int64_t stop = walk_arc(s.edge(e / 2), (e & 1) ? kOne : 0, (e & 1) ? -1 : 1, &left);
     const int64_t cover = (e & 1) ? kOne - stop : stop;
     if (cover > s.end_gap[e]) s.end_gap[e] = cover;
+    if (s.link[e ^ 1] == kNoLink || !smooth(s, e ^ 1)) return;
     e = s.link[e ^ 1];
   }
 }
@@ -250,13 +253,13 @@ Gap arc_gap(const Scene& s, uint32_t k, int64_t lo, int64_t hi, int64_t L, bool 
   const Ctl c = s.edge(k);
   int64_t left = L;
   const int64_t a = walk_arc(c, lo < 0 ? 0 : lo, -1, &left);
-  if (carry && left > 0 && s.link[2 * k] != kNoLink) {
+  if (carry && left > 0 && s.link[2 * k] != kNoLink && smooth(s, 2 * k)) {
     ++s.st->carried;
     walk_chain(s, s.link[2 * k], left);
   }
   left = L;
   const int64_t b = walk_arc(c, hi > kOne ? kOne : hi, 1, &left);
-  if (carry && left > 0 && s.link[2 * k + 1] != kNoLink) {
+  if (carry && left > 0 && s.link[2 * k + 1] != kNoLink && smooth(s, 2 * k + 1)) {
     ++s.st->carried;
     walk_chain(s, s.link[2 * k + 1], left);
   }
@@ -294,8 +297,19 @@ bool end_less(const Scene& s, uint32_t a, uint32_t b) {
   return a < b;
 }
 
-// link[id]: the end joined to end id, or kNoLink. Exactly two ends at one point, leaving it in
-// opposite directions within 45 degrees (|cross| < -dot), make a joint.
+// True when the chain goes on smoothly at end id's vertex (link[id] set): the two ends leave it
+// in opposite directions within 45 degrees (|cross| < -dot), a joint, where gaps carry on.
+bool smooth(const Scene& s, uint32_t id) {
+  int64_t p[3], u[2], v[2];
+  end_of(s, id, p, u);
+  end_of(s, s.link[id], p, v);
+  const int64_t dot = u[0] * v[0] + u[1] * v[1], cr = abs64(u[0] * v[1] - u[1] * v[0]);
+  return dot < 0 && cr < -dot;
+}
+
+// link[id]: the end joined to end id, or kNoLink. Exactly two ends at one 3-D point make a
+// vertex of a chain: a joint where it goes on smoothly (smooth()), else a corner. Returns the
+// number of joints.
 uint32_t link_joints(const Scene& s, uint32_t* order, uint32_t* link) {
   const uint32_t ends = 2 * s.n;
   for (uint32_t i = 0; i < ends; ++i) order[i] = i, link[i] = kNoLink;
@@ -310,15 +324,9 @@ uint32_t link_joints(const Scene& s, uint32_t* order, uint32_t* link) {
       if (pa[0] != pb[0] || pa[1] != pb[1] || pa[2] != pb[2]) break;
     }
     if (j - i == 2) {
-      int64_t p[3], u[2], v[2];
-      end_of(s, order[i], p, u);
-      end_of(s, order[i + 1], p, v);
-      const int64_t dot = u[0] * v[0] + u[1] * v[1], cr = abs64(u[0] * v[1] - u[1] * v[0]);
-      if (dot < 0 && cr < -dot) {
-        link[order[i]] = order[i + 1];
-        link[order[i + 1]] = order[i];
-        ++joints;
-      }
+      link[order[i]] = order[i + 1];
+      link[order[i + 1]] = order[i];
+      if (smooth(s, order[i])) ++joints;
     }
     i = j;
   }
@@ -422,7 +430,8 @@ static_assert(kCurvePointBits + 1 + kCoordBits + 1 + 1 < 126, "a side of a pass 
 struct Through {
   uint64_t t = 0;
   int64_t z = 0;      // depth, Q20.42
-  int64_t d[2] = {};  // direction along k there, Q20.42 (below 2^62)
+  int64_t z_err = 0;  // its error bound (0: exact)
+  int64_t d[2] = {};  // direction along k there, Q20.42 or Q.32 (below 2^62)
 };
 bool passes_through(const Scene& s, uint32_t k, const int64_t p[2], CurvePiece* stack,
                     Through* out) {
@@ -466,7 +475,7 @@ int through_front(const Scene& s, const uint32_t j[2], const Through& th) {
   end_of(s, j[0], p, u);
   end_of(s, j[1], p, v);
   const int64_t z = p[2] * (int64_t{1} << kCurveFracBits);
-  if (z == th.z) return 0;
+  if (abs64(z - th.z) <= th.z_err) return 0;
   const Wide su = mul_i64(th.d[0], u[1]) - mul_i64(th.d[1], u[0]);
   const Wide sv = mul_i64(th.d[0], v[1]) - mul_i64(th.d[1], v[0]);
   if (su.is_zero() || sv.is_zero() || su.negative() == sv.negative()) return 0;
@@ -478,6 +487,31 @@ int through_front(const Scene& s, const uint32_t j[2], const Through& th) {
 int64_t through_half_arc(const Scene& s, uint32_t k, uint64_t t, uint32_t e, bool on_joint) {
   const Dir dk = tangent_dir(s.edge(k), t), de = end_dir(s, e);
   return on_joint ? half_arc(de, dk, s.halo) : half_arc(dk, de, s.halo);
+}
+
+// Edge k passes through joint (or corner) j at th (its parameter within t_err), crossing it
+// (through_front() is f, not 0). With `gaps` null (the first pass): counted, the joint's edges
+// walked from it when it is behind, k's gap carried past its ends when k is; else k's gap
+// into `gaps` when k is behind. Returns the gaps stored.
+uint32_t cut_pass(const Scene& s, uint32_t k, const uint32_t j[2], const Through& th, int f,
+                  int64_t t_err, Gap* gaps) {
+  const bool first_pass = gaps == nullptr;
+  if (first_pass) {
+    ++s.st->gaps;
+    ++s.st->joint_crossings;
+  }
+  int64_t most = 0;
+  for (int m = 0; m < 2; ++m) {
+    const int64_t L = through_half_arc(s, k, th.t, j[m], f < 0);
+    if (f < 0 && first_pass) walk_chain(s, j[m], L);
+    most = L > most ? L : most;
+  }
+  if (f < 0) return 0;
+  const int64_t t = static_cast<int64_t>(th.t);
+  const Gap g = arc_gap(s, k, t - t_err, t + t_err, most, first_pass);
+  if (first_pass) return 0;
+  gaps[0] = g;
+  return 1;
 }
 
 // The first end in `order` (sorted by x, then y, z) whose x is not below x.
@@ -518,25 +552,81 @@ uint32_t through_joints(const Scene& s, const uint32_t* order, uint32_t from, ui
       if (k == j[0] / 2 || k == j[1] / 2 || !passes_through(s, k, p, stack, &th)) continue;
       const int f = through_front(s, j, th);
       if (f == 0) continue;
-      const bool first_pass = gaps == nullptr;
-      if (first_pass) {
-        ++s.st->gaps;
-        ++s.st->joint_crossings;
-      }
-      int64_t most = 0;
-      for (int m = 0; m < 2; ++m) {
-        const int64_t L = through_half_arc(s, k, th.t, j[m], f < 0);
-        if (f < 0 && first_pass) walk_chain(s, j[m], L);
-        most = L > most ? L : most;
-      }
-      const int64_t t = static_cast<int64_t>(th.t);
-      if (f > 0) {
-        const Gap g = arc_gap(s, k, t, t, most, first_pass);
-        if (!first_pass) gaps[n++] = g;
-      }
+      n += cut_pass(s, k, j, th, f, 0, gaps == nullptr ? nullptr : gaps + n);
     }
   }
   return n;
+}
+
+// ---- a chain through another's joint, between piece ends ----
+
+// The depth at t (Q0.32) in Q.32 units, de Casteljau as point_at, and a bound on how much it
+// changes over t_err of the parameter (3 times the largest control-point depth difference).
+int64_t depth_at(const Ctl& c, uint64_t t) {
+  int64_t z[4] = {c.z[0] * kOne, c.z[1] * kOne, c.z[2] * kOne, c.z[3] * kOne};
+  if (c.straight) return lerp32(z[0], z[3] - z[0], t);
+  for (int level = 3; level > 0; --level)
+    for (int i = 0; i < level; ++i) z[i] = lerp32(z[i], z[i + 1] - z[i], t);
+  return z[0];
+}
+static_assert(kCoordBits + 2 + kQ + 1 < 62, "a depth bound over a parameter bound fits");
+int64_t depth_slack(const Ctl& c, uint64_t t_err) {
+  int64_t most = 0;
+  for (int i = 0; i < 3; ++i) {
+    const int64_t d = abs64(c.z[i + 1] - c.z[i]);
+    most = d > most ? d : most;
+  }
+  const uint64_t e = t_err < kCurveParamOne ? t_err : kCurveParamOne;
+  return 3 * most * static_cast<int64_t>(e) + 2;  // Q.32 units
+}
+
+// A chain through another's joint (or corner) at a parameter of its own that is not a piece
+// end of its halving: run_curve_cross() reports it as a touch (an end-point meeting) of the
+// edge with an edge of the joint, at that edge's end. Hit i on edge k is such a pass when it is
+// a touch inside k whose other side reaches an end of its edge that is a vertex of two edges
+// other than k, and the same pass was not seen from the vertex's other edge earlier on k. The
+// vertex's ends go to j, the pass (k's parameter, depth with its bound, tangent) to th.
+bool touch_pass(const Scene& s, uint32_t i, uint32_t j[2], Through* th) {
+  const CurveHit& h = s.hits[i];
+  if (h.kind != CurveHitKind::kTouch || h.t <= h.t_err || h.t + h.t_err >= kCurveParamOne)
+    return false;
+  const bool at_start = h.other_t <= h.other_err;
+  if (!at_start && h.other_t + h.other_err < kCurveParamOne) return false;
+  const uint32_t e = 2 * h.other + (at_start ? 0 : 1);
+  if (s.link[e] == kNoLink) return false;
+  j[0] = e < s.link[e] ? e : s.link[e];
+  j[1] = e < s.link[e] ? s.link[e] : e;
+  if (h.curve == j[0] / 2 || h.curve == j[1] / 2) return false;
+  for (uint32_t b = s.first_hit(h.curve); b < i; ++b) {  // seen from the other edge already
+    const CurveHit& g = s.hits[b];
+    const uint64_t d = g.t > h.t ? g.t - h.t : h.t - g.t;
+    if (g.kind == CurveHitKind::kTouch && (g.other == j[0] / 2 || g.other == j[1] / 2) &&
+        g.other != h.other && d <= g.t_err + h.t_err)
+      return false;
+  }
+  const Ctl c = s.edge(h.curve);
+  th->t = h.t;
+  tangent_at(c, h.t, &th->d[0], &th->d[1]);
+  const int64_t shift = int64_t{1} << (kCurveFracBits - kQ);  // Q.32 to Q20.42
+  th->z = depth_at(c, h.t) * shift;
+  const int64_t slack = depth_slack(c, h.t_err);
+  th->z_err = slack < (int64_t{1} << 51) ? slack * shift : int64_t{1} << 61;
+  return true;
+}
+
+// Hit i as a pass through a joint (touch_pass), decided and cut as through_joints() does, unless
+// the pass is at a piece end (passes_through(): through_joints() has it).
+uint32_t touch_gap(const Scene& s, uint32_t i, CurvePiece* stack, Gap* gaps) {
+  uint32_t j[2];
+  Through th, exact;
+  if (!touch_pass(s, i, j, &th)) return 0;
+  int64_t p[3], d[2];
+  end_of(s, j[0], p, d);
+  const uint32_t k = s.hits[i].curve;
+  if (passes_through(s, k, p, stack, &exact)) return 0;
+  const int f = through_front(s, j, th);
+  if (f == 0) return 0;
+  return cut_pass(s, k, j, th, f, static_cast<int64_t>(s.hits[i].t_err), gaps);
 }
 
 // ---- one edge ----
@@ -544,10 +634,14 @@ uint32_t through_joints(const Scene& s, const uint32_t* order, uint32_t from, ui
 // The gaps of the crossings behind on edge k, walked along it. With `gaps` null (the first
 // pass), sides that run past k's ends are carried on along the chain (end_gap) and nothing is
 // stored; else the gaps go into `gaps`, with the undecided crossings and the gaps counted.
-uint32_t hit_gaps(const Scene& s, uint32_t k, Gap* gaps) {
+uint32_t hit_gaps(const Scene& s, uint32_t k, CurvePiece* stack, Gap* gaps) {
   uint32_t n = 0;
   for (uint32_t i = s.first_hit(k); i < s.n_hits && s.hits[i].curve == k; ++i) {
     const CurveHit& h = s.hits[i];
+    if (h.kind == CurveHitKind::kTouch) {
+      n += touch_gap(s, i, stack, gaps == nullptr ? nullptr : gaps + n);
+      continue;
+    }
     if (gaps == nullptr) {
       if (cuts_gap(h)) hit_gap(s, h, true);
       continue;
@@ -570,7 +664,7 @@ uint32_t collect_gaps(const Scene& s, uint32_t k, const uint32_t* order, CurvePi
   uint32_t n = through_joints(s, order, k, k + 1, stack, gaps);
   if (s.end_gap[2 * k] > 0) gaps[n++] = Gap{0, s.end_gap[2 * k]};
   if (s.end_gap[2 * k + 1] > 0) gaps[n++] = Gap{kOne - s.end_gap[2 * k + 1], kOne};
-  return n + hit_gaps(s, k, gaps + n);
+  return n + hit_gaps(s, k, stack, gaps + n);
 }
 
 // The largest second-difference coordinate of a curve's control points (0 for a segment).
@@ -714,7 +808,7 @@ Status run_curve_draw(const CurveDrawPlan& plan, const BezierEdge3* curves, cons
   if (haloed) {  // the first pass: what reaches each edge over its ends
     joint_crossings(s, order);
     through_joints(s, order, 0, n, stack, nullptr);
-    for (uint32_t k = 0; k < n; ++k) hit_gaps(s, k, nullptr);
+    for (uint32_t k = 0; k < n; ++k) hit_gaps(s, k, stack, nullptr);
   }
   for (uint32_t k = 0; k < n; ++k) {
     const uint32_t g = haloed ? collect_gaps(s, k, order, stack, gaps) : 0;

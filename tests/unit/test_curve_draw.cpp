@@ -189,8 +189,8 @@ bool in_hole(const Hole& h, LD g, LD size) {
 // ---- 1. gaps against the reference crossings ----
 
 struct SideFigures {
-  int sides = 0, across_joints = 0;
-  LD worst = 0;  // the largest |arc - W / sin| / bound
+  int sides = 0, across_joints = 0, most_edges = 0;  // most_edges: the most one side runs on
+  LD worst = 0;                                      // the largest |arc - W / sin| / bound
 };
 
 // The arc from g0 to g1 along a chain, and how many edges it runs on.
@@ -232,6 +232,7 @@ void check_side(const char* name, const std::vector<RefCurve>& cs, const Chain& 
   fig->worst = std::max(fig->worst, std::fabs(length - L) / bound);
   ++fig->sides;
   if (edges > 1) ++fig->across_joints;
+  fig->most_edges = std::max(fig->most_edges, edges);
   CHECK_MSG(std::fabs(length - L) <= bound,
             std::string(name) + ": a gap side of arc " + std::to_string(double(length)) +
                 " against W / sin(theta) = " + std::to_string(double(L)) + ", bound " +
@@ -404,6 +405,59 @@ void test_through_joint() {
   }
 }
 
+// The through_joint scene: chain A-A' with its joint J at (3000, 5000) and a cubic B through J
+// at its t = 1/3 (not a piece end of its halving: B(1/3) = (8 P0 + 12 P1 + 6 P2 + P3) / 27 = J
+// exactly), so run_curve_cross() sees only touches at A's and A''s ends; B in front and behind.
+// Also with A' turned at J by more than 45 degrees (a corner, not a joint), and with B's last
+// control point a unit off (it passes J by 1/27 unit: a crossing near A's end, or a touch).
+void test_through_joint_anywhere() {
+  int cases = 0;
+  for (int variant = 0; variant < 3; ++variant)
+    for (int zb : {20, 0}) {
+      const int za = 10;
+      CurveScene s;
+      s.curves.push_back(
+          BezierEdge3{{{1000, 3000, za}, {1700, 3600, za}, {2400, 4500, za}, {3000, 5000, za}}});
+      if (variant == 1)  // a corner: leaving J up and a little left
+        s.curves.push_back(
+            BezierEdge3{{{3000, 5000, za}, {2900, 5600, za}, {2700, 6300, za}, {2500, 7000, za}}});
+      else
+        s.curves.push_back(
+            BezierEdge3{{{3000, 5000, za}, {3600, 5500, za}, {4300, 6400, za}, {5000, 7000, za}}});
+      s.curves.push_back(BezierEdge3{{{1000, 7000, zb},
+                                      {3100, 5000, zb},
+                                      {4900, 3000, zb},
+                                      {variant == 2 ? 6401 : 6400, 1000, zb}}});
+      Chain a, b;
+      a.edges = {0, 1};
+      b.edges = {2};
+      SideFigures fig;
+      const std::string name = std::string(variant == 0   ? "B through J at t=1/3"
+                                           : variant == 1 ? "B through a corner at t=1/3"
+                                                          : "B 1/27 unit from J") +
+                               (zb > za ? ", in front" : ", behind");
+      const Drawing d = draw_core(s, 100);
+      check_gaps(name.c_str(), s, {a, b}, 100, &fig);
+      CHECK_MSG(d.stats.gaps == 1, name + ": one gap, got " + std::to_string(d.stats.gaps));
+      ++cases;
+    }
+  CHECK_EQ(cases, 6);
+}
+
+// A gap across more than one joint: the trefoil fitted with 100 edges, its gaps at W = 2,500
+// and 8,000 units run over several joints a side.
+void test_many_joints() {
+  CurveView top;
+  SideFigures fig;
+  for (int32_t W : {2500, 8000})
+    check_gaps("trefoil/100", host::trefoil_knot(100, top),
+               knot_chain(host::trefoil_knot(100, top)), W, &fig);
+  std::printf(
+      "trefoil/100: %d gap sides, the longest on %d edges, worst |arc - W/sin| / bound %.3f\n",
+      fig.sides, fig.most_edges, double(fig.worst));
+  CHECK_MSG(fig.most_edges >= 4, "no gap side ran across 3 joints or more");
+}
+
 // Hand-worked: chain A-A' along y = 1000 at depth 10 with its joint at (1000, 1000), chain
 // B-B' at depth 20 with its joint at the same (x, y), leaving it at slopes -0.3 and 0.3 (both
 // above A: a touch, every edge drawn whole) or with B' turned below A (B crosses A there: A,
@@ -564,6 +618,8 @@ int main(int argc, char** argv) {
   test_gaps();
   test_gaps_at_joints();
   test_through_joint();
+  test_through_joint_anywhere();
+  test_many_joints();
   test_touch_at_joint();
   test_segments_among_curves();
   test_flattening();
