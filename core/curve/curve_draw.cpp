@@ -247,23 +247,38 @@ void walk_chain(const Scene& s, uint32_t e, int64_t left) {
   }
 }
 
-// The gap of arc L on each side of [lo, hi] on edge k. With `carry`, a side that runs past
-// one of k's ends goes on along the chain (walk_chain: end_gap) and is counted as carried.
+// True when the arc from t to parameter `end` of c is surely longer than L: the chord between
+// them is (an arc is never shorter than its chord), so a walk of L from t cannot reach `end`.
+bool short_of_end(const Ctl& c, int64_t t, int64_t end, int64_t L) {
+  int64_t x0, y0, x1, y1;
+  point_at(c, static_cast<uint64_t>(t), &x0, &y0);
+  point_at(c, static_cast<uint64_t>(end), &x1, &y1);
+  return length32(x1 - x0, y1 - y0) > L;
+}
+
+// The gap of arc L on each side of [lo, hi] on edge k. With `carry` (the first pass, which
+// only carries), the sides that run past one of k's ends go on along the chain (walk_chain:
+// end_gap) and are counted as carried; a side whose chord to the end is longer than L cannot
+// reach it and is not walked.
 Gap arc_gap(const Scene& s, uint32_t k, int64_t lo, int64_t hi, int64_t L, bool carry) {
   const Ctl c = s.edge(k);
-  int64_t left = L;
-  const int64_t a = walk_arc(c, lo < 0 ? 0 : lo, -1, &left);
-  if (carry && left > 0 && s.link[2 * k] != kNoLink && smooth(s, 2 * k)) {
-    ++s.st->carried;
-    walk_chain(s, s.link[2 * k], left);
+  lo = lo < 0 ? 0 : lo;
+  hi = hi > kOne ? kOne : hi;
+  Gap g{lo, hi};
+  for (int side = 0; side < 2; ++side) {
+    const uint32_t end = 2 * k + static_cast<uint32_t>(side);
+    const bool joined = s.link[end] != kNoLink && smooth(s, end);
+    const int64_t from = side ? hi : lo;
+    if (carry && (!joined || short_of_end(c, from, side ? kOne : 0, L))) continue;
+    int64_t left = L;
+    const int64_t to = walk_arc(c, from, side ? 1 : -1, &left);
+    (side ? g.hi : g.lo) = to;
+    if (carry && left > 0) {
+      ++s.st->carried;
+      walk_chain(s, s.link[end], left);
+    }
   }
-  left = L;
-  const int64_t b = walk_arc(c, hi > kOne ? kOne : hi, 1, &left);
-  if (carry && left > 0 && s.link[2 * k + 1] != kNoLink && smooth(s, 2 * k + 1)) {
-    ++s.st->carried;
-    walk_chain(s, s.link[2 * k + 1], left);
-  }
-  return Gap{a, b};
+  return g;
 }
 
 // The gap a crossing hit cuts: W / sin(theta) of arc beyond its parameter bound on each side.
