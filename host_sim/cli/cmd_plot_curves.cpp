@@ -179,6 +179,17 @@ int cmd_demo_curve(const Options& o) {
   CurveView view;
   view.size = 15200;
   view.margin = 400;
+  // Perspective: the eye D world units from the knot's centre (its largest extent 2^19 units),
+  // outside it; the image fitted within kPerspectiveFitSteps (demo/curve_scenes.h).
+  if (!o.get("--perspective").empty()) {
+    int64_t d = 0;
+    if (name == "helix" || !parse_int(o.get("--perspective"), 262145, 2097152, &d))
+      return fail(name == "helix" ? "--perspective is for the knots (trefoil, torus-P-Q)"
+                                  : "--perspective '" + o.get("--perspective") +
+                                        "' must be an integer in [262145, 2097152] (world "
+                                        "units, the knot 2^19 across: the eye outside it)");
+    view.perspective = double(d);
+  }
   CurveScene scene;
   if (name == "trefoil") {
     scene = trefoil_knot(int(edges), view);
@@ -188,9 +199,11 @@ int cmd_demo_curve(const Options& o) {
     view.tilt = 1.0;  // seen from the side enough for its turns to cross
     scene = helix(4, 1.0, int(edges), true, view);
   }
-  const std::string header = "# haloplot demo: " + name + ", " + std::to_string(edges) +
-                             " cubic Bézier edges (docs/curves.md); x y z in steps, z larger = "
-                             "nearer\n";
+  const std::string header =
+      "# haloplot demo: " + name + ", " + std::to_string(scene.curves.size()) +
+      " cubic Bézier edges (docs/curves.md)" +
+      (view.perspective > 0 ? ", in perspective from " + o.get("--perspective") : std::string()) +
+      "; x y z in steps, z larger = nearer\n";
   const std::string error = write_atomically(o.get("-o"), [&](std::ostream& out) {
     write_edges_with_curves(out, scene.curves, scene.segments, header);
     return true;

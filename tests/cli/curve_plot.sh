@@ -42,6 +42,20 @@ printf 'scene trefoil.edges\ndrawing haloed\nhalo 80\nhalo-mode exact\n' > e.job
 expect '! "$tool" sim e.job -o e.trace 2> /dev/null && [ ! -e e.trace ]' "sim refuses the exact halo"
 expect '! "$tool" cut trefoil.edges -o t.cut 2> c.txt && grep -q "straight edges only" c.txt' \
   "cut still refuses bezier records"
+# A knot in perspective: its image fitted as cubics (more edges than the 24 steps), plotted as
+# any curve scene; as a job too. The helix and an eye inside the knot refused.
+"$tool" demo-scene --curve trefoil --perspective 300000 -o persp.edges || bad "--perspective"
+expect '[ "$(grep -c ^bezier persp.edges)" -gt 24 ] && grep -q "in perspective from 300000" persp.edges' \
+  "the perspective trefoil: more than 24 bezier records, the header says so"
+"$tool" plot persp.edges --halo 80 -o p.svg --stats 2> p.txt || bad "plot persp.edges: $(cat p.txt)"
+expect 'grep -q "^crossings=3$" p.txt && grep -q "^gaps=3$" p.txt && [ "$($check count p.svg)" = 3 ]' \
+  "the perspective trefoil: 3 crossings, 3 gaps, 3 strokes"
+printf 'scene persp.edges\ndrawing haloed\nhalo 80\nhalo-mode paper\n' > p.job
+expect '"$tool" sim p.job -o p.trace 2> /dev/null' "sim of the perspective trefoil's job"
+expect '! "$tool" demo-scene --curve helix --perspective 300000 -o x.edges 2> /dev/null && [ ! -e x.edges ]' \
+  "--perspective refused for the helix"
+expect '! "$tool" demo-scene --curve trefoil --perspective 1000 -o x.edges 2> /dev/null && [ ! -e x.edges ]' \
+  "--perspective with the eye inside the knot refused"
 # Other demo curves and bad names.
 "$tool" demo-scene --curve helix -o helix.edges && "$tool" plot helix.edges --halo 40 -o h.svg \
   --stats 2> h.txt || bad "helix"

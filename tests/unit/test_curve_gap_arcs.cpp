@@ -412,6 +412,85 @@ CurveScene tangle(int n, uint64_t seed) {
   return s;
 }
 
+// The perspective demo trefoil against the test's own perspective image of the trefoil
+// (sin t + 2 sin 2t, cos t - 2 cos 2t, -sin 3t), 2^19 world units across, seen from the eye D
+// units above its centre: x and y times D / (D - z). Both are brought to one frame by their
+// own bounding boxes (one scale, the larger extent, as the demo scales). Returns the largest
+// distance, in steps, of a point of the scene's cubics (50 an edge) from the image.
+double perspective_distance(const CurveScene& scene, double D) {
+  std::vector<P3> world(4096);
+  P3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (size_t i = 0; i < world.size(); ++i) {
+    const double t = 2 * M_PI * double(i) / double(world.size());
+    world[i] =
+        P3{std::sin(t) + 2 * std::sin(2 * t), std::cos(t) - 2 * std::cos(2 * t), -std::sin(3 * t)};
+    lo = P3{std::min(lo.x, world[i].x), std::min(lo.y, world[i].y), std::min(lo.z, world[i].z)};
+    hi = P3{std::max(hi.x, world[i].x), std::max(hi.y, world[i].y), std::max(hi.z, world[i].z)};
+  }
+  const double scale = 524288.0 / std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  std::vector<P3> img;
+  for (const P3& w : world) {
+    const double x = (w.x - (lo.x + hi.x) / 2) * scale, y = (w.y - (lo.y + hi.y) / 2) * scale,
+                 z = (w.z - (lo.z + hi.z) / 2) * scale;
+    img.push_back(P3{x * D / (D - z), y * D / (D - z), 0});
+  }
+  std::vector<P3> pts;
+  for (const BezierEdge3& e : scene.curves)
+    for (int i = 0; i < 50; ++i) pts.push_back(at(cubic_of(e), i / 50.0));
+  const auto box = [](const std::vector<P3>& v, P3* b0, P3* b1) {
+    *b0 = P3{1e300, 1e300, 0}, *b1 = P3{-1e300, -1e300, 0};
+    for (const P3& p : v) {
+      *b0 = P3{std::min(b0->x, p.x), std::min(b0->y, p.y), 0};
+      *b1 = P3{std::max(b1->x, p.x), std::max(b1->y, p.y), 0};
+    }
+  };
+  P3 i0, i1, s0, s1;
+  box(img, &i0, &i1);
+  box(pts, &s0, &s1);
+  const double k = std::max(s1.x - s0.x, s1.y - s0.y) / std::max(i1.x - i0.x, i1.y - i0.y);
+  for (P3& p : img) p = P3{s0.x + (p.x - i0.x) * k, s0.y + (p.y - i0.y) * k, 0};
+  double worst = 0;
+  for (const P3& p : pts) {
+    double best = 1e300;
+    for (size_t i = 0; i < img.size(); ++i) {
+      const P3 &a = img[i], &b = img[(i + 1) % img.size()];
+      const double dx = b.x - a.x, dy = b.y - a.y;
+      const double f =
+          std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+      best = std::min(best, std::hypot(p.x - a.x - f * dx, p.y - a.y - f * dy));
+    }
+    worst = std::max(worst, best);
+  }
+  return worst;
+}
+
+// demo-scene --curve trefoil --perspective 300000 (and the (2,5) knot): the image is the
+// perspective one, and its gaps are as long as any curve scene's.
+void test_perspective() {
+  CurveView v;
+  v.size = 15200;
+  v.margin = 400;
+  v.perspective = 300000;
+  const CurveScene persp = host::trefoil_knot(24, v);
+  const double d = perspective_distance(persp, 300000);
+  std::printf(
+      "perspective trefoil (D = 300,000): %zu edges, within %.3f steps of the test's "
+      "own image\n",
+      persp.curves.size(), d);
+  CHECK_MSG(d <= 1.0, "the perspective trefoil is " + std::to_string(d) + " steps off its image");
+  // The control: the orthographic demo trefoil is far from that image, so the check sees
+  // whether the perspective was applied.
+  v.perspective = 0;
+  const double o = perspective_distance(host::trefoil_knot(24, v), 300000);
+  std::printf("the orthographic trefoil: %.1f steps off the perspective image\n", o);
+  CHECK_MSG(o > 50, "the orthographic trefoil is as close as the perspective one");
+  v.perspective = 300000;
+  for (int32_t W : {12, 80}) {
+    check_scene("trefoil, persp.", persp, true, W);
+    check_scene("torus-2-5, persp.", host::torus_knot(2, 5, 42, v), true, W);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -425,6 +504,7 @@ int main(int argc, char** argv) {
     check_scene("tangle of 100", tangle(100, 0x9e3779b97f4a7c15ull), false, W);
     check_scene("tangle of 500", tangle(500, 0x2545f4914f6cdd1dull), false, W);
   }
+  if (!g_local_speed) test_perspective();
   std::printf(
       "%d gap ends, worst %.4f steps from the arc-length end, %d over %g steps (%d with "
       "no end of their kind on the chain)\n",
