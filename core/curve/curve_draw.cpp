@@ -207,6 +207,23 @@ int64_t half_arc(const Dir& a, const Dir& b, int32_t halo) {
   return over || q >= static_cast<uint64_t>(kArcHuge) ? kArcHuge : static_cast<int64_t>(q) + 1;
 }
 
+// The exact halo's front strand (run_curve_draw_exact): up to kFrontRuns polylines of chords
+// within 1/64 unit of their piece of curve, in Q.8 units, in scratch (`cap` points a run).
+inline constexpr int kFrontRuns = 3;
+inline constexpr int kFrontQ = 8;
+struct Scene;
+struct ExactFront {
+  int64_t (*pts)[2];
+  uint32_t cap;
+  uint32_t len[kFrontRuns];
+  int64_t w2;  // W^2 in Q.8 (below 2^56)
+  // Its functions, set by run_curve_draw_exact only, so run_curve_draw (the controller's)
+  // does not link them.
+  int64_t (*walk)(const Scene& s, const Ctl& c, int64_t t, int dir, int64_t* left);
+  void (*around)(const Scene& s, uint32_t k, int64_t u, int64_t L);
+  void (*vertex)(const Scene& s, const uint32_t f[2], int64_t L);
+};
+
 struct Scene {
   const BezierEdge3* curves;
   uint32_t nc, n;
@@ -217,6 +234,7 @@ struct Scene {
   const uint32_t* link;  // link_joints()'s
   int64_t* end_gap;      // per end: how far from it gaps arriving over a joint reach
   CurveDrawStats* st;
+  ExactFront* front;  // the exact halo's front strand; null: the paper's gap
   Ctl edge(uint32_t k) const { return ctl_of(curves, nc, segments, k); }
   // The first hit on edge k (hits are sorted by curve).
   uint32_t first_hit(uint32_t k) const {
@@ -234,12 +252,18 @@ struct Scene {
 
 bool smooth(const Scene& s, uint32_t id);
 
+// One side of a gap from t on edge c: L of arc (walk_arc), or with the exact halo until the
+// edge leaves the front strand's W (walk_exact; *left stays above 0 while it has not).
+int64_t walk_side(const Scene& s, const Ctl& c, int64_t t, int dir, int64_t* left) {
+  return s.front != nullptr ? s.front->walk(s, c, t, dir, left) : walk_arc(c, t, dir, left);
+}
+
 // A gap side that ran past an edge's end with arc `left` to go, entering the next edge at
 // its end e: along the chain across every joint, each edge it enters marked in end_gap (how far
 // from that end it is covered), until the arc runs out, the chain ends or every edge is walked.
 void walk_chain(const Scene& s, uint32_t e, int64_t left) {
   for (uint32_t hops = 0; hops < s.n && left > 0; ++hops) {
-    const int64_t stop = walk_arc(s.edge(e / 2), (e & 1) ? kOne : 0, (e & 1) ? -1 : 1, &left);
+    const int64_t stop = walk_side(s, s.edge(e / 2), (e & 1) ? kOne : 0, (e & 1) ? -1 : 1, &left);
     const int64_t cover = (e & 1) ? kOne - stop : stop;
     if (cover > s.end_gap[e]) s.end_gap[e] = cover;
     if (s.link[e ^ 1] == kNoLink || !smooth(s, e ^ 1)) return;
@@ -271,7 +295,7 @@ Gap arc_gap(const Scene& s, uint32_t k, int64_t lo, int64_t hi, int64_t L, bool 
     const int64_t from = side ? hi : lo;
     if (carry && (!joined || short_of_end(c, from, side ? kOne : 0, L))) continue;
     int64_t left = L;
-    const int64_t to = walk_arc(c, from, side ? 1 : -1, &left);
+    const int64_t to = walk_side(s, c, from, side ? 1 : -1, &left);
     (side ? g.hi : g.lo) = to;
     if (carry && left > 0) {
       ++s.st->carried;
@@ -281,12 +305,18 @@ Gap arc_gap(const Scene& s, uint32_t k, int64_t lo, int64_t hi, int64_t L, bool 
   return g;
 }
 
-// The gap a crossing hit cuts: W / sin(theta) of arc beyond its parameter bound on each side.
+// The gap a crossing hit cuts: W / sin(theta) of arc beyond its parameter bound on each side;
+// with the exact halo, what lies within W of the front edge around the crossing.
 Gap hit_gap(const Scene& s, const CurveHit& h, bool carry) {
   const Dir a = tangent_dir(s.edge(h.curve), h.t);
   const Dir b = tangent_dir(s.edge(h.other), h.other_t);
   const int64_t t = static_cast<int64_t>(h.t), e = static_cast<int64_t>(h.t_err);
-  return arc_gap(s, h.curve, t - e, t + e, half_arc(a, b, s.halo), carry);
+  int64_t L = half_arc(a, b, s.halo);
+  if (s.front != nullptr) {
+    s.front->around(s, h.other, static_cast<int64_t>(h.other_t), L);
+    L = kArcHuge;
+  }
+  return arc_gap(s, h.curve, t - e, t + e, L, carry);
 }
 
 bool cuts_gap(const CurveHit& h) { return h.kind == CurveHitKind::kCrossing && h.front < 0; }
@@ -401,7 +431,14 @@ void joint_pair(const Scene& s, const uint32_t j[2], const uint32_t k[2]) {
   if (side_of_path(uj, vj, uk) * side_of_path(uj, vj, vk) != -1) return;  // a touch
   const uint32_t* back = pj[2] < pk[2] ? j : k;                           // larger z is nearer
   const uint32_t* front = pj[2] < pk[2] ? k : j;
-  for (int i = 0; i < 2; ++i) walk_chain(s, back[i], joint_half_arc(s, back[i], front));
+  for (int i = 0; i < 2; ++i) {
+    int64_t L = joint_half_arc(s, back[i], front);
+    if (s.front != nullptr) {
+      s.front->vertex(s, front, L);
+      L = kArcHuge;
+    }
+    walk_chain(s, back[i], L);
+  }
   ++s.st->gaps;
   ++s.st->joint_crossings;
 }
@@ -516,13 +553,21 @@ uint32_t cut_pass(const Scene& s, uint32_t k, const uint32_t j[2], const Through
     ++s.st->joint_crossings;
   }
   int64_t most = 0;
+  const int64_t t = static_cast<int64_t>(th.t);
   for (int m = 0; m < 2; ++m) {
-    const int64_t L = through_half_arc(s, k, th.t, j[m], f < 0);
+    int64_t L = through_half_arc(s, k, th.t, j[m], f < 0);
+    if (f < 0 && first_pass && s.front != nullptr) {
+      s.front->around(s, k, t, L);
+      L = kArcHuge;
+    }
     if (f < 0 && first_pass) walk_chain(s, j[m], L);
     most = L > most ? L : most;
   }
   if (f < 0) return 0;
-  const int64_t t = static_cast<int64_t>(th.t);
+  if (s.front != nullptr) {
+    s.front->vertex(s, j, most);
+    most = kArcHuge;
+  }
   const Gap g = arc_gap(s, k, t - t_err, t + t_err, most, first_pass);
   if (first_pass) return 0;
   gaps[0] = g;
@@ -695,6 +740,133 @@ int64_t second_difference(const Ctl& c) {
   return most;
 }
 
+// ---- the exact halo (run_curve_draw_exact) ----
+//
+// The gap removes what lies within W of the front strand, found by walking the edge behind
+// from the crossing in arc steps of W / 4 until a point lies W or more from it, then bisecting
+// that step to 1/64 unit. The front strand is taken around the crossing only (else a curve's
+// own loop would be its own front everywhere): 2 (L + W) of arc each way along the front edge
+// (L = W / sin(theta), its paper half-gap), on over smooth joints into its neighbours, or
+// from a vertex into its two edges; as chords within 1/64 unit (Q.8 points). A point is inside
+// when its squared distance to a chord is below W^2, exactly in Q.8 (below 2^114 in Wide).
+static_assert(2 * (kCoordBits + kFrontQ + 1) + 1 < 126, "a chord's distance test fits Wide");
+
+// The chords' count over all of edge c at 1/64 unit: the chord formula with tol 4/256.
+uint64_t front_root(const Ctl& c) {
+  return c.straight ? 1 : uint64_t{isqrt_u64(static_cast<uint64_t>(48 * second_difference(c)))} + 1;
+}
+
+int64_t to_q8(int64_t v) { return (v + (int64_t{1} << (kQ - kFrontQ - 1))) >> (kQ - kFrontQ); }
+
+// Run r of the front strand: edge k's chords over [a, b] (Q0.32, a <= b).
+void front_run(const Scene& s, int r, uint32_t k, int64_t a, int64_t b) {
+  ExactFront& f = *s.front;
+  const Ctl c = s.edge(k);
+  uint64_t n = (static_cast<uint64_t>(b - a) * front_root(c) + kOne - 1) >> kQ;
+  n = n == 0 ? 1 : (n + 1 > f.cap ? f.cap - 1 : n);
+  int64_t(*p)[2] = f.pts + static_cast<size_t>(r) * f.cap;
+  for (uint64_t j = 0; j <= n; ++j) {
+    int64_t x, y;
+    point_at(c, static_cast<uint64_t>(a) + static_cast<uint64_t>(b - a) * j / n, &x, &y);
+    p[j][0] = to_q8(x);
+    p[j][1] = to_q8(y);
+  }
+  f.len[r] = static_cast<uint32_t>(n + 1);
+}
+
+int64_t front_reach(const Scene& s, int64_t L) {
+  const int64_t w = int64_t{s.halo} << kQ;
+  return L >= kArcHuge / 4 ? kArcHuge : 2 * (L + w);
+}
+
+// Run r: from end e into its edge, R of arc.
+void front_from_end(const Scene& s, int r, uint32_t e, int64_t R) {
+  int64_t left = R;
+  const int64_t stop = walk_arc(s.edge(e / 2), (e & 1) ? kOne : 0, (e & 1) ? -1 : 1, &left);
+  front_run(s, r, e / 2, (e & 1) ? stop : 0, (e & 1) ? kOne : stop);
+}
+
+// The front strand around parameter u of edge k (L: the paper's half-gap there).
+void front_around(const Scene& s, uint32_t k, int64_t u, int64_t L) {
+  const Ctl c = s.edge(k);
+  const int64_t R = front_reach(s, L);
+  s.front->len[1] = s.front->len[2] = 0;
+  int64_t left = R;
+  const int64_t a = walk_arc(c, u, -1, &left);
+  if (left > 0 && s.link[2 * k] != kNoLink && smooth(s, 2 * k))
+    front_from_end(s, 1, s.link[2 * k], left);
+  left = R;
+  const int64_t b = walk_arc(c, u, 1, &left);
+  if (left > 0 && s.link[2 * k + 1] != kNoLink && smooth(s, 2 * k + 1))
+    front_from_end(s, 2, s.link[2 * k + 1], left);
+  front_run(s, 0, k, a, b);
+}
+
+// The front strand at a vertex: its two edges from it.
+void front_from_vertex(const Scene& s, const uint32_t f[2], int64_t L) {
+  const int64_t R = front_reach(s, L);
+  front_from_end(s, 0, f[0], R);
+  front_from_end(s, 1, f[1], R);
+  s.front->len[2] = 0;
+}
+
+// True when (px, py) (Q.8) is closer than W to a chord of the front strand.
+bool near_front(const ExactFront& f, int64_t px, int64_t py) {
+  for (int r = 0; r < kFrontRuns; ++r) {
+    const int64_t(*p)[2] = f.pts + static_cast<size_t>(r) * f.cap;
+    for (uint32_t j = 0; j + 1 < f.len[r]; ++j) {
+      const int64_t ax = p[j][0], ay = p[j][1], dx = p[j + 1][0] - ax, dy = p[j + 1][1] - ay;
+      const int64_t vx = px - ax, vy = py - ay;
+      const int64_t dot = vx * dx + vy * dy, dd = dx * dx + dy * dy;
+      int64_t ex = vx, ey = vy;
+      if (dot > 0 && dot >= dd) {
+        ex = px - p[j + 1][0];
+        ey = py - p[j + 1][1];
+      } else if (dot > 0) {
+        const int64_t cr = vx * dy - vy * dx;
+        if (mul_i64(cr, cr) < mul_u64(static_cast<uint64_t>(f.w2), static_cast<uint64_t>(dd)))
+          return true;
+        continue;
+      }
+      if (ex * ex + ey * ey < f.w2) return true;
+    }
+  }
+  return false;
+}
+
+bool inside_at(const Scene& s, const Ctl& c, int64_t t) {
+  int64_t x, y;
+  point_at(c, static_cast<uint64_t>(t), &x, &y);
+  return near_front(*s.front, to_q8(x), to_q8(y));
+}
+
+// From t (inside) along c in direction dir: steps of W / 4 of arc while inside; the step that
+// leaves is bisected until its chord is below 1/64 unit, and its outer end returned (*left 0).
+// Reaching the edge's end still inside returns it with *left untouched.
+int64_t walk_exact(const Scene& s, const Ctl& c, int64_t t, int dir, int64_t* left) {
+  const int64_t end = dir > 0 ? kOne : 0;
+  while (t != end) {
+    int64_t step = (int64_t{s.halo} << kQ) / 4 + 1;
+    const int64_t q = walk_arc(c, t, dir, &step);
+    if (inside_at(s, c, q)) {
+      t = q;
+      continue;
+    }
+    int64_t a = t, b = q;
+    while (dir * (b - a) > 1) {
+      int64_t ax, ay, bx, by;
+      point_at(c, static_cast<uint64_t>(a), &ax, &ay);
+      point_at(c, static_cast<uint64_t>(b), &bx, &by);
+      if (length32(bx - ax, by - ay) < kArcEndTol) break;
+      const int64_t mid = a + (b - a) / 2;
+      (inside_at(s, c, mid) ? a : b) = mid;
+    }
+    *left = 0;
+    return b;
+  }
+  return end;
+}
+
 // One visible interval: to the interval sink, then as n equal chords (curve_draw.h).
 Status emit_visible(const Ctl& c, uint32_t k, uint64_t t0, uint64_t t1, uint64_t root,
                     SpanSink chords, const CurveIntervalSink* intervals, CurveDrawStats& st) {
@@ -801,9 +973,12 @@ Status plan_curve_draw(const BezierEdge3* curves, uint32_t n_curves, const Edge3
   return Status::kOk;
 }
 
-Status run_curve_draw(const CurveDrawPlan& plan, const BezierEdge3* curves, const Edge3* segments,
-                      const CurveHit* hits, uint32_t n_hits, void* scratch, size_t scratch_bytes,
-                      SpanSink chords, const CurveIntervalSink* intervals, CurveDrawStats* stats) {
+namespace {
+
+Status draw_run(const CurveDrawPlan& plan, const BezierEdge3* curves, const Edge3* segments,
+                const CurveHit* hits, uint32_t n_hits, void* scratch, size_t scratch_bytes,
+                SpanSink chords, const CurveIntervalSink* intervals, CurveDrawStats* stats,
+                ExactFront* exact) {
   CurveDrawStats st;
   if (buffer_misaligned(scratch)) return Status::kMisalignedBuffer;
   if (n_hits != plan.n_hits) return Status::kBadParameter;  // not the hits the plan checked
@@ -815,8 +990,8 @@ Status run_curve_draw(const CurveDrawPlan& plan, const BezierEdge3* curves, cons
   Gap* gaps;
   carve(carver, n, plan.most_hits, &order, &link, &end_gap, &stack, &gaps);
   if (carver.short_) return Status::kWorkspaceTooSmall;
-  const Scene s{curves, plan.n_curves,    n,    segments, hits,
-                n_hits, plan.params.halo, link, end_gap,  &st};
+  const Scene s{curves,           plan.n_curves, n,       segments, hits, n_hits,
+                plan.params.halo, link,          end_gap, &st,      exact};
   st.joints = link_joints(s, order, link);
   for (uint32_t i = 0; i < 2 * n; ++i) end_gap[i] = 0;
   const bool haloed = plan.params.halo > 0;
@@ -832,6 +1007,53 @@ Status run_curve_draw(const CurveDrawPlan& plan, const BezierEdge3* curves, cons
   }
   if (stats != nullptr) *stats = st;
   return Status::kOk;
+}
+
+}  // namespace
+
+Status run_curve_draw(const CurveDrawPlan& plan, const BezierEdge3* curves, const Edge3* segments,
+                      const CurveHit* hits, uint32_t n_hits, void* scratch, size_t scratch_bytes,
+                      SpanSink chords, const CurveIntervalSink* intervals, CurveDrawStats* stats) {
+  return draw_run(plan, curves, segments, hits, n_hits, scratch, scratch_bytes, chords, intervals,
+                  stats, nullptr);
+}
+
+Status plan_curve_draw_exact(const BezierEdge3* curves, uint32_t n_curves, const Edge3* segments,
+                             uint32_t n_segments, const CurveHit* hits, uint32_t n_hits,
+                             const CurveDrawParams& params, CurveDrawPlan* plan) {
+  const Status st =
+      plan_curve_draw(curves, n_curves, segments, n_segments, hits, n_hits, params, plan);
+  if (!ok(st)) return st;
+  uint64_t most = 1;
+  for (uint32_t k = 0; k < n_curves; ++k) {
+    const uint64_t r = front_root(ctl_of(curves, n_curves, segments, k));
+    most = r > most ? r : most;
+  }
+  plan->front_points = static_cast<uint32_t>(most + 2);
+  plan->scratch_bytes += carve_round(size_t{kFrontRuns} * plan->front_points * 16);
+  return Status::kOk;
+}
+
+Status run_curve_draw_exact(const CurveDrawPlan& plan, const BezierEdge3* curves,
+                            const Edge3* segments, const CurveHit* hits, uint32_t n_hits,
+                            void* scratch, size_t scratch_bytes, SpanSink chords,
+                            const CurveIntervalSink* intervals, CurveDrawStats* stats) {
+  if (plan.front_points == 0) return Status::kBadParameter;  // plan_curve_draw_exact's plan
+  // The front strand at the scratch's end (plan_curve_draw_exact added its bytes).
+  const size_t front_bytes = size_t{kFrontRuns} * plan.front_points * sizeof(int64_t[2]);
+  if (buffer_misaligned(scratch)) return Status::kMisalignedBuffer;
+  if (scratch_bytes < front_bytes) return Status::kWorkspaceTooSmall;
+  const size_t rest = (scratch_bytes - front_bytes) & ~size_t{7};
+  ExactFront front{};
+  front.pts = reinterpret_cast<int64_t(*)[2]>(static_cast<unsigned char*>(scratch) + rest);
+  front.cap = plan.front_points;
+  const int64_t w8 = int64_t{plan.params.halo} << kFrontQ;
+  front.w2 = w8 * w8;
+  front.walk = &walk_exact;
+  front.around = &front_around;
+  front.vertex = &front_from_vertex;
+  return draw_run(plan, curves, segments, hits, n_hits, scratch, rest, chords, intervals, stats,
+                  &front);
 }
 
 }  // namespace haloplot

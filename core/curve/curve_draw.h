@@ -70,6 +70,7 @@ struct CurveDrawPlan {
   uint32_t n_hits = 0;
   uint32_t most_hits = 0;  // the most hits on one edge
   size_t scratch_bytes = 0;
+  uint32_t front_points = 0;  // plan_curve_draw_exact(): the front strand's points a run
   CurveDrawParams params;
 };
 
@@ -96,5 +97,17 @@ Status plan_curve_draw(const BezierEdge3* curves, uint32_t n_curves, const Edge3
 Status run_curve_draw(const CurveDrawPlan& plan, const BezierEdge3* curves, const Edge3* segments,
                       const CurveHit* hits, uint32_t n_hits, void* scratch, size_t scratch_bytes,
                       SpanSink chords, const CurveIntervalSink* intervals, CurveDrawStats* stats);
+
+// The exact halo (docs/curves.md, "The exact halo"): as run_curve_draw(), but each gap removes
+// exactly what of the edge behind lies within W of the front strand around the crossing (to
+// 1/64 unit), walked from the crossing, instead of W / sin(theta) of arc. Its plan adds the
+// front strand's scratch. Host only so far (the controller's jobs take the paper's gap).
+Status plan_curve_draw_exact(const BezierEdge3* curves, uint32_t n_curves, const Edge3* segments,
+                             uint32_t n_segments, const CurveHit* hits, uint32_t n_hits,
+                             const CurveDrawParams& params, CurveDrawPlan* plan);
+Status run_curve_draw_exact(const CurveDrawPlan& plan, const BezierEdge3* curves,
+                            const Edge3* segments, const CurveHit* hits, uint32_t n_hits,
+                            void* scratch, size_t scratch_bytes, SpanSink chords,
+                            const CurveIntervalSink* intervals, CurveDrawStats* stats);
 
 }  // namespace haloplot

@@ -29,7 +29,7 @@ expect 'cmp -s t.gcode s.gcode' "sim of the job writes plot's G-code"
 "$tool" plot trefoil.edges --halo 0 -o w.svg --stats 2> w.txt || bad "plot --halo 0"
 expect '[ "$($check count w.svg)" = 1 ] && grep -q "^gaps=0$" w.txt' "halo 0: one stroke, no gap"
 # Refused by name, nothing written.
-for opt in "--exact-halo" "--cell 100" "--arena 65536" "--cut x.cut" "--reach 4" "--view 10,20" \
+for opt in "--cell 100" "--arena 65536" "--cut x.cut" "--reach 4" "--view 10,20" \
   "--substep 3"; do
   # shellcheck disable=SC2086
   if "$tool" plot trefoil.edges --halo 80 $opt -o r.svg 2> r.txt; then
@@ -38,6 +38,10 @@ for opt in "--exact-halo" "--cell 100" "--arena 65536" "--cut x.cut" "--reach 4"
     expect 'grep -q -- "${opt%% *}" r.txt && [ ! -e r.svg ]' "$opt refused by name, no output"
   fi
 done
+# The exact halo on the host: the same 3 gaps, ends within 1/4 step here of the paper's
+# (curve_gap_arcs checks both against their references).
+"$tool" plot trefoil.edges --halo 80 --exact-halo -o e.svg --stats 2> e.txt || bad "--exact-halo"
+expect 'grep -q "^gaps=3$" e.txt && [ "$($check count e.svg)" = 3 ]' "--exact-halo: 3 gaps, 3 strokes"
 printf 'scene trefoil.edges\ndrawing haloed\nhalo 80\nhalo-mode exact\n' > e.job
 expect '! "$tool" sim e.job -o e.trace 2> /dev/null && [ ! -e e.trace ]' "sim refuses the exact halo"
 expect '! "$tool" cut trefoil.edges -o t.cut 2> c.txt && grep -q "straight edges only" c.txt' \

@@ -46,7 +46,8 @@ Status into_intervals(void* c, const CurveInterval& i) {
 }
 Status no_chord(void*, const Span&) { return Status::kOk; }
 
-std::vector<Visible> draw_core(const CurveScene& s, int32_t halo, CurveDrawStats* stats) {
+std::vector<Visible> draw_core(const CurveScene& s, int32_t halo, CurveDrawStats* stats,
+                               bool exact) {
   const uint32_t nc = uint32_t(s.curves.size()), ns = uint32_t(s.segments.size());
   CurveCrossParams cp;
   cp.segment_pairs = true;
@@ -67,13 +68,15 @@ std::vector<Visible> draw_core(const CurveScene& s, int32_t halo, CurveDrawStats
   CurveDrawParams p;
   p.halo = halo;
   CurveDrawPlan dplan;
-  st = plan_curve_draw(s.curves.data(), nc, s.segments.data(), ns, hits.data(), n, p, &dplan);
+  st = (exact ? plan_curve_draw_exact : plan_curve_draw)(s.curves.data(), nc, s.segments.data(), ns,
+                                                         hits.data(), n, p, &dplan);
   CHECK_MSG(ok(st), "plan_curve_draw");
   std::vector<uint64_t> dscratch(dplan.scratch_bytes / 8 + 1);
   std::vector<Visible> vis;
   const CurveIntervalSink sink{&into_intervals, &vis};
-  st = run_curve_draw(dplan, s.curves.data(), s.segments.data(), hits.data(), n, dscratch.data(),
-                      dscratch.size() * 8, SpanSink{&no_chord, nullptr}, &sink, stats);
+  st = (exact ? run_curve_draw_exact : run_curve_draw)(
+      dplan, s.curves.data(), s.segments.data(), hits.data(), n, dscratch.data(),
+      dscratch.size() * 8, SpanSink{&no_chord, nullptr}, &sink, stats);
   CHECK_MSG(ok(st), std::string("run_curve_draw: ") + status_name(st));
   return vis;
 }
@@ -347,22 +350,142 @@ std::vector<Visible> local_speed(const std::vector<Cubic>& cs, const Layout& l,
   return vis;
 }
 
+// ---- the exact halo's reference ----
+//
+// The exact halo removes what of the strand behind lies within W of the front strand, walked
+// from the crossing; the front strand is taken within R = 2 (W / sin(theta) + W) of arc of the
+// crossing (docs/curves.md). Here: every chain sampled about every step of arc (uniform in each
+// edge's parameter, positions by Gauss-Legendre), the distance of each sample of the strand
+// behind to the front window's polyline, and the boundary interpolated between the last
+// sample within W and the first beyond.
+
+struct Sample {
+  double at, x, y;
+};
+
+std::vector<std::vector<Sample>> chain_samples(const std::vector<Cubic>& cs, const Layout& l) {
+  std::vector<std::vector<Sample>> out(l.chains.size());
+  for (size_t c = 0; c < l.chains.size(); ++c) {
+    const Chain& ch = l.chains[c];
+    for (size_t k = 0; k < ch.edges.size(); ++k) {
+      const Cubic& cu = cs[ch.edges[k]];
+      const double len = (k + 1 < ch.edges.size() ? ch.start[k + 1] : ch.total) - ch.start[k];
+      const int m = std::max(8, int(std::ceil(len)));
+      double pos = ch.start[k];
+      for (int i = 0; i < m; ++i) {
+        const double t = double(i) / m;
+        if (i > 0) pos += gl5(cu, double(i - 1) / m, t);
+        const P3 p = at(cu, t);
+        out[c].push_back(Sample{pos, p.x, p.y});
+      }
+    }
+    if (!ch.closed) {  // the chain's last point
+      const P3 p = at(cs[ch.edges.back()], 1);
+      out[c].push_back(Sample{ch.total, p.x, p.y});
+    }
+  }
+  return out;
+}
+
+double polyline_distance(const std::vector<Sample>& poly, double x, double y) {
+  double best = 1e300;
+  for (size_t i = 0; i + 1 < poly.size(); ++i) {
+    const double ax = poly[i].x, ay = poly[i].y, dx = poly[i + 1].x - ax, dy = poly[i + 1].y - ay;
+    const double dd = dx * dx + dy * dy;
+    const double f = dd > 0 ? std::clamp(((x - ax) * dx + (y - ay) * dy) / dd, 0.0, 1.0) : 0.0;
+    best = std::min(best, std::hypot(x - ax - f * dx, y - ay - f * dy));
+  }
+  return best;
+}
+
+// The exact gap of one crossing: [lo, hi] in arc along the chain behind (a closed chain's may
+// run past 0 or its total).
+std::pair<double, double> exact_gap_ref(const std::vector<std::vector<Sample>>& smp,
+                                        const Layout& l, int back, double s_back, int front,
+                                        double s_front, double W, double sin_angle) {
+  const Chain &cb = l.chains[back], &cf = l.chains[front];
+  const double R = 2 * (W / sin_angle + W);
+  // The front window, in order along its chain.
+  std::vector<Sample> win;
+  const std::vector<Sample>& fs = smp[front];
+  const size_t nf = fs.size();
+  if (cf.closed) {
+    size_t i0 = 0;
+    while (i0 < nf && fs[i0].at < s_front) ++i0;
+    for (size_t k = 0; k < nf; ++k) {  // back from the crossing, then on
+      const Sample& q = fs[(i0 + nf - 1 - k) % nf];
+      double d = s_front - q.at;
+      if (d < 0) d += cf.total;
+      if (d > R) break;
+      win.insert(win.begin(), q);
+    }
+    for (size_t k = 0; k < nf; ++k) {
+      const Sample& q = fs[(i0 + k) % nf];
+      double d = q.at - s_front;
+      if (d < 0) d += cf.total;
+      if (d > R) break;
+      win.push_back(q);
+    }
+  } else {
+    for (const Sample& q : fs)
+      if (std::fabs(q.at - s_front) <= R) win.push_back(q);
+  }
+  const std::vector<Sample>& bs = smp[back];
+  const size_t nb = bs.size();
+  double ends[2];
+  for (int side = 0; side < 2; ++side) {
+    const int dir = side ? 1 : -1;
+    size_t i = 0;
+    while (i < nb && bs[i].at < s_back) ++i;  // the first sample at or past the crossing
+    long idx = side ? long(i) : long(i) - 1;
+    double prev_at = s_back, prev_d = 0, offset = 0;
+    ends[side] =
+        side ? (cb.closed ? s_back + cb.total : cb.total) : (cb.closed ? s_back - cb.total : 0);
+    for (size_t steps = 0; steps < nb; ++steps, idx += dir) {
+      if (!cb.closed && (idx < 0 || idx >= long(nb))) break;
+      if (cb.closed) {
+        if (idx < 0) idx += long(nb), offset -= cb.total;
+        if (idx >= long(nb)) idx -= long(nb), offset += cb.total;
+      }
+      const Sample& q = bs[size_t(idx)];
+      const double at = q.at + offset, d = polyline_distance(win, q.x, q.y);
+      if (d >= W) {
+        ends[side] = prev_at + (at - prev_at) * (W - prev_d) / (d - prev_d);
+        break;
+      }
+      prev_at = at, prev_d = d;
+    }
+  }
+  return {ends[0], ends[1]};
+}
+
 Figures g_total;
 
-void check_scene(const std::string& name, const CurveScene& scene, bool knot, int32_t W) {
+// `exact`: the exact halo, drawn by run_curve_draw_exact and checked against the exact
+// reference; `draw_exact` false with `exact` true is the control (the paper's gaps against
+// the exact reference).
+void check_scene(const std::string& name, const CurveScene& scene, bool knot, int32_t W,
+                 bool exact = false, bool draw_exact = true) {
   std::vector<Cubic> cs;
   for (const BezierEdge3& e : scene.curves) cs.push_back(cubic_of(e));
   const Layout l = layout(cs, knot);
   const std::vector<Crossing> xs = crossings(cs, 96);
   CurveDrawStats stats;
   const std::vector<Visible> vis =
-      g_local_speed ? local_speed(cs, l, xs, W) : draw_core(scene, W, &stats);
+      g_local_speed ? local_speed(cs, l, xs, W) : draw_core(scene, W, &stats, exact && draw_exact);
+  std::vector<std::vector<Sample>> smp;
+  if (exact) smp = chain_samples(cs, l);
   std::vector<std::vector<std::pair<double, double>>> ref(l.chains.size()), drawn(l.chains.size());
   for (const Crossing& x : xs) {
     const bool i_behind = x.zi < x.zj;
-    const uint32_t e = i_behind ? x.i : x.j;
+    const uint32_t e = i_behind ? x.i : x.j, f = i_behind ? x.j : x.i;
     const double s = where(l, cs, e, i_behind ? x.s : x.u), L = W / x.sin_angle;
-    ref[l.chain_of[e]].push_back({s - L, s + L});
+    if (exact)
+      ref[l.chain_of[e]].push_back(exact_gap_ref(smp, l, l.chain_of[e], s, l.chain_of[f],
+                                                 where(l, cs, f, i_behind ? x.u : x.s), W,
+                                                 x.sin_angle));
+    else
+      ref[l.chain_of[e]].push_back({s - L, s + L});
   }
   for (const Visible& v : vis)
     drawn[l.chain_of[v.edge]].push_back({where(l, cs, v.edge, v.t0), where(l, cs, v.edge, v.t1)});
@@ -505,6 +628,17 @@ int main(int argc, char** argv) {
     check_scene("tangle of 500", tangle(500, 0x2545f4914f6cdd1dull), false, W);
   }
   if (!g_local_speed) test_perspective();
+  if (!g_local_speed) {
+    // The exact halo: the same checks against the exact reference. `exact-control` draws the
+    // paper's gaps instead and must fail.
+    const bool control = argc > 1 && std::string(argv[1]) == "exact-control";
+    for (int32_t W : {12, 80}) {
+      check_scene("trefoil, exact", host::trefoil_knot(24, demo), true, W, true, !control);
+      check_scene("torus-2-5, exact", host::torus_knot(2, 5, 42, demo), true, W, true, !control);
+      check_scene("tangle 100, exact", tangle(100, 0x9e3779b97f4a7c15ull), false, W, true,
+                  !control);
+    }
+  }
   std::printf(
       "%d gap ends, worst %.4f steps from the arc-length end, %d over %g steps (%d with "
       "no end of their kind on the chain)\n",
