@@ -492,11 +492,11 @@ Status job_redraw_curves(const JobSpec& steps, const CurveJobScene& scene, uint3
   Status s = validate(steps.machine);
   if (!ok(s)) return s;
   JobCounters c;
-  c.curve_cross = counters->curve_cross;  // the crossings found by the plot before
+  if (counters) c.curve_cross = counters->curve_cross;  // the crossings found by the plot before
   PreparedJob job;
   s = curve_draw_stage(steps, scene, n_hits, static_cast<uint8_t*>(buffer), buffer_bytes, &job, &c,
                        nullptr);
-  *counters = c;
+  if (counters) *counters = c;
   if (!ok(s)) return s;
   *out = job;
   return Status::kOk;
