@@ -11,17 +11,15 @@ namespace {
 //   a point or a tangent in Q.32           |.| < 3 * 2^20 * 2^32 < 2^54
 //   a tangent, normalised                  components below 2^30 after `shift` halvings
 //   cross of two normalised tangents       < 2^61 (int64_t)
-//   half-gap numerator W |b| 2^(64 - s)    < 2^20 * 2^31 * 2^64 = 2^115 (Wide)
-//   carried overhang o |a| 2^(sA - sC)     o <= kHuge = 2^34, |a| < 2^31: < 2^65 * 2^24 (Wide)
+//   a half-gap's arc W |a| |b| 2^32        < 2^20 * 2^31 * 2^31 * 2^32 = 2^114 (Wide)
+//   a chord or a leg of a walk's step       Q.32, below 2^57; halved below 2^31 for its length
 //   chord count factor 3 * 64 * D_c        D_c < 2^22: < 2^30
 inline constexpr int kQ = 32;
 inline constexpr int64_t kOne = int64_t{1} << kQ;
-inline constexpr int64_t kHuge = int64_t{1} << 34;  // a half-gap past any edge and its neighbour
 inline constexpr int64_t kNormLimit = int64_t{1} << 30;
 inline constexpr uint32_t kNoLink = 0xffffffffu;
 static_assert(kCoordBits + 2 + kQ < 63, "a tangent in Q.32 fits int64_t");
 static_assert(2 * 30 + 1 < 63, "a cross of normalised tangents fits int64_t");
-static_assert(kCoordBits + 31 + 64 < 126, "a half-gap numerator fits Wide");
 
 // An edge's control points in units; a segment keeps its ends (p0 = p1, p2 = p3) and is
 // evaluated linearly, as run_curve_cross() parameterises it.
@@ -111,51 +109,120 @@ Dir tangent_dir(const Ctl& c, uint64_t t) {
   tangent_at(c, t, &x, &y);
   return normalized(x, y);
 }
-uint64_t length_floor(const Dir& d) {
-  return isqrt_u64(static_cast<uint64_t>(d.x * d.x + d.y * d.y));
-}
 uint64_t length_ceil(const Dir& d) {
   const uint64_t v = static_cast<uint64_t>(d.x * d.x + d.y * d.y);
   const uint64_t s = isqrt_u64(v);
   return s * s < v ? s + 1 : s;
 }
 
-Wide shl(Wide v, int n) {
-  for (int i = 0; i < n; ++i) {
-    v.hi = (v.hi << 1) | (v.lo >> 63);
-    v.lo <<= 1;
+// ---- arc length ----
+//
+// A half-gap is W / sin(theta) of arc, walked along the curve (docs/curves.md, "The gap").
+// Lengths are Q.32 units in int64_t. A step [t, t + h] of the walk is the sub-cubic with
+// control points B(t), B(t) + h/3 B'(t), B(t + h) - h/3 B'(t + h), B(t + h) (exact Bézier
+// subdivision), so its arc lies between its chord c and its control polygon p, and the step
+// counts (2c + p) / 3 (Gravesen's estimate), within 2 (p - c) / 3 of the arc. A step is halved
+// until p - c <= c 2^-14 + 2^-20 units, so the walk's count is within 2^-14.5 of the arc it
+// covers plus 2^-20.6 units a step; a flat step lets the next one double, up to 2^-6 of the
+// edge. The walk ends by bisection: a step that would pass the arc left is halved until it
+// does not, or until its estimate is below kArcEndTol (1/64 unit), which is then taken whole.
+inline constexpr int64_t kArcHuge = int64_t{1} << 62;     // no end: a gap along the chain
+inline constexpr int64_t kArcStepMax = int64_t{1} << 26;  // 2^-6 of an edge's parameter
+inline constexpr int64_t kArcStepMin = int64_t{1} << 8;   // 2^-24
+inline constexpr int64_t kArcAbsTol = int64_t{1} << 12;   // 2^-20 units
+inline constexpr int64_t kArcEndTol = int64_t{1} << 26;   // 1/64 unit
+inline constexpr int kArcRelBits = 14;
+static_assert(kCoordBits + 3 + kQ < 63, "a chord or a control leg in Q.32 fits int64_t");
+
+// |(dx, dy)| in Q.32 for Q.32 components below 2^56: halved until they are below 2^31, so the
+// squares' sum fits uint64_t (relative error below 2^-29, never above the length).
+int64_t length32(int64_t dx, int64_t dy) {
+  int shift = 0;
+  while (abs64(dx) >= (int64_t{1} << 31) || abs64(dy) >= (int64_t{1} << 31)) {
+    dx /= 2;
+    dy /= 2;
+    ++shift;
   }
-  return v;
+  return static_cast<int64_t>(uint64_t{isqrt_u64(static_cast<uint64_t>(dx * dx + dy * dy))}
+                              << shift);
 }
 
-// ceil-ish num / den (rounded, plus one), saturated at kHuge.
-int64_t quotient_up(Wide num, uint64_t den) {
-  if (den == 0) return kHuge;
-  bool over = false;
-  const uint64_t q = divide_round(num, den, &over);
-  return over || q >= static_cast<uint64_t>(kHuge) ? kHuge : static_cast<int64_t>(q) + 1;
+// A third of h (Q0.32) times a Q.32 tangent: a control leg of the step's sub-cubic.
+int64_t leg(int64_t d, int64_t h) { return lerp32(0, d, static_cast<uint64_t>(h)) / 3; }
+
+// Walks the arc *left (Q.32 units; kArcHuge: no end) along edge c from t in direction dir (+1
+// or -1). Returns the parameter where the arc runs out (*left then 0) or the edge's end.
+int64_t walk_arc(const Ctl& c, int64_t t, int dir, int64_t* left) {
+  const int64_t end = dir > 0 ? kOne : 0;
+  const bool endless = *left >= kArcHuge;
+  int64_t h = kArcStepMax, px, py, tx, ty;
+  bool closing = false;
+  point_at(c, static_cast<uint64_t>(t), &px, &py);
+  tangent_at(c, static_cast<uint64_t>(t), &tx, &ty);
+  while (t != end && *left > 0) {
+    if (h > dir * (end - t)) h = dir * (end - t);
+    const int64_t q = t + dir * h;
+    int64_t qx, qy, ux, uy;
+    point_at(c, static_cast<uint64_t>(q), &qx, &qy);
+    tangent_at(c, static_cast<uint64_t>(q), &ux, &uy);
+    const int64_t ax = dir * leg(tx, h), ay = dir * leg(ty, h);
+    const int64_t bx = dir * leg(ux, h), by = dir * leg(uy, h);
+    const int64_t chord = length32(qx - px, qy - py);
+    const int64_t poly =
+        length32(ax, ay) + length32(qx - px - ax - bx, qy - py - ay - by) + length32(bx, by);
+    const int64_t excess = poly > chord ? poly - chord : 0;
+    if (excess > (chord >> kArcRelBits) + kArcAbsTol && h > kArcStepMin) {
+      h /= 2;
+      continue;
+    }
+    const int64_t est = (2 * chord + poly) / 3;
+    if (!endless && est > *left) {
+      closing = true;
+      if (est > kArcEndTol && h > 1) {
+        h /= 2;
+        continue;
+      }
+      *left = 0;
+      return q;
+    }
+    if (!endless) *left -= est;
+    t = q, px = qx, py = qy, tx = ux, ty = uy;
+    if (!closing && excess <= (chord >> (kArcRelBits + 3)) + kArcAbsTol / 8 && h < kArcStepMax)
+      h *= 2;
+  }
+  return t;
 }
 
-// The half-gap in A's parameter (Q0.32): W |b| / |cross(a, b)| with A' = a 2^(a.shift - 32).
-int64_t half_gap(const Dir& a, const Dir& b, int32_t halo) {
+// W / sin(theta) of arc for tangents a and b: W |a| |b| / |cross(a, b)|, Q.32 units, rounded
+// up; kArcHuge when the tangents are parallel as rounded.
+static_assert(kCoordBits + 31 + 31 + kQ < 126, "a half-gap's arc numerator fits Wide");
+int64_t half_arc(const Dir& a, const Dir& b, int32_t halo) {
   const int64_t cr = abs64(a.x * b.y - a.y * b.x);
-  if (cr == 0) return kHuge;  // parallel as rounded: the paper's gap has no bound
-  const Wide num = shl(mul_u64(static_cast<uint64_t>(halo), length_ceil(b)), 64 - a.shift);
-  return quotient_up(num, static_cast<uint64_t>(cr));
+  if (cr == 0) return kArcHuge;
+  Wide num = mul_wide_u64(mul_u64(length_ceil(a), length_ceil(b)), static_cast<uint64_t>(halo));
+  num.hi = (num.hi << kQ) | (num.lo >> (64 - kQ));
+  num.lo <<= kQ;
+  bool over = false;
+  const uint64_t q = divide_round(num, static_cast<uint64_t>(cr), &over);
+  return over || q >= static_cast<uint64_t>(kArcHuge) ? kArcHuge : static_cast<int64_t>(q) + 1;
 }
 
-// The arc o (in A's parameter at A's speed |a|) carried onto C, whose speed at the joint is
-// |c|: o |a| 2^(a.shift - c.shift) / |c|, in C's parameter.
-int64_t carried(int64_t o, const Dir& a, const Dir& c) {
-  if (o > kHuge) o = kHuge;
-  Wide num = mul_u64(static_cast<uint64_t>(o), length_ceil(a));
-  uint64_t den = length_floor(c);
-  if (a.shift >= c.shift)
-    num = shl(num, a.shift - c.shift);
-  else
-    den <<= (c.shift - a.shift);
-  return quotient_up(num, den);
-}
+// The exact halo's front strand (run_curve_draw_exact): up to kFrontRuns polylines of chords
+// within 1/64 unit of their piece of curve, in Q.8 units, in scratch (`cap` points a run).
+inline constexpr int kFrontRuns = 3;
+inline constexpr int kFrontQ = 8;
+struct Scene;
+struct ExactFront {
+  int64_t (*pts)[2];
+  uint32_t cap;
+  uint32_t len[kFrontRuns];
+  int64_t w2;  // W^2 in Q.8 (below 2^56)
+  // Its functions, set by run_curve_draw_exact only, so run_curve_draw (the controller's)
+  // does not link them.
+  int64_t (*walk)(const Scene& s, const Ctl& c, int64_t t, int dir, int64_t* left);
+  void (*around)(const Scene& s, uint32_t k, int64_t u, int64_t L);
+  void (*vertex)(const Scene& s, const uint32_t f[2], int64_t L);
+};
 
 struct Scene {
   const BezierEdge3* curves;
@@ -163,6 +230,11 @@ struct Scene {
   const Edge3* segments;
   const CurveHit* hits;
   uint32_t n_hits;
+  int32_t halo;
+  const uint32_t* link;  // link_joints()'s
+  int64_t* end_gap;      // per end: how far from it gaps arriving over a joint reach
+  CurveDrawStats* st;
+  ExactFront* front;  // the exact halo's front strand; null: the paper's gap
   Ctl edge(uint32_t k) const { return ctl_of(curves, nc, segments, k); }
   // The first hit on edge k (hits are sorted by curve).
   uint32_t first_hit(uint32_t k) const {
@@ -178,13 +250,73 @@ struct Scene {
   }
 };
 
-// The gap a crossing hit cuts on its own edge, unclipped, with the edge's tangent there.
-Gap hit_gap(const Scene& s, const CurveHit& h, int32_t halo, Dir* a) {
-  *a = tangent_dir(s.edge(h.curve), h.t);
+bool smooth(const Scene& s, uint32_t id);
+
+// One side of a gap from t on edge c: L of arc (walk_arc), or with the exact halo until the
+// edge leaves the front strand's W (walk_exact; *left stays above 0 while it has not).
+int64_t walk_side(const Scene& s, const Ctl& c, int64_t t, int dir, int64_t* left) {
+  return s.front != nullptr ? s.front->walk(s, c, t, dir, left) : walk_arc(c, t, dir, left);
+}
+
+// A gap side that ran past an edge's end with arc `left` to go, entering the next edge at
+// its end e: along the chain across every joint, each edge it enters marked in end_gap (how far
+// from that end it is covered), until the arc runs out, the chain ends or every edge is walked.
+void walk_chain(const Scene& s, uint32_t e, int64_t left) {
+  for (uint32_t hops = 0; hops < s.n && left > 0; ++hops) {
+    const int64_t stop = walk_side(s, s.edge(e / 2), (e & 1) ? kOne : 0, (e & 1) ? -1 : 1, &left);
+    const int64_t cover = (e & 1) ? kOne - stop : stop;
+    if (cover > s.end_gap[e]) s.end_gap[e] = cover;
+    if (s.link[e ^ 1] == kNoLink || !smooth(s, e ^ 1)) return;
+    e = s.link[e ^ 1];
+  }
+}
+
+// True when the arc from t to parameter `end` of c is surely longer than L: the chord between
+// them is (an arc is never shorter than its chord), so a walk of L from t cannot reach `end`.
+bool short_of_end(const Ctl& c, int64_t t, int64_t end, int64_t L) {
+  int64_t x0, y0, x1, y1;
+  point_at(c, static_cast<uint64_t>(t), &x0, &y0);
+  point_at(c, static_cast<uint64_t>(end), &x1, &y1);
+  return length32(x1 - x0, y1 - y0) > L;
+}
+
+// The gap of arc L on each side of [lo, hi] on edge k. With `carry` (the first pass, which
+// only carries), the sides that run past one of k's ends go on along the chain (walk_chain:
+// end_gap) and are counted as carried; a side whose chord to the end is longer than L cannot
+// reach it and is not walked.
+Gap arc_gap(const Scene& s, uint32_t k, int64_t lo, int64_t hi, int64_t L, bool carry) {
+  const Ctl c = s.edge(k);
+  lo = lo < 0 ? 0 : lo;
+  hi = hi > kOne ? kOne : hi;
+  Gap g{lo, hi};
+  for (int side = 0; side < 2; ++side) {
+    const uint32_t end = 2 * k + static_cast<uint32_t>(side);
+    const bool joined = s.link[end] != kNoLink && smooth(s, end);
+    const int64_t from = side ? hi : lo;
+    if (carry && (!joined || short_of_end(c, from, side ? kOne : 0, L))) continue;
+    int64_t left = L;
+    const int64_t to = walk_side(s, c, from, side ? 1 : -1, &left);
+    (side ? g.hi : g.lo) = to;
+    if (carry && left > 0) {
+      ++s.st->carried;
+      walk_chain(s, s.link[end], left);
+    }
+  }
+  return g;
+}
+
+// The gap a crossing hit cuts: W / sin(theta) of arc beyond its parameter bound on each side;
+// with the exact halo, what lies within W of the front edge around the crossing.
+Gap hit_gap(const Scene& s, const CurveHit& h, bool carry) {
+  const Dir a = tangent_dir(s.edge(h.curve), h.t);
   const Dir b = tangent_dir(s.edge(h.other), h.other_t);
-  const int64_t dt = half_gap(*a, b, halo);
   const int64_t t = static_cast<int64_t>(h.t), e = static_cast<int64_t>(h.t_err);
-  return Gap{t - e - dt, t + e + dt};
+  int64_t L = half_arc(a, b, s.halo);
+  if (s.front != nullptr) {
+    s.front->around(s, h.other, static_cast<int64_t>(h.other_t), L);
+    L = kArcHuge;
+  }
+  return arc_gap(s, h.curve, t - e, t + e, L, carry);
 }
 
 bool cuts_gap(const CurveHit& h) { return h.kind == CurveHitKind::kCrossing && h.front < 0; }
@@ -210,8 +342,19 @@ bool end_less(const Scene& s, uint32_t a, uint32_t b) {
   return a < b;
 }
 
-// link[id]: the end joined to end id, or kNoLink. Exactly two ends at one point, leaving it in
-// opposite directions within 45 degrees (|cross| < -dot), make a joint.
+// True when the chain goes on smoothly at end id's vertex (link[id] set): the two ends leave it
+// in opposite directions within 45 degrees (|cross| < -dot), a joint, where gaps carry on.
+bool smooth(const Scene& s, uint32_t id) {
+  int64_t p[3], u[2], v[2];
+  end_of(s, id, p, u);
+  end_of(s, s.link[id], p, v);
+  const int64_t dot = u[0] * v[0] + u[1] * v[1], cr = abs64(u[0] * v[1] - u[1] * v[0]);
+  return dot < 0 && cr < -dot;
+}
+
+// link[id]: the end joined to end id, or kNoLink. Exactly two ends at one 3-D point make a
+// vertex of a chain: a joint where it goes on smoothly (smooth()), else a corner. Returns the
+// number of joints.
 uint32_t link_joints(const Scene& s, uint32_t* order, uint32_t* link) {
   const uint32_t ends = 2 * s.n;
   for (uint32_t i = 0; i < ends; ++i) order[i] = i, link[i] = kNoLink;
@@ -226,15 +369,9 @@ uint32_t link_joints(const Scene& s, uint32_t* order, uint32_t* link) {
       if (pa[0] != pb[0] || pa[1] != pb[1] || pa[2] != pb[2]) break;
     }
     if (j - i == 2) {
-      int64_t p[3], u[2], v[2];
-      end_of(s, order[i], p, u);
-      end_of(s, order[i + 1], p, v);
-      const int64_t dot = u[0] * v[0] + u[1] * v[1], cr = abs64(u[0] * v[1] - u[1] * v[0]);
-      if (dot < 0 && cr < -dot) {
-        link[order[i]] = order[i + 1];
-        link[order[i + 1]] = order[i];
-        ++joints;
-      }
+      link[order[i]] = order[i + 1];
+      link[order[i + 1]] = order[i];
+      if (smooth(s, order[i])) ++joints;
     }
     i = j;
   }
@@ -265,23 +402,26 @@ int side_of_path(const int64_t u[2], const int64_t v[2], const int64_t w[2]) {
   return inside ? 1 : -1;
 }
 
-// The half-gap on the edge of end `e` (its tangent at the joint) against the front chain's two
-// ends f[0], f[1]: the larger of the two, so the gap covers either side's angle.
-int64_t joint_half_gap(const Scene& s, uint32_t e, const uint32_t f[2], int32_t halo) {
-  const Dir a = tangent_dir(s.edge(e / 2), (e & 1) ? kCurveParamOne : 0);
+// The tangent of end e's edge at that end.
+Dir end_dir(const Scene& s, uint32_t e) {
+  return tangent_dir(s.edge(e / 2), (e & 1) ? kCurveParamOne : 0);
+}
+
+// The half-gap's arc on the edge of end `e` (its tangent at the joint) against the front
+// chain's two ends f[0], f[1]: the larger of the two, so the gap covers either side's angle.
+int64_t joint_half_arc(const Scene& s, uint32_t e, const uint32_t f[2]) {
+  const Dir a = end_dir(s, e);
   int64_t most = 0;
   for (int i = 0; i < 2; ++i) {
-    const Dir b = tangent_dir(s.edge(f[i] / 2), (f[i] & 1) ? kCurveParamOne : 0);
-    const int64_t dt = half_gap(a, b, halo);
-    most = dt > most ? dt : most;
+    const int64_t L = half_arc(a, end_dir(s, f[i]), s.halo);
+    most = L > most ? L : most;
   }
   return most;
 }
 
 // Joints j (ends j[0], j[1]) and k at one projected point: when they cross at different
-// depths, the gap on both edges of the joint behind (end_gap, per end, in its edge's parameter).
-void joint_pair(const Scene& s, const uint32_t j[2], const uint32_t k[2], int32_t halo,
-                int64_t* end_gap, CurveDrawStats& st) {
+// depths, the gap on both edges of the joint behind, walked from the joint (walk_chain).
+void joint_pair(const Scene& s, const uint32_t j[2], const uint32_t k[2]) {
   int64_t pj[3], pk[3], uj[2], vj[2], uk[2], vk[2];
   end_of(s, j[0], pj, uj);
   end_of(s, j[1], pj, vj);
@@ -292,19 +432,22 @@ void joint_pair(const Scene& s, const uint32_t j[2], const uint32_t k[2], int32_
   const uint32_t* back = pj[2] < pk[2] ? j : k;                           // larger z is nearer
   const uint32_t* front = pj[2] < pk[2] ? k : j;
   for (int i = 0; i < 2; ++i) {
-    const int64_t dt = joint_half_gap(s, back[i], front, halo);
-    end_gap[back[i]] = dt > end_gap[back[i]] ? dt : end_gap[back[i]];
+    int64_t L = joint_half_arc(s, back[i], front);
+    if (s.front != nullptr) {
+      s.front->vertex(s, front, L);
+      L = kArcHuge;
+    }
+    walk_chain(s, back[i], L);
   }
-  ++st.gaps;
-  ++st.joint_crossings;
+  ++s.st->gaps;
+  ++s.st->joint_crossings;
 }
 
 // Over the ends sorted by (x, y, z) (link_joints' order): the joints at each projected point,
 // taken in pairs.
-void joint_crossings(const Scene& s, const uint32_t* order, const uint32_t* link, int32_t halo,
-                     int64_t* end_gap, CurveDrawStats& st) {
+void joint_crossings(const Scene& s, const uint32_t* order) {
+  const uint32_t* link = s.link;
   const uint32_t ends = 2 * s.n;
-  for (uint32_t i = 0; i < ends; ++i) end_gap[i] = 0;
   for (uint32_t i = 0; i < ends;) {
     int64_t pa[3], pb[3], d[2];
     end_of(s, order[i], pa, d);
@@ -321,7 +464,7 @@ void joint_crossings(const Scene& s, const uint32_t* order, const uint32_t* link
         const uint32_t ey = order[y];
         if (link[ey] == kNoLink || link[ey] < ey) continue;
         const uint32_t jx[2] = {ex, link[ex]}, jy[2] = {ey, link[ey]};
-        joint_pair(s, jx, jy, halo, end_gap, st);
+        joint_pair(s, jx, jy);
       }
     }
     i = j;
@@ -339,7 +482,8 @@ static_assert(kCurvePointBits + 1 + kCoordBits + 1 + 1 < 126, "a side of a pass 
 struct Through {
   uint64_t t = 0;
   int64_t z = 0;      // depth, Q20.42
-  int64_t d[2] = {};  // direction along k there, Q20.42 (below 2^62)
+  int64_t z_err = 0;  // its error bound (0: exact)
+  int64_t d[2] = {};  // direction along k there, Q20.42 or Q.32 (below 2^62)
 };
 bool passes_through(const Scene& s, uint32_t k, const int64_t p[2], CurvePiece* stack,
                     Through* out) {
@@ -383,19 +527,51 @@ int through_front(const Scene& s, const uint32_t j[2], const Through& th) {
   end_of(s, j[0], p, u);
   end_of(s, j[1], p, v);
   const int64_t z = p[2] * (int64_t{1} << kCurveFracBits);
-  if (z == th.z) return 0;
+  if (abs64(z - th.z) <= th.z_err) return 0;
   const Wide su = mul_i64(th.d[0], u[1]) - mul_i64(th.d[1], u[0]);
   const Wide sv = mul_i64(th.d[0], v[1]) - mul_i64(th.d[1], v[0]);
   if (su.is_zero() || sv.is_zero() || su.negative() == sv.negative()) return 0;
   return z < th.z ? -1 : 1;
 }
 
-// The half-gap on edge k at the pass (or, joint = true, on the joint's end e) against the other.
-int64_t through_half_gap(const Scene& s, uint32_t k, uint64_t t, uint32_t e, bool on_joint,
-                         int32_t halo) {
-  const Dir dk = tangent_dir(s.edge(k), t);
-  const Dir de = tangent_dir(s.edge(e / 2), (e & 1) ? kCurveParamOne : 0);
-  return on_joint ? half_gap(de, dk, halo) : half_gap(dk, de, halo);
+// The half-gap's arc on edge k at the pass (or, on_joint, on the joint's end e) against the
+// other.
+int64_t through_half_arc(const Scene& s, uint32_t k, uint64_t t, uint32_t e, bool on_joint) {
+  const Dir dk = tangent_dir(s.edge(k), t), de = end_dir(s, e);
+  return on_joint ? half_arc(de, dk, s.halo) : half_arc(dk, de, s.halo);
+}
+
+// Edge k passes through joint (or corner) j at th (its parameter within t_err), crossing it
+// (through_front() is f, not 0). With `gaps` null (the first pass): counted, the joint's edges
+// walked from it when it is behind, k's gap carried past its ends when k is; else k's gap
+// into `gaps` when k is behind. Returns the gaps stored.
+uint32_t cut_pass(const Scene& s, uint32_t k, const uint32_t j[2], const Through& th, int f,
+                  int64_t t_err, Gap* gaps) {
+  const bool first_pass = gaps == nullptr;
+  if (first_pass) {
+    ++s.st->gaps;
+    ++s.st->joint_crossings;
+  }
+  int64_t most = 0;
+  const int64_t t = static_cast<int64_t>(th.t);
+  for (int m = 0; m < 2; ++m) {
+    int64_t L = through_half_arc(s, k, th.t, j[m], f < 0);
+    if (f < 0 && first_pass && s.front != nullptr) {
+      s.front->around(s, k, t, L);
+      L = kArcHuge;
+    }
+    if (f < 0 && first_pass) walk_chain(s, j[m], L);
+    most = L > most ? L : most;
+  }
+  if (f < 0) return 0;
+  if (s.front != nullptr) {
+    s.front->vertex(s, j, most);
+    most = kArcHuge;
+  }
+  const Gap g = arc_gap(s, k, t - t_err, t + t_err, most, first_pass);
+  if (first_pass) return 0;
+  gaps[0] = g;
+  return 1;
 }
 
 // The first end in `order` (sorted by x, then y, z) whose x is not below x.
@@ -414,11 +590,12 @@ uint32_t first_end_at(const Scene& s, const uint32_t* order, int64_t x) {
 }
 
 // Edges k in [from, to) through the joints of other chains: the joints whose x lies within
-// k's box are found by a binary search in the ends sorted by x. Joints behind: their end_gap.
-// Edges behind: with `gaps` given, their gaps, else counted.
-uint32_t through_joints(const Scene& s, const uint32_t* order, const uint32_t* link, int32_t halo,
-                        uint32_t from, uint32_t to, CurvePiece* stack, int64_t* end_gap, Gap* gaps,
-                        CurveDrawStats& st) {
+// k's box are found by a binary search in the ends sorted by x. With `gaps` null (the first
+// pass): counted, and joints behind walked from (walk_chain), edges behind carried past their
+// ends; else the gaps of edges behind into `gaps`.
+uint32_t through_joints(const Scene& s, const uint32_t* order, uint32_t from, uint32_t to,
+                        CurvePiece* stack, Gap* gaps) {
+  const uint32_t* link = s.link;
   uint32_t n = 0;
   for (uint32_t k = from; k < to; ++k) {
     const Ctl c = s.edge(k);
@@ -435,61 +612,119 @@ uint32_t through_joints(const Scene& s, const uint32_t* order, const uint32_t* l
       if (k == j[0] / 2 || k == j[1] / 2 || !passes_through(s, k, p, stack, &th)) continue;
       const int f = through_front(s, j, th);
       if (f == 0) continue;
-      if (gaps == nullptr) {
-        ++st.gaps;
-        ++st.joint_crossings;
-      }
-      int64_t most = 0;
-      for (int m = 0; m < 2; ++m) {
-        const int64_t dt = through_half_gap(s, k, th.t, j[m], f < 0, halo);
-        if (f < 0 && gaps == nullptr) end_gap[j[m]] = dt > end_gap[j[m]] ? dt : end_gap[j[m]];
-        most = dt > most ? dt : most;
-      }
-      const int64_t t = static_cast<int64_t>(th.t);
-      if (f > 0 && gaps != nullptr) gaps[n++] = Gap{t - most, t + most};
+      n += cut_pass(s, k, j, th, f, 0, gaps == nullptr ? nullptr : gaps + n);
     }
   }
   return n;
 }
 
+// ---- a chain through another's joint, between piece ends ----
+
+// The depth at t (Q0.32) in Q.32 units, de Casteljau as point_at, and a bound on how much it
+// changes over t_err of the parameter (3 times the largest control-point depth difference).
+int64_t depth_at(const Ctl& c, uint64_t t) {
+  int64_t z[4] = {c.z[0] * kOne, c.z[1] * kOne, c.z[2] * kOne, c.z[3] * kOne};
+  if (c.straight) return lerp32(z[0], z[3] - z[0], t);
+  for (int level = 3; level > 0; --level)
+    for (int i = 0; i < level; ++i) z[i] = lerp32(z[i], z[i + 1] - z[i], t);
+  return z[0];
+}
+static_assert(kCoordBits + 2 + kQ + 1 < 62, "a depth bound over a parameter bound fits");
+int64_t depth_slack(const Ctl& c, uint64_t t_err) {
+  int64_t most = 0;
+  for (int i = 0; i < 3; ++i) {
+    const int64_t d = abs64(c.z[i + 1] - c.z[i]);
+    most = d > most ? d : most;
+  }
+  const uint64_t e = t_err < kCurveParamOne ? t_err : kCurveParamOne;
+  return 3 * most * static_cast<int64_t>(e) + 2;  // Q.32 units
+}
+
+// A chain through another's joint (or corner) at a parameter of its own that is not a piece
+// end of its halving: run_curve_cross() reports it as a touch (an end-point meeting) of the
+// edge with an edge of the joint, at that edge's end. Hit i on edge k is such a pass when it is
+// a touch inside k whose other side reaches an end of its edge that is a vertex of two edges
+// other than k, and the same pass was not seen from the vertex's other edge earlier on k. The
+// vertex's ends go to j, the pass (k's parameter, depth with its bound, tangent) to th.
+bool touch_pass(const Scene& s, uint32_t i, uint32_t j[2], Through* th) {
+  const CurveHit& h = s.hits[i];
+  if (h.kind != CurveHitKind::kTouch || h.t <= h.t_err || h.t + h.t_err >= kCurveParamOne)
+    return false;
+  const bool at_start = h.other_t <= h.other_err;
+  if (!at_start && h.other_t + h.other_err < kCurveParamOne) return false;
+  const uint32_t e = 2 * h.other + (at_start ? 0 : 1);
+  if (s.link[e] == kNoLink) return false;
+  j[0] = e < s.link[e] ? e : s.link[e];
+  j[1] = e < s.link[e] ? s.link[e] : e;
+  if (h.curve == j[0] / 2 || h.curve == j[1] / 2) return false;
+  for (uint32_t b = s.first_hit(h.curve); b < i; ++b) {  // seen from the other edge already
+    const CurveHit& g = s.hits[b];
+    const uint64_t d = g.t > h.t ? g.t - h.t : h.t - g.t;
+    if (g.kind == CurveHitKind::kTouch && (g.other == j[0] / 2 || g.other == j[1] / 2) &&
+        g.other != h.other && d <= g.t_err + h.t_err)
+      return false;
+  }
+  const Ctl c = s.edge(h.curve);
+  th->t = h.t;
+  tangent_at(c, h.t, &th->d[0], &th->d[1]);
+  const int64_t shift = int64_t{1} << (kCurveFracBits - kQ);  // Q.32 to Q20.42
+  th->z = depth_at(c, h.t) * shift;
+  const int64_t slack = depth_slack(c, h.t_err);
+  th->z_err = slack < (int64_t{1} << 51) ? slack * shift : int64_t{1} << 61;
+  return true;
+}
+
+// Hit i as a pass through a joint (touch_pass), decided and cut as through_joints() does, unless
+// the pass is at a piece end (passes_through(): through_joints() has it).
+uint32_t touch_gap(const Scene& s, uint32_t i, CurvePiece* stack, Gap* gaps) {
+  uint32_t j[2];
+  Through th, exact;
+  if (!touch_pass(s, i, j, &th)) return 0;
+  int64_t p[3], d[2];
+  end_of(s, j[0], p, d);
+  const uint32_t k = s.hits[i].curve;
+  if (passes_through(s, k, p, stack, &exact)) return 0;
+  const int f = through_front(s, j, th);
+  if (f == 0) return 0;
+  return cut_pass(s, k, j, th, f, static_cast<int64_t>(s.hits[i].t_err), gaps);
+}
+
 // ---- one edge ----
 
-// The gaps on edge k: its own crossings behind, and what its joined neighbours' gaps carry
-// over the joints, the crossings at its joints (end_gap) and its passes through other chains'
-// joints (at most one a joint). Returns the count (at most 3 * most_hits + 2 + edges).
-uint32_t collect_gaps(const Scene& s, uint32_t k, const uint32_t* order, const uint32_t* link,
-                      int64_t* end_gap, CurvePiece* stack, int32_t halo, Gap* gaps,
-                      CurveDrawStats& st) {
-  uint32_t n = through_joints(s, order, link, halo, k, k + 1, stack, end_gap, gaps, st);
-  if (end_gap[2 * k] > 0) gaps[n++] = Gap{0, end_gap[2 * k]};
-  if (end_gap[2 * k + 1] > 0) gaps[n++] = Gap{kOne - end_gap[2 * k + 1], kOne};
-  Dir a;
+// The gaps of the crossings behind on edge k, walked along it. With `gaps` null (the first
+// pass), sides that run past k's ends are carried on along the chain (end_gap) and nothing is
+// stored; else the gaps go into `gaps`, with the undecided crossings and the gaps counted.
+uint32_t hit_gaps(const Scene& s, uint32_t k, CurvePiece* stack, Gap* gaps) {
+  uint32_t n = 0;
   for (uint32_t i = s.first_hit(k); i < s.n_hits && s.hits[i].curve == k; ++i) {
     const CurveHit& h = s.hits[i];
+    if (h.kind == CurveHitKind::kTouch) {
+      n += touch_gap(s, i, stack, gaps == nullptr ? nullptr : gaps + n);
+      continue;
+    }
+    if (gaps == nullptr) {
+      if (cuts_gap(h)) hit_gap(s, h, true);
+      continue;
+    }
     // Each crossing is seen from both edges: count it from one side.
     const bool first_side = h.curve < h.other || (h.curve == h.other && h.t < h.other_t);
-    if (h.kind == CurveHitKind::kCrossing && h.front == 0 && first_side) ++st.undecided;
+    if (h.kind == CurveHitKind::kCrossing && h.front == 0 && first_side) ++s.st->undecided;
     if (!cuts_gap(h)) continue;
-    gaps[n++] = hit_gap(s, h, halo, &a);
-    ++st.gaps;
-  }
-  const Ctl self = s.edge(k);
-  for (uint32_t end = 0; end < 2; ++end) {
-    const uint32_t other = link[2 * k + end];
-    if (other == kNoLink) continue;
-    const uint32_t m = other / 2;
-    const Dir c = tangent_dir(self, end ? kCurveParamOne : 0);
-    for (uint32_t i = s.first_hit(m); i < s.n_hits && s.hits[i].curve == m; ++i) {
-      if (!cuts_gap(s.hits[i])) continue;
-      const Gap g = hit_gap(s, s.hits[i], halo, &a);
-      const int64_t over = (other & 1) ? g.hi - kOne : -g.lo;  // past m's joined end
-      if (over <= 0) continue;
-      const int64_t dt = carried(over, a, c);
-      gaps[n++] = end ? Gap{kOne - dt, kOne} : Gap{0, dt};
-      ++st.carried;
-    }
+    gaps[n++] = hit_gap(s, h, false);
+    ++s.st->gaps;
   }
   return n;
+}
+
+// The gaps on edge k: its own crossings behind, what gaps from along its chain reach over its
+// ends (end_gap: carried gaps, crossings at its joints) and its passes through other chains'
+// joints. Returns the count (at most 3 * most_hits + 2 + edges).
+uint32_t collect_gaps(const Scene& s, uint32_t k, const uint32_t* order, CurvePiece* stack,
+                      Gap* gaps) {
+  uint32_t n = through_joints(s, order, k, k + 1, stack, gaps);
+  if (s.end_gap[2 * k] > 0) gaps[n++] = Gap{0, s.end_gap[2 * k]};
+  if (s.end_gap[2 * k + 1] > 0) gaps[n++] = Gap{kOne - s.end_gap[2 * k + 1], kOne};
+  return n + hit_gaps(s, k, stack, gaps + n);
 }
 
 // The largest second-difference coordinate of a curve's control points (0 for a segment).
@@ -503,6 +738,133 @@ int64_t second_difference(const Ctl& c) {
     most = dy > most ? dy : most;
   }
   return most;
+}
+
+// ---- the exact halo (run_curve_draw_exact) ----
+//
+// The gap removes what lies within W of the front strand, found by walking the edge behind
+// from the crossing in arc steps of W / 4 until a point lies W or more from it, then bisecting
+// that step to 1/64 unit. The front strand is taken around the crossing only (else a curve's
+// own loop would be its own front everywhere): 2 (L + W) of arc each way along the front edge
+// (L = W / sin(theta), its paper half-gap), on over smooth joints into its neighbours, or
+// from a vertex into its two edges; as chords within 1/64 unit (Q.8 points). A point is inside
+// when its squared distance to a chord is below W^2, exactly in Q.8 (below 2^114 in Wide).
+static_assert(2 * (kCoordBits + kFrontQ + 1) + 1 < 126, "a chord's distance test fits Wide");
+
+// The chords' count over all of edge c at 1/64 unit: the chord formula with tol 4/256.
+uint64_t front_root(const Ctl& c) {
+  return c.straight ? 1 : uint64_t{isqrt_u64(static_cast<uint64_t>(48 * second_difference(c)))} + 1;
+}
+
+int64_t to_q8(int64_t v) { return (v + (int64_t{1} << (kQ - kFrontQ - 1))) >> (kQ - kFrontQ); }
+
+// Run r of the front strand: edge k's chords over [a, b] (Q0.32, a <= b).
+void front_run(const Scene& s, int r, uint32_t k, int64_t a, int64_t b) {
+  ExactFront& f = *s.front;
+  const Ctl c = s.edge(k);
+  uint64_t n = (static_cast<uint64_t>(b - a) * front_root(c) + kOne - 1) >> kQ;
+  n = n == 0 ? 1 : (n + 1 > f.cap ? f.cap - 1 : n);
+  int64_t(*p)[2] = f.pts + static_cast<size_t>(r) * f.cap;
+  for (uint64_t j = 0; j <= n; ++j) {
+    int64_t x, y;
+    point_at(c, static_cast<uint64_t>(a) + static_cast<uint64_t>(b - a) * j / n, &x, &y);
+    p[j][0] = to_q8(x);
+    p[j][1] = to_q8(y);
+  }
+  f.len[r] = static_cast<uint32_t>(n + 1);
+}
+
+int64_t front_reach(const Scene& s, int64_t L) {
+  const int64_t w = int64_t{s.halo} << kQ;
+  return L >= kArcHuge / 4 ? kArcHuge : 2 * (L + w);
+}
+
+// Run r: from end e into its edge, R of arc.
+void front_from_end(const Scene& s, int r, uint32_t e, int64_t R) {
+  int64_t left = R;
+  const int64_t stop = walk_arc(s.edge(e / 2), (e & 1) ? kOne : 0, (e & 1) ? -1 : 1, &left);
+  front_run(s, r, e / 2, (e & 1) ? stop : 0, (e & 1) ? kOne : stop);
+}
+
+// The front strand around parameter u of edge k (L: the paper's half-gap there).
+void front_around(const Scene& s, uint32_t k, int64_t u, int64_t L) {
+  const Ctl c = s.edge(k);
+  const int64_t R = front_reach(s, L);
+  s.front->len[1] = s.front->len[2] = 0;
+  int64_t left = R;
+  const int64_t a = walk_arc(c, u, -1, &left);
+  if (left > 0 && s.link[2 * k] != kNoLink && smooth(s, 2 * k))
+    front_from_end(s, 1, s.link[2 * k], left);
+  left = R;
+  const int64_t b = walk_arc(c, u, 1, &left);
+  if (left > 0 && s.link[2 * k + 1] != kNoLink && smooth(s, 2 * k + 1))
+    front_from_end(s, 2, s.link[2 * k + 1], left);
+  front_run(s, 0, k, a, b);
+}
+
+// The front strand at a vertex: its two edges from it.
+void front_from_vertex(const Scene& s, const uint32_t f[2], int64_t L) {
+  const int64_t R = front_reach(s, L);
+  front_from_end(s, 0, f[0], R);
+  front_from_end(s, 1, f[1], R);
+  s.front->len[2] = 0;
+}
+
+// True when (px, py) (Q.8) is closer than W to a chord of the front strand.
+bool near_front(const ExactFront& f, int64_t px, int64_t py) {
+  for (int r = 0; r < kFrontRuns; ++r) {
+    const int64_t(*p)[2] = f.pts + static_cast<size_t>(r) * f.cap;
+    for (uint32_t j = 0; j + 1 < f.len[r]; ++j) {
+      const int64_t ax = p[j][0], ay = p[j][1], dx = p[j + 1][0] - ax, dy = p[j + 1][1] - ay;
+      const int64_t vx = px - ax, vy = py - ay;
+      const int64_t dot = vx * dx + vy * dy, dd = dx * dx + dy * dy;
+      int64_t ex = vx, ey = vy;
+      if (dot > 0 && dot >= dd) {
+        ex = px - p[j + 1][0];
+        ey = py - p[j + 1][1];
+      } else if (dot > 0) {
+        const int64_t cr = vx * dy - vy * dx;
+        if (mul_i64(cr, cr) < mul_u64(static_cast<uint64_t>(f.w2), static_cast<uint64_t>(dd)))
+          return true;
+        continue;
+      }
+      if (ex * ex + ey * ey < f.w2) return true;
+    }
+  }
+  return false;
+}
+
+bool inside_at(const Scene& s, const Ctl& c, int64_t t) {
+  int64_t x, y;
+  point_at(c, static_cast<uint64_t>(t), &x, &y);
+  return near_front(*s.front, to_q8(x), to_q8(y));
+}
+
+// From t (inside) along c in direction dir: steps of W / 4 of arc while inside; the step that
+// leaves is bisected until its chord is below 1/64 unit, and its outer end returned (*left 0).
+// Reaching the edge's end still inside returns it with *left untouched.
+int64_t walk_exact(const Scene& s, const Ctl& c, int64_t t, int dir, int64_t* left) {
+  const int64_t end = dir > 0 ? kOne : 0;
+  while (t != end) {
+    int64_t step = (int64_t{s.halo} << kQ) / 4 + 1;
+    const int64_t q = walk_arc(c, t, dir, &step);
+    if (inside_at(s, c, q)) {
+      t = q;
+      continue;
+    }
+    int64_t a = t, b = q;
+    while (dir * (b - a) > 1) {
+      int64_t ax, ay, bx, by;
+      point_at(c, static_cast<uint64_t>(a), &ax, &ay);
+      point_at(c, static_cast<uint64_t>(b), &bx, &by);
+      if (length32(bx - ax, by - ay) < kArcEndTol) break;
+      const int64_t mid = a + (b - a) / 2;
+      (inside_at(s, c, mid) ? a : b) = mid;
+    }
+    *left = 0;
+    return b;
+  }
+  return end;
 }
 
 // One visible interval: to the interval sink, then as n equal chords (curve_draw.h).
@@ -611,9 +973,12 @@ Status plan_curve_draw(const BezierEdge3* curves, uint32_t n_curves, const Edge3
   return Status::kOk;
 }
 
-Status run_curve_draw(const CurveDrawPlan& plan, const BezierEdge3* curves, const Edge3* segments,
-                      const CurveHit* hits, uint32_t n_hits, void* scratch, size_t scratch_bytes,
-                      SpanSink chords, const CurveIntervalSink* intervals, CurveDrawStats* stats) {
+namespace {
+
+Status draw_run(const CurveDrawPlan& plan, const BezierEdge3* curves, const Edge3* segments,
+                const CurveHit* hits, uint32_t n_hits, void* scratch, size_t scratch_bytes,
+                SpanSink chords, const CurveIntervalSink* intervals, CurveDrawStats* stats,
+                ExactFront* exact) {
   CurveDrawStats st;
   if (buffer_misaligned(scratch)) return Status::kMisalignedBuffer;
   if (n_hits != plan.n_hits) return Status::kBadParameter;  // not the hits the plan checked
@@ -625,21 +990,70 @@ Status run_curve_draw(const CurveDrawPlan& plan, const BezierEdge3* curves, cons
   Gap* gaps;
   carve(carver, n, plan.most_hits, &order, &link, &end_gap, &stack, &gaps);
   if (carver.short_) return Status::kWorkspaceTooSmall;
-  const Scene s{curves, plan.n_curves, n, segments, hits, n_hits};
+  const Scene s{curves,           plan.n_curves, n,       segments, hits, n_hits,
+                plan.params.halo, link,          end_gap, &st,      exact};
   st.joints = link_joints(s, order, link);
-  const int32_t halo = plan.params.halo;
-  if (halo > 0) {
-    joint_crossings(s, order, link, halo, end_gap, st);
-    through_joints(s, order, link, halo, 0, n, stack, end_gap, nullptr, st);
+  for (uint32_t i = 0; i < 2 * n; ++i) end_gap[i] = 0;
+  const bool haloed = plan.params.halo > 0;
+  if (haloed) {  // the first pass: what reaches each edge over its ends
+    joint_crossings(s, order);
+    through_joints(s, order, 0, n, stack, nullptr);
+    for (uint32_t k = 0; k < n; ++k) hit_gaps(s, k, stack, nullptr);
   }
   for (uint32_t k = 0; k < n; ++k) {
-    const uint32_t g =
-        halo > 0 ? collect_gaps(s, k, order, link, end_gap, stack, halo, gaps, st) : 0;
+    const uint32_t g = haloed ? collect_gaps(s, k, order, stack, gaps) : 0;
     const Status r = draw_edge(s, k, gaps, g, plan.params, chords, intervals, st);
     if (!ok(r)) return r;
   }
   if (stats != nullptr) *stats = st;
   return Status::kOk;
+}
+
+}  // namespace
+
+Status run_curve_draw(const CurveDrawPlan& plan, const BezierEdge3* curves, const Edge3* segments,
+                      const CurveHit* hits, uint32_t n_hits, void* scratch, size_t scratch_bytes,
+                      SpanSink chords, const CurveIntervalSink* intervals, CurveDrawStats* stats) {
+  return draw_run(plan, curves, segments, hits, n_hits, scratch, scratch_bytes, chords, intervals,
+                  stats, nullptr);
+}
+
+Status plan_curve_draw_exact(const BezierEdge3* curves, uint32_t n_curves, const Edge3* segments,
+                             uint32_t n_segments, const CurveHit* hits, uint32_t n_hits,
+                             const CurveDrawParams& params, CurveDrawPlan* plan) {
+  const Status st =
+      plan_curve_draw(curves, n_curves, segments, n_segments, hits, n_hits, params, plan);
+  if (!ok(st)) return st;
+  uint64_t most = 1;
+  for (uint32_t k = 0; k < n_curves; ++k) {
+    const uint64_t r = front_root(ctl_of(curves, n_curves, segments, k));
+    most = r > most ? r : most;
+  }
+  plan->front_points = static_cast<uint32_t>(most + 2);
+  plan->scratch_bytes += carve_round(size_t{kFrontRuns} * plan->front_points * 16);
+  return Status::kOk;
+}
+
+Status run_curve_draw_exact(const CurveDrawPlan& plan, const BezierEdge3* curves,
+                            const Edge3* segments, const CurveHit* hits, uint32_t n_hits,
+                            void* scratch, size_t scratch_bytes, SpanSink chords,
+                            const CurveIntervalSink* intervals, CurveDrawStats* stats) {
+  if (plan.front_points == 0) return Status::kBadParameter;  // plan_curve_draw_exact's plan
+  // The front strand at the scratch's end (plan_curve_draw_exact added its bytes).
+  const size_t front_bytes = size_t{kFrontRuns} * plan.front_points * sizeof(int64_t[2]);
+  if (buffer_misaligned(scratch)) return Status::kMisalignedBuffer;
+  if (scratch_bytes < front_bytes) return Status::kWorkspaceTooSmall;
+  const size_t rest = (scratch_bytes - front_bytes) & ~size_t{7};
+  ExactFront front{};
+  front.pts = reinterpret_cast<int64_t(*)[2]>(static_cast<unsigned char*>(scratch) + rest);
+  front.cap = plan.front_points;
+  const int64_t w8 = int64_t{plan.params.halo} << kFrontQ;
+  front.w2 = w8 * w8;
+  front.walk = &walk_exact;
+  front.around = &front_around;
+  front.vertex = &front_from_vertex;
+  return draw_run(plan, curves, segments, hits, n_hits, scratch, rest, chords, intervals, stats,
+                  &front);
 }
 
 }  // namespace haloplot

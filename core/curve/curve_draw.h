@@ -4,26 +4,23 @@
 // interval flattened into chords for the plotter.
 //
 // The gap. At a crossing where edge A (at t) passes behind edge B (at u), the paper's
-// effective half-gap is W / sin(theta) of arc length along A, theta the angle between the
-// tangents A'(t) and B'(u). In A's parameter, at the local speed |A'(t)|, that is
-//     dt = W / (|A'(t)| sin theta) = W |B'(u)| / |cross(A'(t), B'(u))|,
-// the straight DRAW's formula with the tangents for the edge directions. The gap is
-// [t - t_err - dt, t + t_err + dt] (t_err: the crossing's parameter bound), rounded outward.
+// effective half-gap is L = W / sin(theta) of arc length along A, theta the angle between the
+// tangents A'(t) and B'(u): L = W |A'| |B'| / |cross(A', B')|. DRAW walks L of arc along A from
+// t - t_err back and from t + t_err on (t_err: the crossing's parameter bound); the gap lies
+// between the two ends.
 //
-// Arc-length bound (docs/curves.md): the speed changes by at most |A''| <= 6 D per unit of
-// parameter (D: the largest length of a second difference of A's control points, in x, y), so
-// each half of the gap has an arc length within 3 D h^2 of W / sin theta plus the shift that
-// t_err allows (|A'| t_err at most), h the half-gap's parameter width; the tangents' 30-bit
-// rounding adds a relative 2^-26 / sin(theta) (for tangents of at least 1/4 unit per unit of
-// parameter). A half-gap that runs past a joint continues on the next edge
-// (below) with that edge's speed at the joint, each edge adding its own 3 D h^2.
+// The walk (docs/curves.md): steps whose sub-cubic's arc lies between its chord c and control
+// polygon p, counted as (2c + p) / 3 and halved until p - c <= c 2^-14 + 2^-20 units; the last
+// step by bisection to 1/64 unit. Each side's arc is within 2^-14.5 L + 2^-20.6 units a step +
+// 1/64 unit of L, plus the shift t_err allows and the tangents' errors (their parameters' bound
+// and their 30-bit rounding, a relative 2^-26 / sin(theta)).
 //
 // Joints. Where exactly two edge ends meet at the same 3-D point and the chain goes on there
 // (the tangents on either side point the same way within 45 degrees), the edges are one line
-// for the halos: a gap running off one edge's end continues on the other for the arc length
-// left, so a knot's halos do not stop at the joints of its fit. It reaches one joint: a gap
-// longer than the whole next edge stops at that edge's far end. Elsewhere a gap is clipped at
-// the edge's end, as in the straight DRAW.
+// for the halos: a gap side running off one edge's end goes on along the next for the arc left,
+// across as many joints as it takes, so a knot's halos do not stop at the joints of its fit.
+// Elsewhere (a corner, a branch, a chain's end) a gap is clipped at the edge's end, as in the
+// straight DRAW.
 //
 // Crossings at joints. Two chains can cross exactly at a joint of each (a symmetric fit puts
 // a knot's crossings there); run_curve_cross() sees only edge ends meeting, never a crossing.
@@ -73,6 +70,7 @@ struct CurveDrawPlan {
   uint32_t n_hits = 0;
   uint32_t most_hits = 0;  // the most hits on one edge
   size_t scratch_bytes = 0;
+  uint32_t front_points = 0;  // plan_curve_draw_exact(): the front strand's points a run
   CurveDrawParams params;
 };
 
@@ -99,5 +97,17 @@ Status plan_curve_draw(const BezierEdge3* curves, uint32_t n_curves, const Edge3
 Status run_curve_draw(const CurveDrawPlan& plan, const BezierEdge3* curves, const Edge3* segments,
                       const CurveHit* hits, uint32_t n_hits, void* scratch, size_t scratch_bytes,
                       SpanSink chords, const CurveIntervalSink* intervals, CurveDrawStats* stats);
+
+// The exact halo (docs/curves.md, "The exact halo"): as run_curve_draw(), but each gap removes
+// exactly what of the edge behind lies within W of the front strand around the crossing (to
+// 1/64 unit), walked from the crossing, instead of W / sin(theta) of arc. Its plan adds the
+// front strand's scratch. Host only so far (the controller's jobs take the paper's gap).
+Status plan_curve_draw_exact(const BezierEdge3* curves, uint32_t n_curves, const Edge3* segments,
+                             uint32_t n_segments, const CurveHit* hits, uint32_t n_hits,
+                             const CurveDrawParams& params, CurveDrawPlan* plan);
+Status run_curve_draw_exact(const CurveDrawPlan& plan, const BezierEdge3* curves,
+                            const Edge3* segments, const CurveHit* hits, uint32_t n_hits,
+                            void* scratch, size_t scratch_bytes, SpanSink chords,
+                            const CurveIntervalSink* intervals, CurveDrawStats* stats);
 
 }  // namespace haloplot

@@ -417,7 +417,8 @@ Status curve_cross_stage(const JobSpec& steps, const CurveJobScene& sc, uint32_t
 }
 
 // DRAW of the hits at the buffer's front: counting the chords first, so the buffer is checked
-// for them and for the path before one is stored; then the chords to the front and the path.
+// for them and for the path before one is stored; then the chords down to just after the
+// hits, which stay for a re-plot (job_redraw_curves), and the path.
 Status curve_draw_stage(const JobSpec& steps, const CurveJobScene& sc, uint32_t n_hits,
                         uint8_t* base, size_t buffer_bytes, PreparedJob* job, JobCounters* c,
                         size_t* need_bytes) {
@@ -440,23 +441,24 @@ Status curve_draw_stage(const JobSpec& steps, const CurveJobScene& sc, uint32_t 
   JobBytes path;
   size_path_stages(n_chords, &path);
   size_t need = hits_size + draw_size + path.spans;
-  if (path.spans + path.points + path.path > need) need = path.spans + path.points + path.path;
+  if (hits_size + path.spans + path.points + path.path > need)
+    need = hits_size + path.spans + path.points + path.path;
   if (buffer_bytes < need) return short_of(need, need_bytes);
   SpanCollector collect{reinterpret_cast<Segment2*>(scratch + draw_size), n_chords, 0};
   ++c->draw_runs;
   s = run_curve_draw(plan, sc.curves, sc.segments, hits, n_hits, scratch, draw_size,
                      SpanSink{&SpanCollector::emit, &collect}, nullptr, &c->curve_draw);
   if (!ok(s)) return s;
-  // The chords move down to the front (the hits and DRAW's scratch are dead): a forward copy
+  // The chords move down over DRAW's scratch (dead now), after the hits: a forward copy
   // through a local, so overlapping records are read before they are overwritten.
-  Segment2* front = reinterpret_cast<Segment2*>(base);
+  Segment2* front = reinterpret_cast<Segment2*>(scratch);
   for (uint32_t i = 0; i < collect.count; ++i) {
     const Segment2 chord = collect.out[i];
     front[i] = chord;
   }
   collect.out = front;
-  return plan_stage(in_units(steps), base, 0, path.spans, buffer_bytes, collect, LayerCounts{}, job,
-                    c);
+  return plan_stage(in_units(steps), base, hits_size, path.spans, buffer_bytes, collect,
+                    LayerCounts{}, job, c);
 }
 
 }  // namespace
@@ -476,6 +478,26 @@ Status job_prepare_curves(const JobSpec& steps, const CurveJobScene& scene, uint
   PreparedJob job;
   s = curve_cross_stage(steps, scene, hit_capacity, base, buffer_bytes, &n_hits, &c, need_bytes);
   if (ok(s)) s = curve_draw_stage(steps, scene, n_hits, base, buffer_bytes, &job, &c, need_bytes);
+  if (counters) *counters = c;
+  if (!ok(s)) return s;
+  *out = job;
+  return Status::kOk;
+}
+
+Status job_redraw_curves(const JobSpec& steps, const CurveJobScene& scene, uint32_t n_hits,
+                         void* buffer, size_t buffer_bytes, PreparedJob* out,
+                         JobCounters* counters) {
+  if (steps.drawing != DrawingEffect::kHaloed || steps.draw.mode != HaloMode::kPaper ||
+      !units_ok(steps) || steps.layers.n > 1)
+    return Status::kBadParameter;
+  if (buffer_misaligned(buffer)) return Status::kMisalignedBuffer;
+  Status s = validate(steps.machine);
+  if (!ok(s)) return s;
+  JobCounters c;
+  if (counters) c.curve_cross = counters->curve_cross;  // the crossings found by the plot before
+  PreparedJob job;
+  s = curve_draw_stage(steps, scene, n_hits, static_cast<uint8_t*>(buffer), buffer_bytes, &job, &c,
+                       nullptr);
   if (counters) *counters = c;
   if (!ok(s)) return s;
   *out = job;

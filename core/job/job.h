@@ -169,6 +169,13 @@ Status job_prepare_curves(const JobSpec& spec, const CurveJobScene& scene, uint3
                           void* buffer, size_t buffer_bytes, PreparedJob* out,
                           JobCounters* counters, size_t* need_bytes = nullptr);
 
+// A re-plot of a curve job with another halo (steps.draw): job_prepare_curves() left its n_hits
+// hits at the buffer's front, so only DRAW and the path run again (crossings do not depend on
+// the halo). counters (may be null): its curve_cross is kept, the rest are this run's.
+Status job_redraw_curves(const JobSpec& steps, const CurveJobScene& scene, uint32_t n_hits,
+                         void* buffer, size_t buffer_bytes, PreparedJob* out,
+                         JobCounters* counters);
+
 // job_prepare_curves() as a sized stage: needs.crossings is the hit capacity; bytes() is what
 // the crossing search takes (DRAW's and the path's needs come from a run).
 struct CurveJobStage {

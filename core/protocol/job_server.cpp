@@ -315,6 +315,7 @@ Status JobServer::plot_curves(const Edge3* edges, uint8_t* job_mem, size_t job_b
   draw_runs_ += stage.draw_runs;
   if (clock_) prepare_ticks_ = clock_() - t0;
   if (!ok(s)) return s;
+  has_cut_ = true;  // the hits stay at the job buffer's front for a re-plot
   return start_motion();
 }
 
@@ -368,8 +369,19 @@ Status JobServer::replot(const uint8_t* p, uint16_t n) {
   JobSpec next = spec_;
   next.draw = d;
   const uint64_t t0 = clock_ ? clock_() : 0;
-  s = job_redraw(next, n_edges_, crossing_capacity_, arena_ + job_offset(),
-                 arena_bytes_ - job_offset(), &job_, &counters_);
+  if (n_curves_ > 0) {  // DRAW and the path again on the hits the plot left
+    const CurveCrossStats& cc = counters_.curve_cross;
+    s = job_redraw_curves(
+        next,
+        CurveJobScene{reinterpret_cast<const BezierEdge3*>(arena_), n_curves_,
+                      reinterpret_cast<const Edge3*>(arena_ + job_offset() - edge_bytes(scene_)),
+                      n_edges_},
+        2 * (cc.crossings + cc.touches), arena_ + job_offset(), arena_bytes_ - job_offset(), &job_,
+        &counters_);
+  } else {
+    s = job_redraw(next, n_edges_, crossing_capacity_, arena_ + job_offset(),
+                   arena_bytes_ - job_offset(), &job_, &counters_);
+  }
   if (clock_) redraw_ticks_ = clock_() - t0;
   draw_runs_ += counters_.draw_runs;
   if (!ok(s)) return s;

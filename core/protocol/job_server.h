@@ -134,7 +134,7 @@ class JobServer {
   UploadBegin scene_;
   uint32_t received_vertices_ = 0, received_edges_ = 0, received_faces_ = 0, received_curves_ = 0;
   uint32_t n_edges_ = 0, n_curves_ = 0;
-  bool has_cut_ = false;
+  bool has_cut_ = false;  // a curve scene: its hits kept at the job buffer's front
   uint32_t crossing_capacity_ = 0;
 
   JobSpec spec_;

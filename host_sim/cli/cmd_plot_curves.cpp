@@ -28,7 +28,7 @@ int fail(const std::string& message) {
 // The scene's curve drawing, the chords numbered by the file's data lines, in its units. The
 // stages' settings are a job's (job/job.h curve_job_params): `plot` draws what `sim` and the
 // controller plot.
-bool draw_scene(const std::string& path, int32_t halo_steps, HostCurveDraw* d,
+bool draw_scene(const std::string& path, int32_t halo_steps, bool exact, HostCurveDraw* d,
                 int32_t* substep_bits, std::string* error) {
   EdgesWithCurves scene;
   const InputError ie = read_edges_with_curves_file(path, &scene, substep_bits);
@@ -42,7 +42,7 @@ bool draw_scene(const std::string& path, int32_t halo_steps, HostCurveDraw* d,
   CurveCrossParams cp;
   CurveDrawParams p;
   curve_job_params(spec, &cp, &p);
-  const Status s = host_curve_draw(scene.curves, scene.edges, cp, p, d);
+  const Status s = host_curve_draw(scene.curves, scene.edges, cp, p, d, exact);
   if (!ok(s)) {
     *error = path + ": curve drawing failed: " + status_name(s);
     return false;
@@ -89,9 +89,6 @@ std::string refused_option(const Options& o) {
       return std::string(model) +
              " is for models (.obj, .stl, .ply): an .edges file is a scene projected already, "
              "drawn as it is";
-  if (o.has("--exact-halo"))
-    return "--exact-halo is not built for Bézier edges yet: their gaps are the paper's "
-           "W / sin(theta) (docs/curves.md)";
   if (!o.get("--arena").empty())
     return "--arena: a scene with Bézier edges is drawn whole on the host, not in bands";
   if (!o.get("--cut").empty()) return "--cut: a scene with Bézier edges has no CUTSET to write";
@@ -123,7 +120,8 @@ int cmd_plot_curves(const Options& o) {
   HostCurveDraw d;
   int32_t units = 0;
   std::string error;
-  if (!draw_scene(o.positional[0], int32_t(halo), &d, &units, &error)) return fail(error);
+  if (!draw_scene(o.positional[0], int32_t(halo), o.has("--exact-halo"), &d, &units, &error))
+    return fail(error);
   if (wants_plotter_outputs(o)) {
     JobSpec spec;
     spec.drawing = DrawingEffect::kAllEdges;  // the chords, drawn whole
@@ -179,6 +177,17 @@ int cmd_demo_curve(const Options& o) {
   CurveView view;
   view.size = 15200;
   view.margin = 400;
+  // Perspective: the eye D world units from the knot's centre (its largest extent 2^19 units),
+  // outside it; the image fitted within kPerspectiveFitSteps (demo/curve_scenes.h).
+  if (!o.get("--perspective").empty()) {
+    int64_t d = 0;
+    if (name == "helix" || !parse_int(o.get("--perspective"), 262145, 2097152, &d))
+      return fail(name == "helix" ? "--perspective is for the knots (trefoil, torus-P-Q)"
+                                  : "--perspective '" + o.get("--perspective") +
+                                        "' must be an integer in [262145, 2097152] (world "
+                                        "units, the knot 2^19 across: the eye outside it)");
+    view.perspective = double(d);
+  }
   CurveScene scene;
   if (name == "trefoil") {
     scene = trefoil_knot(int(edges), view);
@@ -188,9 +197,11 @@ int cmd_demo_curve(const Options& o) {
     view.tilt = 1.0;  // seen from the side enough for its turns to cross
     scene = helix(4, 1.0, int(edges), true, view);
   }
-  const std::string header = "# haloplot demo: " + name + ", " + std::to_string(edges) +
-                             " cubic Bézier edges (docs/curves.md); x y z in steps, z larger = "
-                             "nearer\n";
+  const std::string header =
+      "# haloplot demo: " + name + ", " + std::to_string(scene.curves.size()) +
+      " cubic Bézier edges (docs/curves.md)" +
+      (view.perspective > 0 ? ", in perspective from " + o.get("--perspective") : std::string()) +
+      "; x y z in steps, z larger = nearer\n";
   const std::string error = write_atomically(o.get("-o"), [&](std::ostream& out) {
     write_edges_with_curves(out, scene.curves, scene.segments, header);
     return true;

@@ -51,8 +51,9 @@ namespace {
 const char* kUsage =
     "usage:\n"
     "  haloplot demo-scene [--cubes N] -o SCENE.edges|MODEL.obj   (.obj: the cubes as solids)\n"
-    "               [--curve trefoil|torus-P-Q|helix [--edges N]]   (a knot or a helix as cubic\n"
-    "               Bézier edges, N of them, for plot's curve path: docs/curves.md)\n"
+    "               [--curve trefoil|torus-P-Q|helix [--edges N] [--perspective D]]   (a knot\n"
+    "               or a helix as cubic Bézier edges, N of them, for plot's curve path; a knot\n"
+    "               seen in perspective from D world units: docs/curves.md)\n"
     "  haloplot random-scene --edges N --length L [--seed S] -o SCENE.edges\n"
     "  haloplot cut SCENE.edges -o SCENE.cut [--lambda X] [--cell G] [--cover exact|bbox]\n"
     "               [--reach R] [--stats]\n"
@@ -307,9 +308,11 @@ void warn_reach(const HostDraw& d, int32_t halo, int32_t reach) {
 const std::set<std::string> kCutValued = {"-o", "--lambda", "--cell", "--cover", "--reach"};
 
 int cmd_demo_scene(int argc, char** argv) {
-  const Options o = parse_options(argc, argv, 2, {"-o", "--cubes", "--curve", "--edges"}, {});
+  const Options o =
+      parse_options(argc, argv, 2, {"-o", "--cubes", "--curve", "--edges", "--perspective"}, {});
   if (!o.error.empty()) return fail(o.error);
-  if (!o.get("--curve").empty() || !o.get("--edges").empty()) return cmd_demo_curve(o);
+  if (!o.get("--curve").empty() || !o.get("--edges").empty() || !o.get("--perspective").empty())
+    return cmd_demo_curve(o);
   if (o.get("-o").empty() || !o.positional.empty())
     return fail(std::string(o.get("-o").empty() ? "demo-scene: missing -o OUTPUT"
                                                 : "demo-scene: takes no input file") +

@@ -6,7 +6,8 @@
 // control points P0, P0 + h/3 f'(t0), P3 - h/3 f'(t1), P3). Neighbouring edges share their
 // end point exactly (it is rounded once), so a knot is a closed chain of edges.
 //
-// Projection: orthographic, by projecting the 3-D control points. A rotation followed by
+// Projection: orthographic by default, by projecting the 3-D control points (perspective: see
+// CurveView::perspective). A rotation followed by
 // dropping the depth axis is affine, and an affine map of a Bézier's control points is the
 // Bézier of the mapped curve, so nothing is approximated beyond the fit itself. x and y are
 // then scaled (one factor, aspect kept) into [margin, size - margin]; depth into the same
@@ -29,7 +30,14 @@ struct CurveView {
   double turn = 0;  // then about the (new) y axis
   int32_t size = 1 << 16;
   int32_t margin = 1 << 10;
+  // Perspective: the eye's distance from the curve's centre, in world units with the rotated
+  // curve's largest extent 2^19 units (as a model's --perspective D); 0 is orthographic. The
+  // perspective image of a cubic is not a cubic: the image of the curve itself is fitted
+  // instead, Hermite step by step, each step halved until it is within kPerspectiveFitSteps of
+  // the image (64 points a step, after scaling to the view), so the edge count can grow.
+  double perspective = 0;
 };
+inline constexpr double kPerspectiveFitSteps = 0.25;
 
 // The trefoil (sin t + 2 sin 2t, cos t - 2 cos 2t, -sin 3t): seen from above, 3 crossings.
 CurveScene trefoil_knot(int edges, const CurveView& view);

@@ -23,7 +23,7 @@ Status collect_interval(void* context, const CurveInterval& i) {
 
 Status host_curve_draw(const std::vector<BezierEdge3>& curves, const std::vector<Edge3>& segments,
                        const CurveCrossParams& cross, const CurveDrawParams& params,
-                       HostCurveDraw* out) {
+                       HostCurveDraw* out, bool exact) {
   *out = HostCurveDraw();
   CurveCrossParams cp = cross;
   cp.segment_pairs = true;
@@ -47,15 +47,16 @@ Status host_curve_draw(const std::vector<BezierEdge3>& curves, const std::vector
   if (!ok(s)) return s;
   t0 = std::chrono::steady_clock::now();
   CurveDrawPlan dplan;
-  s = plan_curve_draw(curves.data(), uint32_t(curves.size()), segments.data(),
-                      uint32_t(segments.size()), out->hits.data(), n, params, &dplan);
+  s = (exact ? plan_curve_draw_exact : plan_curve_draw)(curves.data(), uint32_t(curves.size()),
+                                                        segments.data(), uint32_t(segments.size()),
+                                                        out->hits.data(), n, params, &dplan);
   if (!ok(s)) return s;
   std::vector<uint64_t> dscratch(dplan.scratch_bytes / 8 + 1);
   out->draw_scratch_bytes = dplan.scratch_bytes;
   const CurveIntervalSink intervals{&collect_interval, &out->intervals};
-  s = run_curve_draw(dplan, curves.data(), segments.data(), out->hits.data(), n, dscratch.data(),
-                     dscratch.size() * 8, SpanSink{&collect_chord, &out->chords}, &intervals,
-                     &out->stats);
+  s = (exact ? run_curve_draw_exact : run_curve_draw)(
+      dplan, curves.data(), segments.data(), out->hits.data(), n, dscratch.data(),
+      dscratch.size() * 8, SpanSink{&collect_chord, &out->chords}, &intervals, &out->stats);
   out->draw_ms = ms_since(t0);
   return s;
 }

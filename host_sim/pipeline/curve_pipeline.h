@@ -20,9 +20,10 @@ struct HostCurveDraw {
   double cross_ms = 0, draw_ms = 0;
 };
 
-// `cross`'s segment_pairs is set here (no CUT runs on a scene with curves).
+// `cross`'s segment_pairs is set here (no CUT runs on a scene with curves). `exact`: the exact
+// halo (run_curve_draw_exact).
 Status host_curve_draw(const std::vector<BezierEdge3>& curves, const std::vector<Edge3>& segments,
                        const CurveCrossParams& cross, const CurveDrawParams& params,
-                       HostCurveDraw* out);
+                       HostCurveDraw* out, bool exact = false);
 
 }  // namespace haloplot::host

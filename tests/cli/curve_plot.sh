@@ -29,7 +29,7 @@ expect 'cmp -s t.gcode s.gcode' "sim of the job writes plot's G-code"
 "$tool" plot trefoil.edges --halo 0 -o w.svg --stats 2> w.txt || bad "plot --halo 0"
 expect '[ "$($check count w.svg)" = 1 ] && grep -q "^gaps=0$" w.txt' "halo 0: one stroke, no gap"
 # Refused by name, nothing written.
-for opt in "--exact-halo" "--cell 100" "--arena 65536" "--cut x.cut" "--reach 4" "--view 10,20" \
+for opt in "--cell 100" "--arena 65536" "--cut x.cut" "--reach 4" "--view 10,20" \
   "--substep 3"; do
   # shellcheck disable=SC2086
   if "$tool" plot trefoil.edges --halo 80 $opt -o r.svg 2> r.txt; then
@@ -38,10 +38,28 @@ for opt in "--exact-halo" "--cell 100" "--arena 65536" "--cut x.cut" "--reach 4"
     expect 'grep -q -- "${opt%% *}" r.txt && [ ! -e r.svg ]' "$opt refused by name, no output"
   fi
 done
+# The exact halo on the host: the same 3 gaps, ends within 1/4 step here of the paper's
+# (curve_gap_arcs checks both against their references).
+"$tool" plot trefoil.edges --halo 80 --exact-halo -o e.svg --stats 2> e.txt || bad "--exact-halo"
+expect 'grep -q "^gaps=3$" e.txt && [ "$($check count e.svg)" = 3 ]' "--exact-halo: 3 gaps, 3 strokes"
 printf 'scene trefoil.edges\ndrawing haloed\nhalo 80\nhalo-mode exact\n' > e.job
 expect '! "$tool" sim e.job -o e.trace 2> /dev/null && [ ! -e e.trace ]' "sim refuses the exact halo"
 expect '! "$tool" cut trefoil.edges -o t.cut 2> c.txt && grep -q "straight edges only" c.txt' \
   "cut still refuses bezier records"
+# A knot in perspective: its image fitted as cubics (more edges than the 24 steps), plotted as
+# any curve scene; as a job too. The helix and an eye inside the knot refused.
+"$tool" demo-scene --curve trefoil --perspective 300000 -o persp.edges || bad "--perspective"
+expect '[ "$(grep -c ^bezier persp.edges)" -gt 24 ] && grep -q "in perspective from 300000" persp.edges' \
+  "the perspective trefoil: more than 24 bezier records, the header says so"
+"$tool" plot persp.edges --halo 80 -o p.svg --stats 2> p.txt || bad "plot persp.edges: $(cat p.txt)"
+expect 'grep -q "^crossings=3$" p.txt && grep -q "^gaps=3$" p.txt && [ "$($check count p.svg)" = 3 ]' \
+  "the perspective trefoil: 3 crossings, 3 gaps, 3 strokes"
+printf 'scene persp.edges\ndrawing haloed\nhalo 80\nhalo-mode paper\n' > p.job
+expect '"$tool" sim p.job -o p.trace 2> /dev/null' "sim of the perspective trefoil's job"
+expect '! "$tool" demo-scene --curve helix --perspective 300000 -o x.edges 2> /dev/null && [ ! -e x.edges ]' \
+  "--perspective refused for the helix"
+expect '! "$tool" demo-scene --curve trefoil --perspective 1000 -o x.edges 2> /dev/null && [ ! -e x.edges ]' \
+  "--perspective with the eye inside the knot refused"
 # Other demo curves and bad names.
 "$tool" demo-scene --curve helix -o helix.edges && "$tool" plot helix.edges --halo 40 -o h.svg \
   --stats 2> h.txt || bad "helix"

@@ -7,6 +7,8 @@
 #     to a CRC-32 and a length by a test hook; gzip's trailer gives the host's);
 #   - it is not the trace of the same job with a halo one step wider (sim of that job must
 #     differ: the comparison can fail);
+#   - a re-plot with that wider halo (`send --replot 81`: DRAW and the path again on the
+#     crossings the plot kept, job_redraw_curves) plots sim's trace of the halo-81 job;
 #   - the controller reports the knot's 3 crossings and its 24 edges;
 #   - the image exits 0 with no step underrun.
 # A quarter of a motor step per plot step, as the other QEMU tests run: the same curves and
@@ -35,19 +37,29 @@ fi
 
 qemu_linked 600 "$fw/fw_plotter_qemu.elf"
 start=$SECONDS
-send_job curves.job --trace-digest --test-exit > send.out 2>&1
+send_job curves.job --replot 81 --trace-digest --test-exit > send.out 2>&1
 end_session $?
-if same_digest fw.out "$host"; then
+# The plot's digest, then the re-plot's.
+mapfile -t crcs < <(sed -n 's/^fw trace_crc32=//p' fw.out)
+mapfile -t sizes < <(sed -n 's/^fw trace_bytes=//p' fw.out)
+if [ "${crcs[0]:-} ${sizes[0]:-}" = "$host" ]; then
   ok
   echo "traces identical (CRC-32 and bytes): $host"
 else
-  bad "controller trace ($(grep '^fw trace_' fw.out | tr '\n' ' ')) differs from haloplot sim ($host)"
+  bad "controller trace (${crcs[0]:-} ${sizes[0]:-}) differs from haloplot sim ($host)"
 fi
-if same_digest fw.out "$wider"; then
+if [ "${crcs[0]:-} ${sizes[0]:-}" = "$wider" ]; then
   bad "the controller's trace is also the halo-81 job's"
 else
   ok
   echo "and differs from sim of the job with halo 81 ($wider)"
+fi
+if [ "${crcs[1]:-} ${sizes[1]:-}" = "$wider" ]; then
+  ok
+  echo "the re-plot at halo 81 is sim's trace of the halo-81 job: $wider" \
+    "($(sed -n 's/^fw replot_instructions=//p' fw.out) instructions to re-plan)"
+else
+  bad "the re-plot's trace (${crcs[1]:-} ${sizes[1]:-}) is not sim's of the halo-81 job ($wider)"
 fi
 if grep -q "^plot: .* edges=24 crossings=3 " send.out; then
   ok

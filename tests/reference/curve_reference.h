@@ -117,7 +117,10 @@ inline void ref_pair(const std::vector<RefCurve>& cs, uint32_t i, uint32_t j, in
       if (den == 0) continue;
       const LD al = ((q0.x - p0.x) * ey - (q0.y - p0.y) * ex) / den;
       const LD be = ((q0.x - p0.x) * dy - (q0.y - p0.y) * dx) / den;
-      if (al < -1e-6L || al > 1 + 1e-6L || be < -1e-6L || be > 1 + 1e-6L) continue;
+      // A little past the chords' ends: a chord is off its curve by the curve's flatness, so a
+      // crossing near a chord's end (an edge's end among them) may show on the neighbouring chord
+      // only.
+      if (al < -0.01L || al > 1.01L || be < -0.01L || be > 1.01L) continue;
       LD s = (k + al) / m, u = (l + be) / m;
       if (!newton(a, b, &s, &u)) continue;
       const auto outside = [](LD v) { return v < -1e-9L || v > 1 + 1e-9L; };
