@@ -15,6 +15,6 @@ set(HALOPLOT_BOARD_LINKER ${PROJECT_SOURCE_DIR}/linker/mps2_an385.ld)
 set(HALOPLOT_BOARD_STEP_ISR timer0_irq_handler)
 # The same budgets as the STM32F405 (the AN385 has 4 MB of each, but the gates are there to
 # catch growth, and the same job arena runs the same jobs).
-set(HALOPLOT_BOARD_FLASH_BUDGET 131072)
+set(HALOPLOT_BOARD_FLASH_BUDGET 147456)
 set(HALOPLOT_BOARD_RAM_BUDGET 114688)
 set(HALOPLOT_BOARD_ARENA_KB 96)

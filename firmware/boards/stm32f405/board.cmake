@@ -17,9 +17,10 @@ add_library(haloplot_fw_board STATIC
 set(HALOPLOT_BOARD_LINKER ${PROJECT_SOURCE_DIR}/linker/stm32f405.ld)
 # SysTick is the step clock: its handler is the controller's step interrupt itself.
 set(HALOPLOT_BOARD_STEP_ISR step_timer_irq)
-# Flash: 128 KB of the F405's 1 MB since the controller also plots solids in bands (96 KB
-# before, for Franklin's hidden surfaces and hatching); the gate is there to catch a library or
-# a table creeping in, not to fit the part. RAM: the 128 KB SRAM less the 16 KB stack.
-set(HALOPLOT_BOARD_FLASH_BUDGET 131072)
+# Flash: 144 KB of the F405's 1 MB since the controller walks curve gaps by arc length and
+# re-plots curves, and simplifies strokes (128 KB before, for solids in bands; 96 KB for
+# Franklin's hidden surfaces and hatching); the gate is there to catch a library or a table
+# creeping in, not to fit the part. RAM: the 128 KB SRAM less the 16 KB stack.
+set(HALOPLOT_BOARD_FLASH_BUDGET 147456)
 set(HALOPLOT_BOARD_RAM_BUDGET 114688)
 set(HALOPLOT_BOARD_ARENA_KB 96)
