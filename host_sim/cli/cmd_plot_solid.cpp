@@ -124,6 +124,23 @@ int cmd_plot_solid(const Options& o) {
   if (so.spec.mode != SolidMode::kHiddenDashed && !o.get("--dash").empty())
     return fail("--dash sets the hidden lines' dashes: use it with --mode hidden-dashed (--mode " +
                 o.get("--mode") + " draws no dashes)");
+  // The pen's settings and the clean-up, checked before the hidden lines are worked out.
+  {
+    ExportStyle style;
+    Machine machine;
+    PathClean clean;
+    if (wants_plotter_outputs(o) && !export_style_of(o, &style, &machine, &error))
+      return fail(error);
+    if (!parse_path_clean(o, so.steps_per_mm, &clean, &error)) return fail(error);
+    // A dash shorter than the minimum stroke is dropped whole: every hidden line would vanish.
+    if (so.spec.mode == SolidMode::kHiddenDashed && clean.on && clean.min_stroke > 0 &&
+        uint32_t(so.spec.dash_steps) < clean.min_stroke)
+      return fail(
+          "--dash " + o.get("--dash", "2,1") + ": a dash is shorter than the minimum stroke (" +
+          (o.get("--min-stroke").empty() ? "the pen width, " + o.get("--pen-width", "0.3")
+                                         : o.get("--min-stroke")) +
+          " mm), so every dash would be dropped: lengthen the dashes or lower --min-stroke");
+  }
   if (!o.get("--halo").empty() || o.has("--exact-halo"))
     return fail("--halo belongs to --mode haloed (HALO needs no faces)");
   // Not silently ignored: a solid's bands are a job's (the same strokes in any arena).

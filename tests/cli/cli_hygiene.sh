@@ -156,5 +156,11 @@ if [ "$(id -u)" != 0 ]; then
     plot scene.edges --halo 5 -o ro/x.svg
 fi
 
+# Settings that would drop every dash, or a pen setting out of range, refused before the work.
+refused "a dash is shorter than the minimum stroke" dd.svg plot cubes.obj --mode hidden-dashed \
+  --dash 0.8,0.5 --min-stroke 1 -o dd.svg
+refused "--pen-dwell '0.0004' must be seconds" pd.gcode plot cubes.obj --mode hidden-removed \
+  --gcode pd.gcode --pen-dwell 0.0004
+
 echo "cli_hygiene: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
