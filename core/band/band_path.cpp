@@ -13,24 +13,13 @@ namespace haloplot {
 // The band's pen path, column by column. A band is a strip as wide as the plot and often far
 // less tall, where one greedy nearest-neighbour pass leaves stragglers behind and crosses the
 // whole width again to fetch them. So the strip is cut into columns three times as wide as it
-// is tall, taken left to right in even bands and right to left in odd ones (a serpentine over
-// the plot), and the planner (motion/path_plan.h: greedy, then 2-opt) orders each column's
-// pieces from where the pen is to where it goes next: the column's far side, or after the
-// band's last column the band above. Planning a column at a time also bounds the path's
-// memory by the largest column, not the band. Measured on Figure 4 in 64 KB against the one-band
-// plan's pen-up travel: greedy alone in columns as wide as tall 1.36x; with 2-opt 1.28x; with the
-// exit known 1.22x (one band tall), 1.16x (two), 1.14x (three, the choice, still 20 bands); whole
-// bands (no columns) 1.40x with 11 more bands. A solid's bands are far thinner: 10 x 10
-// hidden-dashed cubes in 64 KB take 24 bands, some 180 steps tall where the cubes are dense, and
-// each band's pen crosses the plot's 20,400 steps, against 375,044 steps of pen-up travel for the
-// whole-model plot. There the serpentine itself is the cost (1.88x; hatched 2.31x, with outlines
-// too 2.43x, tests/cli/band_pen_up.sh), and the column's shape hardly matters: as wide as tall
-// 2.29x, twice 2.03x, four times 1.88x, six 1.85x, ten 1.84x (but Figure 4 worse: 1.17x, 1.19x),
-// whole bands 2.22x. Keying a column by a segment's lower end rather than its middle is worse
-// everywhere. What did help: crossing each band along the drawing's shorter side, a wide
-// solid's page turned a quarter (band_frame.cpp): 10 x 10 hatched cubes in 64 KB, 1.44x of
-// one band's in the page's rows, 1.23x turned, in 10 bands either way; and joining the lines
-// a border cuts (join_at_border): 1.33x in rows, 1.21x turned.
+// is tall (the shape measured best on Figure 4; a solid's thin bands hardly care), taken left to
+// right in even bands and right to left in odd ones (a serpentine over the plot), and the
+// planner (motion/path_plan.h: greedy, then 2-opt) orders each column's pieces from where the
+// pen is to where it goes next: the column's far side, or after the band's last column the band
+// above. Planning a column at a time also bounds the path's memory by the largest column, not
+// the band. The measurements behind these choices (column shapes, 2-opt, the known exit, the
+// page turned a quarter, joins at borders): docs/bands.md, "Pen-up travel in bands".
 int64_t BandConductor::column_of(int64_t x_sum) const {
   const int64_t c = x_sum / 2 / column_side_;  // x >= 0: truncation is floor
   return leftward_ ? -c : c;

@@ -21,10 +21,12 @@ namespace haloplot {
 enum class DrawingEffect : uint8_t {
   kAllEdges,       // every edge whole: no CUT, no DRAW
   kHaloed,         // HALO: CUT, then DRAW with the halo width
-  kHiddenRemoved,  // needs faces: the solid-models issue
-  kHiddenDashed,   // needs faces: the solid-models issue
-  kOutline,        // outline emphasis: the solid-models issue
-  kHatch,          // hatched visible faces: the hidden-surface issue
+  kHiddenRemoved,  // needs faces: a solid job (job_prepare_solid), or its chosen strokes
+  kHiddenDashed,   // needs faces: likewise, the hidden lines dashed (HiddenJob's dash)
+  // Kept for the protocol's numbering: outlines and hatching are options of the two above
+  // (HiddenJob::outline, hatch_spacing); an edge job given either needs faces and is refused.
+  kOutline,
+  kHatch,
 };
 
 // The hidden-line drawings' settings (kHiddenRemoved, kHiddenDashed).

@@ -232,8 +232,8 @@ void start_vc(const Topology& topo, const uint8_t* front, const Incidences& inc,
       const uint32_t start = from_v1 ? e.v1 : e.v0;
       ++(start == v ? starts : ends);
     }
-    if (ends >= 2) ++st.peculiar_a;
-    if (starts >= 2) ++st.peculiar_b;
+    if (ends >= 2) ++st.contours_end_twice;
+    if (starts >= 2) ++st.contours_start_twice;
     if (ends >= 2 || starts >= 2 || h2) vc[v] = kVcUnusable;
   }
 }

@@ -55,7 +55,9 @@ struct FallbackStats {
   uint64_t outline_tests = 0;  // Kira's condition asked by the outline pass
   uint64_t pierces = 0;        // cuts where an edge passes through a face (solid/pierce.h)
   uint64_t pierce_tests = 0;   // exact edge-through-face tests made to find them
-  uint32_t peculiar_a = 0, peculiar_b = 0;
+  // Kira's peculiar vertices: where two or more contour vectors end (type A) or start (type B);
+  // the V.C. table cannot be used there.
+  uint32_t contours_end_twice = 0, contours_start_twice = 0;
   uint32_t grid_cells = 0, cell_faces = 0;
 };
 

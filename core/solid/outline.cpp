@@ -239,8 +239,8 @@ void orient_contours(Ctx& c) {
     ++h;
   }
   for (uint32_t v = 0; v < topo.n_vertices; ++v) {
-    if ((c.ends[v] & 0x0f) >= 2) ++c.st->peculiar_a;
-    if ((c.ends[v] >> 4) >= 2) ++c.st->peculiar_b;
+    if ((c.ends[v] & 0x0f) >= 2) ++c.st->contours_end_twice;
+    if ((c.ends[v] >> 4) >= 2) ++c.st->contours_start_twice;
   }
 }
 

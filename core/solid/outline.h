@@ -35,7 +35,9 @@ struct OutlineStats {
   uint32_t outline_segments = 0;
   uint32_t condition_tests = 0;  // necessary-and-sufficient tests made
   uint32_t one_by_one = 0;       // segments asked individually after a trace failed
-  uint32_t peculiar_a = 0, peculiar_b = 0;
+  // Kira's peculiar vertices: where two or more contour vectors end (type A) or start (type B);
+  // the V.C. table cannot be used there.
+  uint32_t contours_end_twice = 0, contours_start_twice = 0;
 };
 
 struct OutlineSegment {

@@ -62,7 +62,7 @@ void print_solid_stats(const SolidRun& r, const TriangulateStats& tri) {
                  "pierces=%llu\npierce_tests=%llu\n",
                  (unsigned long long)f.pieces, (unsigned long long)f.tests,
                  (unsigned long long)f.face_tests, (unsigned long long)f.vc_saved,
-                 (unsigned long long)f.class_saved, f.peculiar_a, f.peculiar_b,
+                 (unsigned long long)f.class_saved, f.contours_end_twice, f.contours_start_twice,
                  (unsigned long long)f.pierces, (unsigned long long)f.pierce_tests);
   const IntersectionStats& x = r.intersection_stats;
   std::fprintf(stderr,
@@ -110,6 +110,25 @@ bool plotter_job(const Options& o, const SolidOptions& so, const ModeDrawing& d,
   return load_scene(edge_options, o.positional[0], &job->edges, error, &job->spec.substep_bits);
 }
 
+// The pen's settings and the clean-up, checked before the hidden lines are worked out.
+bool pen_settings_fit(const Options& o, const SolidOptions& so, std::string* error) {
+  ExportStyle style;
+  Machine machine;
+  PathClean clean;
+  if (wants_plotter_outputs(o) && !export_style_of(o, &style, &machine, error)) return false;
+  if (!parse_path_clean(o, so.steps_per_mm, &clean, error)) return false;
+  // A dash shorter than the minimum stroke is dropped whole: every hidden line would vanish.
+  if (so.spec.mode == SolidMode::kHiddenDashed && clean.on && clean.min_stroke > 0 &&
+      uint32_t(so.spec.dash_steps) < clean.min_stroke) {
+    *error = "--dash " + o.get("--dash", "2,1") + ": a dash is shorter than the minimum stroke (" +
+             (o.get("--min-stroke").empty() ? "the pen width, " + o.get("--pen-width", "0.3")
+                                            : o.get("--min-stroke")) +
+             " mm), so every dash would be dropped: lengthen the dashes or lower --min-stroke";
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 int cmd_plot_solid(const Options& o) {
@@ -124,23 +143,7 @@ int cmd_plot_solid(const Options& o) {
   if (so.spec.mode != SolidMode::kHiddenDashed && !o.get("--dash").empty())
     return fail("--dash sets the hidden lines' dashes: use it with --mode hidden-dashed (--mode " +
                 o.get("--mode") + " draws no dashes)");
-  // The pen's settings and the clean-up, checked before the hidden lines are worked out.
-  {
-    ExportStyle style;
-    Machine machine;
-    PathClean clean;
-    if (wants_plotter_outputs(o) && !export_style_of(o, &style, &machine, &error))
-      return fail(error);
-    if (!parse_path_clean(o, so.steps_per_mm, &clean, &error)) return fail(error);
-    // A dash shorter than the minimum stroke is dropped whole: every hidden line would vanish.
-    if (so.spec.mode == SolidMode::kHiddenDashed && clean.on && clean.min_stroke > 0 &&
-        uint32_t(so.spec.dash_steps) < clean.min_stroke)
-      return fail(
-          "--dash " + o.get("--dash", "2,1") + ": a dash is shorter than the minimum stroke (" +
-          (o.get("--min-stroke").empty() ? "the pen width, " + o.get("--pen-width", "0.3")
-                                         : o.get("--min-stroke")) +
-          " mm), so every dash would be dropped: lengthen the dashes or lower --min-stroke");
-  }
+  if (!pen_settings_fit(o, so, &error)) return fail(error);
   if (!o.get("--halo").empty() || o.has("--exact-halo"))
     return fail("--halo belongs to --mode haloed (HALO needs no faces)");
   // Not silently ignored: a solid's bands are a job's (the same strokes in any arena).
