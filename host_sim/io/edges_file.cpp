@@ -1,5 +1,6 @@
 #include "io/edges_file.h"
 
+#include <cctype>
 #include <fstream>
 #include <ostream>
 
@@ -27,6 +28,19 @@ std::string parse_coords(const std::vector<std::string>& f, size_t first, size_t
 Edge3 edge_of(const int32_t* v) { return Edge3{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}}; }
 
 // The lines of either kind; curves == nullptr refuses Bézier records.
+// What a file not named .edges was taken for, said with its first refusal: a model without its
+// extension (an STL named `part`) is read as an .edges scene and fails on its first line.
+std::string not_edges_hint(const std::string& name) {
+  const size_t dot = name.rfind('.'), slash = name.rfind('/');
+  std::string ext = dot == std::string::npos || (slash != std::string::npos && dot < slash)
+                        ? ""
+                        : name.substr(dot + 1);
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == "edges") return "";
+  return " (a file not named .edges is read as an .edges scene: give a model its extension, "
+         ".obj, .stl or .ply)";
+}
+
 InputError read_lines(std::istream& in, const std::string& name, EdgesWithCurves* out, bool curves,
                       int32_t* substep_bits) {
   LineReader reader(in);
@@ -52,9 +66,9 @@ InputError read_lines(std::istream& in, const std::string& name, EdgesWithCurves
       continue;
     }
     if (f.size() != 6)
-      return {
-          name, reader.line(),
-          "expected 6 integers (x1 y1 z1 x2 y2 z2), found " + std::to_string(f.size()) + " fields"};
+      return {name, reader.line(),
+              "expected 6 integers (x1 y1 z1 x2 y2 z2), found " + std::to_string(f.size()) +
+                  " fields" + (index == 0 ? not_edges_hint(name) : "")};
     why = parse_coords(f, 0, 6, v);
     if (!why.empty()) return {name, reader.line(), why};
     out->edges.push_back(edge_of(v));

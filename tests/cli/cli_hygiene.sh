@@ -162,5 +162,9 @@ refused "a dash is shorter than the minimum stroke" dd.svg plot cubes.obj --mode
 refused "--pen-dwell '0.0004' must be seconds" pd.gcode plot cubes.obj --mode hidden-removed \
   --gcode pd.gcode --pen-dwell 0.0004
 
+# A model without its extension is read as an .edges scene: the refusal says so.
+printf 'solid part\n  facet normal 0 0 1\n' > part
+refused "a file not named .edges is read as an .edges scene" pp.svg plot part --halo 5 -o pp.svg
+
 echo "cli_hygiene: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
