@@ -4,7 +4,8 @@
 //   hidden-removed  pieces with QI 0 (and the visible parts of contour diagonals)
 //   hidden-dashed   those, plus the hidden parts cut into dashes: `dash` steps drawn, `gap`
 //                   steps skipped, measured along the edge from where its hidden run starts
-//                   (along a contour diagonal, from its middle: diagonal_dashes)
+//                   (half a gap in when it starts at the edge's first corner; along a contour
+//                   diagonal, from its middle: diagonal_dashes)
 // A hidden run is the hidden pieces of an edge that meet end to end: where it is cut inside (a
 // change of QI behind the front faces, a band's border) starts no new pattern, so the dashes
 // depend only on where the run starts on the edge, and a plot in bands (band/solid_band.cpp)
@@ -102,7 +103,11 @@ Status piece_strokes(const Edge3& e, uint32_t edge, PieceKind kind, int64_t t0, 
   const int64_t dash = (int64_t{style.dash} << 32) / len + 1;
   const int64_t period = dash + (int64_t{style.gap} << 32) / len;
   if (kind == PieceKind::kContour) return diagonal_dashes(e, edge, t0, t1, dash, period, emit);
-  for (int64_t t = t0; t < t1; t += period) {
+  // A run that starts at the edge's first corner begins with half a gap: the hidden edges that
+  // leave one corner would otherwise each begin with a whole dash there, drawn as one stroke
+  // twice as long. Where an edge comes out from behind a face the run begins with a dash.
+  const int64_t lead = t0 == 0 ? (period - dash) / 2 : 0;
+  for (int64_t t = t0 + lead; t < t1; t += period) {
     const Status s = emit(make_stroke(e, edge, t, t + dash < t1 ? t + dash : t1));
     if (s != Status::kOk) return s;
   }
