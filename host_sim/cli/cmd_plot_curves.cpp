@@ -4,6 +4,8 @@
 #include <fstream>
 #include <iostream>
 
+#include "cli/command_line.h"
+#include "cli/commands.h"
 #include "cli/page_options.h"
 #include "cli/plot_outputs.h"
 #include "demo/curve_scenes.h"
@@ -19,11 +21,6 @@
 namespace haloplot::host {
 
 namespace {
-
-int fail(const std::string& message) {
-  std::cerr << "haloplot: " << message << "\n";
-  return 1;
-}
 
 // The scene's curve drawing, the chords numbered by the file's data lines, in its units. The
 // stages' settings are a job's (job/job.h curve_job_params): `plot` draws what `sim` and the

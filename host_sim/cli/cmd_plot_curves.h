@@ -1,7 +1,8 @@
 // plot and sim of a scene with Bézier edges (docs/curves.md): the curve stages of the core
 // (curve/curve_cross.h, curve/curve_draw.h) instead of CUT and DRAW; the drawing's chords are
 // then planned as any drawing's strokes. A scene without Bézier records never comes here: the
-// straight-edge path is unchanged.
+// straight-edge path is unchanged. The commands themselves, cmd_plot_curves and cmd_demo_curve,
+// are declared in cli/commands.h.
 #pragma once
 #include <string>
 #include <vector>
@@ -16,13 +17,6 @@ namespace haloplot::host {
 // True when `path` is an .edges file with a line starting with the word 'bezier'; anything else
 // (a model, a file that does not open) is left to the straight path.
 bool edges_file_has_curves(const std::string& path);
-
-// `plot SCENE.edges --halo W ...` of a scene with curves: SVG, --spans, --gcode, --hpgl.
-int cmd_plot_curves(const Options& o);
-
-// `demo-scene --curve trefoil|torus-P-Q|helix [--edges N] -o SCENE.edges`: the demo curve
-// scenes (demo/curve_scenes.h) as an .edges file with 'bezier' records, sized for an A4 page.
-int cmd_demo_curve(const Options& o);
 
 // A job's curve scene for the core's curve job (job/job.h job_prepare_curves), which `sim` and
 // `send` (the controller) run alike: read, with the job's settings checked (haloed, the

@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "cli/command_line.h"
+#include "cli/commands.h"
 #include "cli/options.h"
 #include "cli/page_options.h"
 #include "cli/plot_outputs.h"
@@ -23,11 +25,6 @@
 
 namespace haloplot::host {
 namespace {
-
-int fail(const std::string& message) {
-  std::cerr << "haloplot: " << message << "\n";
-  return 1;
-}
 
 void print_solid_stats(const SolidRun& r, const TriangulateStats& tri) {
   const QiStats& q = r.qi;

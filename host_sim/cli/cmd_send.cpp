@@ -11,6 +11,8 @@
 #include <thread>
 
 #include "cli/cmd_plot_curves.h"
+#include "cli/command_line.h"
+#include "cli/commands.h"
 #include "cli/options.h"
 #include "cli/solid_options.h"
 #include "io/edges_file.h"
@@ -33,7 +35,7 @@ void print_link_stats(std::ostream& out, const LinkStats& st) {
 }
 
 int send_fail(const std::string& m, const JobClient* client = nullptr) {
-  std::cerr << "haloplot: send: " << m << "\n";
+  fail("send: " + m);
   if (client) print_link_stats(std::cerr, client->stats());  // what the link saw, for diagnosis
   return 1;
 }

@@ -4,6 +4,8 @@
 #include <iostream>
 #include <sstream>
 
+#include "cli/command_line.h"
+#include "cli/commands.h"
 #include "cli/options.h"
 #include "io/atomic_file.h"
 #include "io/line_reader.h"
@@ -14,10 +16,7 @@
 namespace haloplot::host {
 namespace {
 
-int view2d_fail(const std::string& m) {
-  std::cerr << "haloplot: view2d: " << m << "\n";
-  return 1;
-}
+int view2d_fail(const std::string& m) { return fail("view2d: " + m); }
 
 const char* config_name(ViewConfig c) {
   switch (c) {
