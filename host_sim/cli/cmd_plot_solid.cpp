@@ -19,6 +19,7 @@
 #include "io/line_reader.h"
 #include "io/spans_file.h"
 #include "pipeline/drawing_modes.h"
+#include "pipeline/host_memory.h"
 #include "pipeline/scene_input.h"
 #include "pipeline/units.h"
 #include "render/svg.h"
@@ -154,6 +155,11 @@ int cmd_plot_solid(const Options& o) {
     const StageProgress stage("reading " + o.positional[0]);
     if (!load_solid_scene(o, o.positional[0], &scene, &tri, &error)) return fail(error);
   }
+  // The file's model (faces, sides, the reader's text) is freed now; give its pages back before
+  // the hidden lines take their own (main.cpp keeps freed memory for reuse, which the stage's
+  // large buffers, fresh pages, never reuse): a 1M-triangle plot's peak is the larger of the
+  // two, not their sum.
+  give_back_freed_memory();
   SolidRun run;
   Status s = Status::kOk;
   {

@@ -15,6 +15,9 @@
 
 namespace haloplot::host {
 
+// Returns the heap's free pages to the system (glibc's malloc_trim; nothing elsewhere).
+void give_back_freed_memory();
+
 // Allocates with calloc and value-initialises nothing: a vector of words from it starts zero
 // without a pass that writes them. A large buffer comes straight from the system's fresh
 // pages, which are zero already; clearing it again cost a whole pass over the 100 MB a big
