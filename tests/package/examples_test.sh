@@ -68,7 +68,7 @@ TOOLCHAIN
   quiet "lib-$abi.log" cmake -S "$src" -B "lib-$abi" -DCMAKE_TOOLCHAIN_FILE="$work/$abi.cmake" \
     -DCMAKE_BUILD_TYPE=MinSizeRel
   quiet "lib-$abi.log" cmake --build "lib-$abi" --target haloplot_core -j2
-  grep -q "FPU gate passed" "lib-$abi.log" || fail "$abi: the core's FPU gate did not run"
+  grep -q "float gate passed" "lib-$abi.log" || fail "$abi: the core's FPU gate did not run"
   quiet "install-$abi.log" cmake --install "lib-$abi" --prefix "$work/prefix-$abi"
   # The example against it.
   quiet "fw-$abi.log" cmake -S "$src/examples/firmware" -B "fw-$abi" \
@@ -83,7 +83,7 @@ TOOLCHAIN
     fail "$abi: the image's float ABI attributes are not the $abi ABI's"
   # No floating-point instruction anywhere in the image (the FPU is never switched on).
   quiet "gate-$abi.log" cmake -DOBJDUMP=arm-none-eabi-objdump -DLIB="$image" \
-    -P "$src/cmake/check_no_fpu.cmake"
+    -P "$src/cmake/check_no_float.cmake"
   # As the QEMU tests run their images (tests/firmware/qemu_common.sh); the timeout is a
   # backstop for a hung emulator only.
   rc=0
