@@ -28,11 +28,11 @@ execute_process(COMMAND ${OBJDUMP} -d ${LIB} OUTPUT_VARIABLE text RESULT_VARIABL
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "${OBJDUMP} -d failed on ${LIB}: ${err}")
 endif()
-if(NOT text MATCHES "\n +[0-9a-f]+:\t")
+if(NOT text MATCHES "\n *[0-9a-f]+:\t")
   message(FATAL_ERROR "no instructions disassembled from ${LIB}: nothing was checked")
 endif()
 # An instruction line is "  addr:<tab>bytes<tab>mnemonic<tab>operands".
-set(line "\n +[0-9a-f]+:\t[0-9a-f ]+\t")
+set(line "\n *[0-9a-f]+:\t[0-9a-f ]+\t")
 if(text MATCHES "file format elf[0-9]*-(little|big)arm")
   set(isa Arm)
   string(REGEX MATCHALL "${line}(v[a-z][a-z0-9.]*|(cdp|ldc|stc|mcr|mrc|mcrr|mrrc)2?l?[a-z]*\tp1[01],)[^\n]*"
