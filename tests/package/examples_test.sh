@@ -8,7 +8,8 @@
 #     the example built against that package; twice: hard-float ABI (-mfloat-abi=hard
 #     -mfpu=fpv4-sp-d16, the FPU left off at reset) and soft float. Each image runs under QEMU
 #     (mps2-an386, a Cortex-M4) and its step trace must equal `haloplot sim` of the example's
-#     job.job byte for byte.
+#     job.job byte for byte. The example's start-up runs no static constructors: the image
+#     must have no .init_array entry, and the motion runner must be in .bss.
 # Usage: examples_test.sh SOURCE_DIR BUILD_DIR HALOPLOT_TOOL
 set -euo pipefail
 src=$1 build=$2 tool=$3
@@ -81,6 +82,14 @@ TOOLCHAIN
   vfp_args=$(arm-none-eabi-readelf -A "$image" | grep -c "Tag_ABI_VFP_args: VFP registers" || true)
   if [ "$abi" = hard ]; then [ "$vfp_args" -gt 0 ]; else [ "$vfp_args" -eq 0 ]; fi ||
     fail "$abi: the image's float ABI attributes are not the $abi ABI's"
+  # Its start-up runs no static constructors: the image must need none. No .init_array entry,
+  # and the motion runner constant-initialised to zero bytes (in .bss, not .data).
+  init_array=$(arm-none-eabi-size -A "$image" | awk '$1 == ".init_array" {print $2}')
+  [ -z "$init_array" ] || [ "$init_array" -eq 0 ] ||
+    fail "$abi: the image has $init_array bytes of .init_array, which its start-up does not run"
+  arm-none-eabi-nm -C "$image" > "$abi.nm"  # (a file: grep -q would break nm's pipe)
+  grep -q " [bB] (anonymous namespace)::motion$" "$abi.nm" ||
+    fail "$abi: the motion runner is not in .bss: $(grep '::motion$' "$abi.nm")"
   # No floating-point instruction anywhere in the image (the FPU is never switched on).
   quiet "gate-$abi.log" cmake -DOBJDUMP=arm-none-eabi-objdump -DLIB="$image" \
     -P "$src/cmake/check_no_float.cmake"
