@@ -9,7 +9,9 @@
 #     (tests/rules/float_gate_plant.sh);
 #   - the image is RV32 (ELF32, RISC-V, the soft-float ABI) and exits 0;
 #   - its haloed spans of 4 x 4 cubes (halo 50) equal `haloplot plot --spans` of the same
-#     scene on the host, line for line, and its crossing count the host's.
+#     scene on the host, line for line, and its crossing count the host's;
+#   - the stack each plotting entry takes on RV32, against docs/porting.md
+#     (tests/firmware/stack_probe.sh).
 # Usage: qemu_riscv_test.sh SOURCE_DIR HALOPLOT_TOOL
 src=$1
 export HALOPLOT_QEMU_MACHINE=virt
@@ -75,4 +77,7 @@ host_crossings=$(sed -n 's/^crossings=//p' scene.stats)
 fw_crossings=$(sed -n 's/^fw crossings=//p' fw.out)
 if [ -n "$fw_crossings" ] && [ "$fw_crossings" = "$host_crossings" ]; then ok; else bad "crossings: RV32 $fw_crossings, host $host_crossings"; fi
 echo "RV32 image: $(riscv64-unknown-elf-size -A "$image" | awk '/^.text/ {print $2}') bytes of text"
+# The stack of every plotting entry on RV32 against docs/porting.md's figures.
+source "$src/tests/firmware/stack_probe.sh"
+if stack_probe "$src" "$work/prefix" "$src/cmake/rv32imac.cmake" RV32 "$work"; then ok; else bad "the RV32 stack"; fi
 finish

@@ -10,6 +10,8 @@
 #     (mps2-an386, a Cortex-M4) and its step trace must equal `haloplot sim` of the example's
 #     job.job byte for byte. The example's start-up runs no static constructors: the image
 #     must have no .init_array entry, and the motion runner must be in .bss.
+#   the stack each plotting entry takes on the M4F (the hard-float library), against
+#     docs/porting.md (tests/firmware/stack_probe.sh).
 # Usage: examples_test.sh SOURCE_DIR BUILD_DIR HALOPLOT_TOOL
 set -euo pipefail
 src=$1 build=$2 tool=$3
@@ -108,4 +110,8 @@ TOOLCHAIN
     "$(sed -n 's/^example step_events=//p' "$abi.out") step events), FPU off," \
     "$(arm-none-eabi-size -A "$image" | awk '/^.text/ {print $2}') bytes of text"
 done
+# The stack of every plotting entry on the M4F (the hard-float library above) against
+# docs/porting.md's figures.
+source "$src/tests/firmware/stack_probe.sh"
+stack_probe "$src" "$work/prefix-hard" "$work/hard.cmake" M4F "$work" || fail "the M4F stack"
 echo "examples: host_plot and the firmware (hard and soft float) pass"

@@ -5,7 +5,8 @@
 # scratch build folder and builds haloplot::core and haloplot::hal. Checks that the library was
 # built for that CPU, that the package holds both targets, that the controller images (firmware/, which need a board) were left out,
 # that the configure names that CPU, and that the build ran the core's float gate, which must
-# refuse the same core with one double function added (__aeabi_dmul: soft float).
+# refuse the same core with one double function added (__aeabi_dmul: soft float); and the stack
+# each plotting entry takes on the M0+, against docs/porting.md (tests/firmware/stack_probe.sh).
 # Usage: own_toolchain_test.sh SOURCE_DIR
 set -euo pipefail
 src=$1
@@ -52,4 +53,7 @@ grep -q "haloplot core target: cortex-m0plus (armv6-m thumb, soft float)" "$work
 # The gate on this soft-float build: the core with one double function added must fail it.
 source "$src/tests/rules/float_gate_plant.sh"
 float_gate_plant "$src" "$work/build" || exit 1
+# The stack of every plotting entry on the M0+ against docs/porting.md's figures.
+source "$src/tests/firmware/stack_probe.sh"
+stack_probe "$src" "$work/prefix" "$work/cortex-m0plus.cmake" M0+ "$work" || exit 1
 echo "own toolchain: libhaloplot_core.a for the Cortex-M0+, $n_objects objects, $(wc -c < "$lib") bytes"

@@ -6,7 +6,9 @@
 #   - for the M33 with soft float: must fail, naming both float ABIs;
 #   - for the M33 with the package's flags: must configure, build and link, for ARMv8-M;
 #   - the M0+ again with HALOPLOT_ACCEPT_ANY_TARGET=ON: configures (the refusal above was the
-#     target check's, and the way past it works).
+#     target check's, and the way past it works);
+#   - the stack each plotting entry takes on the M33, against docs/porting.md
+#     (tests/firmware/stack_probe.sh).
 # Usage: target_check_test.sh SOURCE_DIR
 set -euo pipefail
 src=$1
@@ -59,4 +61,7 @@ arm-none-eabi-readelf -A "$work/m33/image" | grep -q "Tag_CPU_arch: v8-M.mainlin
   fail "the M33 consumer's image is not ARMv8-M"
 echo "M33 consumer configured, built and linked (v8-M.mainline)"
 consumer m0plus-any m0plus -DHALOPLOT_ACCEPT_ANY_TARGET=ON || { cat "$work/m0plus-any.log"; fail "HALOPLOT_ACCEPT_ANY_TARGET"; }
+# The stack of every plotting entry on the M33 against docs/porting.md's figures.
+source "$src/tests/firmware/stack_probe.sh"
+stack_probe "$src" "$work/prefix" "$work/m33.cmake" M33 "$work" || exit 1
 echo "target_check: passed"
