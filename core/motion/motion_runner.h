@@ -62,8 +62,10 @@ class MotionRunner {
 
  public:
   // Constant-initialised, and all zero: a runner in static storage is in .bss, ready with no
-  // constructor run (a start-up that skips .init_array is fine), and nothing is in .data.
-  constexpr MotionRunner() = default;
+  // constructor run (a start-up that skips .init_array is fine), and nothing is in .data. (The
+  // defaulted constructor is constexpr as long as the step HAL's and queue's are; the CTest
+  // static_init holds the runner to it.)
+  MotionRunner() = default;
 
   // Main loop. begin(): the plot of a prepared job (job/job.h job_prepare, or a band feed),
   // resumed after job.resume_after_events if set; the timer starts at once. kBusy while a plot
