@@ -1,6 +1,8 @@
 # Fails the build if the library's symbol table (defined or referenced) names a software
-# floating-point routine, the heap, C++ exceptions or RTTI, or the printf family.
-set(PATTERN "__aeabi_[df](add|sub|rsub|mul|div|cmp|neg|2)|__aeabi_(u?i|u?l)2[df]|malloc|calloc|realloc| free$|_Znw|_Zna|_Zdl|_Zda|__cxa_throw|__cxa_allocate_exception|__gxx_personality|_ZTI|printf")
+# floating-point routine or math function (the list the float gate uses,
+# cmake/float_routines.cmake), the heap, C++ exceptions or RTTI, or the printf family.
+include(${CMAKE_CURRENT_LIST_DIR}/../cmake/float_routines.cmake)
+set(PATTERN "malloc|calloc|realloc| free$|_Znw|_Zna|_Zdl|_Zda|__cxa_throw|__cxa_allocate_exception|__gxx_personality|_ZTI|printf")
 if(NOT LIB AND IMAGE)
   set(LIB ${IMAGE})
 endif()
@@ -11,7 +13,7 @@ endif()
 string(REPLACE "\n" ";" lines "${symbols}")
 set(bad "")
 foreach(line IN LISTS lines)
-  if(line MATCHES "${PATTERN}")
+  if(line MATCHES "${PATTERN}" OR line MATCHES " [A-Za-z] (${HALOPLOT_FLOAT_ROUTINES})$")
     string(APPEND bad "  ${line}\n")
   endif()
 endforeach()

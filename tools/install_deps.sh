@@ -3,12 +3,14 @@
 # Usage: tools/install_deps.sh [demo|test]
 set -euo pipefail
 want_demo=(cmake g++ make rsvg-convert)
-want_test=(cmake g++ make clang++ clang-format ctags valgrind arm-none-eabi-gcc arm-none-eabi-g++ qemu-system-arm)
+want_test=(cmake g++ make clang++ clang-format ctags valgrind arm-none-eabi-gcc arm-none-eabi-g++ qemu-system-arm
+           riscv64-unknown-elf-g++ qemu-system-riscv32)
 declare -A package=(
   [cmake]=cmake [g++]=g++ [make]=make [clang++]=clang [clang-format]=clang-format [ctags]=universal-ctags [valgrind]=valgrind
   [rsvg-convert]=librsvg2-bin
   [arm-none-eabi-gcc]=gcc-arm-none-eabi [arm-none-eabi-g++]=gcc-arm-none-eabi
   [qemu-system-arm]=qemu-system-arm
+  [riscv64-unknown-elf-g++]=gcc-riscv64-unknown-elf [qemu-system-riscv32]=qemu-system-misc
 )
 case "${1:-test}" in
   demo) tools=("${want_demo[@]}") ;;

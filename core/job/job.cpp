@@ -181,8 +181,20 @@ Status draw_stage(const JobSpec& spec, uint32_t n, size_t cutset_size, uint8_t* 
 
 }  // namespace
 
+namespace {
+// A failed call leaves no drawing behind: the PreparedJob of an earlier call, left in place,
+// would be taken for this one's (its points may lie in memory the failed run overwrote).
+// job_redraw keeps the CUTSET it reads, so another halo can still be tried.
+void clear_drawing(PreparedJob* job, bool keep_cutset) {
+  const CutSet cutset = job->cutset;
+  *job = PreparedJob{};
+  if (keep_cutset) job->cutset = cutset;
+}
+}  // namespace
+
 Status job_prepare(const JobSpec& steps, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
                    void* buffer, size_t buffer_bytes, PreparedJob* out, JobCounters* counters) {
+  clear_drawing(out, false);
   JobCounters c;
   if (needs_faces(steps.drawing) || !units_ok(steps) || !layers_ok(steps, n))
     return Status::kBadParameter;
@@ -222,6 +234,7 @@ Status job_prepare(const JobSpec& steps, const Edge3* edges, uint32_t n, uint32_
 
 Status job_redraw(const JobSpec& steps, uint32_t n, uint32_t crossing_capacity, void* buffer,
                   size_t buffer_bytes, PreparedJob* job, JobCounters* counters) {
+  clear_drawing(job, true);
   if (steps.drawing != DrawingEffect::kHaloed || job->cutset.edges == nullptr || !units_ok(steps))
     return Status::kBadParameter;
   if (buffer_misaligned(buffer)) return Status::kMisalignedBuffer;
@@ -325,6 +338,7 @@ Status strokes_to_front(const StrokeCollector& c, uint8_t* base, LayerCounts* la
 Status job_prepare_solid(const JobSpec& steps, const SolidInput& in, uint32_t crossing_capacity,
                          uint32_t incidence_capacity, void* buffer, size_t buffer_bytes,
                          PreparedJob* out, JobCounters* counters, HiddenReport* report) {
+  clear_drawing(out, false);
   if (!hidden_line_drawing(steps.drawing) || !units_ok(steps)) return Status::kBadParameter;
   if (buffer_misaligned(buffer)) return Status::kMisalignedBuffer;
   const JobSpec spec = in_units(steps);
@@ -466,6 +480,7 @@ Status curve_draw_stage(const JobSpec& steps, const CurveJobScene& sc, uint32_t 
 Status job_prepare_curves(const JobSpec& steps, const CurveJobScene& scene, uint32_t hit_capacity,
                           void* buffer, size_t buffer_bytes, PreparedJob* out,
                           JobCounters* counters, size_t* need_bytes) {
+  clear_drawing(out, false);
   JobCounters c;
   if (steps.drawing != DrawingEffect::kHaloed || steps.draw.mode != HaloMode::kPaper ||
       !units_ok(steps) || steps.layers.n > 1)

@@ -113,6 +113,9 @@ BandSpec band_spec(const JobSpec& spec);
 Status job_bytes(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
                  JobBytes* bytes);
 
+// Every job_prepare* call empties *out first: a call that fails leaves an empty PreparedJob
+// (no points, no spans, no CUTSET), never the previous call's. job_redraw keeps the CUTSET it
+// reads and empties the rest.
 Status job_prepare(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
                    void* buffer, size_t buffer_bytes, PreparedJob* out, JobCounters* counters);
 

@@ -37,6 +37,14 @@ struct Machine {
   uint32_t backlash[2] = {0, 0};       // motor steps of slack per motor
 };
 
+// All zero: no machine to run (validate() refuses it), the settings a planner and a step prep
+// hold before their init(), so that one in static storage (a motion runner's) is zero bytes,
+// in .bss, with no constructor to run. Every field is named: one added to Machine or
+// PlotterEffects must be added here too, or its default puts the runner in .data (the CTest
+// static_init checks the runner's bytes are all zero).
+inline constexpr PlotterEffects kUnsetEffects{false, false, false};
+inline constexpr Machine kUnsetMachine{Kinematics{}, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, {0, 0}};
+
 // Check a machine against the limits the step generator can honour. Rejects, with a named
 // status, any speed whose step rate exceeds max_step_rate on some motor, a step rate the
 // timer floor cannot produce, and parameters outside the integer budgets below.

@@ -61,6 +61,10 @@ class MotionRunner {
   static_assert(hal::check_virtual_clock<Hal>(), "the motion runner's step HAL keeps `now`");
 
  public:
+  // Constant-initialised, and all zero: a runner in static storage is in .bss, ready with no
+  // constructor run (a start-up that skips .init_array is fine), and nothing is in .data. (The
+  // defaulted constructor is constexpr as long as the step HAL's and queue's are; the CTest
+  // static_init holds the runner to it.)
   MotionRunner() = default;
 
   // Main loop. begin(): the plot of a prepared job (job/job.h job_prepare, or a band feed),
@@ -73,7 +77,7 @@ class MotionRunner {
   void abort() { abort_ = true; }  // the next service() ends the plot (kAborted)
   void pause();                    // feed hold: brake to rest, lift the pen, stop the timer
   void resume();                   // after a hold at rest, go on
-  bool paused() const { return active_ && prep_.held() && queue_.empty() && timer_idle_; }
+  bool paused() const { return active_ && prep_.held() && queue_.empty() && !timer_armed_; }
 
   // Interrupts. on_timer(): the step clock's (with a long delay's chunks passed over);
   // on_limit(): an end stop's, which stops the timer before anything else.
@@ -81,7 +85,7 @@ class MotionRunner {
   void on_limit(uint8_t motor);
 
   bool running() const { return active_; }
-  bool stepping() const { return active_ && !timer_idle_; }  // the timer will interrupt
+  bool stepping() const { return active_ && timer_armed_; }  // the timer will interrupt
   Status result() const { return result_; }                  // the last plot's end
   uint32_t events() const { return engine_.events(); }
   uint32_t underruns() const { return underruns_; }
@@ -89,6 +93,7 @@ class MotionRunner {
   uint32_t hold_events() const { return hold_events_; }
   bool hold_exact() const { return hold_exact_; }
   // The board's step clock runs k times fast (timer_init's scale): test images under emulation.
+  // 0, the default, is 1.
   void set_time_scale(uint32_t k) { time_scale_ = k; }
   Hal& hal() { return hal_; }
   Queue& queue() { return queue_; }
@@ -103,16 +108,18 @@ class MotionRunner {
 
   // Sized by the planner at compile time; PlotterEffects{} has acceleration on, the most any
   // job asks (without it the planner needs none).
-  alignas(8) uint8_t planner_ws_[MotionPlanner::workspace_bytes(PlotterEffects{})];
+  alignas(8) uint8_t planner_ws_[MotionPlanner::workspace_bytes(PlotterEffects{})] = {};
   MotionPlanner planner_;
   StepPrep prep_;
   Queue queue_;
   Hal hal_;
-  StepEngine<Hal, Queue> engine_{hal_, queue_};
-  volatile bool active_ = false, timer_idle_ = true, abort_ = false;
+  StepEngine<Hal, Queue> engine_;  // unbound until begin() binds it to hal_ and queue_
+  // Every default here is zero (a zero time scale is 1), so the runner's constant initial
+  // state is all zero bytes.
+  volatile bool active_ = false, timer_armed_ = false, abort_ = false;
   volatile uint8_t limit_ = 0;   // motor + 1 whose switch fired
   volatile uint32_t delay_ = 0;  // ticks of the period now running
-  uint32_t underruns_ = 0, time_scale_ = 1;
+  uint32_t underruns_ = 0, time_scale_ = 0;
   bool resuming_ = false, hold_exact_ = false;
   uint32_t hold_events_ = 0;
   Status result_ = Status::kOk;
@@ -138,7 +145,7 @@ MotionPort MotionRunner<Board, Hal, Queue>::port() {
 template <typename Board, typename Hal, typename Queue>
 Status MotionRunner<Board, Hal, Queue>::begin(const JobSpec& spec, const PreparedJob& job) {
   if (active_) return Status::kBusy;
-  Status s = Board::timer_init(spec.machine.tick_hz, time_scale_);
+  Status s = Board::timer_init(spec.machine.tick_hz, time_scale_ == 0 ? 1 : time_scale_);
   if (ok(s)) s = init_planner(&planner_, spec, job, planner_ws_, sizeof planner_ws_);
   if (ok(s)) s = prep_.init(spec.machine, spec.effects);
   if (!ok(s)) return s;
@@ -151,7 +158,7 @@ Status MotionRunner<Board, Hal, Queue>::begin(const JobSpec& spec, const Prepare
   result_ = Status::kOk;
   underruns_ = 0;
   resuming_ = false;
-  timer_idle_ = true;
+  timer_armed_ = false;
   // A resumed plot: its first events made again with no motor moving, then a travel there.
   s = skip_events(planner_, prep_, job.resume_after_events);
   if (!ok(s)) return s;
@@ -205,7 +212,7 @@ void MotionRunner<Board, Hal, Queue>::service() {
   if (abort_) return finish(Status::kAborted);
   const Status s = prep_.fill(planner_, queue_);
   if (!ok(s)) return finish(s);
-  if (!timer_idle_) return;
+  if (timer_armed_) return;
   // The interrupt found the queue empty (or the plot is starting): resume, or end.
   const bool mid_plot = engine_.events() > 0 || hal_.now > 0;
   const uint32_t d = engine_.start();
@@ -216,7 +223,7 @@ void MotionRunner<Board, Hal, Queue>::service() {
   if (mid_plot && !resuming_ && !prep_.held()) ++underruns_;
   resuming_ = false;
   delay_ = d;
-  timer_idle_ = false;
+  timer_armed_ = true;
   Board::timer_start(d);
 }
 
@@ -228,7 +235,7 @@ void MotionRunner<Board, Hal, Queue>::on_timer() {
   const uint32_t d = engine_.tick();
   if (d == 0) {  // the queue is dry: the main loop refills and restarts (or ends the plot)
     Board::timer_stop();
-    timer_idle_ = true;
+    timer_armed_ = false;
     return;
   }
   delay_ = d;
@@ -238,7 +245,7 @@ void MotionRunner<Board, Hal, Queue>::on_timer() {
 template <typename Board, typename Hal, typename Queue>
 void MotionRunner<Board, Hal, Queue>::on_limit(uint8_t motor) {
   Board::timer_stop();  // first: no further step, whatever the main loop is doing
-  timer_idle_ = true;
+  timer_armed_ = false;
   limit_ = uint8_t(motor + 1);
 }
 

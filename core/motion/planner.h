@@ -94,8 +94,8 @@ class MotionPlanner {
   void forward_pass();
   Block& at(uint32_t i) { return ring_[(head_ + i) % capacity_]; }
 
-  Machine m_{};
-  PlotterEffects fx_{};
+  Machine m_ = kUnsetMachine;  // init() sets both; zero until then (machine.h)
+  PlotterEffects fx_ = kUnsetEffects;
   const PathPoint* points_ = nullptr;
   uint32_t n_ = 0, next_point_ = 0;
   int32_t x_ = 0, y_ = 0;       // plot position after the last block made

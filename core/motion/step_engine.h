@@ -24,7 +24,10 @@ class StepEngine {
 
  public:
   // Assignable: a motion runner starts each plot with a fresh engine on the same HAL and queue.
-  StepEngine(Hal& hal, Queue& queue) : hal_(&hal), queue_(&queue) {}
+  constexpr StepEngine(Hal& hal, Queue& queue) : hal_(&hal), queue_(&queue) {}
+  // Unbound and all zero (a motion runner's member in .bss, constant-initialised): assign a
+  // bound engine before start() or tick().
+  constexpr StepEngine() : other_(0), step_{0, 0}, major_(0) {}
 
   // Begin, or resume after the queue ran dry: returns the delay to the first event (0: nothing
   // to do). The time base continues from the last event.
@@ -111,8 +114,8 @@ class StepEngine {
     }
   }
 
-  Hal* hal_;
-  Queue* queue_;
+  Hal* hal_ = nullptr;
+  Queue* queue_ = nullptr;
   bool pending_ = false;
   uint8_t dominant_ = 0, other_ = 1;
   int32_t step_[2] = {1, 1};

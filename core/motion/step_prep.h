@@ -110,8 +110,8 @@ class StepPrep {
   Status takeup_segment(uint8_t motor, StepSegment* out);  // a motor's backlash, from rest
   Status steps_segment(StepSegment* out);                  // the move's next ramp
 
-  Machine m_{};
-  PlotterEffects fx_{};
+  Machine m_ = kUnsetMachine;  // init() sets both; zero until then (machine.h)
+  PlotterEffects fx_ = kUnsetEffects;
   MotionItem item_{};
   bool in_move_ = false, done_ = false, takeup_pending_[2] = {false, false};
   bool first_segment_ = false;

@@ -63,7 +63,7 @@ class Console {
   }
 
  private:
-  char buffer_[1024];
+  char buffer_[1024] = {};  // every member initialised: a static Console needs no constructor
   uint32_t n_ = 0;
 };
 

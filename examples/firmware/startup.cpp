@@ -1,14 +1,16 @@
 // Reset and the vector table for the MPS2 AN386 (a Cortex-M4). Reset copies .data, clears
-// .bss, runs the static constructors and calls main(). The FPU stays off, as it is at reset:
-// nothing here writes CPACR, and nothing in the image may use a floating-point register (a
-// floating-point instruction would fault, which fault_handler reports).
+// .bss and calls main(): a C start-up, which runs no static constructors (.init_array). Every
+// object in static storage here is constant-initialised (haloplot's MotionRunner among them:
+// all zero, in .bss), so none is needed; the CTest `examples` checks that the image has no
+// .init_array and that the runner's trace is haloplot sim's. The FPU stays off, as it is at
+// reset: nothing here writes CPACR, and nothing in the image may use a floating-point register
+// (a floating-point instruction would fault, which fault_handler reports).
 #include <stdint.h>
 
 #include "semihosting.h"
 
 extern "C" {
 extern uint32_t __data_start[], __data_end[], __data_load[], __bss_start[], __bss_end[];
-extern void (*__init_array_start[])(), (*__init_array_end[])();
 int main();
 void timer0_irq_handler();  // main.cpp: the step clock's interrupt
 
@@ -16,7 +18,6 @@ void timer0_irq_handler();  // main.cpp: the step clock's interrupt
   const uint32_t* from = __data_load;
   for (uint32_t* to = __data_start; to < __data_end;) *to++ = *from++;
   for (uint32_t* to = __bss_start; to < __bss_end;) *to++ = 0;
-  for (auto f = __init_array_start; f < __init_array_end; ++f) (*f)();
   main();
   example::semihost_exit(1);
 }

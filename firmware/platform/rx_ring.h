@@ -30,7 +30,7 @@ class RxRing {
   uint32_t overruns() const { return overruns_; }
 
  private:
-  uint8_t bytes_[kBytes];
+  uint8_t bytes_[kBytes] = {};  // every member initialised: constant-initialised, in .bss
   volatile uint32_t head_ = 0, tail_ = 0, overruns_ = 0;
 };
 

@@ -3,11 +3,27 @@
 namespace haloplot::fw {
 namespace {
 
+// The operation in the first argument register, its parameter block in the second, the result
+// back in the first. Arm (M profile): BKPT 0xAB. RISC-V: EBREAK between the two marker
+// instructions the semihosting spec names, all three uncompressed, so the debugger can tell it
+// from a breakpoint.
 int32_t call(uint32_t op, const void* arg) {
+#if defined(__riscv)
+  register uintptr_t a0 __asm__("a0") = op;
+  register const void* a1 __asm__("a1") = arg;
+  __asm__ volatile(
+      ".option push\n.option norvc\n.balign 16\n"
+      "slli zero, zero, 0x1f\nebreak\nsrai zero, zero, 7\n.option pop"
+      : "+r"(a0)
+      : "r"(a1)
+      : "memory");
+  return static_cast<int32_t>(a0);
+#else
   register uint32_t r0 __asm__("r0") = op;
   register const void* r1 __asm__("r1") = arg;
   __asm__ volatile("bkpt 0xAB" : "+r"(r0) : "r"(r1) : "memory");
   return static_cast<int32_t>(r0);
+#endif
 }
 
 constexpr uint32_t kOpen = 0x01, kWrite = 0x05, kExit = 0x18, kExitExtended = 0x20, kElapsed = 0x30,
@@ -19,7 +35,7 @@ int32_t console_handle() {
   static int32_t handle = -1;
   if (handle < 0) {
     static const char name[] = ":tt";
-    const uint32_t args[3] = {reinterpret_cast<uint32_t>(name), 4, 3};
+    const uintptr_t args[3] = {reinterpret_cast<uintptr_t>(name), 4, 3};
     handle = call(kOpen, args);
   }
   return handle;
@@ -29,8 +45,8 @@ constexpr uint32_t kApplicationExit = 0x20026;  // ADP_Stopped_ApplicationExit
 }  // namespace
 
 void semihost_write(const char* text, uint32_t length) {
-  const uint32_t args[3] = {static_cast<uint32_t>(console_handle()),
-                            reinterpret_cast<uint32_t>(text), length};
+  const uintptr_t args[3] = {static_cast<uintptr_t>(console_handle()),
+                             reinterpret_cast<uintptr_t>(text), length};
   call(kWrite, args);
 }
 
@@ -41,7 +57,7 @@ void semihost_print(const char* text) {
 }
 
 void semihost_exit(int status) {
-  const uint32_t args[2] = {kApplicationExit, static_cast<uint32_t>(status)};
+  const uintptr_t args[2] = {kApplicationExit, static_cast<uintptr_t>(status)};
   call(kExitExtended, args);
   call(kExit, reinterpret_cast<const void*>(kApplicationExit));  // older hosts
   for (;;) {

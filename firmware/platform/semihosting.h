@@ -1,6 +1,7 @@
-// ARM semihosting: the debugger (here QEMU with -semihosting-config enable=on) services BKPT
-// 0xAB calls. Used only by test images: console output, the exit status CTest sees
-// (SYS_EXIT_EXTENDED), and elapsed virtual time for instruction counts under -icount.
+// Semihosting: the debugger (here QEMU with -semihosting-config enable=on) services BKPT 0xAB
+// calls on Arm, and the marked EBREAK on RISC-V. Used only by test images: console output, the exit
+// status CTest sees (SYS_EXIT_EXTENDED), and elapsed virtual time for instruction counts under
+// -icount.
 #pragma once
 #include <stdint.h>
 

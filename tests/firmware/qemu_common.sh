@@ -16,18 +16,19 @@ bad() { fail=$((fail + 1)); echo "FAILED: $*" >&2; }
 # board sets HALOPLOT_QEMU_MACHINE (mps2-an385 for boards/mps2_an385). -icount makes virtual
 # time count instructions.
 machine=${HALOPLOT_QEMU_MACHINE:-netduinoplus2}
+# The emulator and the command line: qemu_run.sh (qemu-system-arm for the Cortex-M machines,
+# qemu-system-riscv32 for `virt`; semihosting and -icount on both).
+source "$(dirname "${BASH_SOURCE[0]}")/qemu_run.sh"
+read -r -a emulator <<< "$(qemu_emulator "$machine")"
 # The wall-clock limits here (and the tests' CTest TIMEOUT) are backstops for a hung emulator
 # only, ten times and more what a run takes on a quiet machine: the test command must pass with
 # the machine loaded several times over. Liveness is checked by progress instead: a controller
 # that stops answering fails `send` after 20 unanswered tries of a request (send_job).
-qemu() {
-  timeout 1800 qemu-system-arm -M "$machine" -nographic -monitor none -serial none \
-    -semihosting-config enable=on,target=native -icount shift=0,align=off,sleep=off -kernel "$1"
-}
+qemu() { qemu_run "$machine" "$1"; }
 # The controller image with USART1 on a Unix socket ($work/link.sock), in the background:
 # its semihosting output in $work/fw.out, its pid in qemu_pid. Usage: qemu_linked SECONDS IMAGE
 qemu_linked() {
-  timeout "$1" qemu-system-arm -M "$machine" -nographic -monitor none \
+  timeout "$1" "${emulator[@]}" -nographic -monitor none \
     -chardev socket,id=link,path="$work/link.sock",server=on,wait=off -serial chardev:link \
     -semihosting-config enable=on,target=native -icount shift=0,align=off,sleep=off \
     -kernel "$2" > "$work/fw.out" 2> "$work/qemu.err" &

@@ -8,7 +8,10 @@
 #     the example built against that package; twice: hard-float ABI (-mfloat-abi=hard
 #     -mfpu=fpv4-sp-d16, the FPU left off at reset) and soft float. Each image runs under QEMU
 #     (mps2-an386, a Cortex-M4) and its step trace must equal `haloplot sim` of the example's
-#     job.job byte for byte.
+#     job.job byte for byte. The example's start-up runs no static constructors: the image
+#     must have no .init_array entry, and the motion runner must be in .bss.
+#   the stack each plotting entry takes on the M4F (the hard-float library), against
+#     docs/porting.md (tests/firmware/stack_probe.sh).
 # Usage: examples_test.sh SOURCE_DIR BUILD_DIR HALOPLOT_TOOL
 set -euo pipefail
 src=$1 build=$2 tool=$3
@@ -68,7 +71,7 @@ TOOLCHAIN
   quiet "lib-$abi.log" cmake -S "$src" -B "lib-$abi" -DCMAKE_TOOLCHAIN_FILE="$work/$abi.cmake" \
     -DCMAKE_BUILD_TYPE=MinSizeRel
   quiet "lib-$abi.log" cmake --build "lib-$abi" --target haloplot_core -j2
-  grep -q "FPU gate passed" "lib-$abi.log" || fail "$abi: the core's FPU gate did not run"
+  grep -q "float gate passed" "lib-$abi.log" || fail "$abi: the core's FPU gate did not run"
   quiet "install-$abi.log" cmake --install "lib-$abi" --prefix "$work/prefix-$abi"
   # The example against it.
   quiet "fw-$abi.log" cmake -S "$src/examples/firmware" -B "fw-$abi" \
@@ -81,9 +84,17 @@ TOOLCHAIN
   vfp_args=$(arm-none-eabi-readelf -A "$image" | grep -c "Tag_ABI_VFP_args: VFP registers" || true)
   if [ "$abi" = hard ]; then [ "$vfp_args" -gt 0 ]; else [ "$vfp_args" -eq 0 ]; fi ||
     fail "$abi: the image's float ABI attributes are not the $abi ABI's"
+  # Its start-up runs no static constructors: the image must need none. No .init_array entry,
+  # and the motion runner constant-initialised to zero bytes (in .bss, not .data).
+  init_array=$(arm-none-eabi-size -A "$image" | awk '$1 == ".init_array" {print $2}')
+  [ -z "$init_array" ] || [ "$init_array" -eq 0 ] ||
+    fail "$abi: the image has $init_array bytes of .init_array, which its start-up does not run"
+  arm-none-eabi-nm -C "$image" > "$abi.nm"  # (a file: grep -q would break nm's pipe)
+  grep -q " [bB] (anonymous namespace)::motion$" "$abi.nm" ||
+    fail "$abi: the motion runner is not in .bss: $(grep '::motion$' "$abi.nm")"
   # No floating-point instruction anywhere in the image (the FPU is never switched on).
   quiet "gate-$abi.log" cmake -DOBJDUMP=arm-none-eabi-objdump -DLIB="$image" \
-    -P "$src/cmake/check_no_fpu.cmake"
+    -P "$src/cmake/check_no_float.cmake"
   # As the QEMU tests run their images (tests/firmware/qemu_common.sh); the timeout is a
   # backstop for a hung emulator only.
   rc=0
@@ -99,4 +110,8 @@ TOOLCHAIN
     "$(sed -n 's/^example step_events=//p' "$abi.out") step events), FPU off," \
     "$(arm-none-eabi-size -A "$image" | awk '/^.text/ {print $2}') bytes of text"
 done
+# The stack of every plotting entry on the M4F (the hard-float library above) against
+# docs/porting.md's figures.
+source "$src/tests/firmware/stack_probe.sh"
+stack_probe "$src" "$work/prefix-hard" "$work/hard.cmake" M4F "$work" || fail "the M4F stack"
 echo "examples: host_plot and the firmware (hard and soft float) pass"

@@ -4,7 +4,9 @@
 # ARMv6-M: a CPU none of the project's boards has), configures the repository with it in a
 # scratch build folder and builds haloplot::core and haloplot::hal. Checks that the library was
 # built for that CPU, that the package holds both targets, that the controller images (firmware/, which need a board) were left out,
-# and that the build ran the core's FPU gate.
+# that the configure names that CPU, and that the build ran the core's float gate, which must
+# refuse the same core with one double function added (__aeabi_dmul: soft float); and the stack
+# each plotting entry takes on the M0+, against docs/porting.md (tests/firmware/stack_probe.sh).
 # Usage: own_toolchain_test.sh SOURCE_DIR
 set -euo pipefail
 src=$1
@@ -44,5 +46,14 @@ n_objects=$(grep -c "^File:" <<<"$attrs")
 n_v6m=$(grep -c "Tag_CPU_arch: v6S-M" <<<"$attrs" || true)
 [ "$n_objects" -gt 0 ] && [ "$n_v6m" -eq "$n_objects" ] ||
   { echo "FAILED: $n_v6m of $n_objects objects are ARMv6-M"; exit 1; }
-grep -q "FPU gate passed" "$work/build.log" || { echo "FAILED: the FPU gate did not run"; exit 1; }
+grep -q "float gate passed" "$work/build.log" || { echo "FAILED: the float gate did not run"; exit 1; }
+# The configure names the CPU it builds for, as the package records it.
+grep -q "haloplot core target: cortex-m0plus (armv6-m thumb, soft float)" "$work/configure.log" ||
+  { grep "core target" "$work/configure.log"; echo "FAILED: the configure does not name the M0+"; exit 1; }
+# The gate on this soft-float build: the core with one double function added must fail it.
+source "$src/tests/rules/float_gate_plant.sh"
+float_gate_plant "$src" "$work/build" || exit 1
+# The stack of every plotting entry on the M0+ against docs/porting.md's figures.
+source "$src/tests/firmware/stack_probe.sh"
+stack_probe "$src" "$work/prefix" "$work/cortex-m0plus.cmake" M0+ "$work" || exit 1
 echo "own toolchain: libhaloplot_core.a for the Cortex-M0+, $n_objects objects, $(wc -c < "$lib") bytes"

@@ -1,7 +1,7 @@
 // Reset and the vector table for the STM32F405 (Cortex-M4F): the portable C runtime start,
 // then .ccm zeroed, then main(). The FPU stays off, as it is at reset: the core and the
 // firmware are compiled to use no FPU register, and every image's link is gated on it
-// (cmake/check_no_fpu.cmake), so the step interrupt never stacks FPU state either.
+// (cmake/check_no_float.cmake), so the step interrupt never stacks FPU state either.
 #include <stdint.h>
 
 #include "platform/c_runtime.h"
