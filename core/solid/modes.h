@@ -4,8 +4,9 @@
 //   hidden-removed  pieces with QI 0 (and the visible parts of contour diagonals)
 //   hidden-dashed   those, plus the hidden parts cut into dashes: `dash` steps drawn, `gap`
 //                   steps skipped, measured along the edge from where its hidden run starts
-//                   (half a gap in when it starts at the edge's first corner; along a contour
-//                   diagonal, from its middle: diagonal_dashes)
+//                   (half a gap in when it starts at the first corner of an edge longer than
+//                   a dash and a gap; along a contour diagonal, from its middle:
+//                   diagonal_dashes)
 // A hidden run is the hidden pieces of an edge that meet end to end: where it is cut inside (a
 // change of QI behind the front faces, a band's border) starts no new pattern, so the dashes
 // depend only on where the run starts on the edge, and a plot in bands (band/solid_band.cpp)
@@ -103,10 +104,14 @@ Status piece_strokes(const Edge3& e, uint32_t edge, PieceKind kind, int64_t t0, 
   const int64_t dash = (int64_t{style.dash} << 32) / len + 1;
   const int64_t period = dash + (int64_t{style.gap} << 32) / len;
   if (kind == PieceKind::kContour) return diagonal_dashes(e, edge, t0, t1, dash, period, emit);
-  // A run that starts at the edge's first corner begins with half a gap: the hidden edges that
-  // leave one corner would otherwise each begin with a whole dash there, drawn as one stroke
-  // twice as long. Where an edge comes out from behind a face the run begins with a dash.
-  const int64_t lead = t0 == 0 ? (period - dash) / 2 : 0;
+  // A run that starts at the first corner of an edge longer than a dash and a gap begins with
+  // half a gap: the hidden edges that leave one corner would otherwise each begin with a whole
+  // dash there, drawn as one stroke twice as long. An edge shorter than that (a finely divided
+  // curve) keeps its dash from the corner, or it would be only a dot; where an edge comes out
+  // from behind a face the run begins with a dash. (Both depend on the edge alone, so a band
+  // decides as the whole plot does.)
+  const bool long_edge = len > int64_t{style.dash} + style.gap;
+  const int64_t lead = t0 == 0 && long_edge ? (period - dash) / 2 : 0;
   for (int64_t t = t0 + lead; t < t1; t += period) {
     const Status s = emit(make_stroke(e, edge, t, t + dash < t1 ? t + dash : t1));
     if (s != Status::kOk) return s;
