@@ -477,16 +477,26 @@ Status curve_draw_stage(const JobSpec& steps, const CurveJobScene& sc, uint32_t 
 
 }  // namespace
 
+namespace {
+
+// What both curve entries ask of a job: haloed on paper, one layer, units and a machine that
+// hold, an aligned buffer.
+Status curve_job_fits(const JobSpec& steps, const void* buffer) {
+  if (steps.drawing != DrawingEffect::kHaloed || steps.draw.mode != HaloMode::kPaper ||
+      !units_ok(steps) || steps.layers.n > 1)
+    return Status::kBadParameter;
+  if (buffer_misaligned(buffer)) return Status::kMisalignedBuffer;
+  return validate(steps.machine);
+}
+
+}  // namespace
+
 Status job_prepare_curves(const JobSpec& steps, const CurveJobScene& scene, uint32_t hit_capacity,
                           void* buffer, size_t buffer_bytes, PreparedJob* out,
                           JobCounters* counters, size_t* need_bytes) {
   clear_drawing(out, false);
   JobCounters c;
-  if (steps.drawing != DrawingEffect::kHaloed || steps.draw.mode != HaloMode::kPaper ||
-      !units_ok(steps) || steps.layers.n > 1)
-    return Status::kBadParameter;
-  if (buffer_misaligned(buffer)) return Status::kMisalignedBuffer;
-  Status s = validate(steps.machine);
+  Status s = curve_job_fits(steps, buffer);
   if (!ok(s)) return s;
   uint8_t* base = static_cast<uint8_t*>(buffer);
   uint32_t n_hits = 0;
@@ -502,11 +512,7 @@ Status job_prepare_curves(const JobSpec& steps, const CurveJobScene& scene, uint
 Status job_redraw_curves(const JobSpec& steps, const CurveJobScene& scene, uint32_t n_hits,
                          void* buffer, size_t buffer_bytes, PreparedJob* out,
                          JobCounters* counters) {
-  if (steps.drawing != DrawingEffect::kHaloed || steps.draw.mode != HaloMode::kPaper ||
-      !units_ok(steps) || steps.layers.n > 1)
-    return Status::kBadParameter;
-  if (buffer_misaligned(buffer)) return Status::kMisalignedBuffer;
-  Status s = validate(steps.machine);
+  Status s = curve_job_fits(steps, buffer);
   if (!ok(s)) return s;
   JobCounters c;
   if (counters) c.curve_cross = counters->curve_cross;  // the crossings found by the plot before
