@@ -14,15 +14,9 @@
 #include <stdint.h>
 
 #include "haloplot/geometry/contract.h"
+#include "haloplot/geometry/triangle.h"
 
 namespace haloplot {
-
-inline constexpr uint32_t kNoFace = 0xffffffffu;
-
-struct Triangle {
-  uint32_t v[3];
-  uint32_t polygon;  // the input face it came from; sides shared inside one polygon are diagonals
-};
 
 struct SolidInput {
   const Point3* vertices = nullptr;  // projected, in range

@@ -15,7 +15,7 @@
 #include <stdint.h>
 
 #include "haloplot/geometry/contract.h"
-#include "haloplot/solid/mesh.h"
+#include "haloplot/geometry/triangle.h"
 #include "haloplot/status/status.h"
 #include "haloplot/view/projection.h"
 

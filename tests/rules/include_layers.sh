@@ -21,7 +21,6 @@ fi
 known=(
   "core/motion/motion_runner.h job"       # the runner's job server glue: to a layer above job
   "core/motion/motion_runner.h protocol"
-  "core/view/facing.h solid"              # the mesh types view needs: to move below both
   "host_sim/pipeline/scene_input.cpp cli" # the command line's Options in the pipeline
   "host_sim/pipeline/scene_input.h cli"
   "host_sim/export/page.h cli"
