@@ -19,8 +19,8 @@ if [ "${2:-}" = plant ]; then
   src="$copy"
 fi
 known=(
-  "core/motion/motion_runner.h job"       # the runner's job server glue: to a layer above job
-  "core/motion/motion_runner.h protocol"
+  "core/include/haloplot/motion/motion_runner.h job"       # the runner's job server glue: to a layer above job
+  "core/include/haloplot/motion/motion_runner.h protocol"
   "host_sim/pipeline/scene_input.cpp cli" # the command line's Options in the pipeline
   "host_sim/pipeline/scene_input.h cli"
   "host_sim/export/page.h cli"
@@ -51,7 +51,8 @@ while IFS= read -r f; do
   folder=$(basename "$(dirname "$f")")
   own=$(rank "$folder")
   [ -n "$own" ] || continue
-  for t in $(grep -oE '#include "haloplot/[a-z0-9_]+/' "$f" | sed -E 's|.*haloplot/||; s|/$||' | sort -u); do
+  # Public headers are included as "haloplot/<folder>/...", internal ones as "<folder>/...".
+  for t in $(grep -oE '#include "(haloplot/)?[a-z0-9_]+/' "$f" | sed -E 's|.*"(haloplot/)?||; s|/$||' | sort -u); do
     [ "$t" = "$folder" ] && continue
     r=$(rank "$t")
     check "$f" "$t" "$([ -n "$r" ] && [ "$r" -lt "$own" ] && echo 1 || echo 0)"
