@@ -4,7 +4,7 @@
 // symbols.
 #include <haloplot/cut/cut.h>
 #include <haloplot/memory/sized_stage.h>
-#include <haloplot/motion/motion_runner.h>
+#include <haloplot/controller/motion_runner.h>
 #include <haloplot/scene/cube_array.h>
 
 using namespace haloplot;

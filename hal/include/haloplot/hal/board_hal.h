@@ -1,5 +1,5 @@
 // What a board gives the portable controller (firmware/app: the job server's main loop and the
-// motion runner, core/include/haloplot/motion/motion_runner.h): one type of static functions per
+// motion runner, core/include/haloplot/controller/motion_runner.h): one type of static functions per
 // board, one group per capability, each checked here at compile time with a message naming what is
 // missing.
 //
@@ -25,7 +25,7 @@ namespace haloplot::hal {
 
 HALOPLOT_HAL_MEMBER(HasBoardInit, H::init())
 
-// What the motion runner (core/include/haloplot/motion/motion_runner.h) calls: the stepper drivers,
+// What the motion runner (core/include/haloplot/controller/motion_runner.h) calls: the stepper drivers,
 // the pen and the step clock. The rest of a board is the main loop's, the integrator's to call.
 template <typename B>
 constexpr bool check_motion_board() {
