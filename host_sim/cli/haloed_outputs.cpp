@@ -7,6 +7,7 @@
 #include "cli/command_line.h"
 #include "cli/page_options.h"
 #include "cli/plot_outputs.h"
+#include "haloplot/memory/carve.h"
 #include "io/atomic_file.h"
 #include "io/line_reader.h"
 #include "io/spans_file.h"
@@ -40,8 +41,8 @@ void print_cut_stats(const HostCut& c) {
                (unsigned long long)c.stats.near_misses, grid_text(c.plan).c_str(), c.plan.grid.cell,
                c.stats.cell_pairs, (unsigned long long)c.stats.pairs_tested,
                (unsigned long long)c.stats.rejected, (unsigned long long)c.stats.equal_depth,
-               c.cut_ms, c.retries, c.scratch_bytes,
-               cutset_bytes(c.set.n_edges, c.set.n_crossings));
+               c.cut_ms, c.retries, carve_round(c.scratch_bytes),
+               carve_round(cutset_bytes(c.set.n_edges, c.set.n_crossings)));
 }
 
 void print_draw_stats(const HostDraw& d) {
