@@ -138,8 +138,8 @@ Status job_crossings(const JobSpec& steps, const Edge3* edges, uint32_t n, void*
   *capacity = 0;
   if (needs_faces(steps.drawing) || !units_ok(steps) || !layers_ok(steps, n))
     return Status::kBadParameter;
-  if (steps.drawing != DrawingEffect::kHaloed) return Status::kOk;
   if (buffer_misaligned(buffer)) return Status::kMisalignedBuffer;
+  if (steps.drawing != DrawingEffect::kHaloed) return Status::kOk;
   const JobSpec spec = in_units(steps);
   CutPlan plan;
   Status s = plan_cut(edges, n, spec.cut, &plan);
@@ -459,7 +459,8 @@ Status job_solid_bytes(const JobSpec& steps, const SolidInput& in, void* buffer,
   const size_t strokes = carve_round(size_t{collect.count} * sizeof(Segment2));
   JobBytes path;
   size_path_stages(collect.count, &path);
-  const size_t run = size_t(collect.tail - base) + size_t{collect.count} * (sizeof(Segment2) + 1);
+  const size_t below = collect.tail != nullptr ? size_t(collect.tail - base) : 0;  // no sink call
+  const size_t run = below + size_t{collect.count} * (sizeof(Segment2) + 1);
   const size_t move = 2 * strokes + collect.count;
   const size_t plan = strokes + path.points + path.path;
   n.bytes = run > move ? run : move;

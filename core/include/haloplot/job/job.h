@@ -115,7 +115,8 @@ Status job_bytes(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t c
 
 // The crossing capacity job_prepare() needs for these edges, exactly: a counting pass of CUT
 // (it stores no record) in `buffer`, which takes what job_bytes() says for a capacity of 0.
-// An edge job without CUT (kAllEdges) needs none: 0, and the buffer is not touched.
+// An edge job without CUT (kAllEdges) needs none: 0, and the buffer is not touched (a
+// misaligned one is still kMisalignedBuffer, as for every entry).
 Status job_crossings(const JobSpec& spec, const Edge3* edges, uint32_t n, void* buffer,
                      size_t buffer_bytes, uint32_t* capacity);
 
