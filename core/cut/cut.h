@@ -13,6 +13,7 @@
 
 #include "haloplot/cut/cutset.h"
 #include "haloplot/cut/grid.h"
+#include "haloplot/memory/parts.h"
 #include "haloplot/memory/sized_stage.h"
 #include "haloplot/status/status.h"
 
@@ -39,6 +40,9 @@ struct CutParams {
   // band one row high would otherwise store every crossing of the faces that meet it.
   bool rows = false;
   int32_t row_lo = 0, row_hi = 0;
+  // A runner for the cell loop's and the grouping's parts (memory/parts.h): the CUTSET is the
+  // same with or without one. Progress is then reported by one part, from its thread.
+  Parts parts;
   ProgressFn progress = nullptr;
   void* progress_context = nullptr;
   PhaseFn phase = nullptr;  // optional
