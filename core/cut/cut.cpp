@@ -193,9 +193,20 @@ void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_st
 // host has, few enough that the parts' bookkeeping stays small on a stack.
 constexpr uint32_t kMaxParts = 16;
 
-uint32_t part_count(const CutParams& p) {
-  const uint32_t n = p.parts.split();
-  return n > kMaxParts ? kMaxParts : n;
+// Fewer parts where each would get less than Parts::min_work (pair tests in the cell loop, 16
+// a record in the sorting).
+uint32_t part_count(const CutParams& p, uint64_t work) {
+  uint32_t n = p.parts.split();
+  if (n > kMaxParts) n = kMaxParts;
+  const uint64_t worth = p.parts.min_work == 0 ? n : work / p.parts.min_work;
+  if (worth < n) n = worth < 1 ? 1 : uint32_t(worth);
+  return n;
+}
+
+// The cell loop's work: the pairs each cell tests, and the cell itself.
+uint64_t cell_work(const uint32_t* cell_start, uint32_t c) {
+  const uint64_t k = cell_start[c + 1] - cell_start[c];
+  return k * (k - 1) / 2 + k + 1;
 }
 
 void add_stats(const CutStats& a, CutStats* sum) {
@@ -230,29 +241,24 @@ struct CellParts {
     CellParts* self = static_cast<CellParts*>(arg);
     self->test(j, self->rec[j], self->st[j]);
   }
-  // Cuts [0, cells) where the running sum of each cell's pair work reaches j / n of the whole.
-  void split(uint32_t cells) {
-    uint64_t total = 0;
-    for (uint32_t c = 0; c < cells; ++c) total += work(c);
+  // Cuts [0, cells) where the running sum of each cell's pair work reaches j / n of `total`.
+  void split(uint32_t cells, uint64_t total) {
     uint32_t j = 1;
     uint64_t acc = 0;
     for (uint32_t c = 0; c < cells && j < n; ++c) {
       while (j < n && acc >= total / n * j) begin[j++] = c;
-      acc += work(c);
+      acc += cell_work(cell_start, c);
     }
     while (j <= n) begin[j++] = cells;
-  }
-  uint64_t work(uint32_t c) const {
-    const uint64_t k = cell_start[c + 1] - cell_start[c];
-    return k * (k - 1) / 2 + k + 1;
   }
 };
 
 template <typename Entry>
 void test_in_parts(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_start,
-                   const Entry* list, uint32_t n_parts, Recorder& rec, CutStats& st) {
+                   const Entry* list, uint32_t n_parts, uint64_t work, Recorder& rec,
+                   CutStats& st) {
   CellParts<Entry> cp{&plan, edges, cell_start, list, n_parts};
-  cp.split(plan.grid.cells());
+  cp.split(plan.grid.cells(), work);
   for (uint32_t j = 0; j < n_parts; ++j) {
     const uint32_t lo = uint32_t(uint64_t{rec.capacity} * j / n_parts);
     const uint32_t hi = uint32_t(uint64_t{rec.capacity} * (j + 1) / n_parts);
@@ -294,11 +300,14 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
   const uint32_t cells = plan.grid.cells();
   st.cell_pairs = cell_start[cells];  // the exact count (the plan's is an upper bound)
   if (plan.params.phase) plan.params.phase(plan.params.phase_context, CutPhase::kCellsFilled);
-  const uint32_t n_parts = part_count(plan.params);
+  uint64_t work = 0;
+  if (plan.params.parts.split() > 1)
+    for (uint32_t c = 0; c < cells; ++c) work += cell_work(cell_start, c);
+  const uint32_t n_parts = part_count(plan.params, work);
   if (n_parts == 1)
     test_cells(plan, edges, cell_start, list, 0, cells, true, rec, st);
   else
-    test_in_parts(plan, edges, cell_start, list, n_parts, rec, st);
+    test_in_parts(plan, edges, cell_start, list, n_parts, work, rec, st);
 }
 
 // C9's order inside each group, in parts of the edges holding about equal shares of the
@@ -452,7 +461,9 @@ Status run_cut(const CutPlan& plan, const Edge3* edges, void* scratch, size_t sc
   for (uint32_t e = 0; e < n; ++e) first[e + 1] += first[e];
   for (uint32_t e = 0; e < n; ++e) next[e] = first[e];
   group_records(records, rec.stored, n, first, next, scratch, scratch_bytes);
-  st.max_per_edge = sort_groups(plan.params.parts, part_count(plan.params), records, first, n);
+  // Sorting k records costs about k log k: as work, 16 a record.
+  st.max_per_edge = sort_groups(
+      plan.params.parts, part_count(plan.params, uint64_t{rec.stored} * 16), records, first, n);
 
   out->edges = edges;
   out->n_edges = n;

@@ -16,6 +16,10 @@ struct Parts {
   void (*run)(void* context, uint32_t n, PartFn work, void* arg) = nullptr;
   void* context = nullptr;
   uint32_t count = 1;  // how many parts a stage should split into (the caller's threads)
+  // The least work a part is worth (the stage's own measure, about a pair test): a small run (a
+  // band's CUT, run again and again as the conductor tries band heights) is over before a
+  // thread has started, so it takes fewer parts. Tests set 0 to split even the smallest.
+  uint64_t min_work = uint64_t{1} << 16;
 
   // The parts to split into: one without a runner.
   uint32_t split() const { return run == nullptr || count < 1 ? 1 : count; }

@@ -63,6 +63,7 @@ void check_scene(const char* name, const std::vector<Edge3>& edges, CutParams pa
     Parts parts;
     parts.run = &backwards;
     parts.count = n;
+    parts.min_work = 0;  // split these small scenes too
     CutParams p = params;
     p.parts = parts;
     const std::string what = std::string(name) + ", " + std::to_string(n) + " parts";
@@ -78,6 +79,7 @@ void check_scene(const char* name, const std::vector<Edge3>& edges, CutParams pa
   for (uint32_t threads : {2u, 3u}) {
     CutParams p = params;
     p.parts = host::thread_parts(threads);
+    p.parts.min_work = 0;
     const std::string what = std::string(name) + ", " + std::to_string(threads) + " threads";
     CHECK_MSG(same(cut(edges, p, exact), one), what);
   }
