@@ -50,7 +50,7 @@ section() {
   echo "($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')), load average $load_before"
   echo "before and $load_after after (the machine is shared: read the CPU columns, and the wall"
   echo "ratios only where the load was under the core count). \`--threads N\` runs CUT's cell loop"
-  echo "and its per-edge sorting in N parts on N threads (core/memory/parts.h); everything else runs"
+  echo "and its per-edge sorting in N parts on N threads (core/include/haloplot/memory/parts.h); everything else runs"
   echo "on one. Each row alternates 1 and $threads threads, $runs rounds, the fastest round of each;"
   echo "CPU is user + system time of every thread. *results equal*: the same pieces, or the same"
   echo "CUTSET byte for byte."

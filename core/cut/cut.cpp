@@ -196,9 +196,10 @@ constexpr uint32_t kMaxParts = 16;
 // Fewer parts where each would get less than Parts::min_work (pair tests in the cell loop, 16
 // a record in the sorting).
 uint32_t part_count(const CutParams& p, uint64_t work) {
-  uint32_t n = p.parts.split();
+  if (p.parts == nullptr) return 1;
+  uint32_t n = p.parts->split();
   if (n > kMaxParts) n = kMaxParts;
-  const uint64_t worth = p.parts.min_work == 0 ? n : work / p.parts.min_work;
+  const uint64_t worth = p.parts->min_work == 0 ? n : work / p.parts->min_work;
   if (worth < n) n = worth < 1 ? 1 : uint32_t(worth);
   return n;
 }
@@ -253,10 +254,13 @@ struct CellParts {
   }
 };
 
+// Out of line: its bookkeeping takes stack only where a runner splits the loop (never on the
+// controller).
 template <typename Entry>
-void test_in_parts(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_start,
-                   const Entry* list, uint32_t n_parts, uint64_t work, Recorder& rec,
-                   CutStats& st) {
+__attribute__((noinline)) void test_in_parts(const CutPlan& plan, const Edge3* edges,
+                                             const uint32_t* cell_start, const Entry* list,
+                                             uint32_t n_parts, uint64_t work, Recorder& rec,
+                                             CutStats& st) {
   CellParts<Entry> cp{&plan, edges, cell_start, list, n_parts};
   cp.split(plan.grid.cells(), work);
   for (uint32_t j = 0; j < n_parts; ++j) {
@@ -264,7 +268,7 @@ void test_in_parts(const CutPlan& plan, const Edge3* edges, const uint32_t* cell
     const uint32_t hi = uint32_t(uint64_t{rec.capacity} * (j + 1) / n_parts);
     cp.rec[j] = Recorder{rec.out + lo, hi - lo, rec.rows, rec.row_lo, rec.row_hi};
   }
-  run_parts(plan.params.parts, n_parts, &CellParts<Entry>::run_one, &cp);
+  run_parts(*plan.params.parts, n_parts, &CellParts<Entry>::run_one, &cp);
   uint64_t need = 0;
   for (uint32_t j = 0; j < n_parts; ++j) {
     add_stats(cp.st[j], &st);
@@ -301,7 +305,7 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
   st.cell_pairs = cell_start[cells];  // the exact count (the plan's is an upper bound)
   if (plan.params.phase) plan.params.phase(plan.params.phase_context, CutPhase::kCellsFilled);
   uint64_t work = 0;
-  if (plan.params.parts.split() > 1)
+  if (plan.params.parts != nullptr && plan.params.parts->split() > 1)
     for (uint32_t c = 0; c < cells; ++c) work += cell_work(cell_start, c);
   const uint32_t n_parts = part_count(plan.params, work);
   if (n_parts == 1)
@@ -310,8 +314,21 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
     test_in_parts(plan, edges, cell_start, list, n_parts, work, rec, st);
 }
 
-// C9's order inside each group, in parts of the edges holding about equal shares of the
-// records; each part sorts its own groups and notes its largest.
+// C9's order inside each group of edges [e0, e1); returns the largest group. Ties (several
+// edges through one point) by front index, so the output never depends on cell order.
+uint32_t sort_range(Crossing* records, const uint32_t* first, uint32_t e0, uint32_t e1) {
+  uint32_t most = 0;
+  for (uint32_t e = e0; e < e1; ++e) {
+    const uint32_t k = first[e + 1] - first[e];
+    if (k > most) most = k;
+    sort_in_place(records + first[e], k, [](const Crossing& a, const Crossing& b) {
+      return a.t != b.t ? a.t < b.t : a.front < b.front;
+    });
+  }
+  return most;
+}
+
+// The same in parts of the edges holding about equal shares of the records.
 struct SortParts {
   Crossing* records;
   const uint32_t* first;
@@ -320,24 +337,14 @@ struct SortParts {
 
   static void run_one(void* arg, uint32_t j) {
     SortParts* self = static_cast<SortParts*>(arg);
-    uint32_t most = 0;
-    for (uint32_t e = self->begin[j]; e < self->begin[j + 1]; ++e) {
-      const uint32_t* first = self->first;
-      const uint32_t k = first[e + 1] - first[e];
-      if (k > most) most = k;
-      // Ties (several edges through one point) by front index, so the output never depends
-      // on cell order.
-      sort_in_place(self->records + first[e], k, [](const Crossing& a, const Crossing& b) {
-        return a.t != b.t ? a.t < b.t : a.front < b.front;
-      });
-    }
-    self->largest[j] = most;
+    self->largest[j] = sort_range(self->records, self->first, self->begin[j], self->begin[j + 1]);
   }
 };
 
-// Sorts every group along its edge; returns the largest group.
-uint32_t sort_groups(const Parts& parts, uint32_t n_parts, Crossing* records, const uint32_t* first,
-                     uint32_t n) {
+// Out of line, as test_in_parts.
+__attribute__((noinline)) uint32_t sort_in_parts(const Parts& parts, uint32_t n_parts,
+                                                 Crossing* records, const uint32_t* first,
+                                                 uint32_t n) {
   SortParts sp{records, first};
   const uint64_t total = first[n];
   sp.begin[0] = 0;
@@ -462,8 +469,10 @@ Status run_cut(const CutPlan& plan, const Edge3* edges, void* scratch, size_t sc
   for (uint32_t e = 0; e < n; ++e) next[e] = first[e];
   group_records(records, rec.stored, n, first, next, scratch, scratch_bytes);
   // Sorting k records costs about k log k: as work, 16 a record.
-  st.max_per_edge = sort_groups(
-      plan.params.parts, part_count(plan.params, uint64_t{rec.stored} * 16), records, first, n);
+  const uint32_t sort_parts = part_count(plan.params, uint64_t{rec.stored} * 16);
+  st.max_per_edge = sort_parts == 1
+                        ? sort_range(records, first, 0, n)
+                        : sort_in_parts(*plan.params.parts, sort_parts, records, first, n);
 
   out->edges = edges;
   out->n_edges = n;

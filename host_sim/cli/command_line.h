@@ -31,7 +31,7 @@ bool read_int_option(const Options& o, const std::string& name, int64_t lo, int6
 
 // --threads N (1 to 256; default: every core the machine has) as the core's parts runner;
 // false with *error when N is not such a count.
-bool read_threads_option(const Options& o, Parts* parts, std::string* error);
+bool read_threads_option(const Options& o, const Parts** parts, std::string* error);
 
 // "12.345" from a count of thousandths (the plot time in --stats).
 std::string thousandths(uint64_t v);

@@ -82,7 +82,7 @@ SolidInput solid_input(const SolidScene& scene) {
 
 Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackParams kira,
                         SolidRun* out, bool outlines, bool intersections, const HatchParams* hatch,
-                        const Parts& parts) {
+                        const Parts* parts) {
   const auto t0 = std::chrono::steady_clock::now();
   *out = SolidRun{};
   const SolidInput in = solid_input(scene);

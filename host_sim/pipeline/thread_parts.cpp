@@ -31,12 +31,16 @@ uint32_t machine_threads() {
   return n == 0 ? 1 : uint32_t(n);
 }
 
-Parts thread_parts(uint32_t threads) {
-  Parts p;
-  if (threads <= 1) return p;
-  p.run = &run_on_threads;
-  p.count = threads;
-  return p;
+const Parts* thread_parts(uint32_t threads) {
+  static const std::vector<Parts> each = [] {
+    std::vector<Parts> all(kMaxThreads + 1);
+    for (uint32_t n = 0; n <= kMaxThreads; ++n) {
+      all[n].run = &run_on_threads;
+      all[n].count = n;
+    }
+    return all;
+  }();
+  return threads <= 1 ? nullptr : &each[threads < kMaxThreads ? threads : kMaxThreads];
 }
 
 }  // namespace haloplot::host

@@ -11,8 +11,11 @@ namespace haloplot::host {
 // The machine's cores (std::thread::hardware_concurrency), at least one: --threads' default.
 uint32_t machine_threads();
 
-// Parts for `threads` threads; one thread gives no runner, so a stage runs exactly as the
-// controller's does.
-Parts thread_parts(uint32_t threads);
+// The most threads --threads takes.
+inline constexpr uint32_t kMaxThreads = 256;
+
+// Parts for `threads` threads (at most kMaxThreads), alive as long as the program; one thread
+// gives none (null), so a stage runs exactly as the controller's does.
+const Parts* thread_parts(uint32_t threads);
 
 }  // namespace haloplot::host

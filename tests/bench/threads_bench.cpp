@@ -42,11 +42,11 @@ double cpu_ms() {
 }
 
 // Runs f(parts) for one thread and for `threads`, alternating, `runs` rounds.
-void measure(int runs, uint32_t threads, const std::function<bool(const Parts&)>& f, Time* one,
+void measure(int runs, uint32_t threads, const std::function<bool(const Parts*)>& f, Time* one,
              Time* many) {
   for (int r = 0; r < runs; ++r)
     for (Time* t : {one, many}) {
-      const Parts parts = thread_parts(t == one ? 1 : threads);
+      const Parts* parts = thread_parts(t == one ? 1 : threads);
       const double w0 = bench::now_ms(), c0 = cpu_ms();
       if (!f(parts)) {
         std::fprintf(stderr, "threads_bench: a run failed\n");
@@ -124,8 +124,8 @@ int main(int argc, char** argv) {
   Time one, many;
   measure(
       runs, threads,
-      [&](const Parts& p) {
-        SolidRun& r = runs_of[p.run == nullptr ? 0 : 1];
+      [&](const Parts* p) {
+        SolidRun& r = runs_of[p == nullptr ? 0 : 1];
         return run_hidden_lines(scene, HiddenMethod::kAuto, kira, &r, false, true, nullptr, p) ==
                Status::kOk;
       },
@@ -137,10 +137,10 @@ int main(int argc, char** argv) {
   Time cut_one, cut_many;
   measure(
       runs, threads,
-      [&](const Parts& p) {
+      [&](const Parts* p) {
         CutParams cp;
         cp.parts = p;
-        return host_cut(edges, cp, &cuts[p.run == nullptr ? 0 : 1]) == Status::kOk;
+        return host_cut(edges, cp, &cuts[p == nullptr ? 0 : 1]) == Status::kOk;
       },
       &cut_one, &cut_many);
   row("its CUT alone (" + std::to_string(edges.size()) + " edges, " +
@@ -165,10 +165,10 @@ int main(int argc, char** argv) {
   Time h_one, h_many;
   measure(
       runs * 3, threads,
-      [&](const Parts& p) {
+      [&](const Parts* p) {
         CutParams cp;
         cp.parts = p;
-        return host_cut(random, cp, &haloed[p.run == nullptr ? 0 : 1]) == Status::kOk;
+        return host_cut(random, cp, &haloed[p == nullptr ? 0 : 1]) == Status::kOk;
       },
       &h_one, &h_many);
   row("CUT of the paper's random scene (N = 50,000, L = 0.01, " +

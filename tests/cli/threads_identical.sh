@@ -6,7 +6,7 @@
 # hidden-dashed with outlines (when assimp-testmodels is installed), and a solid in bands
 # through `sim` with an arena (each band's CUT in parts). Then --threads 0, -1 and abc are
 # refused by name. Fails on any byte that differs, or a bad count taken. The haloed scene and
-# the torus are large enough that CUT splits (2^16 pair tests a part, core/memory/parts.h);
+# the torus are large enough that CUT splits (2^16 pair tests a part, core/include/haloplot/memory/parts.h);
 # test cut_parts splits small scenes and bands' rows too.
 # Usage: threads_identical.sh HALOPLOT
 set -u

@@ -65,7 +65,7 @@ void check_scene(const char* name, const std::vector<Edge3>& edges, CutParams pa
     parts.count = n;
     parts.min_work = 0;  // split these small scenes too
     CutParams p = params;
-    p.parts = parts;
+    p.parts = &parts;
     const std::string what = std::string(name) + ", " + std::to_string(n) + " parts";
     CHECK_MSG(same(cut(edges, p, 4 * uint32_t(edges.size()) + 64), one), what);
     CHECK_MSG(same(cut(edges, p, exact), one), what + ", exact capacity");
@@ -78,8 +78,9 @@ void check_scene(const char* name, const std::vector<Edge3>& edges, CutParams pa
   }
   for (uint32_t threads : {2u, 3u}) {
     CutParams p = params;
-    p.parts = host::thread_parts(threads);
-    p.parts.min_work = 0;
+    Parts on_threads = *host::thread_parts(threads);
+    on_threads.min_work = 0;
+    p.parts = &on_threads;
     const std::string what = std::string(name) + ", " + std::to_string(threads) + " threads";
     CHECK_MSG(same(cut(edges, p, exact), one), what);
   }
