@@ -77,7 +77,7 @@ section() {
   echo "make the stage 1.7 times as fast on two cores (the bound above). Outside the stage,"
   echo "reading, welding and orienting the model, the pen path and the files cost about as much again (\`weld_vertices\` alone"
   echo "was a fifth of the whole plot's cycles under perf). The paper's random scene's CUT is a"
-  echo "dozen milliseconds: too short for threads to show on a shared machine. Peak memory grows a"
+  echo "dozen milliseconds, so its ratio moves with the shared machine's load. Peak memory grows a"
   echo "little with threads: each part records into its own slice of the CUTSET's storage, so pages"
   echo "past one thread's records are touched before the records are joined at the front."
 }
