@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates docs/bands.md: the band conductor's memory against the scene's size (every scene
+# Regenerates docs/reports/bands.md: the band conductor's memory against the scene's size (every scene
 # in one fixed arena), the pieces checked equal to the one-band run, host time and pen-up
 # travel against the one-band plan, and Figure 4's link budget when streamed.
 set -euo pipefail
@@ -121,5 +121,5 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
   echo 'index and the incidences 3,472, the fallback'\''s outline tables 2,200 and the face grid 3,720;'
   echo 'the sink'\''s carry 5,888, strokes 1,408 and hatch segments 2,064; the edge ids 1,472. The solid'
   echo 'tables above were measured before the peak counted transient bytes.'
-} > docs/bands.md
-echo "wrote docs/bands.md"
+} > docs/reports/bands.md
+echo "wrote docs/reports/bands.md"
