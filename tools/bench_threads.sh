@@ -4,7 +4,7 @@
 # and the haloed random scene's CUT (N = 50,000, L = 0.01) in one process, the thread counts
 # alternating; then the whole `plot --mode hidden-removed` of the same torus as an OBJ file,
 # with its peak resident memory (/usr/bin/time -v), and the files' bytes compared. Writes the
-# section "11. Threads" of docs/performance.md in place (or prints it with --print).
+# section "11. Threads" of docs/reports/performance.md in place (or prints it with --print).
 # Usage: tools/bench_threads.sh [--print] [THREADS [RUNS]]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -87,7 +87,7 @@ awk -v file="$work/section.md" '
   /^## 11\. Threads/ { while ((getline l < file) > 0) print l; skip = 1; next }
   skip && /^## / { skip = 0 }
   !skip { print }
-  END { if (!seen) {} }' docs/performance.md > "$work/perf.md"
-grep -q '^## 11\. Threads' docs/performance.md || { echo; cat "$work/section.md"; } >> "$work/perf.md"
-cp "$work/perf.md" docs/performance.md
+  ' docs/reports/performance.md > "$work/perf.md"
+grep -q '^## 11\. Threads' docs/reports/performance.md || { echo; cat "$work/section.md"; } >> "$work/perf.md"
+cp "$work/perf.md" docs/reports/performance.md
 cat "$work/section.md"

@@ -7,7 +7,7 @@
 // round, wall and CPU (user + system of the whole process, every thread). The results are
 // compared too: the same pieces, the same CUTSET, with any thread count.
 //   threads_bench [QUADS_AROUND QUADS_ACROSS [RUNS [THREADS]]]   (default 1000 500 3 2)
-// Prints a Markdown table (docs/performance.md, "Threads").
+// Prints a Markdown table (docs/reports/performance.md, "Threads").
 #include <time.h>
 
 #include <cstdio>
