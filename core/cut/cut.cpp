@@ -122,18 +122,15 @@ void test_pair(const Grid& g, const CellBox& cb, const Edge3* edges, const Entry
     rec.add(eq, ep | Crossing::kNearBit, m.t_behind);
 }
 
-// C3-C6 for one kind of cell entry.
-//
-// C3-C5 are a two-pass counting sort: count edges per cell, turn counts into end offsets,
-// then drop each edge into its cell from the back. Edges are walked in descending order so
-// every cell's list comes out ascending. No comparison sort, no linked lists.
+// C3-C5 for one kind of cell entry: a two-pass counting sort. Count edges per cell, turn
+// counts into end offsets, then drop each edge into its cell from the back. Edges are walked
+// in descending order so every cell's list comes out ascending. No comparison sort, no linked
+// lists. Returns the lists; cell_start[c] .. cell_start[c + 1] are cell c's.
 template <typename Entry>
-void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recorder& rec,
-                   CutStats& st) {
+const Entry* fill_cells(const CutPlan& plan, const Edge3* edges, uint32_t* cell_start) {
   const uint32_t n = plan.n_edges;
   const Grid& g = plan.grid;
   const uint32_t cells = g.cells();
-  uint32_t* cell_start = static_cast<uint32_t*>(scratch);
   Entry* list = reinterpret_cast<Entry*>(cell_start + ((size_t{cells} + 1 + 1) & ~size_t{1}));
   for (uint32_t c = 0; c <= cells; ++c) cell_start[c] = 0;
   for (uint32_t i = 0; i < n; ++i)
@@ -149,13 +146,20 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
   // Each cell_start[c + 1] now holds the start of cell c; shift back into place.
   for (uint32_t c = 0; c < cells; ++c) cell_start[c] = cell_start[c + 1];
   cell_start[cells] = total;
-  st.cell_pairs = cell_start[cells];  // the exact count (the plan's is an upper bound)
-  if (plan.params.phase) plan.params.phase(plan.params.phase_context, CutPhase::kCellsFilled);
+  return list;
+}
 
-  // C6: every pair inside every cell.
+// C6: every pair inside cells [c_begin, c_end). The part that reports progress maps its own
+// cells onto the whole grid's count.
+template <typename Entry>
+void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_start,
+                const Entry* list, uint32_t c_begin, uint32_t c_end, bool progress, Recorder& rec,
+                CutStats& st) {
+  const Grid& g = plan.grid;
+  const uint32_t cells = g.cells();
   const int32_t r = plan.params.reach;
-  uint32_t col = 0, row = 0;
-  for (uint32_t c = 0; c < cells; ++c) {
+  uint32_t col = c_begin % g.nx, row = c_begin / g.nx;
+  for (uint32_t c = c_begin; c < c_end; ++c) {
     const uint32_t begin = cell_start[c], end = cell_start[c + 1];
     const uint64_t k = end - begin;
     st.pairs_tested += k * (k - 1) / 2;
@@ -175,13 +179,193 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
         test_pair(g, cb, edges, list[i], list[j], r, rec, st);
       }
     }
-    if (plan.params.progress && (c & 0x3ffu) == 0)
-      plan.params.progress(plan.params.progress_context, c, cells);
+    if (progress && plan.params.progress && (c & 0x3ffu) == 0)
+      plan.params.progress(plan.params.progress_context,
+                           uint32_t(uint64_t{c - c_begin} * cells / (c_end - c_begin)), cells);
     if (++col == g.nx) {
       col = 0;
       ++row;
     }
   }
+}
+
+// The most parts a stage splits into, whatever the caller's count: enough for the cores a
+// host has, few enough that the parts' bookkeeping stays small on a stack.
+constexpr uint32_t kMaxParts = 16;
+
+// Fewer parts where each would get less than Parts::min_work (pair tests in the cell loop, 16
+// a record in the sorting).
+uint32_t part_count(const CutParams& p, uint64_t work) {
+  if (p.parts == nullptr) return 1;
+  uint32_t n = p.parts->split();
+  if (n > kMaxParts) n = kMaxParts;
+  const uint64_t worth = p.parts->min_work == 0 ? n : work / p.parts->min_work;
+  if (worth < n) n = worth < 1 ? 1 : uint32_t(worth);
+  return n;
+}
+
+// The cell loop's work: the pairs each cell tests, and the cell itself.
+uint64_t cell_work(const uint32_t* cell_start, uint32_t c) {
+  const uint64_t k = cell_start[c + 1] - cell_start[c];
+  return k * (k - 1) / 2 + k + 1;
+}
+
+void add_stats(const CutStats& a, CutStats* sum) {
+  sum->pairs_tested += a.pairs_tested;
+  sum->crossings += a.crossings;
+  sum->near_misses += a.near_misses;
+  sum->rejected += a.rejected;
+  sum->equal_depth += a.equal_depth;
+  sum->outside_rows += a.outside_rows;
+}
+
+// C6 split into parts of the cells, each cut at cells of about equal pair work and recording
+// into its own equal slice of the records. The records are then joined in part order; a part
+// that outgrew its slice runs again here into what the others left, so a run stores every
+// record exactly when one part would have (the total fits), and the CUTSET, grouped and
+// sorted by (behind, t, front), is the same whatever the split.
+template <typename Entry>
+struct CellParts {
+  const CutPlan* plan;
+  const Edge3* edges;
+  const uint32_t* cell_start;
+  const Entry* list;
+  uint32_t n = 1;
+  uint32_t begin[kMaxParts + 1] = {};
+  Recorder rec[kMaxParts] = {};
+  CutStats st[kMaxParts] = {};
+
+  void test(uint32_t j, Recorder& r, CutStats& s) const {
+    test_cells(*plan, edges, cell_start, list, begin[j], begin[j + 1], j == 0, r, s);
+  }
+  static void run_one(void* arg, uint32_t j) {
+    CellParts* self = static_cast<CellParts*>(arg);
+    self->test(j, self->rec[j], self->st[j]);
+  }
+  // Cuts [0, cells) where the running sum of each cell's pair work reaches j / n of `total`.
+  void split(uint32_t cells, uint64_t total) {
+    uint32_t j = 1;
+    uint64_t acc = 0;
+    for (uint32_t c = 0; c < cells && j < n; ++c) {
+      while (j < n && acc >= total / n * j) begin[j++] = c;
+      acc += cell_work(cell_start, c);
+    }
+    while (j <= n) begin[j++] = cells;
+  }
+};
+
+// Out of line: its bookkeeping takes stack only where a runner splits the loop (never on the
+// controller).
+template <typename Entry>
+__attribute__((noinline)) void test_in_parts(const CutPlan& plan, const Edge3* edges,
+                                             const uint32_t* cell_start, const Entry* list,
+                                             uint32_t n_parts, uint64_t work, Recorder& rec,
+                                             CutStats& st) {
+  CellParts<Entry> cp{&plan, edges, cell_start, list, n_parts};
+  cp.split(plan.grid.cells(), work);
+  for (uint32_t j = 0; j < n_parts; ++j) {
+    const uint32_t lo = uint32_t(uint64_t{rec.capacity} * j / n_parts);
+    const uint32_t hi = uint32_t(uint64_t{rec.capacity} * (j + 1) / n_parts);
+    cp.rec[j] = Recorder{rec.out + lo, hi - lo, rec.rows, rec.row_lo, rec.row_hi};
+  }
+  run_parts(*plan.params.parts, n_parts, &CellParts<Entry>::run_one, &cp);
+  uint64_t need = 0;
+  for (uint32_t j = 0; j < n_parts; ++j) {
+    add_stats(cp.st[j], &st);
+    need += cp.st[j].crossings + cp.st[j].near_misses;
+  }
+  if (need > rec.capacity) {
+    rec.overflow = true;
+    return;
+  }
+  // Slices lie in part order, so each part's records move down (or stay): copied forward.
+  uint32_t at = 0;
+  for (uint32_t j = 0; j < n_parts; ++j) {
+    if (cp.rec[j].overflow) continue;
+    for (uint32_t i = 0; i < cp.rec[j].stored; ++i) rec.out[at + i] = cp.rec[j].out[i];
+    at += cp.rec[j].stored;
+  }
+  for (uint32_t j = 0; j < n_parts; ++j) {
+    if (!cp.rec[j].overflow) continue;
+    Recorder again{rec.out + at, rec.capacity - at, rec.rows, rec.row_lo, rec.row_hi};
+    CutStats counted;  // the same counts as the first run's, already added
+    cp.test(j, again, counted);
+    at += again.stored;
+  }
+  rec.stored = at;
+}
+
+// C3-C6 for one kind of cell entry.
+template <typename Entry>
+void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recorder& rec,
+                   CutStats& st) {
+  uint32_t* cell_start = static_cast<uint32_t*>(scratch);
+  const Entry* list = fill_cells<Entry>(plan, edges, cell_start);
+  const uint32_t cells = plan.grid.cells();
+  st.cell_pairs = cell_start[cells];  // the exact count (the plan's is an upper bound)
+  if (plan.params.phase) plan.params.phase(plan.params.phase_context, CutPhase::kCellsFilled);
+  uint64_t work = 0;
+  if (plan.params.parts != nullptr && plan.params.parts->split() > 1)
+    for (uint32_t c = 0; c < cells; ++c) work += cell_work(cell_start, c);
+  const uint32_t n_parts = part_count(plan.params, work);
+  if (n_parts == 1)
+    test_cells(plan, edges, cell_start, list, 0, cells, true, rec, st);
+  else
+    test_in_parts(plan, edges, cell_start, list, n_parts, work, rec, st);
+}
+
+// C9's order inside each group of edges [e0, e1); returns the largest group. Ties (several
+// edges through one point) by front index, so the output never depends on cell order.
+uint32_t sort_range(Crossing* records, const uint32_t* first, uint32_t e0, uint32_t e1) {
+  uint32_t most = 0;
+  for (uint32_t e = e0; e < e1; ++e) {
+    const uint32_t k = first[e + 1] - first[e];
+    if (k > most) most = k;
+    sort_in_place(records + first[e], k, [](const Crossing& a, const Crossing& b) {
+      return a.t != b.t ? a.t < b.t : a.front < b.front;
+    });
+  }
+  return most;
+}
+
+// The same in parts of the edges holding about equal shares of the records.
+struct SortParts {
+  Crossing* records;
+  const uint32_t* first;
+  uint32_t begin[kMaxParts + 1] = {};
+  uint32_t largest[kMaxParts] = {};
+
+  static void run_one(void* arg, uint32_t j) {
+    SortParts* self = static_cast<SortParts*>(arg);
+    self->largest[j] = sort_range(self->records, self->first, self->begin[j], self->begin[j + 1]);
+  }
+};
+
+// Out of line, as test_in_parts.
+__attribute__((noinline)) uint32_t sort_in_parts(const Parts& parts, uint32_t n_parts,
+                                                 Crossing* records, const uint32_t* first,
+                                                 uint32_t n) {
+  SortParts sp{records, first};
+  const uint64_t total = first[n];
+  sp.begin[0] = 0;
+  for (uint32_t j = 1; j < n_parts; ++j) {  // the first edge whose records start at j / n
+    const uint64_t target = total * j / n_parts;
+    uint32_t lo = sp.begin[j - 1], hi = n;
+    while (lo < hi) {
+      const uint32_t mid = lo + (hi - lo) / 2;
+      if (first[mid] < target)
+        lo = mid + 1;
+      else
+        hi = mid;
+    }
+    sp.begin[j] = lo;
+  }
+  sp.begin[n_parts] = n;
+  run_parts(parts, n_parts, &SortParts::run_one, &sp);
+  uint32_t most = 0;
+  for (uint32_t j = 0; j < n_parts; ++j)
+    if (sp.largest[j] > most) most = sp.largest[j];
+  return most;
 }
 
 // Moves the records into their behind edge's group ([first[e], first[e + 1]), next[e] its
@@ -284,15 +468,11 @@ Status run_cut(const CutPlan& plan, const Edge3* edges, void* scratch, size_t sc
   for (uint32_t e = 0; e < n; ++e) first[e + 1] += first[e];
   for (uint32_t e = 0; e < n; ++e) next[e] = first[e];
   group_records(records, rec.stored, n, first, next, scratch, scratch_bytes);
-  // Order each group along its edge; ties (several edges through one point) by front index
-  // so the output never depends on cell order.
-  for (uint32_t e = 0; e < n; ++e) {
-    const uint32_t k = first[e + 1] - first[e];
-    if (k > st.max_per_edge) st.max_per_edge = k;
-    sort_in_place(records + first[e], k, [](const Crossing& a, const Crossing& b) {
-      return a.t != b.t ? a.t < b.t : a.front < b.front;
-    });
-  }
+  // Sorting k records costs about k log k: as work, 16 a record.
+  const uint32_t sort_parts = part_count(plan.params, uint64_t{rec.stored} * 16);
+  st.max_per_edge = sort_parts == 1
+                        ? sort_range(records, first, 0, n)
+                        : sort_in_parts(*plan.params.parts, sort_parts, records, first, n);
 
   out->edges = edges;
   out->n_edges = n;

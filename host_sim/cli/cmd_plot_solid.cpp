@@ -132,7 +132,8 @@ bool pen_settings_fit(const Options& o, const SolidOptions& so, std::string* err
 int cmd_plot_solid(const Options& o) {
   std::string error;
   SolidOptions so;
-  if (!parse_solid_options(o, &so, &error)) return fail(error);
+  if (!parse_solid_options(o, &so, &error) || !read_threads_option(o, &so.parts, &error))
+    return fail(error);
   // Options the mode has no use for are refused, never ignored.
   if (so.spec.mode == SolidMode::kAll && !o.get("--hatch").empty())
     return fail(

@@ -109,7 +109,8 @@ void print_sim_stats(const JobSpec& spec, const SimReport& r, size_t edges) {
 
 int cmd_sim(int argc, char** argv) {
   const Options o = parse_options(
-      argc, argv, 2, {"-o", "--gcode", "--hpgl", "--arena", "--pause-at", "--resume-at"},
+      argc, argv, 2,
+      {"-o", "--gcode", "--hpgl", "--arena", "--pause-at", "--resume-at", "--threads"},
       {"--stats", "--binary"});
   if (!o.error.empty()) return fail(o.error);
   if (!one_input_and_output(o)) return bad_arguments(o, "sim", kSimUsage);
@@ -163,6 +164,8 @@ int cmd_sim(int argc, char** argv) {
   }
   stage.reset();
   if (isatty(2)) jf.spec.cut.progress = &cut_progress;
+  // The job's CUT, in every band too, on the host's threads: the same records, so the same plot.
+  if (!read_threads_option(o, &jf.spec.cut.parts, &error)) return fail(error);
   JobSpec spec = jf.spec;
   // Hidden-line drawings are decided on the host; the controller's job then draws the chosen
   // strokes whole (their z no longer matters).

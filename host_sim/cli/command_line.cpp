@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "io/line_reader.h"
+#include "pipeline/thread_parts.h"
 
 namespace haloplot::host {
 
@@ -43,6 +44,18 @@ bool read_int_option(const Options& o, const std::string& name, int64_t lo, int6
              std::to_string(hi) + "]";
     return false;
   }
+  return true;
+}
+
+bool read_threads_option(const Options& o, const Parts** parts, std::string* error) {
+  int64_t threads = machine_threads();
+  const std::string v = o.get("--threads");
+  if (!v.empty() && !parse_int(v, 1, kMaxThreads, &threads)) {
+    *error = "--threads '" + v + "' must be a count of threads from 1 to 256 (default: " +
+             std::to_string(machine_threads()) + ", this machine's cores)";
+    return false;
+  }
+  *parts = thread_parts(uint32_t(threads));
   return true;
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/options.h"
+#include "haloplot/memory/parts.h"
 #include "haloplot/status/status.h"
 
 namespace haloplot::host {
@@ -27,6 +28,10 @@ int bad_arguments(const Options& o, const std::string& cmd, const char* usage_li
 // *error giving the range when it is not an integer in [lo, hi].
 bool read_int_option(const Options& o, const std::string& name, int64_t lo, int64_t hi,
                      int64_t* out, std::string* error);
+
+// --threads N (1 to 256; default: every core the machine has) as the core's parts runner;
+// false with *error when N is not such a count.
+bool read_threads_option(const Options& o, const Parts** parts, std::string* error);
 
 // "12.345" from a count of thousandths (the plot time in --stats).
 std::string thousandths(uint64_t v);

@@ -9,7 +9,8 @@
 
 namespace haloplot::host {
 
-const std::set<std::string> kCutValued = {"-o", "--lambda", "--cell", "--cover", "--reach"};
+const std::set<std::string> kCutValued = {"-o",      "--lambda", "--cell",
+                                          "--cover", "--reach",  "--threads"};
 
 void cut_progress(void*, uint32_t done, uint32_t total) {
   static uint32_t last_pct = 101;
@@ -60,6 +61,7 @@ bool cut_params(const Options& o, CutParams* p, std::string* error) {
     *error = "--cover must be 'exact' or 'bbox'";
     return false;
   }
+  if (!read_threads_option(o, &p->parts, error)) return false;
   if (isatty(2)) p->progress = &cut_progress;
   return true;
 }

@@ -89,7 +89,7 @@ Status run_solid_options(const SolidScene& scene, const SolidOptions& so, SolidR
   // The hatch spacing in the scene's units, like every length the run decides with.
   const HatchParams hatch = hatch_in_units(so.hatch_params, scene.substep_bits);
   return run_hidden_lines(scene, so.method, kira, run, so.spec.outline, so.spec.intersections,
-                          so.hatch ? &hatch : nullptr);
+                          so.hatch ? &hatch : nullptr, so.parts);
 }
 
 }  // namespace haloplot::host

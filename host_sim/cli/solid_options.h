@@ -15,6 +15,7 @@ struct SolidOptions {
   uint32_t steps_per_mm = 80;
   bool hatch = false;  // --hatch SPACING[,ANGLE[,DEGREES_ACROSS_DEPTH]] (mm, degrees)
   HatchParams hatch_params;
+  const Parts* parts = nullptr;  // the threads CUT's parts run on (none: one thread)
 };
 
 // Options: --mode, --dash LEN,GAP (mm), --steps-per-mm N, --method auto|qi|fallback, --outline,

@@ -16,7 +16,8 @@ const char* const kRandomSceneUsage =
 
 const char* const kCutUsage =
     "  haloplot cut SCENE.edges -o SCENE.cut [--lambda X] [--cell G] [--cover exact|bbox]\n"
-    "               [--reach R] [--stats]\n";
+    "               [--reach R] [--threads N] [--stats]   (--threads: CUT on N threads, the same\n"
+    "               CUTSET; default every core)\n";
 
 const char* const kDrawUsage =
     "  haloplot draw SCENE.cut --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans] [--stats]\n"
@@ -28,7 +29,8 @@ const char* const kDrawUsage =
 const char* const kPlotUsage =
     "  haloplot plot SCENE.edges|MODEL --halo W [--exact-halo] -o OUT.svg [--spans OUT.spans]\n"
     "               [--cut OUT.cut] [--arena BYTES] [--steps-per-mm N] [--stats]\n"
-    "               [--lambda X] [--cell G] [--cover exact|bbox] [--reach R]   (as cut's)\n"
+    "               [--lambda X] [--cell G] [--cover exact|bbox] [--reach R] [--threads N]\n"
+    "               (as cut's)\n"
     "               [--view AZ,EL] [--perspective D] [--up AXIS] [--dump-edges OUT.edges]\n"
     "               [--substep S] [--weld EPS|0|off] [--crease DEG|exact|off]   (MODEL: .obj,\n"
     "               .stl or .ply; --up x|y|z|-x|-y|-z: the file's up axis, default z for STL\n"
@@ -45,7 +47,8 @@ const char* const kPlotUsage =
     "               [--dash LEN,GAP (mm)] [--steps-per-mm N] [--method auto|qi|fallback]\n"
     "               [--hatch SPACING[,ANGLE[,TURN]]] [--spans OUT.spans] [--view AZ,EL]\n"
     "               [--perspective D] [--up AXIS] [--substep S] [--weld EPS|0|off]\n"
-    "               [--crease DEG|exact|off] [--stats]\n"
+    "               [--crease DEG|exact|off] [--threads N] [--stats]   (--threads: the hidden\n"
+    "               lines' CUT on N threads, the same drawing; default every core)\n"
     "  haloplot plot SCENE.edges|MODEL ... [--gcode OUT.gcode] [--hpgl OUT.hpgl]   (either form\n"
     "               above: the plotter's files from the planned path, no step simulation, and\n"
     "               the plot time on stderr; the same bytes `sim` writes for the same job;\n"
@@ -74,7 +77,9 @@ const char* const kPlotUsage =
 const char* const kSimUsage =
     "  haloplot sim JOB.job -o OUT.trace [--gcode OUT.gcode] [--hpgl OUT.hpgl] [--arena BYTES]\n"
     "               [--binary] [--stats]   (--binary: the compact binary trace)\n"
-    "               [--pause-at E1,E2,...] [--resume-at E]   (feed holds; go on from event E)\n";
+    "               [--pause-at E1,E2,...] [--resume-at E]   (feed holds; go on from event E)\n"
+    "               [--threads N]   (the job's CUT, each band's too, on N threads; the same\n"
+    "               plot; default every core)\n";
 
 const char* const kReplayUsage = "  haloplot replay IN.trace -o OUT.svg [--stats]\n";
 

@@ -81,8 +81,8 @@ SolidInput solid_input(const SolidScene& scene) {
 }
 
 Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackParams kira,
-                        SolidRun* out, bool outlines, bool intersections,
-                        const HatchParams* hatch) {
+                        SolidRun* out, bool outlines, bool intersections, const HatchParams* hatch,
+                        const Parts* parts) {
   const auto t0 = std::chrono::steady_clock::now();
   *out = SolidRun{};
   const SolidInput in = solid_input(scene);
@@ -93,6 +93,7 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
   params.hatch = hatch != nullptr;
   if (hatch != nullptr) params.hatch_params = *hatch;
   params.kira = kira.use_classes || kira.use_vc;
+  params.cut.parts = parts;
   // First guesses; the core says what a short run needs (never a wrong or partial answer).
   StageNeeds needs;
   needs.crossings = 4 * (in.n_edges + 3 * in.n_triangles) + 1024;

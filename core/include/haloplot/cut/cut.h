@@ -13,6 +13,7 @@
 
 #include "haloplot/cut/cutset.h"
 #include "haloplot/cut/grid.h"
+#include "haloplot/memory/parts.h"
 #include "haloplot/memory/sized_stage.h"
 #include "haloplot/status/status.h"
 
@@ -33,12 +34,17 @@ struct CutParams {
   // instead of its index (4 bytes), so the pair loop reads memory in order rather than
   // jumping through the edge array: faster, at 16 more bytes per pair. Off for tight RAM.
   bool compact_cells = true;
-  int32_t reach = 0;  // also record near misses up to this many steps apart (exact halo); 0: off
   // Record (and count) only the crossings whose position on the behind edge lies in rows
   // [row_lo, row_hi) (geometry/rows.h): a solid's band needs no cut outside its rows, and a
-  // band one row high would otherwise store every crossing of the faces that meet it.
+  // band one row high would otherwise store every crossing of the faces that meet it. (Beside
+  // the other flags, where it fills padding: the params' copies on a controller's stack.)
   bool rows = false;
+  int32_t reach = 0;  // also record near misses up to this many steps apart (exact halo); 0: off
   int32_t row_lo = 0, row_hi = 0;
+  // A runner for the cell loop's and the grouping's parts (memory/parts.h), or null: the
+  // CUTSET is the same with or without one. Progress is then reported by one part, from its
+  // thread. A pointer, so the params stay as small as they were on a controller.
+  const Parts* parts = nullptr;
   ProgressFn progress = nullptr;
   void* progress_context = nullptr;
   PhaseFn phase = nullptr;  // optional

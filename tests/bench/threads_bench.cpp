@@ -1,0 +1,178 @@
+// The host's threads, measured side by side in one run: one thread against N (the core's parts,
+// memory/parts.h, on host threads) for the hidden-line stage of a torus of about 1M triangles
+// as `plot --mode hidden-removed` runs it (run_hidden_lines: topology, classes, CUT, incidences,
+// QI, intersection lines, the pieces), for CUT alone on that torus's edges (its share of the
+// stage), and for CUT and DRAW of the paper's random scene (N = 50,000, L = 0.01), the haloed
+// path. Each measurement alternates the thread counts, RUNS rounds; shown is each one's fastest
+// round, wall and CPU (user + system of the whole process, every thread). The results are
+// compared too: the same pieces, the same CUTSET, with any thread count.
+//   threads_bench [QUADS_AROUND QUADS_ACROSS [RUNS [THREADS]]]   (default 1000 500 3 2)
+// Prints a Markdown table (docs/reports/performance.md, "Threads").
+#include <time.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "bench/perf_common.h"
+#include "demo/random_scene.h"
+#include "haloplot/solid/topology.h"
+#include "pipeline/host_pipeline.h"
+#include "pipeline/solid_pipeline.h"
+#include "pipeline/thread_parts.h"
+#include "support/solid_scenes.h"
+
+using namespace haloplot;
+using namespace haloplot::host;
+using namespace solid_scenes;
+
+namespace {
+
+struct Time {
+  double wall = 1e300, cpu = 1e300;  // ms, the fastest round's
+};
+
+double cpu_ms() {
+  timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) / 1e6;
+}
+
+// Runs f(parts) for one thread and for `threads`, alternating, `runs` rounds.
+void measure(int runs, uint32_t threads, const std::function<bool(const Parts*)>& f, Time* one,
+             Time* many) {
+  for (int r = 0; r < runs; ++r)
+    for (Time* t : {one, many}) {
+      const Parts* parts = thread_parts(t == one ? 1 : threads);
+      const double w0 = bench::now_ms(), c0 = cpu_ms();
+      if (!f(parts)) {
+        std::fprintf(stderr, "threads_bench: a run failed\n");
+        std::exit(1);
+      }
+      const double w = bench::now_ms() - w0, c = cpu_ms() - c0;
+      if (w < t->wall) t->wall = w;
+      if (c < t->cpu) t->cpu = c;
+    }
+}
+
+void row(const std::string& what, const Time& one, const Time& many, bool equal) {
+  std::printf("| %s | %s | %s | %s | %s | %s | %s | %s |\n", what.c_str(),
+              bench::fmt(one.wall, 1).c_str(), bench::fmt(many.wall, 1).c_str(),
+              bench::fmt(one.wall / many.wall, 2).c_str(), bench::fmt(one.cpu, 1).c_str(),
+              bench::fmt(many.cpu, 1).c_str(), bench::fmt(many.cpu / one.cpu, 2).c_str(),
+              equal ? "yes" : "NO");
+  std::fflush(stdout);
+}
+
+bool same_pieces(const SolidRun& a, const SolidRun& b) {
+  auto same = [](const std::vector<SolidPiece>& x, const std::vector<SolidPiece>& y) {
+    if (x.size() != y.size()) return false;
+    for (size_t i = 0; i < x.size(); ++i)
+      if (x[i].edge != y[i].edge || x[i].t0 != y[i].t0 || x[i].t1 != y[i].t1 || x[i].q != y[i].q ||
+          x[i].hidden != y[i].hidden)
+        return false;
+    return true;
+  };
+  return same(a.pieces, b.pieces) && same(a.contour_diagonals, b.contour_diagonals) &&
+         same(a.intersections, b.intersections);
+}
+
+bool same_cut(const HostCut& a, const HostCut& b) {
+  const CutSet &x = a.set, &y = b.set;
+  return x.n_edges == y.n_edges && x.n_crossings == y.n_crossings &&
+         std::memcmp(x.first, y.first, (size_t{x.n_edges} + 1) * 4) == 0 &&
+         std::memcmp(x.crossings, y.crossings, size_t{x.n_crossings} * sizeof(Crossing)) == 0;
+}
+
+// Every edge of the torus as the hidden-line stage's CUT sees it (the topology's, diagonals too).
+std::vector<Edge3> stage_edges(const SolidScene& scene) {
+  const SolidInput in = solid_input(scene);
+  std::vector<uint64_t> buffer(topology_bytes(in) / 8 + 1);
+  Topology topo;
+  if (build_topology(in, buffer.data(), buffer.size() * 8, &topo) != Status::kOk) std::exit(1);
+  std::vector<Edge3> edges(topo.n_edges);
+  for (uint32_t e = 0; e < topo.n_edges; ++e) edges[e] = topo.edge3(e);
+  return edges;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int n = argc > 2 ? std::atoi(argv[1]) : 1000, k = argc > 2 ? std::atoi(argv[2]) : 500;
+  const int runs = argc > 3 ? std::atoi(argv[3]) : 3;
+  const uint32_t threads = argc > 4 ? uint32_t(std::atoi(argv[4])) : 2;
+  View v = view(30000, 25000);
+  v.substep_bits = kDefaultSubstepBits;
+  SolidScene scene;
+  {
+    Mesh m;
+    torus(&m, 0, 0, 0, 600000, 250000, n, k);
+    if (!project(m, v, &scene)) return 1;
+  }
+  const std::string t = std::to_string(threads);
+  std::printf(
+      "| work | wall ms, 1 thread | wall ms, %s | wall 1 / %s | CPU ms, 1 thread | CPU ms, "
+      "%s | CPU %s / 1 | results equal |\n",
+      t.c_str(), t.c_str(), t.c_str(), t.c_str());
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---|\n");
+  FallbackParams kira;
+  kira.use_classes = kira.use_vc = true;
+  SolidRun runs_of[2];
+  Time one, many;
+  measure(
+      runs, threads,
+      [&](const Parts* p) {
+        SolidRun& r = runs_of[p == nullptr ? 0 : 1];
+        return run_hidden_lines(scene, HiddenMethod::kAuto, kira, &r, false, true, nullptr, p) ==
+               Status::kOk;
+      },
+      &one, &many);
+  row("hidden-line stage, torus of " + std::to_string(scene.triangles.size()) + " triangles", one,
+      many, same_pieces(runs_of[0], runs_of[1]));
+  const std::vector<Edge3> edges = stage_edges(scene);
+  HostCut cuts[2];
+  Time cut_one, cut_many;
+  measure(
+      runs, threads,
+      [&](const Parts* p) {
+        CutParams cp;
+        cp.parts = p;
+        return host_cut(edges, cp, &cuts[p == nullptr ? 0 : 1]) == Status::kOk;
+      },
+      &cut_one, &cut_many);
+  row("its CUT alone (" + std::to_string(edges.size()) + " edges, " +
+          std::to_string(cuts[0].set.n_crossings) + " crossings)",
+      cut_one, cut_many, same_cut(cuts[0], cuts[1]));
+  // Where CUT's time goes on one thread: what the parts split (the cell loop, the sorting)
+  // and what stays serial (the cell lists, the grouping's scatter).
+  const bench::CutTiming phases = bench::time_cut(edges, CutParams{}, runs);
+  // Amdahl's bound for the stage: only the pairs (and the sorting, left out here) split.
+  const double share = cut_one.cpu / one.cpu;
+  const double split = share * phases.t2 / phases.total;
+  std::fprintf(
+      stderr,
+      "CUT's share of the stage, 1 thread: %.0f %% (CPU); its phases (wall, median of %d): "
+      "plan and cell lists %.0f ms, pairs %.0f ms, grouping and sorting %.0f ms. So the "
+      "part of the stage that runs in parts is about %.0f %%, and %u threads can make "
+      "the stage at most %.2f times as fast",
+      100 * share, runs, phases.t1, phases.t2, phases.group, 100 * split, threads,
+      1 / (1 - split + split / threads));
+  const std::vector<Edge3> random = paper_random(50000, 10000, 1);
+  HostCut haloed[2];
+  Time h_one, h_many;
+  measure(
+      runs * 3, threads,
+      [&](const Parts* p) {
+        CutParams cp;
+        cp.parts = p;
+        return host_cut(random, cp, &haloed[p == nullptr ? 0 : 1]) == Status::kOk;
+      },
+      &h_one, &h_many);
+  row("CUT of the paper's random scene (N = 50,000, L = 0.01, " +
+          std::to_string(haloed[0].set.n_crossings) + " crossings)",
+      h_one, h_many, same_cut(haloed[0], haloed[1]));
+  return 0;
+}

@@ -1,0 +1,108 @@
+// CUT split into parts (memory/parts.h) gives the CUTSET one part gives, byte for byte: for
+// any number of parts, run in any order or on threads, with near misses, with rows, with the
+// bounding-box cover, and with a record capacity so tight that parts outgrow their slices
+// (they run again into what the others left) or that the whole does not fit (the count a
+// retry needs, as one part says it).
+#include <cstring>
+#include <vector>
+
+#include "../check.h"
+#include "../support/scenes.h"
+#include "haloplot/cut/cut.h"
+#include "pipeline/thread_parts.h"
+
+using namespace haloplot;
+
+namespace {
+
+struct Result {
+  Status status = Status::kOk;
+  std::vector<uint32_t> first;
+  std::vector<Crossing> records;
+  CutStats stats;
+};
+
+// A runner that runs the parts one after another, last first: the join must not depend on
+// the order the parts finish in.
+void backwards(void*, uint32_t n, PartFn work, void* arg) {
+  for (uint32_t i = n; i-- > 0;) work(arg, i);
+}
+
+Result cut(const std::vector<Edge3>& edges, CutParams params, uint32_t capacity) {
+  CutPlan plan;
+  CHECK(plan_cut(edges.data(), uint32_t(edges.size()), params, &plan) == Status::kOk);
+  std::vector<uint64_t> scratch(plan.scratch_bytes / 8 + 1);
+  std::vector<uint64_t> storage(cutset_bytes(uint32_t(edges.size()), capacity) / 8 + 1);
+  CutSet set;
+  Result r;
+  r.status = run_cut(plan, edges.data(), scratch.data(), scratch.size() * 8, storage.data(),
+                     storage.size() * 8, &set, &r.stats);
+  if (r.status == Status::kOk) {
+    r.first.assign(set.first, set.first + set.n_edges + 1);
+    r.records.assign(set.crossings, set.crossings + set.n_crossings);
+  }
+  return r;
+}
+
+bool same(const Result& a, const Result& b) {
+  const CutStats &x = a.stats, &y = b.stats;
+  return a.status == b.status && a.first == b.first && a.records.size() == b.records.size() &&
+         std::memcmp(a.records.data(), b.records.data(), a.records.size() * sizeof(Crossing)) ==
+             0 &&
+         x.cell_pairs == y.cell_pairs && x.pairs_tested == y.pairs_tested &&
+         x.crossings == y.crossings && x.near_misses == y.near_misses && x.rejected == y.rejected &&
+         x.equal_depth == y.equal_depth && x.outside_rows == y.outside_rows &&
+         x.max_per_edge == y.max_per_edge;
+}
+
+void check_scene(const char* name, const std::vector<Edge3>& edges, CutParams params) {
+  const Result one = cut(edges, params, 4 * uint32_t(edges.size()) + 64);
+  CHECK_MSG(one.status == Status::kOk && !one.records.empty(), std::string(name) + ": no cut");
+  const uint32_t exact = uint32_t(one.records.size());
+  for (uint32_t n : {2u, 3u, 7u, 16u, 100u}) {
+    Parts parts;
+    parts.run = &backwards;
+    parts.count = n;
+    parts.min_work = 0;  // split these small scenes too
+    CutParams p = params;
+    p.parts = &parts;
+    const std::string what = std::string(name) + ", " + std::to_string(n) + " parts";
+    CHECK_MSG(same(cut(edges, p, 4 * uint32_t(edges.size()) + 64), one), what);
+    CHECK_MSG(same(cut(edges, p, exact), one), what + ", exact capacity");
+    const Result short_one = cut(edges, params, exact - 1);
+    const Result short_parts = cut(edges, p, exact - 1);
+    CHECK_MSG(short_parts.status == Status::kCrossingCapacity &&
+                  short_parts.stats.crossings + short_parts.stats.near_misses ==
+                      short_one.stats.crossings + short_one.stats.near_misses,
+              what + ", one record short");
+  }
+  for (uint32_t threads : {2u, 3u}) {
+    CutParams p = params;
+    Parts on_threads = *host::thread_parts(threads);
+    on_threads.min_work = 0;
+    p.parts = &on_threads;
+    const std::string what = std::string(name) + ", " + std::to_string(threads) + " threads";
+    CHECK_MSG(same(cut(edges, p, exact), one), what);
+  }
+}
+
+}  // namespace
+
+int main() {
+  for (uint64_t seed = 1; seed <= 3; ++seed) {
+    const std::vector<Edge3> edges = scenes::paper_random(4000, 30000, seed);
+    CutParams p;
+    check_scene("random", edges, p);
+    p.reach = 200;  // near misses too
+    check_scene("random, near misses", edges, p);
+    p = CutParams{};
+    p.cover = CellCover::kBoundingBox;
+    check_scene("random, bounding-box cover", edges, p);
+    p = CutParams{};
+    p.rows = true;  // a band's rows
+    p.row_lo = 200000;
+    p.row_hi = 600000;
+    check_scene("random, rows", edges, p);
+  }
+  return check::finish("cut_parts");
+}
