@@ -125,8 +125,7 @@ bool load_scene(const std::string& job_path, SendScene* sc, std::string* error) 
   if (edges_file_has_curves(scene)) {
     // The controller draws the curves itself (the core's curve job, as `sim` runs it).
     EdgesWithCurves with_curves;
-    if (!load_curve_job(scene, sc->jf.spec, sc->jf.arena, &with_curves, &sc->jf.spec.substep_bits,
-                        error))
+    if (!load_curve_job(scene, sc->jf.spec, &with_curves, &sc->jf.spec.substep_bits, error))
       return false;
     sc->edges = std::move(with_curves.edges);
     sc->curves = std::move(with_curves.curves);

@@ -29,8 +29,10 @@ expect 'cmp -s t.gcode s.gcode' "sim of the job writes plot's G-code"
 "$tool" plot trefoil.edges --halo 0 -o w.svg --stats 2> w.txt || bad "plot --halo 0"
 expect '[ "$($check count w.svg)" = 1 ] && grep -q "^gaps=0$" w.txt' "halo 0: one stroke, no gap"
 # Refused by name, nothing written.
-for opt in "--cell 100" "--arena 65536" "--cut x.cut" "--reach 4" "--view 10,20" \
-  "--substep 3"; do
+# (An arena is taken, in bands: tests/cli/curve_bands.sh; not with the exact halo, drawn whole,
+# nor with the plotter files of the whole drawing's path.)
+for opt in "--cell 100" "--exact-halo --arena 65536" "--arena 65536 --gcode r.gcode" \
+  "--cut x.cut" "--reach 4" "--view 10,20" "--substep 3"; do
   # shellcheck disable=SC2086
   if "$tool" plot trefoil.edges --halo 80 $opt -o r.svg 2> r.txt; then
     bad "plot of a curve scene with $opt succeeded"
