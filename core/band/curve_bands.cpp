@@ -176,7 +176,10 @@ Status CurveBands::cross_and_draw(Band* b, bool drawing) {
   ++stats_.cut_runs;
   s = run_curve_cross(cp, b->curves, b->segments, arena_ + arena_bytes_ - cross, cross, b->hits,
                       capacity, &b->n_hits, &cs);
-  if (s == Status::kCrossingCapacity) b->need = b->front + cross + cs.needed * sizeof(CurveHit);
+  if (s == Status::kCrossingCapacity) {  // in 64 bits: a 32-bit size_t may not hold it
+    const uint64_t need = uint64_t{b->front} + cross + cs.needed * sizeof(CurveHit);
+    b->need = need < SIZE_MAX ? size_t(need) : SIZE_MAX;
+  }
   if (!ok(s)) return s;
   const size_t hits_end = b->front + carve_round(size_t{b->n_hits} * sizeof(CurveHit));
   note(hits_end + cross);
