@@ -121,5 +121,19 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
   echo 'index and the incidences 3,472, the fallback'\''s outline tables 2,200 and the face grid 3,720;'
   echo 'the sink'\''s carry 5,888, strokes 1,408 and hatch segments 2,064; the edge ids 1,472. The solid'
   echo 'tables above were measured before the peak counted transient bytes.'
+  echo
+  echo '## Curves in bands'
+  echo
+  echo 'A scene with Bézier edges is banded by `core/band/curve_bands.h` (`sim` and `send` of a job with'
+  echo 'an `arena`, `plot --arena`), on the same plan: horizontal bands each fitting the arena, each'
+  echo 'recomputing what it needs. A band takes its own edges (their control points'\'' box meets its'
+  echo 'rows) and every edge whose box meets those boxes'\'' rows widened by the margin (the gaps'\'' reach,'
+  echo 'measured by a margin pass, + 1), and draws only the chords whose upper end lies in its rows,'
+  echo 'each whole: DRAW cuts a visible interval into chords by the interval'\''s width, so a chord is'
+  echo 'never carried across a border, and the band'\''s chords are the unbanded DRAW'\''s exactly'
+  echo '([curves.md](curves.md#in-bands) says why, and what it costs: the demo trefoil job, 58,032'
+  echo 'bytes in one band, plots in 4 bands in 24,576; its long edges put the whole knot'\''s crossing'
+  echo 'scratch in every band). Tests `curve_bands`, `curve_bands_cli` and, under QEMU,'
+  echo '`firmware_curve_bands`.'
 } > docs/bands.md
 echo "wrote docs/bands.md"

@@ -56,6 +56,11 @@ expect '[ "$(grep -c ^bezier persp.edges)" -gt 24 ] && grep -q "in perspective f
 "$tool" plot persp.edges --halo 80 -o p.svg --stats 2> p.txt || bad "plot persp.edges: $(cat p.txt)"
 expect 'grep -q "^crossings=3$" p.txt && grep -q "^gaps=3$" p.txt && [ "$($check count p.svg)" = 3 ]' \
   "the perspective trefoil: 3 crossings, 3 gaps, 3 strokes"
+# And with the exact halo: a perspective knot plotted with exact gaps, to G-code too.
+"$tool" plot persp.edges --halo 80 --exact-halo -o pe.svg --gcode pe.gcode --stats 2> pe.txt ||
+  bad "plot persp.edges --exact-halo: $(cat pe.txt)"
+expect 'grep -q "^gaps=3$" pe.txt && [ "$($check count pe.svg)" = 3 ] && $check gcode pe.svg pe.gcode > /dev/null' \
+  "the perspective trefoil with the exact halo: 3 gaps, 3 strokes, the G-code's runs"
 printf 'scene persp.edges\ndrawing haloed\nhalo 80\nhalo-mode paper\n' > p.job
 expect '"$tool" sim p.job -o p.trace 2> /dev/null' "sim of the perspective trefoil's job"
 expect '! "$tool" demo-scene --curve helix --perspective 300000 -o x.edges 2> /dev/null && [ ! -e x.edges ]' \
