@@ -3,7 +3,7 @@
 // carry, the columns of the pen path), and turns each point back before it leaves. Strokes
 // are rounded in the page's frame (band_attempt.h frame_point; round_to_steps below), so a
 // turned plot's steps are the page's, not a rounding of its turned points.
-#include "haloplot/band/band_attempt.h"
+#include "band/band_attempt.h"
 #include "haloplot/band/conductor.h"
 
 namespace haloplot {

@@ -2,11 +2,11 @@
 // ones joining a piece carried up are deferred to the band above, and the rest are planned a
 // column at a time. Per band and per piece, not per edge read: built for size in a firmware
 // image (core/CMakeLists.txt), where the conductor's per-edge loops (conductor.cpp) are -O2.
-#include "haloplot/band/band_attempt.h"
+#include "band/band_attempt.h"
 #include "haloplot/band/band_rule.h"
 #include "haloplot/band/conductor.h"
-#include "haloplot/memory/carve.h"
-#include "haloplot/sort/in_place_sort.h"
+#include "memory/carve.h"
+#include "sort/in_place_sort.h"
 
 namespace haloplot {
 

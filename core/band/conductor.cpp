@@ -1,8 +1,8 @@
 #include "haloplot/band/conductor.h"
 
-#include "haloplot/band/band_attempt.h"
+#include "band/band_attempt.h"
 #include "haloplot/band/band_rule.h"
-#include "haloplot/memory/carve.h"
+#include "memory/carve.h"
 
 namespace haloplot {
 

@@ -1,7 +1,7 @@
 #include "haloplot/band/curve_bands.h"
 
 #include "haloplot/geometry/units.h"
-#include "haloplot/memory/carve.h"
+#include "memory/carve.h"
 
 namespace haloplot {
 

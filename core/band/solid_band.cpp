@@ -5,12 +5,12 @@
 // (where its faces cross) and contour diagonals (sides of its triangles that are no drawn edge
 // but a contour: visible parts, and hidden ones dashed) are drawn in its rows too, cut at its
 // borders.
-#include "haloplot/band/band_attempt.h"
+#include "band/band_attempt.h"
 #include "haloplot/band/conductor.h"
-#include "haloplot/memory/carve.h"
 #include "haloplot/memory/sized_stage.h"
 #include "haloplot/solid/hidden_lines.h"
-#include "haloplot/sort/in_place_sort.h"
+#include "memory/carve.h"
+#include "sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

@@ -3,9 +3,9 @@
 // ending on the border (band_path.cpp defer_joined); here the band above joins it to its own piece
 // starting there. Part of the solid stage (reached through SolidStage::join), so a program that
 // plots edges in bands never links it (test lean_link).
-#include "haloplot/band/band_attempt.h"
+#include "band/band_attempt.h"
 #include "haloplot/band/conductor.h"
-#include "haloplot/sort/in_place_sort.h"
+#include "sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

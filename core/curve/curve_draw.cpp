@@ -1,7 +1,7 @@
 #include "haloplot/curve/curve_draw.h"
 
-#include "haloplot/memory/carve.h"
-#include "haloplot/sort/in_place_sort.h"
+#include "memory/carve.h"
+#include "sort/in_place_sort.h"
 
 namespace haloplot {
 

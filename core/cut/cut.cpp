@@ -1,11 +1,11 @@
 #include "haloplot/cut/cut.h"
 
-#include "haloplot/cut/near_miss.h"
+#include "cut/near_miss.h"
 #include "haloplot/geometry/fraction.h"
 #include "haloplot/geometry/predicates.h"
 #include "haloplot/geometry/rows.h"
-#include "haloplot/memory/carve.h"
-#include "haloplot/sort/in_place_sort.h"
+#include "memory/carve.h"
+#include "sort/in_place_sort.h"
 
 namespace haloplot {
 

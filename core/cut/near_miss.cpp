@@ -1,4 +1,4 @@
-#include "haloplot/cut/near_miss.h"
+#include "cut/near_miss.h"
 
 #include "haloplot/geometry/fraction.h"
 #include "haloplot/geometry/predicates.h"

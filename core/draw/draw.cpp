@@ -1,7 +1,7 @@
 #include "haloplot/draw/draw.h"
 
 #include "haloplot/geometry/fraction.h"
-#include "haloplot/sort/in_place_sort.h"
+#include "sort/in_place_sort.h"
 
 namespace haloplot {
 

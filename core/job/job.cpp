@@ -1,8 +1,8 @@
 #include "haloplot/job/job.h"
 
 #include "haloplot/geometry/units.h"
-#include "haloplot/memory/carve.h"
 #include "haloplot/solid/modes.h"
+#include "memory/carve.h"
 
 namespace haloplot {
 namespace {

@@ -2,10 +2,10 @@
 
 #include "haloplot/geometry/units.h"
 #include "haloplot/geometry/wide.h"
-#include "haloplot/memory/carve.h"
-#include "haloplot/motion/stroke_clean.h"
-#include "haloplot/motion/stroke_simplify.h"
-#include "haloplot/sort/in_place_sort.h"
+#include "memory/carve.h"
+#include "motion/stroke_clean.h"
+#include "motion/stroke_simplify.h"
+#include "sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

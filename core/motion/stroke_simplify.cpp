@@ -1,4 +1,4 @@
-#include "haloplot/motion/stroke_simplify.h"
+#include "motion/stroke_simplify.h"
 
 #include <stdint.h>
 

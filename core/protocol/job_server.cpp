@@ -1,8 +1,8 @@
 #include "haloplot/protocol/job_server.h"
 
 #include "haloplot/geometry/units.h"
-#include "haloplot/memory/carve.h"
 #include "haloplot/view/facing.h"
+#include "memory/carve.h"
 
 namespace haloplot {
 namespace {

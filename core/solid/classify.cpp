@@ -1,7 +1,7 @@
 #include "haloplot/solid/classify.h"
 
 #include "haloplot/geometry/wide.h"
-#include "haloplot/solid/cover.h"
+#include "solid/cover.h"
 
 namespace haloplot {
 namespace {

@@ -1,4 +1,4 @@
-#include "haloplot/solid/cover.h"
+#include "solid/cover.h"
 
 namespace haloplot {
 namespace {

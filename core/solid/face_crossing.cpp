@@ -1,8 +1,8 @@
-#include "haloplot/solid/face_crossing.h"
+#include "solid/face_crossing.h"
 
 #include "haloplot/geometry/fraction.h"
 #include "haloplot/geometry/wide.h"
-#include "haloplot/solid/pierce.h"
+#include "solid/pierce.h"
 
 namespace haloplot {
 namespace {

@@ -1,7 +1,7 @@
 #include "haloplot/solid/face_grid.h"
 
 #include "haloplot/geometry/wide.h"
-#include "haloplot/memory/carve.h"
+#include "memory/carve.h"
 
 namespace haloplot {
 namespace {

@@ -4,13 +4,13 @@
 #include "haloplot/geometry/predicates.h"
 #include "haloplot/geometry/rows.h"
 #include "haloplot/geometry/wide.h"
-#include "haloplot/memory/carve.h"
 #include "haloplot/solid/classify.h"
-#include "haloplot/solid/cover.h"
 #include "haloplot/solid/face_grid.h"
-#include "haloplot/solid/pierce.h"
 #include "haloplot/solid/qi.h"
-#include "haloplot/sort/in_place_sort.h"
+#include "memory/carve.h"
+#include "solid/cover.h"
+#include "solid/pierce.h"
+#include "sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

@@ -2,7 +2,7 @@
 
 #include "haloplot/geometry/fraction.h"
 #include "haloplot/geometry/quarter_turn.h"
-#include "haloplot/solid/cover.h"
+#include "solid/cover.h"
 
 namespace haloplot {
 namespace {

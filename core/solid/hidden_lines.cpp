@@ -1,7 +1,7 @@
 #include "haloplot/solid/hidden_lines.h"
 
-#include "haloplot/memory/carve.h"
 #include "haloplot/solid/incidence.h"
+#include "memory/carve.h"
 
 namespace haloplot {
 namespace {

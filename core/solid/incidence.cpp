@@ -2,8 +2,8 @@
 
 #include "haloplot/cut/grid.h"
 #include "haloplot/geometry/wide.h"
-#include "haloplot/memory/carve.h"
-#include "haloplot/sort/in_place_sort.h"
+#include "memory/carve.h"
+#include "sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

@@ -1,6 +1,6 @@
 #include "haloplot/solid/intersection_lines.h"
 
-#include "haloplot/solid/face_crossing.h"
+#include "solid/face_crossing.h"
 
 namespace haloplot {
 namespace {

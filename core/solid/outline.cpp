@@ -2,11 +2,11 @@
 
 #include "haloplot/geometry/fraction.h"
 #include "haloplot/geometry/predicates.h"
-#include "haloplot/memory/carve.h"
 #include "haloplot/solid/classify.h"
-#include "haloplot/solid/cover.h"
 #include "haloplot/solid/face_grid.h"
-#include "haloplot/sort/in_place_sort.h"
+#include "memory/carve.h"
+#include "solid/cover.h"
+#include "sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

@@ -1,4 +1,4 @@
-#include "haloplot/solid/pierce.h"
+#include "solid/pierce.h"
 
 #include "haloplot/cut/grid.h"
 #include "haloplot/geometry/contract.h"

@@ -1,10 +1,10 @@
 #include "haloplot/solid/qi.h"
 
-#include "haloplot/memory/carve.h"
 #include "haloplot/solid/classify.h"
-#include "haloplot/solid/cover.h"
 #include "haloplot/solid/face_grid.h"
-#include "haloplot/solid/pierce.h"
+#include "memory/carve.h"
+#include "solid/cover.h"
+#include "solid/pierce.h"
 
 namespace haloplot {
 namespace {

@@ -4,8 +4,8 @@
 #include "haloplot/geometry/predicates.h"
 #include "haloplot/geometry/rows.h"
 #include "haloplot/geometry/wide.h"
-#include "haloplot/solid/cover.h"
-#include "haloplot/solid/pierce.h"
+#include "solid/cover.h"
+#include "solid/pierce.h"
 
 namespace haloplot {
 namespace {

@@ -1,8 +1,8 @@
 #include "haloplot/solid/topology.h"
 
-#include "haloplot/memory/carve.h"
-#include "haloplot/solid/cover.h"
-#include "haloplot/sort/in_place_sort.h"
+#include "memory/carve.h"
+#include "solid/cover.h"
+#include "sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

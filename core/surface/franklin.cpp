@@ -3,10 +3,10 @@
 #include "haloplot/geometry/fraction.h"
 #include "haloplot/geometry/predicates.h"
 #include "haloplot/geometry/wide.h"
-#include "haloplot/memory/carve.h"
-#include "haloplot/solid/cover.h"
 #include "haloplot/solid/incidence.h"
-#include "haloplot/sort/in_place_sort.h"
+#include "memory/carve.h"
+#include "solid/cover.h"
+#include "sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

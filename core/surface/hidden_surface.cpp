@@ -1,6 +1,6 @@
 #include "haloplot/surface/hidden_surface.h"
 
-#include "haloplot/memory/carve.h"
+#include "memory/carve.h"
 
 namespace haloplot {
 namespace {

@@ -2,9 +2,9 @@
 
 #include "haloplot/geometry/fraction.h"
 #include "haloplot/geometry/wide.h"
-#include "haloplot/memory/carve.h"
-#include "haloplot/solid/cover.h"
-#include "haloplot/sort/in_place_sort.h"
+#include "memory/carve.h"
+#include "solid/cover.h"
+#include "sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

@@ -2,7 +2,7 @@
 
 #include "haloplot/geometry/fraction.h"
 #include "haloplot/geometry/wide.h"
-#include "haloplot/sort/in_place_sort.h"
+#include "sort/in_place_sort.h"
 
 namespace haloplot {
 namespace {

@@ -1,7 +1,8 @@
 // The example's board: an MPS2 AN386 (a Cortex-M4 at 25 MHz, CMSDK peripherals) as the motion
-// runner sees it, the static functions haloplot's hal/board_hal.h asks of a board. Wiring, on
-// GPIO 0: STEP of motor 0 and 1 on pins 0 and 1, their DIR on 2 and 3, the drivers' ENABLE
-// (active low) on 4, the pen solenoid on 5. The step clock is the APB timer 0 (interrupt 8).
+// runner sees it, the static functions haloplot's hal/include/haloplot/hal/board_hal.h asks of a
+// board. Wiring, on GPIO 0: STEP of motor 0 and 1 on pins 0 and 1, their DIR on 2 and 3, the
+// drivers' ENABLE (active low) on 4, the pen solenoid on 5. The step clock is the APB timer 0
+// (interrupt 8).
 #pragma once
 #include <haloplot/hal/board_hal.h>
 #include <stdint.h>

@@ -3,7 +3,7 @@
 // QEMU it also writes its step trace over semihosting (the trace format of docs/formats.md),
 // which `haloplot sim` of the same job (job.job beside this file) writes byte for byte.
 #include <haloplot/job/job.h>
-#include <haloplot/motion/motion_runner.h>
+#include <haloplot/controller/motion_runner.h>
 #include <haloplot/scene/cube_array.h>
 #include <haloplot/trace/traced_queue.h>
 

@@ -1,7 +1,7 @@
 // The plotter controller, for every board: boots the board (board/board.h, from the board's
 // folder), then serves the job protocol on its serial link forever
-// (core/protocol/job_server.h), plotting through the step timer (core/motion/motion_runner.h,
-// on this board: app/motion_runner.h).
+// (core/include/haloplot/protocol/job_server.h), plotting through the step timer
+// (core/include/haloplot/controller/motion_runner.h, on this board: app/motion_runner.h).
 //
 // Memory: one arena for the scene and the job buffer (HALOPLOT_FW_ARENA_KB, the board's
 // setting), and the small fixed parts (frame buffer, serial ring, step queue, planner window).

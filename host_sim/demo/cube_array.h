@@ -1,5 +1,5 @@
-// The demo scene on the host: the core's freestanding generator (core/scene/cube_array.h)
-// into a vector.
+// The demo scene on the host: the core's freestanding generator
+// (core/include/haloplot/scene/cube_array.h) into a vector.
 #pragma once
 #include <vector>
 

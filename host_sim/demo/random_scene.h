@@ -1,6 +1,6 @@
 // Random scenes in the HALO paper's EDGE distribution on the host: the core's freestanding
-// generator (core/scene/random_edges.h) into a vector, so the chip and the host build the
-// same scene from the same seed.
+// generator (core/include/haloplot/scene/random_edges.h) into a vector, so the chip and the host
+// build the same scene from the same seed.
 #pragma once
 #include <cstdint>
 #include <vector>

@@ -1,6 +1,6 @@
 // The header line of an .edges or .cut file whose coordinates are in units of 2^-S steps
-// (core/geometry/units.h): "# substep S". Without it the file is in whole steps, as every file
-// written before sub-step units was.
+// (core/include/haloplot/geometry/units.h): "# substep S". Without it the file is in whole steps,
+// as every file written before sub-step units was.
 #pragma once
 #include <cstdint>
 #include <string>

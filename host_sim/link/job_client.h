@@ -1,7 +1,7 @@
-// The host's side of the job protocol (core/protocol/job_server.h): stop-and-wait frames with
-// resends, over any byte transport (a serial port, QEMU's emulated USART through a socket, or
-// an in-process loopback in the tests). It can damage its own frames on purpose, to prove
-// that the controller NAKs them and the job still arrives whole.
+// The host's side of the job protocol (core/include/haloplot/protocol/job_server.h): stop-and-wait
+// frames with resends, over any byte transport (a serial port, QEMU's emulated USART through a
+// socket, or an in-process loopback in the tests). It can damage its own frames on purpose, to
+// prove that the controller NAKs them and the job still arrives whole.
 #pragma once
 #include <cstdint>
 #include <string>

@@ -1,5 +1,5 @@
-// The host's StageMemory (core/memory/sized_stage.h): a buffer that grows to what a sized run
-// asks for, zeroed each time so no run sees the last one's bytes.
+// The host's StageMemory (core/include/haloplot/memory/sized_stage.h): a buffer that grows to what
+// a sized run asks for, zeroed each time so no run sees the last one's bytes.
 #pragma once
 #include <cstdint>
 #include <cstdlib>

@@ -46,7 +46,8 @@ bool parse_mdeg(const std::string& s, int32_t* out) {
 
 // The picture turned counterclockwise by `radians` about the view axis: each point's screen
 // coordinates along ex = (cos az, -sin az, 0) and ey = (sin az sin el, cos az sin el, cos el)
-// rotated, its depth along w = ex x ey kept (the same frame as core/view/projection.h).
+// rotated, its depth along w = ex x ey kept (the same frame as
+// core/include/haloplot/view/projection.h).
 void roll_about_view_axis(const View& view, double radians,
                           std::vector<std::array<double, 3>>* points) {
   const double pi = 3.14159265358979323846;
@@ -213,8 +214,8 @@ bool scale_view(const Options& o, const ObjModel& model, View* view, std::string
   Page page;
   if (!parse_page(o, &page, error)) return false;
   if (page.scale <= 0 || model.vertices.empty()) return true;
-  // The projected extents in world units, as core/view/projection.h projects (in doubles: a
-  // scale needs no exactness, the fit itself stays the core's).
+  // The projected extents in world units, as core/include/haloplot/view/projection.h projects (in
+  // doubles: a scale needs no exactness, the fit itself stays the core's).
   const double pi = 3.14159265358979323846;
   const double az = view->azimuth_mdeg * pi / 180000, el = view->elevation_mdeg * pi / 180000;
   double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
@@ -529,9 +530,10 @@ std::string not_simple_message(const std::string& path, const ObjModel& model,
 }
 
 // What the hidden lines decided per shell, when a shell is not a closed solid: such a shell
-// shows both sides of its faces, so every face hides from both sides (core/solid/qi.h).
-// `weld_hint`: the weld was the default one, which joins corners within the file's rounding;
-// an open shell may have corners its exporter put farther apart: say how to join those.
+// shows both sides of its faces, so every face hides from both sides
+// (core/include/haloplot/solid/qi.h). `weld_hint`: the weld was the default one, which joins
+// corners within the file's rounding; an open shell may have corners its exporter put farther
+// apart: say how to join those.
 std::string shells_note(const std::string& path, const RepairReport& r, bool weld_hint) {
   const uint32_t open = r.shells - r.closed_shells - r.unorientable_shells;
   if (open == 0 && r.unorientable_shells == 0) return "";

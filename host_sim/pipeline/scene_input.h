@@ -20,9 +20,9 @@ namespace haloplot::host {
 // default orthographic), --dump-edges FILE (the projected scene, in the order all outputs use).
 // --up x|y|z|-x|-y|-z: the file's up axis (default z for STL, y for OBJ and PLY:
 // with_model_defaults). --substep S: fit the projected scene in units of 2^-S steps
-// (core/view/projection.h). --weld EPS|off: weld a model's vertices within EPS (its file's
-// units; 0: at the same position) or not (pipeline/mesh_repair.h); the default welds corners
-// within the file's rounding of each other (weld_distance). --crease DEG|exact|off: edges
+// (core/include/haloplot/view/projection.h). --weld EPS|off: weld a model's vertices within EPS
+// (its file's units; 0: at the same position) or not (pipeline/mesh_repair.h); the default welds
+// corners within the file's rounding of each other (weld_distance). --crease DEG|exact|off: edges
 // between faces within DEG degrees, or flat but for the file's rounding, are drawn only as
 // contours (default 0: flat but for the rounding; exact: exactly coplanar only).
 // A camera instead of --view/--perspective: --eye X,Y,Z --look-at X,Y,Z (the model file's

@@ -31,9 +31,9 @@ struct RegionsRun {
 Status run_regions(const SolidScene& scene, const FranklinParams& params, RegionsRun* out);
 
 // kRegions: Franklin's steps 10-11 (the regions of the visible segments, each hatched as the
-// face it shows: core/surface/hidden_surface.h). kLines: every face's own lines, what shows of
-// each decided like an edge's (core/solid/hatch_lines.h, in the hidden-line run: what the job,
-// the bands and the controller draw). The tests compare the two.
+// face it shows: core/include/haloplot/surface/hidden_surface.h). kLines: every face's own lines,
+// what shows of each decided like an edge's (core/include/haloplot/solid/hatch_lines.h, in the
+// hidden-line run: what the job, the bands and the controller draw). The tests compare the two.
 enum class HatchMethod { kRegions, kLines };
 
 struct HatchRun {

@@ -1,6 +1,6 @@
-// The host's side of sub-step units (core/geometry/units.h), as the core's job does it: lengths
-// given in steps become the scene's units on the way in, drawn spans become steps on the way
-// out, once, with the core's own rounding (so a host plot and a controller plot agree).
+// The host's side of sub-step units (core/include/haloplot/geometry/units.h), as the core's job
+// does it: lengths given in steps become the scene's units on the way in, drawn spans become steps
+// on the way out, once, with the core's own rounding (so a host plot and a controller plot agree).
 #pragma once
 #include <cstdint>
 #include <vector>

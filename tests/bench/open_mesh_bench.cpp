@@ -1,13 +1,13 @@
 // Open meshes at full speed: the hidden-line stage of a closed torus of about 1M triangles
 // against the same torus with a tenth of its tube left out (an open surface: the QI counts both
-// sides of every face there, core/solid/qi.h), side by side in one run. Each is sized once by
-// the sized-stage protocol, as a controller with a tight arena would: a first run finds the
-// crossings and incidences, the capacities are set to those, and the bytes grow from a quarter
-// of the first guess until the run fits (each growth half as much again, so the buffer is at
-// most 1.5 times the stage's need). Then each is timed on that buffer, closed and open alternating,
-// the median of the runs; time per triangle and the stage's bytes (its buffer's high-water mark)
-// per triangle. A third row pierces the closed torus with a sphere (the QI's second propagation,
-// stopping where edges pass through faces).
+// sides of every face there, core/include/haloplot/solid/qi.h), side by side in one run. Each is
+// sized once by the sized-stage protocol, as a controller with a tight arena would: a first run
+// finds the crossings and incidences, the capacities are set to those, and the bytes grow from a
+// quarter of the first guess until the run fits (each growth half as much again, so the buffer is
+// at most 1.5 times the stage's need). Then each is timed on that buffer, closed and open
+// alternating, the median of the runs; time per triangle and the stage's bytes (its buffer's
+// high-water mark) per triangle. A third row pierces the closed torus with a sphere (the QI's
+// second propagation, stopping where edges pass through faces).
 //   open_mesh_bench [QUADS_AROUND [QUADS_ACROSS [RUNS]]]   (default 1000 500 3: 1M triangles)
 // Prints a Markdown table (docs/performance.md, "Open meshes").
 #include <cstdio>

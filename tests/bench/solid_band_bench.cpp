@@ -1,11 +1,11 @@
 // Solid band benchmark: a solid's hidden lines in a fixed arena. Solid cube arrays (N x N
 // cubes drawn as the demo draws them, view 30,25, hidden-dashed) are plotted by the band
 // conductor's solid stage in each arena given, and in one band; the peer for time is the
-// whole-model run (core/solid/hidden_lines.h: QI on the whole model in one buffer, the way the
-// controller works a solid that fits). Reports, per scene and arena: the bands, the arena's
-// peak, whether every stroke equals the one-band run's and the visible runs equal the QI run's,
-// the host time against the whole-model run, and the pen-up travel against one band.
-// Usage: solid_band_bench ARENA_BYTES... > table.md
+// whole-model run (core/include/haloplot/solid/hidden_lines.h: QI on the whole model in one buffer,
+// the way the controller works a solid that fits). Reports, per scene and arena: the bands, the
+// arena's peak, whether every stroke equals the one-band run's and the visible runs equal the QI
+// run's, the host time against the whole-model run, and the pen-up travel against one band. Usage:
+// solid_band_bench ARENA_BYTES... > table.md
 #include <algorithm>
 #include <array>
 #include <cstdio>

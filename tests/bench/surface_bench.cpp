@@ -1,4 +1,5 @@
-// Franklin 1980's claims, measured on the core's implementation (core/surface/franklin.h):
+// Franklin 1980's claims, measured on the core's implementation
+// (core/include/haloplot/surface/franklin.h):
 //   1. linear time: random squares and tessellated spheres, time per face flat from about
 //      10^3 to 10^5 faces at a fixed depth complexity;
 //   2. depth complexity does not matter: N fixed, D from 0.1 to 30, time flat or falling, and

@@ -3,8 +3,8 @@
 // with the view's rotation in double precision, and decides a point of an edge hidden exactly when
 // the open segment from it to the eye (orthographic: the ray towards the viewer) passes
 // through the inside of a triangle. It shares no code with core/: the camera is written here
-// from the formulas in core/view/projection.h's header comment, and nothing is rounded to
-// steps. Host-only.
+// from the formulas in core/include/haloplot/view/projection.h's header comment, and nothing is
+// rounded to steps. Host-only.
 //
 // Visible length: an edge is sampled at every half step of its exact screen image (screen
 // parameter s, mapped to the world segment by the projective inverse, so the samples are

@@ -2,14 +2,14 @@
 # The HAL's compile-time checks must see what they guard: a step HAL or a board that lacks a
 # member must fail to build, with a message that names the member; a complete one must build.
 # Each case is a small translation unit compiled (syntax only) against the real headers.
-# Usage: hal_checks.sh INCLUDE_ROOT CXX   (the build tree's include/, where haloplot/ is)
+# Usage: hal_checks.sh SOURCE_DIR CXX   (the headers from core/include and hal/include)
 set -u
 root=$1
 cxx=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 pass=0 fail=0
-flags=(-std=c++17 -fsyntax-only -ffreestanding -fno-exceptions -fno-rtti -I"$root")
+flags=(-std=c++17 -fsyntax-only -ffreestanding -fno-exceptions -fno-rtti -I"$root/core/include" -I"$root/hal/include")
 
 # try NAME EXPECT CODE: EXPECT is "ok" or the text the error must contain.
 try() {

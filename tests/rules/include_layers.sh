@@ -2,7 +2,7 @@
 # Layers point one way: a file may include its own folder or a folder below its own, never one
 # above. core/'s folders from the bottom:
 #   0 status geometry sort hal   1 memory   2 scene view view2d   3 cut   4 draw
-#   5 curve solid   6 surface   7 motion   8 trace   9 band   10 job   11 protocol
+#   5 curve solid   6 surface   7 motion   8 trace   9 band   10 job   11 protocol   12 controller
 # (folders of one rank do not include each other either). In host_sim/, cli/ is the top: no
 # other folder includes it. firmware/ includes nothing from tests/.
 # The upward includes the tree still has are listed below, each to be moved away; any other
@@ -19,8 +19,6 @@ if [ "${2:-}" = plant ]; then
   src="$copy"
 fi
 known=(
-  "core/motion/motion_runner.h job"       # the runner's job server glue: to a layer above job
-  "core/motion/motion_runner.h protocol"
   "host_sim/pipeline/scene_input.cpp cli" # the command line's Options in the pipeline
   "host_sim/pipeline/scene_input.h cli"
   "host_sim/export/page.h cli"
@@ -31,7 +29,8 @@ rank() {
   case "$1" in
     status | geometry | sort | hal) echo 0 ;; memory) echo 1 ;; scene | view | view2d) echo 2 ;;
     cut) echo 3 ;; draw) echo 4 ;; curve | solid) echo 5 ;; surface) echo 6 ;; motion) echo 7 ;;
-    trace) echo 8 ;; band) echo 9 ;; job) echo 10 ;; protocol) echo 11 ;; *) echo "" ;;
+    trace) echo 8 ;; band) echo 9 ;; job) echo 10 ;; protocol) echo 11 ;; controller) echo 12 ;;
+    *) echo "" ;;
   esac
 }
 is_known() {
@@ -51,7 +50,8 @@ while IFS= read -r f; do
   folder=$(basename "$(dirname "$f")")
   own=$(rank "$folder")
   [ -n "$own" ] || continue
-  for t in $(grep -oE '#include "haloplot/[a-z0-9_]+/' "$f" | sed -E 's|.*haloplot/||; s|/$||' | sort -u); do
+  # Public headers are included as "haloplot/<folder>/...", internal ones as "<folder>/...".
+  for t in $(grep -oE '#include "(haloplot/)?[a-z0-9_]+/' "$f" | sed -E 's|.*"(haloplot/)?||; s|/$||' | sort -u); do
     [ "$t" = "$folder" ] && continue
     r=$(rank "$t")
     check "$f" "$t" "$([ -n "$r" ] && [ "$r" -lt "$own" ] && echo 1 || echo 0)"

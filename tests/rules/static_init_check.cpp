@@ -16,7 +16,7 @@ using namespace haloplot;
 
 namespace static_init {  // named, so the objects below keep external linkage
 
-// A board with what the motion runner needs (hal/board_hal.h), doing nothing.
+// A board with what the motion runner needs (hal/include/haloplot/hal/board_hal.h), doing nothing.
 struct Board {
   static void init() {}
   static void step_high(uint8_t) {}

@@ -11,15 +11,15 @@
 #     fail.
 # The runtime side: the example firmware's start-up runs no constructors and plots through the
 # runner under QEMU (the CTest `examples`).
-# Usage: static_init_test.sh SOURCE_DIR INCLUDE_ROOT HOST_CXX
+# Usage: static_init_test.sh SOURCE_DIR HOST_CXX
 set -uo pipefail
-src=$1 inc=$2 cxx=$3
+src=$1 cxx=$2
 check="$src/tests/rules/static_init_check.cpp"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail=0
 bad() { echo "FAILED: $*"; fail=1; }
-flags=(-std=c++17 -Wall -Wextra -Werror -I "$inc")
+flags=(-std=c++17 -Wall -Wextra -Werror -I "$src/core/include" -I "$src/hal/include")
 
 "$cxx" "${flags[@]}" -fsyntax-only "$check" || bad "the objects are not all constant-initialised ($cxx)"
 if "$cxx" "${flags[@]}" -DPLANT_CONSTINIT -fsyntax-only "$check" > "$work/plant.out" 2>&1; then

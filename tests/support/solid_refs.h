@@ -6,8 +6,8 @@
 #include <tuple>
 #include <vector>
 
-#include "haloplot/solid/cover.h"
 #include "pipeline/solid_pipeline.h"
+#include "solid/cover.h"
 
 namespace solid_refs {
 

@@ -1,4 +1,4 @@
-// Curves in bands (core/band/curve_bands.h): every chord a banded plot draws is a chord of the
+// Curves in bands (haloplot/band/curve_bands.h): every chord a banded plot draws is a chord of the
 // unbanded curve DRAW (the job's settings, curve_job_params), the same edge, the same Q0.32
 // ends and the same rounded segment, each drawn once, whatever the arena and band height; the
 // knots' crossings at and through joints and gaps carried across joints included.

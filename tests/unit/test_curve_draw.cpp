@@ -1,4 +1,5 @@
-// Haloed curves (core/curve/curve_draw.h) against references that share no code with the core:
+// Haloed curves (core/include/haloplot/curve/curve_draw.h) against references that share no code
+// with the core:
 //  1. knots and a helix with its axis: every crossing of the long-double reference (dense
 //     sampling refined by Newton's method, tests/reference/curve_reference.h) has exactly one
 //     gap, on the strand behind, and the strand in front is drawn there; each side of a gap has

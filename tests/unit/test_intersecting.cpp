@@ -13,9 +13,11 @@
 //     edge lies exactly along an occluder's side on paper the cast grazes, and the 3-D model
 //     decides alone), against the model within one step on every edge (the scenes fitted in
 //     the default sub-step units; in whole steps a few grazing edges of the torus missed).
-//     The QI settles them (it stops where edges pass through faces: core/solid/qi.h), and so
-//     does the fallback; the control, QI from what paper alone shows, must fail the comparison.
-//   - the intersection lines (core/solid/intersection_lines.h) against the same scenes' lines
+//     The QI settles them (it stops where edges pass through faces:
+//     core/include/haloplot/solid/qi.h), and so does the fallback; the control, QI from what paper
+//     alone shows, must fail the comparison.
+//   - the intersection lines (core/include/haloplot/solid/intersection_lines.h) against the same
+//   scenes' lines
 //     found here in double precision: every pair of triangles without a shared vertex id
 //     crossed in view space (a triangle-triangle intersection written out below), and each
 //     segment's visible length ray cast with its two faces left out. Per pair of faces, the
@@ -32,10 +34,10 @@
 #include <vector>
 
 #include "../check.h"
-#include "haloplot/solid/face_crossing.h"
-#include "haloplot/solid/pierce.h"
 #include "haloplot/view/projection.h"
 #include "reference/ray_cast.h"
+#include "solid/face_crossing.h"
+#include "solid/pierce.h"
 #include "support/solid_scenes.h"
 
 using namespace haloplot;

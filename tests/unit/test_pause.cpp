@@ -1,5 +1,5 @@
-// Feed hold (pause and resume, core/motion/step_prep.h) checked from the traces alone, by the
-// independent reader (tests/reference/trace_checker.h):
+// Feed hold (pause and resume, core/include/haloplot/motion/step_prep.h) checked from the traces
+// alone, by the independent reader (tests/reference/trace_checker.h):
 //   - the README's demo (Figure 4 on its CoreXY machine) paused at 100 random moments, and a
 //     hidden-dashed solid with backlash paused at 40: every hold comes to rest within the
 //     acceleration limit (no speed change at one step beyond what accel allows, away from the

@@ -1,7 +1,7 @@
-// The one sized-stage protocol (core/memory/sized_stage.h): run_sized() raises exactly the
-// needs a short run reports and nothing else, stops when a report raises nothing (so a stage
-// that under-reports cannot spin), never runs a fixed arena below a known floor, and the core's
-// stages report what really fits: CUT's records equal a brute-force count, a buffer one byte
+// The one sized-stage protocol (core/include/haloplot/memory/sized_stage.h): run_sized() raises
+// exactly the needs a short run reports and nothing else, stops when a report raises nothing (so a
+// stage that under-reports cannot spin), never runs a fixed arena below a known floor, and the
+// core's stages report what really fits: CUT's records equal a brute-force count, a buffer one byte
 // short of the reported bytes fails and the reported bytes succeed.
 #include <algorithm>
 #include <vector>

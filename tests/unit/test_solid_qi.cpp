@@ -13,8 +13,8 @@
 #include <string>
 
 #include "check.h"
-#include "haloplot/solid/cover.h"
 #include "pipeline/surface_pipeline.h"
+#include "solid/cover.h"
 #include "support/solid_refs.h"
 #include "support/solid_scenes.h"
 

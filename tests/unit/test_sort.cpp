@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "../check.h"
-#include "haloplot/sort/in_place_sort.h"
+#include "sort/in_place_sort.h"
 
 using namespace haloplot;
 

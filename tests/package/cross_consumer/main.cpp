@@ -4,7 +4,7 @@
 // symbols.
 #include <haloplot/cut/cut.h>
 #include <haloplot/memory/sized_stage.h>
-#include <haloplot/motion/motion_runner.h>
+#include <haloplot/controller/motion_runner.h>
 #include <haloplot/scene/cube_array.h>
 
 using namespace haloplot;
@@ -15,8 +15,8 @@ alignas(8) uint8_t arena[16384];
 
 volatile uint32_t& reg(uint32_t address) { return *reinterpret_cast<volatile uint32_t*>(address); }
 
-// A board as hal/board_hal.h states it: STEP/DIR/ENABLE on a GPIO port, a pen pin, a one-shot
-// timer, end stops, a watchdog and a serial link.
+// A board as hal/include/haloplot/hal/board_hal.h states it: STEP/DIR/ENABLE on a GPIO port, a pen
+// pin, a one-shot timer, end stops, a watchdog and a serial link.
 struct Board {
   static void init() { reg(0x40000000) = 1; }
   static void step_high(uint8_t m) { reg(0x40000010) = 1u << m; }

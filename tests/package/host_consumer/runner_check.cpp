@@ -6,7 +6,7 @@
 // began (finish home, after a feed hold too), an end stop stops the timer at once, an abort
 // lifts the pen.
 #include <haloplot/job/job.h>
-#include <haloplot/motion/motion_runner.h>
+#include <haloplot/controller/motion_runner.h>
 
 #include <cstdio>
 #include <vector>

@@ -1,6 +1,6 @@
 // The MPS2 AN385 board (pins in board/pins.h, drivers in drivers/, all in boards/mps2_an385/)
-// as the portable controller sees it: the static functions hal/board_hal.h asks of a board,
-// each a forward to this board's driver.
+// as the portable controller sees it: the static functions hal/include/haloplot/hal/board_hal.h
+// asks of a board, each a forward to this board's driver.
 #pragma once
 #include <stdint.h>
 

@@ -1,7 +1,7 @@
 // The STM32F405 board (pins in board/pins.h, drivers in drivers/, all in boards/stm32f405/) as the
-// portable controller sees it: the static functions hal/board_hal.h asks of a board, each a forward
-// to the chip's driver. A port to another board writes its own such type over its own drivers and
-// names it in board/board.h; firmware/app does not change.
+// portable controller sees it: the static functions hal/include/haloplot/hal/board_hal.h asks of a
+// board, each a forward to the chip's driver. A port to another board writes its own such type over
+// its own drivers and names it in board/board.h; firmware/app does not change.
 #pragma once
 #include <stdint.h>
 

@@ -25,7 +25,8 @@ template <typename B>
 constexpr bool check_board_serial() {
   static_assert(HasSerialInit<B>::value, "the board has no static void serial_init(uint32_t baud)");
   static_assert(HasSerialRead<B>::value,
-                "the board has no static bool serial_read(uint8_t* byte) (hal/serial.h)");
+                "the board has no static bool serial_read(uint8_t* byte) "
+                "(hal/include/haloplot/hal/serial.h)");
   static_assert(HasSerialWrite<B>::value,
                 "the board has no static void serial_write(const uint8_t*, uint32_t)");
   static_assert(HasSerialOverruns<B>::value, "the board has no static uint32_t serial_overruns()");

@@ -7,7 +7,7 @@
 // parameter, so each pin write inlines. Events fire at the floor of the exact running sum of
 // the Q8 intervals: rounding never accumulates.
 //
-// Hal must provide what hal/plotter_hal.h names: void step(uint8_t motor);
+// Hal must provide what hal/include/haloplot/hal/plotter_hal.h names: void step(uint8_t motor);
 // void set_direction(uint8_t motor, bool backward); void pen(bool down). It is checked here,
 // where every HAL is plugged in, and a missing member fails the build with its name.
 #pragma once
@@ -20,7 +20,8 @@ namespace haloplot {
 
 template <typename Hal, typename Queue>
 class StepEngine {
-  static_assert(hal::check_plotter_hal<Hal>(), "the step engine's HAL (hal/plotter_hal.h)");
+  static_assert(hal::check_plotter_hal<Hal>(),
+                "the step engine's HAL (hal/include/haloplot/hal/plotter_hal.h)");
 
  public:
   // Assignable: a motion runner starts each plot with a fresh engine on the same HAL and queue.

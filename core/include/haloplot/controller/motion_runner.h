@@ -1,8 +1,9 @@
 // The plot in real time on a board: the main loop refills the step queue (planner and step
 // prep), the step clock's interrupt runs the shared step tick (step_engine.h). Header-only, a
-// template over the board (hal/board_hal.h: its stepper drivers, pen and step clock, static
-// functions) and the step HAL the tick drives (hal/plotter_hal.h; by default the board's own
-// pins, BoardStepHal). Wiring it into an image (docs/porting.md):
+// template over the board (hal/include/haloplot/hal/board_hal.h: its stepper drivers, pen and step
+// clock, static functions) and the step HAL the tick drives
+// (hal/include/haloplot/hal/plotter_hal.h; by default the board's own pins, BoardStepHal). Wiring
+// it into an image (docs/porting.md):
 //
 //   MotionRunner<MyBoard> motion;
 //   extern "C" void step_timer_irq() { motion.on_timer(); }       // the step clock's interrupt
@@ -57,7 +58,8 @@ HALOPLOT_HAL_MEMBER(HasPlotEnd, hal::detail::object<H>().plot_end())
 
 template <typename Board, typename Hal = BoardStepHal<Board>, typename Queue = SegmentQueue<64>>
 class MotionRunner {
-  static_assert(hal::check_motion_board<Board>(), "the motion runner's board (hal/board_hal.h)");
+  static_assert(hal::check_motion_board<Board>(),
+                "the motion runner's board (hal/include/haloplot/hal/board_hal.h)");
   static_assert(hal::check_virtual_clock<Hal>(), "the motion runner's step HAL keeps `now`");
 
  public:

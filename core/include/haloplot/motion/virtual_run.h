@@ -4,7 +4,7 @@
 // difference between their traces can only come from the arithmetic of the two targets.
 //
 // Hal must provide `uint64_t now` (set here before each tick) besides the StepEngine calls
-// (hal/step_clock.h, checked at compile time).
+// (hal/include/haloplot/hal/step_clock.h, checked at compile time).
 #pragma once
 #include <stdint.h>
 
@@ -64,7 +64,8 @@ inline Status skip_events(MotionPlanner& planner, StepPrep& prep, uint32_t event
 template <typename Hal, typename Queue>
 Status run_virtual(MotionPlanner& planner, StepPrep& prep, Queue& queue, Hal& hal,
                    StepEngine<Hal, Queue>& engine, HoldSchedule holds = {}) {
-  static_assert(hal::check_virtual_clock<Hal>(), "run_virtual's HAL (hal/step_clock.h)");
+  static_assert(hal::check_virtual_clock<Hal>(),
+                "run_virtual's HAL (hal/include/haloplot/hal/step_clock.h)");
   uint32_t next_hold = 0;
   Status s = prep.fill(planner, queue);
   if (!ok(s)) return s;

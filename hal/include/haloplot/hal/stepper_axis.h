@@ -1,6 +1,6 @@
 // The stepper drivers: STEP and DIR per motor (an A4988/TMC-style driver), on the step path.
-// The step tick (core/motion/step_engine.h) calls these on every event, so a HAL is a plain
-// class used as a template parameter: no virtual call on the step path.
+// The step tick (core/include/haloplot/motion/step_engine.h) calls these on every event, so a HAL
+// is a plain class used as a template parameter: no virtual call on the step path.
 //
 //   struct MyHal {
 //     void step(uint8_t motor);                          // one STEP pulse
@@ -24,10 +24,11 @@ HALOPLOT_HAL_MEMBER(HasSetDirection, detail::object<H>().set_direction(uint8_t{0
 template <typename H>
 constexpr bool check_stepper_axes() {
   static_assert(HasStep<H>::value,
-                "this HAL has no void step(uint8_t motor): one STEP pulse (hal/stepper_axis.h)");
+                "this HAL has no void step(uint8_t motor): one STEP pulse "
+                "(hal/include/haloplot/hal/stepper_axis.h)");
   static_assert(HasSetDirection<H>::value,
                 "this HAL has no void set_direction(uint8_t motor, bool backward) "
-                "(hal/stepper_axis.h)");
+                "(hal/include/haloplot/hal/stepper_axis.h)");
   return true;
 }
 

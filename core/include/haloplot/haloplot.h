@@ -27,7 +27,7 @@
 #include "haloplot/band/conductor.h"
 #include "haloplot/job/job.h"
 #include "haloplot/motion/machine.h"
-#include "haloplot/motion/motion_runner.h"
+#include "haloplot/controller/motion_runner.h"
 #include "haloplot/motion/planner.h"
 #include "haloplot/motion/step_engine.h"
 #include "haloplot/motion/step_prep.h"

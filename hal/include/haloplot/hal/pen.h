@@ -15,7 +15,8 @@ HALOPLOT_HAL_MEMBER(HasPen, detail::object<H>().pen(false))
 
 template <typename H>
 constexpr bool check_pen() {
-  static_assert(HasPen<H>::value, "this HAL has no void pen(bool down) (hal/pen.h)");
+  static_assert(HasPen<H>::value,
+                "this HAL has no void pen(bool down) (hal/include/haloplot/hal/pen.h)");
   return true;
 }
 

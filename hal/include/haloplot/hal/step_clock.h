@@ -1,7 +1,8 @@
 // The step clock. On a board it is a one-shot timer whose interrupt calls the step tick, which
 // returns the delay to the next event in ticks (0: stop); see board_hal.h for the calls the
-// controller makes. In virtual time (core/motion/virtual_run.h: the simulator and the chip's
-// self-tests) the clock is a counter on the step HAL that the run advances by each delay:
+// controller makes. In virtual time (core/include/haloplot/motion/virtual_run.h: the simulator and
+// the chip's self-tests) the clock is a counter on the step HAL that the run advances by each
+// delay:
 //
 //   struct MyHal {
 //     uint64_t now;   // ticks since the plot began; events are stamped with it
@@ -19,7 +20,7 @@ template <typename H>
 constexpr bool check_virtual_clock() {
   static_assert(HasVirtualClock<H>::value,
                 "this HAL has no uint64_t now: run_virtual stamps events with it "
-                "(hal/step_clock.h)");
+                "(hal/include/haloplot/hal/step_clock.h)");
   return true;
 }
 
