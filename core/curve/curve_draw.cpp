@@ -899,7 +899,8 @@ Status emit_visible(const Ctl& c, uint32_t k, uint64_t t0, uint64_t t1, uint64_t
                     SpanSink chords, const CurveIntervalSink* intervals, CurveDrawStats& st) {
   ++st.intervals;
   if (intervals != nullptr) {
-    const Status s = intervals->emit(intervals->context, CurveInterval{k, t0, t1});
+    const Status s =
+        intervals->emit(intervals->context, CurveInterval{k, int64_t(t0), int64_t(t1)});
     if (!ok(s)) return s;
   }
   const uint64_t w = t1 - t0;

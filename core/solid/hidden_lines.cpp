@@ -38,35 +38,29 @@ struct Adapter {
 
 Status qi_piece(void* ctx, const QiPiece& p) {
   const Adapter* a = static_cast<const Adapter*>(ctx);
-  return a->sink.piece(a->sink.context,
-                       HiddenPiece{p.edge, a->edges + p.edge, p.t0, p.t1, p.q, p.q != 0, true});
+  return a->sink.piece(a->sink.context, HiddenPiece{p, a->edges + p.edge, p.q, p.q != 0, true});
 }
 
 Status fallback_piece(void* ctx, const FallbackPiece& p) {
   const Adapter* a = static_cast<const Adapter*>(ctx);
-  return a->sink.piece(a->sink.context,
-                       HiddenPiece{p.edge, a->edges + p.edge, p.t0, p.t1, p.q, p.hidden, p.tested});
+  return a->sink.piece(a->sink.context, HiddenPiece{p, a->edges + p.edge, p.q, p.hidden, p.tested});
 }
 
 Status fallback_outline(void* ctx, const FallbackPiece& p) {
   const Adapter* a = static_cast<const Adapter*>(ctx);
   if (a->sink.outline == nullptr) return Status::kOk;
-  return a->sink.outline(a->sink.context,
-                         HiddenPiece{p.edge, a->edges + p.edge, p.t0, p.t1, 0, false, true});
+  return a->sink.outline(a->sink.context, HiddenPiece{p, a->edges + p.edge, 0, false, true});
 }
 
 Status outline_piece(void* ctx, const OutlineSegment& s) {
   const Adapter* a = static_cast<const Adapter*>(ctx);
   if (a->sink.outline == nullptr) return Status::kOk;
-  return a->sink.outline(a->sink.context,
-                         HiddenPiece{s.edge, a->edges + s.edge, s.t0, s.t1, 0, false, true});
+  return a->sink.outline(a->sink.context, HiddenPiece{s, a->edges + s.edge, 0, false, true});
 }
 
 Status line_piece(const Adapter* a, const LinePiece& p, bool hatch) {
-  return a->sink.piece(a->sink.context, HiddenPiece{a->n_edges + p.index,
+  return a->sink.piece(a->sink.context, HiddenPiece{{a->n_edges + p.edge, p.t0, p.t1},
                                                     p.segment,
-                                                    p.t0,
-                                                    p.t1,
                                                     p.q,
                                                     p.hidden,
                                                     true,

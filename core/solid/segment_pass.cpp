@@ -112,7 +112,7 @@ Status SegmentPass::run(uint32_t index, LineSink sink, LineRows rows) const {
   // The lower border cut a piece unless a cut lies exactly on it; the upper likewise (known
   // once the cuts reach it).
   bool clipped = w.lo > 0, clipped_top = w.hi < kOne;
-  LinePiece pending{index, {own[0], own[1]}, &s, 0, 0, 0, false};
+  LinePiece pending{{index, 0, 0}, {own[0], own[1]}, &s, 0, false};
   bool have = false;
   int32_t q = 0;
   auto piece = [&](int64_t t0, int64_t t1) {

@@ -2,8 +2,8 @@
 // on a CoreXY machine by haloplot::MotionRunner, stepped from the timer's interrupt. Under
 // QEMU it also writes its step trace over semihosting (the trace format of docs/formats.md),
 // which `haloplot sim` of the same job (job.job beside this file) writes byte for byte.
-#include <haloplot/job/job.h>
 #include <haloplot/controller/motion_runner.h>
+#include <haloplot/job/job.h>
 #include <haloplot/scene/cube_array.h>
 #include <haloplot/trace/traced_queue.h>
 

@@ -1,5 +1,5 @@
-// The controller's motion: the library's runner (core/include/haloplot/controller/motion_runner.h) on
-// this image's board, its step HAL the board's pins. Test images (HALOPLOT_FW_TEST_HOOKS) also
+// The controller's motion: the library's runner (core/include/haloplot/controller/motion_runner.h)
+// on this image's board, its step HAL the board's pins. Test images (HALOPLOT_FW_TEST_HOOKS) also
 // trace every event for comparison with the host simulator: their HAL writes the trace beside each
 // pin, and their queue shows it each segment the tick takes. The flashed image has none of that:
 // the trace's decimal text needs division, which its step path must not (check_image.cmake).

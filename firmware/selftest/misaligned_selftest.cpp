@@ -1,11 +1,11 @@
 // The memory contract on the chip, booted under QEMU by `firmware_misaligned` (and on the M3,
 // `firmware_mps2_misaligned`): every public entry that takes a caller buffer, the buffer at
-// offsets 0 to 8 from an 8-byte boundary (tests/unit/misaligned_checks.h, the host test's
+// offsets 0 to 8 from an 8-byte boundary (firmware/selftest/misaligned_checks.h, the host test's
 // checks). A misaligned access on a Cortex-M faults and hangs the image in its fault handler,
 // which the test's timeout turns into a failure; every check that ends prints nothing but a
 // failure, then one "fw misaligned" summary line.
 #include "platform/semihosting.h"
-#include "unit/misaligned_checks.h"
+#include "selftest/misaligned_checks.h"
 
 using namespace haloplot;
 using namespace haloplot::fw;

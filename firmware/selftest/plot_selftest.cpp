@@ -19,8 +19,8 @@
 #include "platform/console.h"
 #include "platform/instruction_counter.h"
 #include "platform/semihosting.h"
+#include "selftest/tick_workload.h"
 #include "selftest_support.h"
-#include "tick_workload.h"
 
 using namespace haloplot;
 using namespace haloplot::fw;
@@ -338,7 +338,7 @@ void plot_on_chip() {
   stat("motion_instructions_with_trace", ticks_to_instructions(t6 - t5));
 }
 
-// One step event alone: the host benchmark's workload (tests/bench/tick_workload.h) on a
+// One step event alone: the host benchmark's workload (firmware/selftest/tick_workload.h) on a
 // GPIO-like HAL.
 void step_event_alone() {
   GpioHal gpio;

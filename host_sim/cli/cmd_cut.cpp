@@ -10,11 +10,11 @@
 #include "cli/commands.h"
 #include "cli/haloed_options.h"
 #include "cli/haloed_outputs.h"
+#include "cli/scene_input.h"
 #include "io/atomic_file.h"
 #include "io/cut_file.h"
 #include "io/substep_header.h"
 #include "pipeline/host_pipeline.h"
-#include "pipeline/scene_input.h"
 #include "pipeline/units.h"
 
 namespace haloplot::host {

@@ -17,6 +17,7 @@
 #include "cli/haloed_outputs.h"
 #include "cli/page_options.h"
 #include "cli/plot_outputs.h"
+#include "cli/scene_input.h"
 #include "cli/stage_progress.h"
 #include "io/atomic_file.h"
 #include "io/cut_file.h"
@@ -24,7 +25,6 @@
 #include "io/mesh_file.h"
 #include "io/substep_header.h"
 #include "pipeline/host_pipeline.h"
-#include "pipeline/scene_input.h"
 #include "pipeline/units.h"
 
 namespace haloplot::host {

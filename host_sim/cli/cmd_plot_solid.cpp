@@ -13,6 +13,7 @@
 #include "cli/options.h"
 #include "cli/page_options.h"
 #include "cli/plot_outputs.h"
+#include "cli/scene_input.h"
 #include "cli/solid_options.h"
 #include "cli/stage_progress.h"
 #include "io/atomic_file.h"
@@ -20,7 +21,6 @@
 #include "io/spans_file.h"
 #include "pipeline/drawing_modes.h"
 #include "pipeline/host_memory.h"
-#include "pipeline/scene_input.h"
 #include "pipeline/units.h"
 #include "render/svg.h"
 

@@ -13,16 +13,16 @@
 #include "cli/cmd_plot_curves.h"
 #include "cli/command_line.h"
 #include "cli/commands.h"
+#include "cli/job_file.h"
 #include "cli/options.h"
+#include "cli/scene_input.h"
 #include "cli/solid_options.h"
 #include "io/edges_file.h"
-#include "io/job_file.h"
 #include "io/line_reader.h"
 #include "io/mesh_file.h"
 #include "io/obj_file.h"
 #include "link/job_client.h"
 #include "link/serial_port.h"
-#include "pipeline/scene_input.h"
 #include "pipeline/triangulate.h"
 
 namespace haloplot::host {

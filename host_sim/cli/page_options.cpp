@@ -1,13 +1,96 @@
 #include "cli/page_options.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
 
 #include "io/atomic_file.h"
+#include "io/line_reader.h"
 
 namespace haloplot::host {
+
+namespace {
+
+// "210", "215.9", "0.5" mm to thousandths; false if not such a number (up to 3 decimals).
+bool parse_um(const std::string& s, int64_t lo, int64_t hi, int64_t* um) {
+  const size_t dot = s.find('.');
+  const std::string whole = s.substr(0, dot);
+  std::string frac = dot == std::string::npos ? "" : s.substr(dot + 1);
+  if (frac.size() > 3 || frac.find_first_not_of("0123456789") != std::string::npos ||
+      (dot != std::string::npos && frac.empty()))
+    return false;
+  int64_t w = 0;
+  if (whole.empty() || !parse_int(whole, 0, 100000, &w)) return false;
+  while (frac.size() < 3) frac += '0';
+  *um = w * 1000 + std::stoll(frac);
+  return *um >= lo && *um <= hi;
+}
+
+bool named_page(const std::string& name, int64_t* w, int64_t* h) {
+  struct Named {
+    const char* name;
+    int64_t w, h;
+  };
+  static const Named kPages[] = {{"a5", 148000, 210000},    {"a4", 210000, 297000},
+                                 {"a3", 297000, 420000},    {"letter", 215900, 279400},
+                                 {"legal", 215900, 355600}, {"tabloid", 279400, 431800}};
+  std::string lower = name;
+  for (char& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
+  for (const Named& p : kPages)
+    if (lower == p.name) {
+      *w = p.w;
+      *h = p.h;
+      return true;
+    }
+  const size_t x = lower.find('x');
+  return x != std::string::npos && parse_um(lower.substr(0, x), 1000, 10000000, w) &&
+         parse_um(lower.substr(x + 1), 1000, 10000000, h);
+}
+
+}  // namespace
+
+bool parse_page(const Options& o, Page* page, std::string* error) {
+  Page p;
+  const std::string name = o.get("--page");
+  if (!name.empty() && !named_page(name, &p.width_um, &p.height_um)) {
+    *error = "--page '" + name +
+             "' must be a4, a3, a5, letter, legal, tabloid or WxH in mm (e.g. 300x200)";
+    return false;
+  }
+  // Named pages are portrait, as vpype's; without --page the default is A4 landscape.
+  if (name.empty() || o.has("--landscape")) {
+    if (p.width_um < p.height_um) std::swap(p.width_um, p.height_um);
+  }
+  const std::string margin = o.get("--margin");
+  if (!margin.empty() && !parse_um(margin, 0, 10000000, &p.margin_um)) {
+    *error = "--margin '" + margin + "' must be a distance in mm (up to three decimals)";
+    return false;
+  }
+  if (2 * p.margin_um >= std::min(p.width_um, p.height_um)) {
+    *error = "--margin " + um_text(p.margin_um) + " mm leaves nothing of a " + um_text(p.width_um) +
+             " x " + um_text(p.height_um) + " mm page to draw on";
+    return false;
+  }
+  const std::string scale = o.get("--scale");
+  if (!scale.empty()) {
+    if (o.has("--fit")) {
+      *error = "--fit and --scale exclude each other: fit the page, or draw at a scale";
+      return false;
+    }
+    char* end = nullptr;
+    p.scale = std::strtod(scale.c_str(), &end);
+    if (end != scale.c_str() + scale.size() || !(p.scale > 0) || p.scale > 1e9) {
+      *error = "--scale '" + scale + "' must be a positive number (mm on paper per model unit)";
+      return false;
+    }
+  }
+  p.placed = o.has("--fit") || !scale.empty();
+  *page = p;
+  return true;
+}
 
 const char* const kPageValued[6] = {"--page",      "--margin",     "--scale",
                                     "--pen-width", "--min-stroke", "--simplify"};

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/options.h"
+#include "export/page.h"
 #include "export/plot_layers.h"
 #include "render/svg.h"
 
@@ -14,6 +15,10 @@ namespace haloplot::host {
 // --page --margin --scale --pen-width --min-stroke
 extern const char* const kPageValued[6];
 extern const char* const kPageFlags[4];  // --landscape --fit --background --no-cleanup
+
+// --page a4|a3|a5|letter|legal|WxH (mm; named sizes portrait), --landscape (the longer side
+// across), --margin MM (default 10), --fit (the default) or --scale S. False with *error.
+bool parse_page(const Options& o, Page* page, std::string* error);
 
 // The path planner's clean-up (motion/path_plan.h PathClean): --min-stroke MM, by default the
 // --pen-width (0.3 mm), 0 keeps every stroke; --no-cleanup (a test's control) plans the strokes

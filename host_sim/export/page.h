@@ -18,7 +18,6 @@
 #include <string>
 #include <vector>
 
-#include "cli/options.h"
 #include "haloplot/motion/path_plan.h"
 
 namespace haloplot::host {
@@ -31,10 +30,6 @@ struct Page {
   double scale = 0;     // --scale S: S mm on paper per unit of the model file; 0: fit the page
   bool placed = false;  // --fit or --scale given (for refusing them where they cannot apply)
 };
-
-// --page a4|a3|a5|letter|legal|WxH (mm; named sizes portrait), --landscape (the longer side
-// across), --margin MM (default 10), --fit (the default) or --scale S. False with *error.
-bool parse_page(const Options& o, Page* page, std::string* error);
 
 // The drawable area in whole plot steps: its lower-left corner (margin, margin) and its size;
 // false when the margins leave nothing or the area leaves the coordinate range.

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "cli/job_file.h"
+#include "cli/scene_input.h"
 #include "haloplot/band/conductor.h"
 #include "haloplot/job/job.h"
-#include "io/job_file.h"
-#include "pipeline/scene_input.h"
 #include "pipeline/solid_pipeline.h"
 
 using namespace haloplot;

@@ -5,7 +5,7 @@
 
 #include "haloplot/motion/step_engine.h"
 #include "haloplot/motion/step_segment.h"
-#include "tick_workload.h"
+#include "selftest/tick_workload.h"
 
 using namespace haloplot;
 

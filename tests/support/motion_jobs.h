@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "../check.h"
+#include "cli/job_file.h"
+#include "cli/scene_input.h"
 #include "haloplot/job/job.h"
-#include "io/job_file.h"
-#include "pipeline/scene_input.h"
 
 namespace haloplot::test {
 

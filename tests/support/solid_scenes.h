@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "cli/scene_input.h"
 #include "haloplot/view/projection.h"
-#include "pipeline/scene_input.h"
 #include "pipeline/solid_pipeline.h"
 #include "pipeline/triangulate.h"
 

@@ -8,8 +8,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/job_file.h"
-#include "pipeline/scene_input.h"
+#include "cli/job_file.h"
+#include "cli/scene_input.h"
 #include "reference/trace_checker.h"
 #include "sim/simulator.h"
 #include "support/pen_drawing.h"

@@ -154,7 +154,7 @@ std::vector<std::vector<Hole>> holes_of(const std::vector<Chain>& chains, const 
   for (size_t c = 0; c < chains.size(); ++c) {
     std::vector<std::pair<LD, LD>> vis;
     for (const CurveInterval& i : d.intervals) {
-      const Place p = place_of(chains, i.curve, 0);
+      const Place p = place_of(chains, i.edge, 0);
       if (p.chain == int(c))
         vis.push_back({p.g + LD(i.t0) / 4294967296.0L, p.g + LD(i.t1) / 4294967296.0L});
     }
@@ -479,7 +479,7 @@ void test_touch_at_joint() {
                                     {2000, 1000 + sign * 300, 20}}});
     const Drawing d = draw_core(s, 100);
     std::vector<std::vector<CurveInterval>> by_edge(4);
-    for (const CurveInterval& i : d.intervals) by_edge[i.curve].push_back(i);
+    for (const CurveInterval& i : d.intervals) by_edge[i.edge].push_back(i);
     const uint64_t one = uint64_t{1} << 32;
     CHECK_EQ(d.stats.joint_crossings, uint64_t{crossing ? 1u : 0u});
     for (uint32_t k = 0; k < 4; ++k) {
@@ -491,7 +491,7 @@ void test_touch_at_joint() {
       // joint, sin(theta) from slope 0.3 against 0; A's speed runs from 900 (at its ends) to
       // 1,050 units per unit of t, so between 0.33 and 0.39 of its parameter: 0.2 to 0.5 here.
       const bool whole = v.t0 == 0 && v.t1 == one;
-      const uint64_t lo = one / 10 * 2, hi = one / 10 * 5;
+      const int64_t lo = int64_t(one / 10 * 2), hi = int64_t(one / 10 * 5);
       const bool gap_at_joint = k == 0 ? (v.t0 == 0 && one - v.t1 > lo && one - v.t1 < hi)
                                        : (v.t1 == one && v.t0 > lo && v.t0 < hi);
       CHECK_MSG(cut ? gap_at_joint : whole, std::string(crossing ? "crossing" : "touch") +
@@ -515,7 +515,7 @@ void test_segments_among_curves() {
   const Drawing d = draw_core(s, 100);
   std::vector<CurveInterval> low, high, curve;
   for (const CurveInterval& i : d.intervals)
-    (i.curve == 1 ? low : i.curve == 2 ? high : curve).push_back(i);
+    (i.edge == 1 ? low : i.edge == 2 ? high : curve).push_back(i);
   const LD one = 4294967296.0L, slack = 1.0L / (1 << 16);
   CHECK_EQ(low.size(), size_t{2});
   CHECK(high.size() == 1 && high[0].t0 == 0 && high[0].t1 == uint64_t{1} << 32);

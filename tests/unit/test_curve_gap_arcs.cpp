@@ -41,7 +41,7 @@ struct Visible {
 
 Status into_intervals(void* c, const CurveInterval& i) {
   static_cast<std::vector<Visible>*>(c)->push_back(
-      Visible{i.curve, double(i.t0) / 4294967296.0, double(i.t1) / 4294967296.0});
+      Visible{i.edge, double(i.t0) / 4294967296.0, double(i.t1) / 4294967296.0});
   return Status::kOk;
 }
 Status no_chord(void*, const Span&) { return Status::kOk; }

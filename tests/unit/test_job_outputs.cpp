@@ -9,7 +9,7 @@
 
 #include "check.h"
 #include "haloplot/curve/bezier.h"
-#include "unit/misaligned_checks.h"
+#include "selftest/misaligned_checks.h"
 
 using namespace haloplot;
 using namespace haloplot::misaligned;

@@ -29,9 +29,9 @@
 
 #include "../check.h"
 #include "cli/options.h"
+#include "cli/scene_input.h"
 #include "cli/solid_options.h"
 #include "pipeline/drawing_modes.h"
-#include "pipeline/scene_input.h"
 #include "pipeline/solid_pipeline.h"
 #include "pipeline/units.h"
 #include "support/solid_scenes.h"

@@ -1,10 +1,10 @@
-// The memory contract on the host (tests/unit/misaligned_checks.h): every public entry that
+// The memory contract on the host (firmware/selftest/misaligned_checks.h): every public entry that
 // takes a caller buffer, the buffer at offsets 0 to 8 from an 8-byte boundary. x86 would run a
 // misaligned buffer without complaint, so what is checked here is the named status and the
 // untouched buffer; the same checks under QEMU show that no Cortex-M access faults.
 #include <cstdio>
 
-#include "unit/misaligned_checks.h"
+#include "selftest/misaligned_checks.h"
 
 int main() {
   using namespace haloplot;

@@ -29,9 +29,9 @@
 
 #include "../check.h"
 #include "cli/options.h"
+#include "cli/scene_input.h"
 #include "haloplot/view/projection.h"
 #include "io/obj_file.h"
-#include "pipeline/scene_input.h"
 #include "pipeline/solid_pipeline.h"
 #include "reference/ray_cast.h"
 

@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "../check.h"
+#include "cli/page_options.h"
 #include "export/exporters.h"
 #include "export/page.h"
 #include "export/plot_layers.h"

@@ -13,9 +13,9 @@
 
 #include "../check.h"
 #include "cli/options.h"
+#include "cli/scene_input.h"
 #include "io/obj_file.h"
 #include "pipeline/drawing_modes.h"
-#include "pipeline/scene_input.h"
 #include "pipeline/solid_pipeline.h"
 #include "pipeline/surface_pipeline.h"
 

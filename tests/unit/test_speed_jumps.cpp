@@ -12,9 +12,9 @@
 
 #include "../check.h"
 #include "../reference/trace_checker.h"
+#include "cli/job_file.h"
+#include "cli/scene_input.h"
 #include "demo/cube_array.h"
-#include "io/job_file.h"
-#include "pipeline/scene_input.h"
 #include "sim/simulator.h"
 #include "support/motion_jobs.h"
 #include "support/trace_limits.h"

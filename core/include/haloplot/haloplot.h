@@ -25,9 +25,9 @@
 #include "haloplot/view2d/polygon_view.h"
 // A job (pieces to strokes, the pen path), bands in a fixed arena, motion and the step tick.
 #include "haloplot/band/conductor.h"
+#include "haloplot/controller/motion_runner.h"
 #include "haloplot/job/job.h"
 #include "haloplot/motion/machine.h"
-#include "haloplot/controller/motion_runner.h"
 #include "haloplot/motion/planner.h"
 #include "haloplot/motion/step_engine.h"
 #include "haloplot/motion/step_prep.h"

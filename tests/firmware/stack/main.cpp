@@ -1,13 +1,13 @@
 // The stack each public entry that plots takes, measured on the chip (tests/firmware/
 // stack_probe.sh, for the M0+, M4, M33 and RV32): the stack below the caller is painted, the
-// entry runs on the scenes of tests/unit/misaligned_checks.h (3 x 3 cubes as edges, two solid
-// cubes with faces) and a curve scene of its own, and the deepest word it overwrote gives its
+// entry runs on the scenes of firmware/selftest/misaligned_checks.h (3 x 3 cubes as edges, two
+// solid cubes with faces) and a curve scene of its own, and the deepest word it overwrote gives its
 // bytes, counted from the caller's stack pointer (its callees, the sinks and the call itself
 // included). Prints "fw stack ENTRY=BYTES" per entry, then exits 0 if every entry ran well.
 #include "haloplot/curve/bezier.h"
 #include "platform/c_runtime.h"
 #include "platform/semihosting.h"
-#include "unit/misaligned_checks.h"
+#include "selftest/misaligned_checks.h"
 
 using namespace haloplot;
 using namespace haloplot::misaligned;

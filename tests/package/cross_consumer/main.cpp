@@ -2,9 +2,9 @@
 // through the installed motion runner on a board of its own (registers at made-up addresses):
 // no heap, no startup code beyond an entry point. It is linked, not run: the test checks its
 // symbols.
+#include <haloplot/controller/motion_runner.h>
 #include <haloplot/cut/cut.h>
 #include <haloplot/memory/sized_stage.h>
-#include <haloplot/controller/motion_runner.h>
 #include <haloplot/scene/cube_array.h>
 
 using namespace haloplot;

@@ -5,8 +5,8 @@
 // facts of the board: each STEP rises only after the runner lowered it, the plot ends where it
 // began (finish home, after a feed hold too), an end stop stops the timer at once, an abort
 // lifts the pen.
-#include <haloplot/job/job.h>
 #include <haloplot/controller/motion_runner.h>
+#include <haloplot/job/job.h>
 
 #include <cstdio>
 #include <vector>

@@ -39,6 +39,7 @@
 #include "haloplot/band/solid_source.h"
 #include "haloplot/cut/cut.h"
 #include "haloplot/draw/draw.h"
+#include "haloplot/geometry/edge_piece.h"
 #include "haloplot/geometry/quarter_turn.h"
 #include "haloplot/motion/path_plan.h"
 #include "haloplot/solid/modes.h"
@@ -111,10 +112,9 @@ struct BandStream {
 
 // A visible piece as a band emits it: the edge's index in the source, its Q0.32 ends along
 // the edge (t0 < t1, DRAW's values) and the rounded segment the path draws.
-struct BandPiece {
-  uint32_t edge;  // the scene's edge, or kNoFace for a piece of a line on the faces or of a
-                  // contour diagonal (or an outline along one) ...
-  int64_t t0, t1;
+// edge: the scene's edge, or kNoFace for a piece of a line on the faces or of a contour
+// diagonal (or an outline along one) ...
+struct BandPiece : EdgePiece {
   Segment2 segment;
   const Edge3* line = nullptr;  // ... of this segment (t0, t1 along it; valid during the call)
 };

@@ -45,8 +45,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "haloplot//status/sink.h"
 #include "haloplot/curve/curve_cross.h"
 #include "haloplot/draw/draw.h"
+#include "haloplot/geometry/edge_piece.h"
 
 namespace haloplot {
 
@@ -55,15 +57,10 @@ struct CurveDrawParams {
   uint32_t chord_tol_q8 = 64;  // chord tolerance in 1/256 units, [1, 2^16]; default 1/4
 };
 
-// A visible piece of an edge as a parameter interval, Q0.32 (kCurveParamOne is t = 1).
-struct CurveInterval {
-  uint32_t curve;
-  uint64_t t0, t1;
-};
-struct CurveIntervalSink {
-  Status (*emit)(void* context, const CurveInterval& interval);
-  void* context;
-};
+// A visible piece of a curved edge: the curve's number and its parameter interval, Q0.32
+// (kCurveParamOne is t = 1), as every stage's pieces are.
+using CurveInterval = EdgePiece;
+using CurveIntervalSink = Sink<CurveInterval>;
 
 struct CurveDrawPlan {
   uint32_t n_curves = 0, n_segments = 0;

@@ -7,25 +7,21 @@
 #include "haloplot/cut/cutset.h"
 #include "haloplot/draw/halo.h"
 #include "haloplot/draw/precision.h"
+#include "haloplot/geometry/edge_piece.h"
+#include "haloplot/status/sink.h"
 #include "haloplot/status/status.h"
 
 namespace haloplot {
 
 // A visible piece of an edge: positions t0 < t1 in Q0.32 along it (t = 1 is 2^32), and the
 // same ends rounded to the nearest step, which is all a plotter needs.
-struct Span {
-  uint32_t edge;
-  int64_t t0, t1;
+struct Span : EdgePiece {
   int32_t x0, y0, x1, y1;
 };
 
-// Where spans go: a plain function pointer and context, so the firmware can stream spans
-// straight into the motion planner without a buffer and the host can collect them. A sink
-// that returns anything but kOk stops DRAW with that status.
-struct SpanSink {
-  Status (*emit)(void* context, const Span& span);
-  void* context;
-};
+// Where spans go (status/sink.h): the firmware streams them straight into the motion planner
+// without a buffer, the host collects them.
+using SpanSink = Sink<Span>;
 
 struct DrawParams {
   int32_t halo = 0;  // halo width W in steps, in [0, 2^20); 0 draws every edge whole

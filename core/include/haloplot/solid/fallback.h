@@ -19,6 +19,7 @@
 #include <stdint.h>
 
 #include "haloplot/cut/cutset.h"
+#include "haloplot/geometry/edge_piece.h"
 #include "haloplot/solid/face_grid.h"
 #include "haloplot/solid/incidence.h"
 #include "haloplot/solid/topology.h"
@@ -61,9 +62,7 @@ struct FallbackStats {
   uint32_t grid_cells = 0, cell_faces = 0;
 };
 
-struct FallbackPiece {
-  uint32_t edge;
-  int64_t t0, t1;
+struct FallbackPiece : EdgePiece {
   int32_t q;    // halves of cover; kQiUnknown when a class or the V.C. decided
   bool hidden;  // q != 0, or the class or V.C. said so
   // False for a piece too short to hold a test point: it took the q of the piece before it.

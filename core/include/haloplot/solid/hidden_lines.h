@@ -16,6 +16,7 @@
 #include <stdint.h>
 
 #include "haloplot/cut/cut.h"
+#include "haloplot/geometry/edge_piece.h"
 #include "haloplot/solid/classify.h"
 #include "haloplot/solid/fallback.h"
 #include "haloplot/solid/hatch_lines.h"
@@ -89,10 +90,8 @@ struct HiddenReport {
 // face[0]); a line's edge is the run's edge count + its number (the hatch lines' after the
 // intersection lines'). With its projection for rounding; q in halves or kQiUnknown (class or
 // V.C. decided).
-struct HiddenPiece {
-  uint32_t edge;
+struct HiddenPiece : EdgePiece {
   const Edge3* geometry;  // valid during the call only
-  int64_t t0, t1;
   int32_t q;
   bool hidden;
   bool tested;  // false: too short for a test point (solid/fallback.h); a band merges it

@@ -18,9 +18,11 @@
 #include <stdint.h>
 
 #include "haloplot/cut/cutset.h"
+#include "haloplot/geometry/edge_piece.h"
 #include "haloplot/solid/incidence.h"
 #include "haloplot/solid/qi.h"
 #include "haloplot/solid/topology.h"
+#include "haloplot/status/sink.h"
 #include "haloplot/status/status.h"
 
 namespace haloplot {
@@ -40,15 +42,9 @@ struct OutlineStats {
   uint32_t contours_end_twice = 0, contours_start_twice = 0;
 };
 
-struct OutlineSegment {
-  uint32_t edge;
-  int64_t t0, t1;  // Q0.32 from the edge's v0
-};
+using OutlineSegment = EdgePiece;  // Q0.32 from the edge's v0
 
-struct OutlineSink {
-  Status (*emit)(void* context, const OutlineSegment& segment);
-  void* context;
-};
+using OutlineSink = Sink<OutlineSegment>;
 
 size_t outline_bytes(const Topology& topo, const CutSet& cutset, const Incidences& inc);
 

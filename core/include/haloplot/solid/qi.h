@@ -39,9 +39,11 @@
 #include <stdint.h>
 
 #include "haloplot/cut/cutset.h"
+#include "haloplot/geometry/edge_piece.h"
 #include "haloplot/solid/face_grid.h"
 #include "haloplot/solid/incidence.h"
 #include "haloplot/solid/topology.h"
+#include "haloplot/status/sink.h"
 #include "haloplot/status/status.h"
 
 namespace haloplot {
@@ -89,16 +91,11 @@ Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cu
                     bool find_pierces = false);
 
 // A piece of an edge with one QI: positions in Q0.32 along the edge from v0 (t1 <= 2^32).
-struct QiPiece {
-  uint32_t edge;
-  int64_t t0, t1;
+struct QiPiece : EdgePiece {
   int32_t q;  // halves: 0 visible, 2 behind one front face, odd: along a face side
 };
 
-struct QiSink {
-  Status (*emit)(void* context, const QiPiece& piece);
-  void* context;
-};
+using QiSink = Sink<QiPiece>;
 
 // The pieces of every drawn edge, in edge order, then along each edge; then those of the
 // contour diagonals (qi_contour_diagonal), numbered from topo.n_drawn up: a triangulated

@@ -9,25 +9,23 @@
 #include <stdint.h>
 
 #include "haloplot/cut/grid.h"
+#include "haloplot/geometry/edge_piece.h"
 #include "haloplot/solid/face_grid.h"
 #include "haloplot/solid/topology.h"
+#include "haloplot/status/sink.h"
 #include "haloplot/status/status.h"
 
 namespace haloplot {
 
-struct LinePiece {
-  uint32_t index;    // the segment's number, as its pass numbers it
+// edge: the segment's number, as its pass numbers it; t0, t1: Q0.32 along the segment.
+struct LinePiece : EdgePiece {
   uint32_t face[2];  // the faces it lies on (face[1] kNoFace for a hatch line)
   const Edge3* segment;
-  int64_t t0, t1;  // Q0.32 along the segment
-  int32_t q;       // halves of cover
+  int32_t q;  // halves of cover
   bool hidden;
 };
 
-struct LineSink {
-  Status (*emit)(void* context, const LinePiece& piece);
-  void* context;
-};
+using LineSink = Sink<LinePiece>;
 
 // A band's rows (band/band_rule.h): the segment is cut where it enters and leaves rows
 // [lo, hi) (geometry/rows.h) and only the pieces between are tested and emitted. A piece

@@ -23,8 +23,10 @@
 #include <stdint.h>
 
 #include "haloplot/cut/grid.h"
+#include "haloplot/geometry/edge_piece.h"
 #include "haloplot/memory/sized_stage.h"
 #include "haloplot/solid/mesh.h"
+#include "haloplot/status/sink.h"
 #include "haloplot/status/status.h"
 
 namespace haloplot {
@@ -66,17 +68,13 @@ struct PiecePosition {
 };
 PiecePosition piece_end_position(const SolidInput& in, uint32_t e, const PieceEnd& end);
 
-struct FranklinPiece {
-  uint32_t edge;
-  int64_t t0, t1;  // Q0.32 along the edge from its first vertex (floors of the exact ends)
+// t0, t1: Q0.32 along the edge from its first vertex (floors of the exact ends).
+struct FranklinPiece : EdgePiece {
   bool hidden;
   PieceEnd from, to;
 };
 
-struct FranklinSink {
-  Status (*emit)(void* context, const FranklinPiece& piece);
-  void* context;
-};
+using FranklinSink = Sink<FranklinPiece>;
 
 // Bytes for the run with room for `crossing_capacity` crossings and `incidence_capacity`
 // vertex-on-edge incidences (walks every face's and edge's cells once: O(N)).

@@ -14,6 +14,7 @@
 
 #include "haloplot/solid/hatch_pattern.h"
 #include "haloplot/solid/mesh.h"
+#include "haloplot/status/sink.h"
 #include "haloplot/status/status.h"
 
 namespace haloplot {
@@ -24,9 +25,6 @@ struct HatchStroke {
   Edge3 line;  // the visible piece, ends rounded to steps
 };
 
-struct HatchSink {
-  Status (*emit)(void* context, const HatchStroke& stroke);
-  void* context;
-};
+using HatchSink = Sink<HatchStroke>;
 
 }  // namespace haloplot

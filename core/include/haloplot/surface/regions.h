@@ -24,6 +24,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "haloplot/geometry/edge_piece.h"
 #include "haloplot/solid/mesh.h"
 #include "haloplot/status/status.h"
 #include "haloplot/surface/franklin.h"
@@ -31,9 +32,8 @@
 namespace haloplot {
 
 // A visible segment: a piece of a drawn edge between two exact ends (FranklinPiece).
-struct RegionSegment {
-  uint32_t edge;
-  int64_t t0, t1;  // Q0.32 floors of the ends along the edge
+// t0, t1: Q0.32 floors of the ends along the edge.
+struct RegionSegment : EdgePiece {
   PieceEnd from, to;
 };
 

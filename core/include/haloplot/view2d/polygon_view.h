@@ -27,6 +27,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "haloplot/status/sink.h"
 #include "haloplot/status/status.h"
 
 namespace haloplot {
@@ -44,10 +45,7 @@ struct VisibleSpan {
   Ratio s0, s1;   // 0 <= s0 < s1 <= 1 along the edge
 };
 
-struct VisibleSink {
-  Status (*emit)(void* context, const VisibleSpan& span);
-  void* context;
-};
+using VisibleSink = Sink<VisibleSpan>;
 
 enum class ViewConfig : uint8_t { kFreeExterior, kBlockedExterior, kInterior };
 

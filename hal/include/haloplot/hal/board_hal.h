@@ -1,7 +1,7 @@
 // What a board gives the portable controller (firmware/app: the job server's main loop and the
-// motion runner, core/include/haloplot/controller/motion_runner.h): one type of static functions per
-// board, one group per capability, each checked here at compile time with a message naming what is
-// missing.
+// motion runner, core/include/haloplot/controller/motion_runner.h): one type of static functions
+// per board, one group per capability, each checked here at compile time with a message naming what
+// is missing.
 //
 //   struct MyBoard {
 //     static void init();            // clocks and pins; then the controller calls the rest
@@ -25,8 +25,9 @@ namespace haloplot::hal {
 
 HALOPLOT_HAL_MEMBER(HasBoardInit, H::init())
 
-// What the motion runner (core/include/haloplot/controller/motion_runner.h) calls: the stepper drivers,
-// the pen and the step clock. The rest of a board is the main loop's, the integrator's to call.
+// What the motion runner (core/include/haloplot/controller/motion_runner.h) calls: the stepper
+// drivers, the pen and the step clock. The rest of a board is the main loop's, the integrator's to
+// call.
 template <typename B>
 constexpr bool check_motion_board() {
   return check_board_stepper<B>() && check_board_pen<B>() && check_board_clock<B>();

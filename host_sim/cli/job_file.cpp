@@ -1,4 +1,4 @@
-#include "io/job_file.h"
+#include "cli/job_file.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -8,10 +8,10 @@
 #include "cli/options.h"
 #include "cli/page_options.h"
 #include "cli/plot_outputs.h"
+#include "cli/scene_input.h"
 #include "cli/solid_options.h"
 #include "io/line_reader.h"
 #include "io/mesh_file.h"
-#include "pipeline/scene_input.h"
 
 namespace haloplot::host {
 namespace {

@@ -1,4 +1,4 @@
-#include "pipeline/scene_input.h"
+#include "cli/scene_input.h"
 
 #include <algorithm>
 #include <array>
@@ -6,13 +6,14 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "cli/job_file.h"
+#include "cli/page_options.h"
 #include "cli/solid_options.h"
 #include "export/page.h"
 #include "haloplot/view/facing.h"
 #include "haloplot/view/projection.h"
 #include "io/atomic_file.h"
 #include "io/edges_file.h"
-#include "io/job_file.h"
 #include "io/line_reader.h"
 #include "io/mesh_file.h"
 #include "io/obj_file.h"
