@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Regenerates docs/accuracy.md in one command: what accuracy costs in time, measured on this
+# Regenerates docs/reports/accuracy.md in one command: what accuracy costs in time, measured on this
 # machine, stamped with the machine and the date. Usage: tools/bench_accuracy.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake --preset host >/dev/null
 cmake --build --preset host -j "$(nproc)" --target accuracy_bench resolution_bench >/dev/null
-out=docs
+out=docs/reports
 mkdir -p "$out"
 build/host/tests/bench/accuracy_bench "$out"
 cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates docs/bands.md: the band conductor's memory against the scene's size (every scene
+# Regenerates docs/reports/bands.md: the band conductor's memory against the scene's size (every scene
 # in one fixed arena), the pieces checked equal to the one-band run, host time and pen-up
 # travel against the one-band plan, and Figure 4's link budget when streamed.
 set -euo pipefail
@@ -126,14 +126,14 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
   echo
   echo 'A scene with Bézier edges is banded by `core/include/haloplot/band/curve_bands.h` (`sim` and'
   echo '`send` of a job with an `arena`, `plot --arena`), on the same plan: horizontal bands each'
-  echo 'fitting the arena, each recomputing what it needs. A band takes its own edges (their control points'\'' box meets its'
-  echo 'rows) and every edge whose box meets those boxes'\'' rows widened by the margin (the gaps'\'' reach,'
-  echo 'measured by a margin pass, + 1), and draws only the chords whose upper end lies in its rows,'
-  echo 'each whole: DRAW cuts a visible interval into chords by the interval'\''s width, so a chord is'
-  echo 'never carried across a border, and the band'\''s chords are the unbanded DRAW'\''s exactly'
-  echo '([curves.md](curves.md#in-bands) says why, and what it costs: the demo trefoil job, 58,032'
-  echo 'bytes in one band, plots in 4 bands in 24,576; its long edges put the whole knot'\''s crossing'
-  echo 'scratch in every band). Tests `curve_bands`, `curve_bands_cli` and, under QEMU,'
+  echo 'fitting the arena, each recomputing what it needs. A band takes its own edges (their control'
+  echo 'points'\'' box meets its rows) and every edge whose box meets those boxes'\'' rows widened by the'
+  echo 'margin (the gaps'\'' reach, measured by a margin pass, + 1), and draws only the chords whose upper'
+  echo 'end lies in its rows, each whole: DRAW cuts a visible interval into chords by the interval'\''s'
+  echo 'width, so a chord is never carried across a border, and the band'\''s chords are the unbanded'
+  echo 'DRAW'\''s exactly ([curves.md](../curves.md#in-bands) says why, and what it costs: the demo trefoil'
+  echo 'job, 58,032 bytes in one band, plots in 4 bands in 24,576; its long edges put the whole knot'\''s'
+  echo 'crossing scratch in every band). Tests `curve_bands`, `curve_bands_cli` and, under QEMU,'
   echo '`firmware_curve_bands`.'
-} > docs/bands.md
-echo "wrote docs/bands.md"
+} > docs/reports/bands.md
+echo "wrote docs/reports/bands.md"

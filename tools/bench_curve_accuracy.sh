@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# docs/accuracy.md's curve section: error against time for the curve DRAW's chord tolerance on
+# docs/reports/accuracy.md's curve section: error against time for the curve DRAW's chord tolerance on
 # the demo knots, as ratios in one run (wall time, the tolerances taking turns) and as host
 # instruction counts (callgrind, repeatable to the instruction). tools/bench_accuracy.sh
 # includes it; run alone it prints the section.

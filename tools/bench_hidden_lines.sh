@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates docs/hidden-lines.md and the README's pictures of the four drawing modes in one
+# Regenerates docs/reports/hidden-lines.md and the README's pictures of the four drawing modes in one
 # command: QI propagation against the topology-free fallback (with and without Kira's
 # shortcuts) on growing test scenes, the rule counts and V.C. savings, and the demo scene.
 set -euo pipefail
@@ -9,7 +9,7 @@ cmake --build --preset host -j "$(nproc)" --target hidden_lines_bench haloplot >
 tool=build/host/host_sim/haloplot
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-mkdir -p docs
+mkdir -p docs/reports
 
 # The four modes side by side (the HALO paper's Figure 1), for two models.
 compose() {  # compose OUT.svg LABEL FILE LABEL FILE ...
@@ -35,11 +35,11 @@ for model in pair_of_cubes linked_tori; do
     "$tool" plot scenes/$model.obj --view 30,25 --mode $mode $outline $dash -o "$work/$model-$mode.svg"
   done
   "$tool" plot scenes/$model.obj --view 30,25 --halo 250 -o "$work/$model-haloed.svg"
-  compose "docs/modes-$model.svg" "all edges" "$work/$model-all.svg" \
+  compose "docs/reports/modes-$model.svg" "all edges" "$work/$model-all.svg" \
     "hidden removed (+ outline)" "$work/$model-hidden-removed.svg" \
     "hidden dashed" "$work/$model-hidden-dashed.svg" "haloed" "$work/$model-haloed.svg"
   if command -v rsvg-convert >/dev/null 2>&1; then
-    rsvg-convert -b white "docs/modes-$model.svg" -o "docs/modes-$model.png"
+    rsvg-convert -b white "docs/reports/modes-$model.svg" -o "docs/reports/modes-$model.png"
   fi
 done
 
@@ -48,9 +48,9 @@ done
 "$tool" plot scenes/pair_of_cubes.obj --view 30,25 --mode hidden-removed --outline --hatch 3,45,0 -o "$work/h2.svg"
 "$tool" plot scenes/linked_tori.obj --view 30,25 --mode hidden-removed --outline --hatch 2.5,0,180 -o "$work/h3.svg"
 "$tool" plot scenes/linked_tori.obj --view 30,25 --mode hidden-dashed --hatch 2.5,45,0 -o "$work/h4.svg"
-compose docs/hatch.svg "angle turns with depth" "$work/h1.svg" "one angle" "$work/h2.svg" \
+compose docs/reports/hatch.svg "angle turns with depth" "$work/h1.svg" "one angle" "$work/h2.svg" \
   "angle turns with depth" "$work/h3.svg" "one angle, hidden dashed" "$work/h4.svg"
-if command -v rsvg-convert >/dev/null 2>&1; then rsvg-convert -b white docs/hatch.svg -o docs/hatch.png; fi
+if command -v rsvg-convert >/dev/null 2>&1; then rsvg-convert -b white docs/reports/hatch.svg -o docs/reports/hatch.png; fi
 
 # The demo scene as solids: rule counts, V.C. savings, outlines.
 "$tool" demo-scene --cubes 28 -o "$work/demo.obj"
@@ -60,7 +60,7 @@ if command -v rsvg-convert >/dev/null 2>&1; then rsvg-convert -b white docs/hatc
   -o "$work/demo_fb.svg" --stats 2> "$work/demo_fb.txt"
 val() { grep "^$1=" "$2" | cut -d= -f2; }
 
-build/host/tests/bench/hidden_lines_bench docs 2> "$work/bench.log"
+build/host/tests/bench/hidden_lines_bench docs/reports 2> "$work/bench.log"
 cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
 q=$work/demo_qi.txt f=$work/demo_fb.txt
 {
@@ -102,7 +102,7 @@ q=$work/demo_qi.txt f=$work/demo_fb.txt
   echo "Both give the same QI at every piece (the solid_qi test checks it on 222 scenes). Times"
   echo "are medians of 5 runs of the whole host pipeline including buffer allocation; QI includes"
   echo "the outline pass. Read the ratios, not the milliseconds."
-  cat docs/hidden-lines.body.md
+  cat docs/reports/hidden-lines.body.md
   echo
   echo "What the numbers say: the QI method's own work (walking the edges, asking a vertex's"
   echo "faces) is small next to CUT, which both methods share; it costs one ray cast per connected"
@@ -112,7 +112,7 @@ q=$work/demo_qi.txt f=$work/demo_fb.txt
   echo "back edges outright, which makes the fallback with Kira the fastest route on these scenes."
   echo "On the cube arrays, where every cube is its own component and the pieces are few, the plain"
   echo "fallback is already cheaper than QI. QI remains the method of record, on every mesh (both"
-  echo "sides of every face counted where it is not a closed solid; docs/performance.md section 10:"
+  echo "sides of every face counted where it is not a closed solid; docs/reports/performance.md section 10:"
   echo "open meshes cost no more per triangle): it yields QI counts (the sixth field of \`.spans\`)"
   echo "and the outlines need its visibility."
   echo
@@ -122,6 +122,6 @@ q=$work/demo_qi.txt f=$work/demo_fb.txt
   echo "the plain fallback from 1.16-1.65x QI's time to 1.27-1.88x on the 28 x 28 cubes, the 9"
   echo "spheres 64x128 and the tori 96x48 (alternating runs of both builds on one noisy machine);"
   echo "with Kira's classes the back edges skip it and the difference is within the noise."
-} > docs/hidden-lines.md
-rm -f docs/hidden-lines.body.md
-echo "wrote docs/hidden-lines.md docs/modes-*.svg docs/modes-*.png"
+} > docs/reports/hidden-lines.md
+rm -f docs/reports/hidden-lines.body.md
+echo "wrote docs/reports/hidden-lines.md docs/reports/modes-*.svg docs/reports/modes-*.png"

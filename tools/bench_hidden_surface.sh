@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
-# Regenerates docs/hidden-surface.md and its chart in one command: Franklin 1980's claims
+# Regenerates docs/reports/hidden-surface.md and its chart in one command: Franklin 1980's claims
 # (linear time, depth complexity, perspective) measured on core/surface/franklin.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake --preset host >/dev/null
 cmake --build --preset host -j "$(nproc)" --target surface_bench >/dev/null
-mkdir -p docs
-build/host/tests/bench/surface_bench docs
+mkdir -p docs/reports
+build/host/tests/bench/surface_bench docs/reports
 if command -v rsvg-convert >/dev/null 2>&1; then
-  rsvg-convert -b white docs/hidden-surface.svg -o docs/hidden-surface.png
+  rsvg-convert -b white docs/reports/hidden-surface.svg -o docs/reports/hidden-surface.png
 fi
 cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
 {
@@ -36,7 +36,7 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
   echo "![time per face against N, ours and the paper's tables](hidden-surface.png)"
   echo
   echo "Times are the core run alone (no I/O, buffers allocated before), median of 3."
-  cat docs/hidden-surface.body.md
+  cat docs/reports/hidden-surface.body.md
   echo
   echo "Reading the claims:"
   echo
@@ -56,6 +56,6 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
   echo "  hidden lines alone at 1,000 squares and 2.1x at 100,000: the nodes and half-edges are put"
   echo "  in order by heap sort (n log n; the paper assumes expected-linear hashing), which no fixed"
   echo "  buffer without a heap makes cheaper for free."
-} > docs/hidden-surface.md
-rm -f docs/hidden-surface.body.md
-echo "wrote docs/hidden-surface.md docs/hidden-surface.svg docs/hidden-surface.png"
+} > docs/reports/hidden-surface.md
+rm -f docs/reports/hidden-surface.body.md
+echo "wrote docs/reports/hidden-surface.md docs/reports/hidden-surface.svg docs/reports/hidden-surface.png"

@@ -3,7 +3,7 @@
 # against the same torus with a tenth of its tube left out (open: the QI counts both sides of
 # every face) and the closed torus pierced by a sphere (the QI stops where edges pass through
 # faces), side by side in one run (tests/bench/open_mesh_bench.cpp). Prints the Markdown section
-# of docs/performance.md (tools/bench_performance.sh includes it).
+# of docs/reports/performance.md (tools/bench_performance.sh includes it).
 # Usage: tools/bench_open_mesh.sh [QUADS_AROUND QUADS_ACROSS RUNS]   (default 1000 500 3)
 set -euo pipefail
 cd "$(dirname "$0")/.."

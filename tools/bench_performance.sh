@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# Regenerates docs/performance.md and its charts in one command: builds the host preset
+# Regenerates docs/reports/performance.md and its charts in one command: builds the host preset
 # (with CGAL as a peer when libcgal-dev is installed), runs the benchmarks, and stamps the
 # report with the machine and the date. Usage: tools/bench_performance.sh [--quick]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake --preset host >/dev/null
 cmake --build --preset host -j "$(nproc)" --target cut_bench step_tick_bench >/dev/null
-out=docs
+out=docs/reports
 mkdir -p "$out"
 build/host/tests/bench/cut_bench "$out" "${1:-}"
 tick=$(bash tools/bench_step_tick.sh | sed -n 's/^instructions per step event: //p')

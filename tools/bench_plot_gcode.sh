@@ -6,7 +6,7 @@
 # tool as of commit 8143927, whose `sim` took far longer: that tool is built too (in a
 # temporary git worktree outside this tree, the haloplot target only, removed afterwards) and
 # its `sim` of the same job timed in the same run, for a second ratio (the row is skipped, and
-# says why, when it cannot be built or run). Prints a Markdown section (docs/performance.md,
+# says why, when it cannot be built or run). Prints a Markdown section (docs/reports/performance.md,
 # section 9; tools/bench_performance.sh appends it).
 # Usage: bash tools/bench_plot_gcode.sh [NU NV]   (the torus's quads around and across; default
 # 500 200, 200,000 triangles)

@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
-# Regenerates docs/view2d.md and docs/view2d.png in one command: the 2-D hidden-line
+# Regenerates docs/reports/view2d.md and docs/reports/view2d.png in one command: the 2-D hidden-line
 # problem (Freeman and Loutrel) against the brute force, and the README's picture.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake --preset host >/dev/null
 cmake --build --preset host -j "$(nproc)" --target view2d_bench haloplot >/dev/null
-mkdir -p docs
-build/host/tests/bench/view2d_bench docs
-build/host/host_sim/haloplot view2d scenes/island.txt --from 600,2200 -o docs/view2d.svg
+mkdir -p docs/reports
+build/host/tests/bench/view2d_bench docs/reports
+build/host/host_sim/haloplot view2d scenes/island.txt --from 600,2200 -o docs/reports/view2d.svg
 if command -v rsvg-convert >/dev/null 2>&1; then
-  rsvg-convert -b white docs/view2d.svg -o docs/view2d.png
+  rsvg-convert -b white docs/reports/view2d.svg -o docs/reports/view2d.png
 fi
 cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
 {
@@ -33,7 +33,7 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
   echo "interval between critical directions of every edge (tests/reference/view2d_reference.h)"
   echo "and is run up to 1,000 vertices. Both include nothing but the computation; the walk"
   echo "includes validating the polygon (simplicity, E off the boundary)."
-  cat docs/view2d.body.md
+  cat docs/reports/view2d.body.md
   echo
   echo "How it grows: the brute force is cubic in the worst case (an O(n) ray cast per critical"
   echo "direction of each edge) and grows 70-700x per tenfold n here. The walk is quadratic in"
@@ -48,6 +48,6 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
   echo "brute force, exactly (as ratios along each edge), on about 3,800 random simple polygons"
   echo "of every configuration, including lattice polygons where vertices are collinear with E"
   echo "and E with edges."
-} > docs/view2d.md
-rm -f docs/view2d.body.md docs/view2d.svg
-echo "wrote docs/view2d.md"
+} > docs/reports/view2d.md
+rm -f docs/reports/view2d.body.md docs/reports/view2d.svg
+echo "wrote docs/reports/view2d.md"

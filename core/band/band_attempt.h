@@ -7,6 +7,7 @@
 #include "haloplot/band/conductor.h"
 #include "haloplot/geometry/quarter_turn.h"
 #include "haloplot/solid/mesh.h"
+#include "haloplot/sort/lower_bound.h"
 
 namespace haloplot {
 namespace band_detail {
@@ -49,15 +50,8 @@ inline bool segment_less(const Segment2& p, const Segment2& q) {
 
 // Is p among the sorted points?
 inline bool holds(const RowPoint* pts, uint32_t n, int32_t x, int32_t y) {
-  uint32_t lo = 0, hi = n;
   const RowPoint p{x, y};
-  while (lo < hi) {
-    const uint32_t mid = lo + (hi - lo) / 2;
-    if (point_less(pts[mid], p))
-      lo = mid + 1;
-    else
-      hi = mid;
-  }
+  const uint32_t lo = lower_bound_index(0, n, [&](uint32_t i) { return point_less(pts[i], p); });
   return lo < n && pts[lo].x == x && pts[lo].y == y;
 }
 

@@ -19,7 +19,7 @@ namespace haloplot {
 // pen is to where it goes next: the column's far side, or after the band's last column the band
 // above. Planning a column at a time also bounds the path's memory by the largest column, not
 // the band. The measurements behind these choices (column shapes, 2-opt, the known exit, the
-// page turned a quarter, joins at borders): docs/bands.md, "Pen-up travel in bands".
+// page turned a quarter, joins at borders): docs/reports/bands.md, "Pen-up travel in bands".
 int64_t BandConductor::column_of(int64_t x_sum) const {
   const int64_t c = x_sum / 2 / column_side_;  // x >= 0: truncation is floor
   return leftward_ ? -c : c;

@@ -9,6 +9,7 @@
 #include "haloplot/band/conductor.h"
 #include "haloplot/memory/sized_stage.h"
 #include "haloplot/solid/hidden_lines.h"
+#include "haloplot/sort/lower_bound.h"
 #include "memory/carve.h"
 #include "sort/in_place_sort.h"
 
@@ -17,15 +18,7 @@ namespace {
 
 // The index of global vertex v among the band's sorted vertex ids.
 uint32_t local_vertex(const uint32_t* ids, uint32_t n, uint32_t v) {
-  uint32_t lo = 0, hi = n;
-  while (lo < hi) {
-    const uint32_t mid = lo + (hi - lo) / 2;
-    if (ids[mid] < v)
-      lo = mid + 1;
-    else
-      hi = mid;
-  }
-  return lo;
+  return lower_bound_index(0, n, [&](uint32_t i) { return ids[i] < v; });
 }
 
 // A piece of the band's run, as cut (solid/fallback.h emits a band's pieces unmerged).

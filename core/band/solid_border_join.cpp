@@ -5,6 +5,7 @@
 // plots edges in bands never links it (test lean_link).
 #include "band/band_attempt.h"
 #include "haloplot/band/conductor.h"
+#include "haloplot/sort/lower_bound.h"
 #include "sort/in_place_sort.h"
 
 namespace haloplot {
@@ -64,14 +65,8 @@ uint32_t BandConductor::join_at_border(const Attempt& a, Segment2* u, uint32_t n
       const RowPoint p = side == 0 ? RowPoint{d.x0, d.y0} : RowPoint{d.x1, d.y1};
       const RowPoint far = side == 0 ? RowPoint{d.x1, d.y1} : RowPoint{d.x0, d.y0};
       if (p.y != y0) continue;
-      uint32_t lo = 0, hi = n_ends;
-      while (lo < hi) {
-        const uint32_t mid = lo + (hi - lo) / 2;
-        if (point_less(ends[mid].p, p))
-          lo = mid + 1;
-        else
-          hi = mid;
-      }
+      const uint32_t lo =
+          lower_bound_index(0, n_ends, [&](uint32_t i) { return point_less(ends[i].p, p); });
       for (uint32_t k = lo; k < n_ends && !merged && ends[k].p.x == p.x && ends[k].p.y == p.y;
            ++k) {
         Segment2& g = u[ends[k].segment];

@@ -1,5 +1,6 @@
 #include "haloplot/curve/curve_draw.h"
 
+#include "haloplot/sort/lower_bound.h"
 #include "memory/carve.h"
 #include "sort/in_place_sort.h"
 
@@ -238,15 +239,7 @@ struct Scene {
   Ctl edge(uint32_t k) const { return ctl_of(curves, nc, segments, k); }
   // The first hit on edge k (hits are sorted by curve).
   uint32_t first_hit(uint32_t k) const {
-    uint32_t lo = 0, hi = n_hits;
-    while (lo < hi) {
-      const uint32_t mid = lo + (hi - lo) / 2;
-      if (hits[mid].curve < k)
-        lo = mid + 1;
-      else
-        hi = mid;
-    }
-    return lo;
+    return lower_bound_index(0, n_hits, [&](uint32_t i) { return hits[i].curve < k; });
   }
 };
 
@@ -603,17 +596,11 @@ uint32_t cut_pass(const Scene& s, uint32_t k, const uint32_t j[2], const Through
 
 // The first end in `order` (sorted by x, then y, z) whose x is not below x.
 uint32_t first_end_at(const Scene& s, const uint32_t* order, int64_t x) {
-  uint32_t lo = 0, hi = 2 * s.n;
-  while (lo < hi) {
-    const uint32_t mid = lo + (hi - lo) / 2;
+  return lower_bound_index(0, 2 * s.n, [&](uint32_t i) {
     int64_t p[3], d[2];
-    end_of(s, order[mid], p, d);
-    if (p[0] < x)
-      lo = mid + 1;
-    else
-      hi = mid;
-  }
-  return lo;
+    end_of(s, order[i], p, d);
+    return p[0] < x;
+  });
 }
 
 // Edges k in [from, to) through the joints of other chains: the joints whose x lies within

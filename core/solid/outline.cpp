@@ -4,6 +4,7 @@
 #include "haloplot/geometry/predicates.h"
 #include "haloplot/solid/classify.h"
 #include "haloplot/solid/face_grid.h"
+#include "haloplot/sort/lower_bound.h"
 #include "memory/carve.h"
 #include "solid/cover.h"
 #include "sort/in_place_sort.h"
@@ -293,15 +294,8 @@ void place_nodes(Ctx& c, const CutSet& cutset, const Incidences& inc, uint32_t n
 void ask_one_by_one(Ctx& c, const uint32_t* walk, uint32_t n, uint32_t n_h3) {
   for (uint32_t i = 0; i < n; ++i) {
     // The contour edge holding segment walk[i]: the last h with seg_id(h, 0) <= it.
-    uint32_t lo = 0, hi = n_h3 - 1;
-    while (lo < hi) {
-      const uint32_t mid = lo + (hi - lo + 1) / 2;
-      if (c.seg_id(mid, 0) <= walk[i])
-        lo = mid;
-      else
-        hi = mid - 1;
-    }
-    const uint32_t hh = lo;
+    const uint32_t hh =
+        lower_bound_index(1, n_h3, [&](uint32_t h) { return c.seg_id(h, 0) <= walk[i]; }) - 1;
     const uint32_t kk = walk[i] - c.seg_id(hh, 0);
     ++c.st->one_by_one;
     c.state[walk[i]] = c.visible[walk[i]] && outside_is_empty(c, hh, kk) ? kOutline : kNotOutline;

@@ -1,5 +1,6 @@
 #include "haloplot/solid/topology.h"
 
+#include "haloplot/sort/lower_bound.h"
 #include "memory/carve.h"
 #include "solid/cover.h"
 #include "sort/in_place_sort.h"
@@ -23,14 +24,7 @@ bool key_less(const SideKey& x, const SideKey& y) {
 
 // Index of `key` among sorted drawn keys, or n if absent (binary search).
 uint32_t find_key(const SideKey* keys, uint32_t n, uint64_t key) {
-  uint32_t lo = 0, hi = n;
-  while (lo < hi) {
-    const uint32_t mid = lo + (hi - lo) / 2;
-    if (keys[mid].key < key)
-      lo = mid + 1;
-    else
-      hi = mid;
-  }
+  const uint32_t lo = lower_bound_index(0, n, [&](uint32_t i) { return keys[i].key < key; });
   return lo < n && keys[lo].key == key ? lo : n;
 }
 
@@ -166,15 +160,9 @@ uint32_t side_edge(const SolidInput& in, const TopologyOptions& options, const D
   const uint32_t d = drawn.find(k);
   if (d < in.n_edges) return drawn[d].ref;
   if (!side_in_rows(in, options, a, b)) return kNoFace;
-  uint32_t lo = t.n_drawn, hi = t.n_edges;
-  while (lo < hi) {
-    const uint32_t mid = lo + (hi - lo) / 2;
-    if (key_of(t.edges[mid].v0, t.edges[mid].v1) < k)
-      lo = mid + 1;
-    else
-      hi = mid;
-  }
-  return lo;  // every such side's key is a diagonal's
+  // Every such side's key is a diagonal's.
+  return lower_bound_index(t.n_drawn, t.n_edges,
+                           [&](uint32_t i) { return key_of(t.edges[i].v0, t.edges[i].v1) < k; });
 }
 
 // Attach faces: a side running v0 -> v1 takes slot 0, v1 -> v0 slot 1. Then each edge is

@@ -4,6 +4,7 @@
 #include "haloplot/geometry/predicates.h"
 #include "haloplot/geometry/wide.h"
 #include "haloplot/solid/incidence.h"
+#include "haloplot/sort/lower_bound.h"
 #include "memory/carve.h"
 #include "solid/cover.h"
 #include "sort/in_place_sort.h"
@@ -274,14 +275,7 @@ uint32_t append_diagonals(const SolidInput& in, uint32_t* pairs, uint64_t* keys)
   for (uint32_t t = 0; t < in.n_triangles; ++t)
     for (int k = 0; k < 3; ++k) {
       const uint64_t s = key(in.triangles[t].v[k], in.triangles[t].v[(k + 1) % 3]);
-      uint32_t lo = 0, hi = in.n_edges;
-      while (lo < hi) {
-        const uint32_t mid = lo + (hi - lo) / 2;
-        if (keys[mid] < s)
-          lo = mid + 1;
-        else
-          hi = mid;
-      }
+      const uint32_t lo = lower_bound_index(0, in.n_edges, [&](uint32_t i) { return keys[i] < s; });
       if ((lo < in.n_edges && keys[lo] == s) || (s >> 32) == (s & 0xffffffffu)) continue;
       sides[n++] = s;
     }

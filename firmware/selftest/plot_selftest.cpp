@@ -177,8 +177,8 @@ void hidden_surfaces_on_chip(const SolidInput& in, const HatchParams& hatch) {
 
 void hidden_lines_on_chip() {
   const SolidCubes c = solid_cubes();
-  // Whole steps first, for the resolution axis's cost on the chip (docs/accuracy.md); then the
-  // host's default units, which the host test compares with `haloplot plot`.
+  // Whole steps first, for the resolution axis's cost on the chip (docs/reports/accuracy.md); then
+  // the host's default units, which the host test compares with `haloplot plot`.
   PieceCount whole_count;
   HiddenReport whole_report;
   stat("hidden_lines_instructions_whole_steps",
@@ -220,7 +220,7 @@ void calibrate() {
 }
 
 // Every DRAW precision mode (draw/precision.h) on the same CUTSET: what each costs on the
-// Cortex-M4, where a 64-bit division is a library call (docs/accuracy.md quotes these).
+// Cortex-M4, where a 64-bit division is a library call (docs/reports/accuracy.md quotes these).
 void draw_modes(const CutSet& set, uint8_t* scratch, size_t scratch_size, const SpanSink& count) {
   auto mode = [&](const char* name, auto tag) {
     using P = decltype(tag);

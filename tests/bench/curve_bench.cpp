@@ -5,7 +5,7 @@
 //
 // `curve_bench --accuracy`: error against time for the curve DRAW's chord tolerance (the
 // flatness each chord keeps from its piece of curve), on the demo knots: the section of
-// docs/accuracy.md that tools/bench_curve_accuracy.sh prints.
+// docs/reports/accuracy.md that tools/bench_curve_accuracy.sh prints.
 #include <algorithm>
 #include <chrono>
 #include <cmath>

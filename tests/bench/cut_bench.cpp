@@ -1,4 +1,4 @@
-// The performance report (issue: performance at scale). Writes docs/performance.md and its
+// The performance report. Writes docs/reports/performance.md and its
 // charts. Every figure is a median of several runs; comparisons are ratios within one run.
 //   cut_bench OUT_DIR [--quick]
 #include <cmath>

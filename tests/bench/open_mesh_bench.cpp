@@ -9,7 +9,7 @@
 // high-water mark) per triangle. A third row pierces the closed torus with a sphere (the QI's
 // second propagation, stopping where edges pass through faces).
 //   open_mesh_bench [QUADS_AROUND [QUADS_ACROSS [RUNS]]]   (default 1000 500 3: 1M triangles)
-// Prints a Markdown table (docs/performance.md, "Open meshes").
+// Prints a Markdown table (docs/reports/performance.md, "Open meshes").
 #include <cstdio>
 #include <cstdlib>
 #include <string>

@@ -1,4 +1,4 @@
-// Section 3 of docs/accuracy.md: every precision mode of the core on the same scenes, error
+// Section 3 of docs/reports/accuracy.md: every precision mode of the core on the same scenes, error
 // against an exact (long double) reference and time, and the error-against-time front.
 //   DRAW:       square root (exact, Newton, table) x position grid (Q0.32, Q0.16);
 //   projection: Q16.16 and Q2.30 in the core; float and double here, benchmark-only (the

@@ -1,5 +1,5 @@
-// The resolution axis (docs/accuracy.md): the same hidden-line run with the projected scene in
-// whole steps and in units of 2^-s steps (View::substep_bits), on the cube array, a
+// The resolution axis (docs/reports/accuracy.md): the same hidden-line run with the projected scene
+// in whole steps and in units of 2^-s steps (View::substep_bits), on the cube array, a
 // 200k-triangle sphere and torus, and assimp's WusonOBJ and spider meshes. For each
 // resolution: how much ink differs from a double-precision ray cast of the unrounded model
 // (tests/reference/ray_cast.h; per drawn edge, |visible length drawn - visible length cast|,

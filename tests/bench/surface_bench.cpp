@@ -5,8 +5,9 @@
 //   2. depth complexity does not matter: N fixed, D from 0.1 to 30, time flat or falling, and
 //      how many faces and (face, cell) pairs the blocking faces removed;
 //   3. perspective (far squares smaller) is faster than the same scene at one size.
-// Writes docs/hidden-surface.body.md and docs/hidden-surface.svg (time per face against N, with
-// the paper's Tables 1 and 2 normalised beside ours). Times: the core run alone, median of 3.
+// Writes docs/reports/hidden-surface.body.md and docs/reports/hidden-surface.svg (time per face
+// against N, with the paper's Tables 1 and 2 normalised beside ours). Times: the core run alone,
+// median of 3.
 #include <cmath>
 #include <cstdio>
 #include <fstream>

@@ -1,4 +1,4 @@
-// docs/view2d.md: Freeman-Loutrel (core/view2d) against the brute-force ray caster
+// docs/reports/view2d.md: Freeman-Loutrel (core/view2d) against the brute-force ray caster
 // (tests/reference/view2d_reference.h) for n = 10 to 10^5 vertices: median times, the growth
 // from one n to the next, and the walk's counters. Usage: view2d_bench OUT_DIR
 #include <algorithm>

@@ -16,7 +16,7 @@ while IFS=$'\t' read -r where key quoted; do
   elif [ "$quoted" != "$want" ]; then
     echo "FAILED: $where: fig:$key says '$quoted', the tool gives '$want'"; fail=1
   fi
-done < <(perl -ne 'while (/<!-- fig:([A-Za-z0-9_]+) -->(.*?)<!-- \/fig -->/g) { print "$ARGV:$.\t$1\t$2\n" } close ARGV if eof' README.md docs/*.md)
+done < <(perl -ne 'while (/<!-- fig:([A-Za-z0-9_]+) -->(.*?)<!-- \/fig -->/g) { print "$ARGV:$.\t$1\t$2\n" } close ARGV if eof' README.md docs/*.md docs/reports/*.md)
 for key in demo_edges trace_steps trace_bytes; do
   grep -q "<!-- fig:$key -->" README.md || { echo "FAILED: README.md quotes no fig:$key"; fail=1; }
 done

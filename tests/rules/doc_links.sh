@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CTest doc_links: every relative link and image in README.md and docs/*.md names a file that
+# CTest doc_links: every relative link and image in README.md, docs/*.md and docs/reports/*.md names a file that
 # exists, and every #anchor (in the same file or another .md) names a heading there, as GitHub
 # makes them (lower case, punctuation dropped, spaces to hyphens, -1, -2 for repeats).
 # Links to http(s):, mailto: and the like are not checked; code spans and blocks are skipped.
@@ -70,4 +70,4 @@ for my $file (@ARGV) {
 }
 print "doc_links: $n relative links checked, $bad broken\n";
 exit($bad ? 1 : 0);
-' README.md docs/*.md
+' README.md docs/*.md docs/reports/*.md

@@ -105,7 +105,8 @@ int main() {
   const Agreement w1 = measure(dir + "WusonOBJ.obj", "30,25", units);
   const Agreement w2 = measure(dir + "WusonOBJ.obj", "200,-40", units);
   const Agreement sp = measure(dir + "spider.obj", "30,25", units);
-  // Whole steps, for the difference sub-step units make (docs/accuracy.md, the resolution axis).
+  // Whole steps, for the difference sub-step units make (docs/reports/accuracy.md, the resolution
+  // axis).
   const Agreement w2_whole = measure(dir + "WusonOBJ.obj", "200,-40", 0);
   CHECK(w1.edges > 5000 && w2.edges > 5000 && sp.edges > 2000);
   auto share = [](const Agreement& a) {

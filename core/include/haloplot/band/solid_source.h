@@ -8,6 +8,7 @@
 #include <stdint.h>
 
 #include "haloplot/solid/mesh.h"
+#include "haloplot/sort/lower_bound.h"
 #include "haloplot/status/status.h"
 
 namespace haloplot {
@@ -73,14 +74,8 @@ struct StagedSolidBand {
     s.closed = closed;
     s.vertex = [](void* ctx, uint32_t v, Point3* out) {
       const StagedSolidBand* b = static_cast<const StagedSolidBand*>(ctx);
-      uint32_t lo = 0, hi = b->n_vertices;
-      while (lo < hi) {
-        const uint32_t mid = lo + (hi - lo) / 2;
-        if (b->vertex_ids[mid] < v)
-          lo = mid + 1;
-        else
-          hi = mid;
-      }
+      const uint32_t lo =
+          lower_bound_index(0, b->n_vertices, [&](uint32_t i) { return b->vertex_ids[i] < v; });
       if (lo == b->n_vertices || b->vertex_ids[lo] != v) return Status::kUploadMismatch;
       *out = b->vertices[lo];
       return Status::kOk;

@@ -45,10 +45,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "haloplot//status/sink.h"
 #include "haloplot/curve/curve_cross.h"
 #include "haloplot/draw/draw.h"
 #include "haloplot/geometry/edge_piece.h"
+#include "haloplot/status/sink.h"
 
 namespace haloplot {
 

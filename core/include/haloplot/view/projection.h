@@ -42,7 +42,7 @@ struct View {
 };
 
 // The sub-step bits the host tool and job files fit an .obj scene with unless told otherwise
-// (where the plot area leaves room), chosen on the resolution axis of docs/accuracy.md: the
+// (where the plot area leaves room), chosen on the resolution axis of docs/reports/accuracy.md: the
 // drawing follows the model there at a cost within a few per cent of whole steps. View{}
 // itself stays in whole steps: a caller of the core asks for units explicitly.
 inline constexpr int32_t kDefaultSubstepBits = 5;
@@ -62,7 +62,7 @@ Status project_points(const View& view, const Point3* world, uint32_t n, Point3*
 
 // The same with sine and cosine in Q16.16 (kTrigBits = 16: 17-bit constants, products that
 // need no splitting, error up to about 2^-16 of the scene's extent) or Q2.30 (30, the
-// default above). The accuracy benchmark measures both (docs/accuracy.md).
+// default above). The accuracy benchmark measures both (docs/reports/accuracy.md).
 template <int kTrigBits>
 Status project_points_with(const View& view, const Point3* world, uint32_t n, Point3* out);
 
