@@ -50,7 +50,7 @@ Status BandConductor::begin(const BandSpec& spec, EdgeSource source, void* arena
   row_hi_ = hi;
   next_row_ = lo;
   height_ = int64_t{hi} - lo + 1;  // the first attempt: the whole scene in one band
-  done_ = false;
+  running_ = true;
   return Status::kOk;
 }
 
@@ -62,7 +62,7 @@ Status BandConductor::begin_streamed(const BandSpec& spec, int32_t margin, BandS
   stream_ = stream;
   stats_.margin = margin;
   margin_known_ = true;
-  done_ = false;
+  running_ = true;
   return Status::kOk;
 }
 
@@ -74,7 +74,7 @@ Status BandConductor::next_streamed_band() {
   Status s = stream_.next(stream_.ctx, &band, &end);
   if (!ok(s)) return s;  // kBusy: not here yet
   if (end) {
-    done_ = true;
+    running_ = false;
     return n_carry_ != 0 || n_defer_ != 0 ? Status::kBandCarryLost : Status::kOk;
   }
   if (band.y0 != next_row_ && stats_.bands > 0) return Status::kMalformedRequest;
@@ -327,7 +327,7 @@ Status BandConductor::try_band(int32_t y1, bool* fitted) {
 Status BandConductor::next(const PathPoint** points, uint32_t* n) {
   *n = 0;
   *points = nullptr;
-  while (!done_ || next_seg_ < n_segs_) {
+  while (running_ || next_seg_ < n_segs_) {
     if (next_seg_ < n_segs_) {  // the current band's next column
       const Status s = plan_column(points, n);
       if (!ok(s) || *n > 0) return s;
@@ -339,7 +339,7 @@ Status BandConductor::next(const PathPoint** points, uint32_t* n) {
       continue;
     }
     if (next_row_ > row_hi_) {
-      done_ = true;
+      running_ = false;
       if (n_carry_ != 0 || n_defer_ != 0) return Status::kBandCarryLost;
       break;
     }

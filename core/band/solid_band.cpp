@@ -395,7 +395,7 @@ Status BandConductor::begin_solid(const BandSpec& spec, SolidSource source, void
   next_row_ = lo;
   height_ = int64_t{hi} - lo + 1;
   margin_known_ = true;  // a solid band needs no margin
-  done_ = false;
+  running_ = true;
   return Status::kOk;
 }
 
@@ -411,7 +411,7 @@ Status BandConductor::begin_streamed_solid(const BandSpec& spec, bool closed, bo
   solid_stage_ = &kSolidStage;
   closed_ = closed;
   margin_known_ = true;
-  done_ = false;
+  running_ = true;
   turned_ = turned;
   stats_.turned = turned;
   if (turned) turn_pen();

@@ -133,6 +133,32 @@ Status job_bytes(const JobSpec& steps, const Edge3* edges, uint32_t n, uint32_t 
   return Status::kOk;
 }
 
+Status job_crossings(const JobSpec& steps, const Edge3* edges, uint32_t n, void* buffer,
+                     size_t buffer_bytes, uint32_t* capacity) {
+  *capacity = 0;
+  if (needs_faces(steps.drawing) || !units_ok(steps) || !layers_ok(steps, n))
+    return Status::kBadParameter;
+  if (buffer_misaligned(buffer)) return Status::kMisalignedBuffer;
+  if (steps.drawing != DrawingEffect::kHaloed) return Status::kOk;
+  const JobSpec spec = in_units(steps);
+  CutPlan plan;
+  Status s = plan_cut(edges, n, spec.cut, &plan);
+  if (!ok(s)) return s;
+  // A CUTSET of no records: run_cut() counts every record past the capacity and stores none.
+  const size_t cutset_size = carve_round(cutset_bytes(n, 0));
+  const size_t scratch = carve_round(plan.scratch_bytes);
+  if (buffer_bytes < cutset_size + scratch) return Status::kWorkspaceTooSmall;
+  uint8_t* base = static_cast<uint8_t*>(buffer);
+  CutSet cs;
+  CutStats st;
+  s = run_cut(plan, edges, base + cutset_size, scratch, base, cutset_size, &cs, &st);
+  if (!ok(s) && s != Status::kCrossingCapacity) return s;
+  const uint64_t records = st.crossings + st.near_misses;
+  if (records > 0xffffffffu) return Status::kCrossingCapacity;
+  *capacity = uint32_t(records);
+  return Status::kOk;
+}
+
 namespace {
 
 // Stage 3: the path, after the spans (DRAW's scratch is dead by now).
@@ -266,9 +292,15 @@ struct StrokeCollector {
   uint32_t capacity = 0, count = 0;
   StrokeStyle style;
   uint32_t n_drawn = 0;
-  DashedRuns runs;  // a hidden run's dashes from its start, across its pieces (solid/modes.h)
+  DashedRuns runs;        // a hidden run's dashes from its start, across its pieces (solid/modes.h)
+  bool counting = false;  // job_solid_bytes(): strokes counted, none stored
+  uint8_t* tail = nullptr;  // where the run's free tail began
 
   Status add(const Span& s, uint8_t layer) {
+    if (counting) {
+      ++count;
+      return Status::kOk;
+    }
     if (count == capacity) return Status::kSinkFull;
     layer_end[-1 - int64_t{count}] = layer;
     out[count++] = Segment2{s.x0, s.y0, s.x1, s.y1};
@@ -276,6 +308,7 @@ struct StrokeCollector {
   }
   static void begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3*) {
     auto* self = static_cast<StrokeCollector*>(ctx);
+    self->tail = tail;
     self->out = reinterpret_cast<Segment2*>(tail);
     self->layer_end = tail + bytes;
     const size_t n = bytes / (sizeof(Segment2) + 1);
@@ -293,7 +326,7 @@ struct StrokeCollector {
                                                   : PieceKind::kContour;
     const Status s = self->runs.piece(*p.geometry, p.edge, kind, p.t0, p.t1, p.hidden, p.q,
                                       self->style, Emit{self});
-    if (ok(s) && !p.hidden && self->count > before)
+    if (ok(s) && !p.hidden && self->count > before && !self->counting)
       self->layer_end[-int64_t{self->count}] = p.hatch                ? kHatching
                                                : p.face[0] != kNoFace ? kIntersection
                                                                       : kVisible;
@@ -333,21 +366,10 @@ Status strokes_to_front(const StrokeCollector& c, uint8_t* base, LayerCounts* la
   return Status::kOk;
 }
 
-}  // namespace
-
-Status job_prepare_solid(const JobSpec& steps, const SolidInput& in, uint32_t crossing_capacity,
-                         uint32_t incidence_capacity, void* buffer, size_t buffer_bytes,
-                         PreparedJob* out, JobCounters* counters, HiddenReport* report) {
-  clear_drawing(out, false);
-  if (!hidden_line_drawing(steps.drawing) || !units_ok(steps)) return Status::kBadParameter;
-  if (buffer_misaligned(buffer)) return Status::kMisalignedBuffer;
-  const JobSpec spec = in_units(steps);
-  if (spec.hidden.dash < 1 || spec.hidden.gap < 1 || spec.hidden.dash > kCoordMax ||
-      spec.hidden.gap > kCoordMax)
-    return Status::kBadParameter;
-  Status s = validate(spec.machine);
-  if (!ok(s)) return s;
-  uint8_t* base = static_cast<uint8_t*>(buffer);
+// The hidden-line run of a solid job with its strokes gathered by `collect` (or counted).
+Status solid_lines(const JobSpec& spec, const SolidInput& in, uint32_t crossing_capacity,
+                   uint32_t incidence_capacity, uint8_t* base, size_t buffer_bytes,
+                   StrokeCollector* collect, HiddenReport* report) {
   HiddenParams hp;
   hp.method = spec.hidden.method;
   hp.outline = spec.hidden.outline;
@@ -357,18 +379,43 @@ Status job_prepare_solid(const JobSpec& steps, const SolidInput& in, uint32_t cr
   hp.cut = spec.cut;
   hp.crossing_capacity = crossing_capacity;
   hp.incidence_capacity = incidence_capacity;
-  StrokeCollector collect;
-  collect.style =
+  collect->style =
       StrokeStyle{spec.drawing == DrawingEffect::kHiddenDashed ? SolidMode::kHiddenDashed
                                                                : SolidMode::kHiddenRemoved,
                   spec.hidden.dash, spec.hidden.gap};
-  collect.n_drawn = in.n_edges;
+  collect->n_drawn = in.n_edges;
+  const Status s = hidden_lines(in, hp, base, buffer_bytes,
+                                HiddenSink{&StrokeCollector::begin, &StrokeCollector::piece,
+                                           &StrokeCollector::outline, collect},
+                                report);
+  return ok(s) ? collect->finish() : s;  // into the tail still: nothing else uses it now
+}
+
+// A solid job's settings in units, checked.
+Status solid_job_spec(const JobSpec& steps, const void* buffer, JobSpec* spec) {
+  if (!hidden_line_drawing(steps.drawing) || !units_ok(steps)) return Status::kBadParameter;
+  if (buffer_misaligned(buffer)) return Status::kMisalignedBuffer;
+  *spec = in_units(steps);
+  if (spec->hidden.dash < 1 || spec->hidden.gap < 1 || spec->hidden.dash > kCoordMax ||
+      spec->hidden.gap > kCoordMax)
+    return Status::kBadParameter;
+  return validate(spec->machine);
+}
+
+}  // namespace
+
+Status job_prepare_solid(const JobSpec& steps, const SolidInput& in, uint32_t crossing_capacity,
+                         uint32_t incidence_capacity, void* buffer, size_t buffer_bytes,
+                         PreparedJob* out, JobCounters* counters, HiddenReport* report) {
+  clear_drawing(out, false);
+  JobSpec spec;
+  Status s = solid_job_spec(steps, buffer, &spec);
+  if (!ok(s)) return s;
+  uint8_t* base = static_cast<uint8_t*>(buffer);
+  StrokeCollector collect;
   JobCounters c;
-  s = hidden_lines(in, hp, base, buffer_bytes,
-                   HiddenSink{&StrokeCollector::begin, &StrokeCollector::piece,
-                              &StrokeCollector::outline, &collect},
-                   report);
-  if (ok(s)) s = collect.finish();  // into the tail still: nothing else uses it now
+  s = solid_lines(spec, in, crossing_capacity, incidence_capacity, base, buffer_bytes, &collect,
+                  report);
   c.cut = report->cut;
   ++c.cut_runs;
   if (counters) *counters = c;
@@ -384,6 +431,41 @@ Status job_prepare_solid(const JobSpec& steps, const SolidInput& in, uint32_t cr
   if (counters) *counters = c;
   if (!ok(s)) return s;
   *out = job;
+  return Status::kOk;
+}
+
+Status job_solid_bytes(const JobSpec& steps, const SolidInput& in, void* buffer,
+                       size_t buffer_bytes, StageNeeds* needs, HiddenReport* report) {
+  *needs = StageNeeds{};
+  JobSpec spec;
+  Status s = solid_job_spec(steps, buffer, &spec);
+  if (!ok(s)) return s;
+  uint8_t* base = static_cast<uint8_t*>(buffer);
+  StrokeCollector collect;
+  StageNeeds n;
+  // From no capacity up to what the run reports: records, incidences, then a run that fits.
+  for (int pass = 0; pass < kSizedRounds; ++pass) {
+    collect = StrokeCollector{};
+    collect.counting = true;
+    s = solid_lines(spec, in, n.crossings, n.incidences, base, buffer_bytes, &collect, report);
+    StageNeeds want = n;
+    hidden_lines_needs(s, *report, buffer_bytes, &want);
+    if (s != Status::kCrossingCapacity && s != Status::kIncidenceCapacity) break;
+    if (!raise_needs(&n, want)) break;
+  }
+  if (!ok(s)) return s;
+  // The job's three checks: the run below its tail with the strokes and their layer bytes in
+  // it; the move to the front through scratch of the same size; the strokes and the path.
+  const size_t strokes = carve_round(size_t{collect.count} * sizeof(Segment2));
+  JobBytes path;
+  size_path_stages(collect.count, &path);
+  const size_t below = collect.tail != nullptr ? size_t(collect.tail - base) : 0;  // no sink call
+  const size_t run = below + size_t{collect.count} * (sizeof(Segment2) + 1);
+  const size_t move = 2 * strokes + collect.count;
+  const size_t plan = strokes + path.points + path.path;
+  n.bytes = run > move ? run : move;
+  if (plan > n.bytes) n.bytes = plan;
+  *needs = n;
   return Status::kOk;
 }
 
@@ -435,7 +517,7 @@ Status curve_cross_stage(const JobSpec& steps, const CurveJobScene& sc, uint32_t
 // hits, which stay for a re-plot (job_redraw_curves), and the path.
 Status curve_draw_stage(const JobSpec& steps, const CurveJobScene& sc, uint32_t n_hits,
                         uint8_t* base, size_t buffer_bytes, PreparedJob* job, JobCounters* c,
-                        size_t* need_bytes) {
+                        size_t* need_bytes, bool count_only = false) {
   CurveCrossParams cp;
   CurveDrawParams dp;
   curve_job_params(steps, &cp, &dp);
@@ -457,6 +539,10 @@ Status curve_draw_stage(const JobSpec& steps, const CurveJobScene& sc, uint32_t 
   size_t need = hits_size + draw_size + path.spans;
   if (hits_size + path.spans + path.points + path.path > need)
     need = hits_size + path.spans + path.points + path.path;
+  if (count_only) {  // job_curves_bytes(): the buffer the whole job needs, nothing stored
+    *need_bytes = need;
+    return Status::kOk;
+  }
   if (buffer_bytes < need) return short_of(need, need_bytes);
   SpanCollector collect{reinterpret_cast<Segment2*>(scratch + draw_size), n_chords, 0};
   ++c->draw_runs;
@@ -520,6 +606,32 @@ Status job_prepare_curves(const JobSpec& steps, const CurveJobScene& scene, uint
   if (!ok(s)) return s;
   *out = job;
   return Status::kOk;
+}
+
+Status job_curves_bytes(const JobSpec& steps, const CurveJobScene& scene, void* buffer,
+                        size_t buffer_bytes, uint32_t* hit_capacity, size_t* bytes) {
+  *hit_capacity = 0;
+  *bytes = 0;
+  Status s = curve_job_fits(steps, buffer);
+  if (!ok(s)) return s;
+  uint8_t* base = static_cast<uint8_t*>(buffer);
+  uint32_t n_hits = 0, capacity = 0;
+  size_t need = 0;
+  JobCounters c;
+  // From no capacity: the raw records' count, then the hits' (clustering halves them, both
+  // directions double them), then a pass that fits.
+  for (int pass = 0; pass < 3; ++pass) {
+    c = JobCounters{};
+    s = curve_cross_stage(steps, scene, capacity, base, buffer_bytes, &n_hits, &c, &need);
+    if (s != Status::kCrossingCapacity) break;
+    if (c.curve_cross.needed > 0xffffffffu) return Status::kCrossingCapacity;
+    capacity = uint32_t(c.curve_cross.needed);
+  }
+  if (ok(s))
+    s = curve_draw_stage(steps, scene, n_hits, base, buffer_bytes, nullptr, &c, &need, true);
+  *bytes = need;  // on kWorkspaceTooSmall: what the pass needs, as far as it got
+  if (ok(s)) *hit_capacity = capacity;
+  return s;
 }
 
 Status job_redraw_curves(const JobSpec& steps, const CurveJobScene& scene, uint32_t n_hits,

@@ -38,7 +38,7 @@ void StepPrep::advance_time(uint32_t events, int64_t interval, int64_t add) {
   time_q8_ += uint64_t(e * interval + add * (e * (e - 1) / 2));
 }
 
-Status StepPrep::begin_move(const MotionItem& it) {
+void StepPrep::begin_move(const MotionItem& it) {
   item_ = it;
   const uint32_t a0 = abs32(it.delta[0]), a1 = abs32(it.delta[1]);
   dominant_ = a0 >= a1 ? 0 : 1;
@@ -56,7 +56,6 @@ Status StepPrep::begin_move(const MotionItem& it) {
     if (moves) last_backward_[mo] = backward;
   }
   set_profile(it.entry_v2, it.top_v2, it.exit_v2, 0, n_);
-  return Status::kOk;
 }
 
 // The speed profile over dominant steps [j0, j_end] of the move, timed from the tick's clock
@@ -278,7 +277,7 @@ void StepPrep::resume_move(MotionPlanner& planner, StepSegment* out, bool* have)
     const uint64_t reach = 2ull * rest_.accel * rest_.length_q8;
     if (rest_.exit_v2 > reach) rest_.exit_v2 = reach;
     planner.limit_next_entry(rest_.exit_v2);
-    (void)begin_move(rest_);
+    begin_move(rest_);
     in_move_ = true;
   } else {
     planner.limit_next_entry(0);
@@ -327,7 +326,7 @@ void StepPrep::restart_at(uint32_t remaining, const int32_t motors[2]) {
   last_takeup_ = false;
   hold_ = Hold::kTravel;
   if (target[0] != 0 || target[1] != 0) {
-    (void)begin_move(travel(target));
+    begin_move(travel(target));
     in_move_ = true;
   }
 }
@@ -439,8 +438,7 @@ Status StepPrep::next_segment(MotionPlanner& planner, StepSegment* out, bool* ha
         *have = true;
         return Status::kOk;
       }
-      const Status s = begin_move(it);
-      if (!ok(s)) return s;
+      begin_move(it);
       in_move_ = true;
       if (hold_ == Hold::kBraking) brake(brake_exit2_);  // a hold that runs on past a move
       continue;

@@ -35,15 +35,15 @@ uint32_t hatched_polygon(const SolidInput& in, const Regions& r, uint32_t h, con
   return in.triangles[f].polygon;
 }
 
-struct Span {
+struct HalfEdgeRun {
   Edge3 e;               // the half-edge's edge, oriented as the half-edge runs
   PiecePosition p0, p1;  // its ends along e (exact)
   int64_t w0, w1;        // w at e's ends
 };
 
-Span span_of(const SolidInput& in, const Regions& r, uint32_t h, const Hatching& hg) {
+HalfEdgeRun span_of(const SolidInput& in, const Regions& r, uint32_t h, const Hatching& hg) {
   const RegionSegment& s = r.segments[h / 2];
-  Span sp;
+  HalfEdgeRun sp;
   sp.e = Edge3{in.vertices[in.edge_pairs[2 * s.edge]], in.vertices[in.edge_pairs[2 * s.edge + 1]]};
   sp.p0 = piece_end_position(in, s.edge, s.from);
   sp.p1 = piece_end_position(in, s.edge, s.to);
@@ -53,14 +53,14 @@ Span span_of(const SolidInput& in, const Regions& r, uint32_t h, const Hatching&
 }
 
 // Sign of w - level at position num / den along the edge.
-int level_side(const Span& s, const PiecePosition& at, int64_t level) {
+int level_side(const HalfEdgeRun& s, const PiecePosition& at, int64_t level) {
   const Wide v = mul_i64(s.w0 - level, at.den) + mul_i64(at.num, s.w1 - s.w0);
   return v.negative() ? -1 : (v.is_zero() ? 0 : 1);
 }
 
 // The levels k whose line the span may meet (a superset, from its Q0.32 ends), then exactly.
 template <typename Visit>
-void span_levels(const Span& s, const RegionSegment& g, const Hatching& hg, Visit visit) {
+void span_levels(const HalfEdgeRun& s, const RegionSegment& g, const Hatching& hg, Visit visit) {
   auto w_at = [&](int64_t t) {
     const Wide d = mul_i64(s.w1 - s.w0, t);  // below 2^84: keep the integer part of / 2^32
     return s.w0 + static_cast<int64_t>((d.lo >> 32) | (d.hi << 32));
@@ -123,7 +123,7 @@ Status hatch_regions(const SolidInput& in, const Regions& r, const HatchParams& 
     size_t nh = 0;
     for (uint32_t q = i; q < j; ++q) {
       const uint32_t h = hs[q];
-      Span sp = span_of(in, r, h, hg);
+      HalfEdgeRun sp = span_of(in, r, h, hg);
       const int64_t dx = sp.e.b.x - sp.e.a.x, dy = sp.e.b.y - sp.e.a.y;
       // Entering when the line's direction points to the half-edge's left.
       const int64_t hx = (h & 1) ? -dx : dx, hy = (h & 1) ? -dy : dy;

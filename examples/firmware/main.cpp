@@ -96,8 +96,14 @@ int main() {
   const JobSpec spec = the_job();
   PreparedJob job;
   JobCounters counters;
-  s = job_prepare(spec, edges, kEdges, 128, job_memory, sizeof job_memory, &job, &counters);
+  // The records CUT will store, counted first in the same memory (28 for these cubes): a guess
+  // costs 12 bytes a record too many, or a kCrossingCapacity.
+  uint32_t crossings = 0;
+  s = job_crossings(spec, edges, kEdges, job_memory, sizeof job_memory, &crossings);
+  if (!ok(s)) fail("job_crossings", s);
+  s = job_prepare(spec, edges, kEdges, crossings, job_memory, sizeof job_memory, &job, &counters);
   if (!ok(s)) fail("job_prepare", s);
+  print("crossing_capacity", crossings);
 
   // The trace's header now, its events from the interrupt, its end after the plot.
   TraceEncoder trace(

@@ -1,7 +1,7 @@
 // The plotter controller, for every board: boots the board (board/board.h, from the board's
 // folder), then serves the job protocol on its serial link forever
 // (core/include/haloplot/protocol/job_server.h), plotting through the step timer
-// (core/include/haloplot/controller/motion_runner.h, on this board: app/motion_runner.h).
+// (core/include/haloplot/controller/motion_runner.h, on this board: app/board_motion.h).
 //
 // Memory: one arena for the scene and the job buffer (HALOPLOT_FW_ARENA_KB, the board's
 // setting), and the small fixed parts (frame buffer, serial ring, step queue, planner window).
@@ -11,7 +11,7 @@
 // semihosting, answer the test-only request kTestExit with their counters, and exit through
 // SYS_EXIT_EXTENDED. The flashed image has none of that: semihosting would fault without a
 // debugger attached.
-#include "app/motion_runner.h"
+#include "app/board_motion.h"
 #include "board/board.h"
 #include "haloplot/protocol/job_server.h"
 #include "platform/console.h"
@@ -40,7 +40,7 @@ constexpr uint8_t kTestDigestType = 0x7D;
 #endif
 alignas(8) uint8_t arena[HALOPLOT_FW_ARENA_KB * 1024];
 uint8_t rx_frame[JobServer::kMaxPayload + kFrameOverhead];
-fw::MotionRunner motion;  // this board's (app/motion_runner.h), not the template
+fw::MotionRunner motion;  // this board's (app/board_motion.h), not the template
 
 // Quiet time that ends a frame in progress, in counter ticks (the board's, about 2 ms on the
 // chip: 23 byte times at 115200 baud, a sender never pauses that long inside a frame). Under

@@ -347,6 +347,22 @@ inline uint32_t check_jobs(const Report& r) {
     add_points(d, job.points, job.n_points);
     return s;
   });
+  // The counting passes that size the jobs.
+  f += probe(r, "job_crossings buffer", jb.total(), [&](void* b, size_t n, Digest* d) {
+    uint32_t capacity = 0;
+    const Status s = job_crossings(spec, edges, kEdges, b, n, &capacity);
+    d->add(capacity);
+    return s;
+  });
+  f += probe(r, "job_solid_bytes buffer", 20 * 1024, [&](void* b, size_t n, Digest* d) {
+    HiddenReport report;
+    StageNeeds needs;
+    const Status s = job_solid_bytes(hidden, solid.in, b, n, &needs, &report);
+    d->add(needs.crossings);
+    d->add(needs.incidences);
+    d->add(needs.bytes);
+    return s;
+  });
   // The planner of a job prepared in aux.
   PreparedJob ready;
   if (!ok(job_prepare(spec, edges, kEdges, kCrossingCapacity, aux, kPoolBytes, &ready, nullptr)))

@@ -8,6 +8,14 @@
 
 namespace haloplot::host {
 
+void LoadedCut::bind() {
+  set.edges = edges.data();
+  set.n_edges = static_cast<uint32_t>(edges.size());
+  set.first = first.data();
+  set.crossings = crossings.data();
+  set.n_crossings = static_cast<uint32_t>(crossings.size());
+}
+
 std::string decimal_position(int32_t a, int32_t d, uint32_t t32) {
   // a + d * t / 2^32 in thousandths, rounded half up; exact in 128 bits on the host.
   const __int128 scaled =

@@ -14,11 +14,22 @@
 #pragma once
 #include <iosfwd>
 #include <string>
+#include <vector>
 
+#include "haloplot/cut/cutset.h"
 #include "io/input_error.h"
-#include "pipeline/host_pipeline.h"
 
 namespace haloplot::host {
+
+// A CUTSET read back from a .cut file, in the same shape.
+struct LoadedCut {
+  std::vector<Edge3> edges;
+  std::vector<uint32_t> first;
+  std::vector<Crossing> crossings;
+  CutSet set;
+  int32_t substep_bits = 0;  // the file's units: 2^-S steps (its '# substep S' header)
+  void bind();               // point `set` at the vectors
+};
 
 void write_cut(std::ostream& out, const CutSet& set, const std::string& extra_header);
 InputError read_cut(std::istream& in, const std::string& name, LoadedCut* out);

@@ -2,9 +2,14 @@
 
 #include <ostream>
 
-#include "pipeline/drawing_modes.h"
+#include "haloplot/solid/qi.h"
 
 namespace haloplot::host {
+
+std::string qi_text(int32_t halves) {
+  if (halves == kQiUnknown) return "?";
+  return std::to_string(halves / 2) + (halves % 2 != 0 ? ".5" : "");
+}
 
 void write_spans(std::ostream& out, const std::vector<Span>& spans) {
   out << "# haloplot spans v1: s EDGE X0 Y0 X1 Y1 (steps)\n";

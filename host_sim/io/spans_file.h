@@ -2,6 +2,7 @@
 // order DRAW emits them (edge by edge, along each edge).
 #pragma once
 #include <iosfwd>
+#include <string>
 #include <vector>
 
 #include "haloplot/draw/draw.h"
@@ -9,6 +10,9 @@
 namespace haloplot::host {
 
 void write_spans(std::ostream& out, const std::vector<Span>& spans);
+
+// "0", "1", "0.5": a QI counted in halves, as the .spans file writes it ("?": not decided).
+std::string qi_text(int32_t halves);
 
 // The hidden-line modes' form: "s EDGE X0 Y0 X1 Y1 QI" (QI as a number of front faces in
 // front, halves for pieces lying along a face side), then "o EDGE X0 Y0 X1 Y1 0" for the

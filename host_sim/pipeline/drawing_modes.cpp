@@ -14,11 +14,6 @@ bool parse_solid_mode(const std::string& s, SolidMode* out) {
   return true;
 }
 
-std::string qi_text(int32_t halves) {
-  if (halves == kQiUnknown) return "?";
-  return std::to_string(halves / 2) + (halves % 2 != 0 ? ".5" : "");
-}
-
 ModeDrawing make_mode_drawing(const SolidRun& run, const ModeSpec& spec) {
   ModeDrawing d;
   // About a span a piece (dashes make more): room up front, not regrown by copying.
@@ -38,6 +33,7 @@ ModeDrawing make_mode_drawing(const SolidRun& run, const ModeSpec& spec) {
   // stroke, if it makes one now (one span: a visible piece, or any piece in mode all).
   auto add = [&](const SolidPiece& p, PieceKind kind) {
     // keep() only appends (it cannot fail), so neither can the strokes.
+    // The sink is this drawing's vectors, which never refuse a stroke: nothing to report.
     (void)runs.piece(run.edges[p.edge], p.edge, kind, p.t0, p.t1, p.hidden, p.q, style, keep);
     const bool all = spec.mode == SolidMode::kAll;
     const bool intersection = kind == PieceKind::kLine;
@@ -58,6 +54,7 @@ ModeDrawing make_mode_drawing(const SolidRun& run, const ModeSpec& spec) {
   // Hatching likewise, after them (Span::edge = the polygon).
   for (size_t k = 0; k < run.hatch.size(); ++k) {
     const SolidPiece& p = run.hatch[k];
+    // The sink below only collects (always kOk): nothing to report.
     (void)piece_strokes(run.edges[p.edge], p.edge, PieceKind::kLine, p.t0, p.t1, p.hidden, style,
                         [&](Span s) {
                           s.edge = run.hatch_polygons[k];

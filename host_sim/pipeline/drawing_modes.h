@@ -48,7 +48,4 @@ std::vector<std::vector<Span>> layer_spans(const ModeDrawing& d);
 // these one layer after the other, as the controller's job plans the same strokes.
 std::vector<Edge3> mode_strokes(const ModeDrawing& d, LayerCounts* layers = nullptr);
 
-// "0", "1", "0.5": a QI counted in halves, as the .spans file writes it.
-std::string qi_text(int32_t halves);
-
 }  // namespace haloplot::host

@@ -40,14 +40,6 @@ Status host_cut(std::vector<Edge3> edges, const CutParams& params, HostCut* out)
   return s;
 }
 
-void LoadedCut::bind() {
-  set.edges = edges.data();
-  set.n_edges = static_cast<uint32_t>(edges.size());
-  set.first = first.data();
-  set.crossings = crossings.data();
-  set.n_crossings = static_cast<uint32_t>(crossings.size());
-}
-
 Status host_draw(const CutSet& set, const DrawParams& params, HostDraw* out) {
   out->spans.clear();
   out->scratch_bytes = draw_scratch_bytes(set);

@@ -24,16 +24,6 @@ struct HostCut {
 // Runs CUT on `edges`; returns the core's status (kOk, or the reason it failed).
 Status host_cut(std::vector<Edge3> edges, const CutParams& params, HostCut* out);
 
-// A CUTSET read back from a .cut file, in the same shape.
-struct LoadedCut {
-  std::vector<Edge3> edges;
-  std::vector<uint32_t> first;
-  std::vector<Crossing> crossings;
-  CutSet set;
-  int32_t substep_bits = 0;  // the file's units: 2^-S steps (its '# substep S' header)
-  void bind();               // point `set` at the vectors
-};
-
 struct HostDraw {
   std::vector<Span> spans;
   DrawStats stats;

@@ -20,17 +20,17 @@ Status collect_piece(void* context, const HiddenPiece& p) {
   Collect* c = static_cast<Collect*>(context);
   c->keep(p);
   if (p.hatch) {
-    c->run->hatch.push_back(SolidPiece{p.edge, p.t0, p.t1, p.q, p.hidden});
+    c->run->hatch.push_back(SolidPiece{p, p.q, p.hidden});
     c->run->hatch_faces.push_back(p.face[0]);
     return Status::kOk;
   }
   if (p.face[0] != kNoFace) {
-    c->run->intersections.push_back(SolidPiece{p.edge, p.t0, p.t1, p.q, p.hidden});
+    c->run->intersections.push_back(SolidPiece{p, p.q, p.hidden});
     c->run->intersection_faces.push_back({p.face[0], p.face[1]});
     return Status::kOk;
   }
   (p.edge < c->run->n_drawn ? c->run->pieces : c->run->contour_diagonals)
-      .push_back(SolidPiece{p.edge, p.t0, p.t1, p.q, p.hidden});
+      .push_back(SolidPiece{p, p.q, p.hidden});
   return Status::kOk;
 }
 

@@ -33,9 +33,7 @@ SolidInput solid_input(const SolidScene& scene);
 
 // A piece of a drawn edge: t in Q0.32 from its first vertex; q in halves (kQiUnknown when a
 // class or the V.C. table decided, then only `hidden` is known).
-struct SolidPiece {
-  uint32_t edge;
-  int64_t t0, t1;
+struct SolidPiece : EdgePiece {
   int32_t q;
   bool hidden;
 };

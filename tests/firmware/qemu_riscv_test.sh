@@ -10,6 +10,8 @@
 #   - the image is RV32 (ELF32, RISC-V, the soft-float ABI) and exits 0;
 #   - its haloed spans of 4 x 4 cubes (halo 50) equal `haloplot plot --spans` of the same
 #     scene on the host, line for line, and its crossing count the host's;
+#   - every size query on the test scenes at least what its run used, at most 1.5 times it
+#     (rv32_sizes.elf: tests/unit/size_bound_checks.h, as CTest size_bounds runs it on the host);
 #   - the stack each plotting entry takes on RV32, against docs/porting.md
 #     (tests/firmware/stack_probe.sh).
 # Usage: qemu_riscv_test.sh SOURCE_DIR HALOPLOT_TOOL
@@ -77,6 +79,16 @@ host_crossings=$(sed -n 's/^crossings=//p' scene.stats)
 fw_crossings=$(sed -n 's/^fw crossings=//p' fw.out)
 if [ -n "$fw_crossings" ] && [ "$fw_crossings" = "$host_crossings" ]; then ok; else bad "crossings: RV32 $fw_crossings, host $host_crossings"; fi
 echo "RV32 image: $(riscv64-unknown-elf-size -A "$image" | awk '/^.text/ {print $2}') bytes of text"
+# The size queries against their runs on the chip (tests/unit/size_bound_checks.h).
+qemu "$work/image/rv32_sizes.elf" > "$work/sizes.out"
+rc=$?
+checks=$(grep -c '^fw size ' "$work/sizes.out")
+if [ "$rc" -eq 0 ] && [ "$checks" -gt 0 ] && ! grep -q 'FAILED' "$work/sizes.out"; then
+  ok
+  echo "size queries on RV32: $checks checks, each at least its run's use and at most 1.5 times it"
+else
+  grep -E '^fw size .*FAILED|trap' "$work/sizes.out"; bad "the size queries on RV32 (exit $rc, $checks checks)"
+fi
 # The stack of every plotting entry on RV32 against docs/porting.md's figures.
 source "$src/tests/firmware/stack_probe.sh"
 if stack_probe "$src" "$work/prefix" "$src/cmake/rv32imac.cmake" RV32 "$work"; then ok; else bad "the RV32 stack"; fi

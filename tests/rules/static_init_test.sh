@@ -6,7 +6,8 @@
 #     require_constant_initialization), and refuses it with -DPLANT_CONSTINIT (a runner whose
 #     time scale only a constructor sets, as MotionRunner's was);
 #   - for the Cortex-M0+ and RV32IMAC (when their compilers are installed) the object file has
-#     no .init_array, and the motion runners are all zero bytes, in .bss (no .data copy either);
+#     no .init_array, and the motion runners and the band conductor are all zero bytes, in .bss
+#     (no .data copy either);
 #     with -DPLANT_CONSTRUCTOR (the same runner without __constinit) the .init_array check must
 #     fail.
 # The runtime side: the example firmware's start-up runs no constructors and plots through the
@@ -30,12 +31,13 @@ else
   cat "$work/plant.out"; bad "the planted object failed to compile for another reason"
 fi
 
-# sections OBJ NM SIZE: no .init_array, the runners in .bss; prints what is in .data.
+# sections OBJ NM SIZE: no .init_array, the runners and the conductor in .bss; prints what is
+# in .data.
 sections() {
   local obj=$1 nm=$2 size=$3 ok=0 init var
   init=$("$size" -A "$obj" | awk '$1 ~ /^\.init_array/ && $2 > 0 {print $1 " " $2}')
   [ -z "$init" ] || { echo "  .init_array: $init (a constructor to run at start-up)"; ok=1; }
-  for var in runner traced_runner; do
+  for var in runner traced_runner conductor; do
     "$nm" "$obj" | grep -q " [bB] $var\$" || { echo "  $var is not in .bss: $("$nm" "$obj" | grep " $var\$")"; ok=1; }
   done
   return $ok
@@ -53,7 +55,7 @@ cross() {  # cross NAME PREFIX FLAGS...
     local data bytes
     bytes=$("${prefix}nm" -S "$work/$name.o" | awk '$4 == "runner" {print $2}')
     data=$("${prefix}size" -A "$work/$name.o" | awk '$1 ~ /^\.(s?data)\./ && $2 > 0 {sub(/^\.s?data\./, "", $1); printf "%s %s, ", $1, $2}')
-    echo "$name: no .init_array; runners in .bss ($((16#$bytes)) bytes); constants in .data: ${data%, }"
+    echo "$name: no .init_array; runners and conductor in .bss (runner $((16#$bytes)) bytes); constants in .data: ${data%, }"
   else
     cat "$work/$name.sections"; bad "$name: static storage needs start-up work"
   fi

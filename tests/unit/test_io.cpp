@@ -7,6 +7,7 @@
 #include "../support/scenes.h"
 #include "io/cut_file.h"
 #include "io/edges_file.h"
+#include "pipeline/host_pipeline.h"
 
 using namespace haloplot;
 using namespace haloplot::host;

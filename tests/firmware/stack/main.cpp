@@ -1,9 +1,10 @@
 // The stack each public entry that plots takes, measured on the chip (tests/firmware/
 // stack_probe.sh, for the M0+, M4, M33 and RV32): the stack below the caller is painted, the
 // entry runs on the scenes of firmware/selftest/misaligned_checks.h (3 x 3 cubes as edges, two
-// solid cubes with faces) and a curve scene of its own, and the deepest word it overwrote gives its
-// bytes, counted from the caller's stack pointer (its callees, the sinks and the call itself
-// included). Prints "fw stack ENTRY=BYTES" per entry, then exits 0 if every entry ran well.
+// solid cubes with faces) and a curve scene of its own, the band conductor's streamed entries on
+// the bands of a plain run sent again, and the deepest word it overwrote gives its bytes, counted
+// from the caller's stack pointer (its callees, the sinks and the call itself included). Prints
+// "fw stack ENTRY=BYTES" per entry, then exits 0 if every entry ran well.
 #include "haloplot/curve/bezier.h"
 #include "platform/c_runtime.h"
 #include "platform/semihosting.h"
@@ -84,6 +85,117 @@ Status drain(BandConductor* bc) {
   }
 }
 
+// A streamed plot's bands as a host sends them (host_sim/pipeline/band_stream.cpp's plan, made
+// on the chip): the rows each band of a plain run committed, and what the band rule gathers
+// for them, staged when the conductor asks for the band.
+constexpr uint32_t kMaxBands = 64;
+struct Stream {
+  int32_t y0[kMaxBands], y1[kMaxBands];
+  uint32_t n_bands = 0, next = 0;
+  int32_t margin = 0;
+  const SolidInput* solid = nullptr;  // a solid's bands (turn_wide off: rows of the page)
+  Edge3 edges[kEdges];
+  uint32_t ids[kEdges], pairs[2 * kEdges], vertex_ids[16];
+  Point3 vertices[16];
+  Triangle tris[24];
+  StagedSolidBand staged;
+};
+Stream stream;
+
+// The band rule's tests (core/band/band_rule.h, internal to the core): does an edge, or a
+// triangle, reach a row of [lo, hi]?
+bool edge_meets_rows(const Edge3& e, int64_t lo, int64_t hi) {
+  const int32_t y0 = e.a.y < e.b.y ? e.a.y : e.b.y, y1 = e.a.y < e.b.y ? e.b.y : e.a.y;
+  return y1 >= lo && y0 <= hi;
+}
+bool triangle_meets_rows(const Point3& a, const Point3& b, const Point3& c, int64_t lo,
+                         int64_t hi) {
+  const int32_t y0 = a.y < b.y ? (a.y < c.y ? a.y : c.y) : (b.y < c.y ? b.y : c.y);
+  const int32_t y1 = a.y > b.y ? (a.y > c.y ? a.y : c.y) : (b.y > c.y ? b.y : c.y);
+  return y1 >= lo && y0 <= hi;
+}
+
+PieceObserver band_noter() {
+  PieceObserver o;
+  o.band = [](void*, int32_t y0, int32_t y1) {
+    if (stream.n_bands < kMaxBands) {
+      stream.y0[stream.n_bands] = y0;
+      stream.y1[stream.n_bands] = y1;
+    }
+    ++stream.n_bands;  // past kMaxBands: refused below
+  };
+  return o;
+}
+
+// The solid's part of band b: its drawn edges, triangles and vertices meeting rows [lo, hi].
+void stage_solid(StreamedBand* band, int64_t lo, int64_t hi) {
+  const SolidInput& in = *stream.solid;
+  bool used[16] = {};
+  uint32_t ne = 0, nt = 0, nv = 0;
+  for (uint32_t i = 0; i < in.n_edges; ++i) {
+    const uint32_t v0 = in.edge_pairs[2 * i], v1 = in.edge_pairs[2 * i + 1];
+    if (!edge_meets_rows(Edge3{in.vertices[v0], in.vertices[v1]}, lo, hi)) continue;
+    stream.ids[ne] = i;
+    stream.pairs[2 * ne] = v0;
+    stream.pairs[2 * ne++ + 1] = v1;
+    used[v0] = used[v1] = true;
+  }
+  // Hatching reads whole polygons (runs of triangles with one id): all of one that meets.
+  for (uint32_t t = 0; t < in.n_triangles;) {
+    uint32_t end = t;
+    bool meets = false;
+    for (; end < in.n_triangles && in.triangles[end].polygon == in.triangles[t].polygon; ++end) {
+      const uint32_t* v = in.triangles[end].v;
+      meets = meets || triangle_meets_rows(in.vertices[v[0]], in.vertices[v[1]], in.vertices[v[2]],
+                                           lo, hi + 1);
+    }
+    for (; meets && t < end; ++t) {
+      const uint32_t* v = in.triangles[t].v;
+      stream.tris[nt++] = in.triangles[t];
+      used[v[0]] = used[v[1]] = used[v[2]] = true;
+    }
+    t = end;
+  }
+  for (uint32_t v = 0; v < in.n_vertices; ++v)
+    if (used[v]) {
+      stream.vertex_ids[nv] = v;
+      stream.vertices[nv++] = in.vertices[v];
+    }
+  stream.staged =
+      StagedSolidBand{stream.vertex_ids, stream.vertices, nv, stream.pairs, ne, stream.tris, nt};
+  band->solid = &stream.staged;  // a solid band's edges travel in it: none beside (ids only)
+  band->edges = nullptr;
+  band->n = 0;
+}
+
+BandStream band_stream() {
+  BandStream s;
+  s.next = [](void*, StreamedBand* band, bool* end) {
+    *end = stream.next == stream.n_bands;
+    if (*end) return Status::kOk;
+    const uint32_t b = stream.next++;
+    band->y0 = stream.y0[b];
+    band->y1 = stream.y1[b];
+    band->edges = stream.edges;
+    band->ids = stream.ids;
+    if (stream.solid != nullptr) {
+      stage_solid(band, band->y0, int64_t{band->y1} - 1);
+      return Status::kOk;
+    }
+    const int64_t lo = int64_t{band->y0} - stream.margin,
+                  hi = int64_t{band->y1} - 1 + stream.margin;
+    band->n = 0;
+    for (uint32_t i = 0; i < kEdges; ++i)
+      if (edge_meets_rows(edges[i], lo, hi)) {
+        stream.edges[band->n] = edges[i];
+        stream.ids[band->n++] = i;
+      }
+    return Status::kOk;
+  };
+  s.release = [](void*) {};
+  return s;
+}
+
 BandConductor conductor;
 PreparedJob job;
 alignas(8) uint8_t arena[128 * 1024];
@@ -135,5 +247,33 @@ int main() {
     return conductor.begin_solid(solid_band, array_solid_source(&solid.in, true), arena, 24 * 1024);
   });
   measure("BandConductor::next (solid)", [&] { return drain(&conductor); });
+  // Streamed: the bands of a plain run (its rows noted, the margin it measured), sent again.
+  band.max_rows = 2000;  // several bands, so carries cross their borders
+  conductor.set_observer(band_noter());
+  if (!ok(conductor.begin(band, array_edge_source(edges, kEdges), arena, 24 * 1024)) ||
+      !ok(drain(&conductor)))
+    return 1;
+  stream.margin = conductor.stats().margin;
+  if (stream.n_bands < 2 || stream.n_bands > kMaxBands) return 1;  // one band carries nothing
+  conductor.set_observer(PieceObserver{});
+  measure("BandConductor::begin_streamed", [&] {
+    return conductor.begin_streamed(band, stream.margin, band_stream(), arena, 24 * 1024);
+  });
+  measure("BandConductor::next (streamed)", [&] { return drain(&conductor); });
+  BandSpec solid_rows = solid_band;
+  solid_rows.turn_wide = false;  // the bands in the page's rows, as stage_solid() gathers them
+  solid_rows.max_rows = 3000;    // of the solid's 16,000 rows: six bands
+  stream = Stream{};
+  stream.solid = &solid.in;
+  conductor.set_observer(band_noter());
+  if (!ok(conductor.begin_solid(solid_rows, array_solid_source(&solid.in, true), arena,
+                                24 * 1024)) ||
+      !ok(drain(&conductor)) || stream.n_bands < 2 || stream.n_bands > kMaxBands)
+    return 1;
+  conductor.set_observer(PieceObserver{});
+  measure("BandConductor::begin_streamed_solid", [&] {
+    return conductor.begin_streamed_solid(solid_rows, true, false, band_stream(), arena, 24 * 1024);
+  });
+  measure("BandConductor::next (streamed solid)", [&] { return drain(&conductor); });
   return failures == 0 ? 0 : 1;
 }

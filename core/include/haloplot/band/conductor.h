@@ -156,6 +156,7 @@ struct BandStats {
 
 class BandConductor {
  public:
+  constexpr BandConductor() : no_spec_(0) {}  // see spec_
   // A solid's hidden lines in bands (spec.style: hidden-removed or hidden-dashed): each band
   // takes the faces and drawn edges meeting its rows and runs the topology-free method on them
   // in its rows only (solid/hidden_lines.h, HiddenParams::band): Franklin's test of a piece's
@@ -185,7 +186,7 @@ class BandConductor {
   void set_observer(PieceObserver o) { observer_ = o; }
   void set_clock(uint64_t (*clock)()) { clock_ = clock; }
   const BandStats& stats() const { return stats_; }
-  bool done() const { return done_; }
+  bool done() const { return !running_; }
 
   // Adapter for MotionPlanner::set_feed: the planner pulls the bands itself.
   static Status feed(void* self, const PathPoint** points, uint32_t* n) {
@@ -293,7 +294,13 @@ class BandConductor {
     pen_y_ = turn_steps() - x;
   }
 
-  BandSpec spec_{};
+  // Set by every begin, read only after one. Until then a zero byte is the union's member, so a
+  // conductor in static storage is all zeros: in .bss, with no constructor and no .data copy
+  // (BandSpec's defaults are not zeros). Copying a BandSpec in makes it the member.
+  union {
+    uint8_t no_spec_;
+    BandSpec spec_;
+  };
   EdgeSource source_{};
   uint8_t* arena_ = nullptr;
   size_t arena_bytes_ = 0;
@@ -301,7 +308,7 @@ class BandConductor {
   int64_t next_row_ = 0;             // the next band's y0
   int64_t height_ = 0;               // the next attempt's height
   bool margin_known_ = false;
-  bool done_ = true;
+  bool running_ = false;  // begun, and bands left (zero when not begun: see spec_)
   const SolidStage* solid_stage_ = nullptr;  // a solid's plot: &kSolidStage
   bool closed_ = false;                      // a solid's model is closed (SolidSource::closed)
   SolidSource solid_{};                      // a solid's model, or (streamed) the band's part
@@ -315,7 +322,7 @@ class BandConductor {
   // The committed band's segments, in column order, waiting for next() to plan them.
   Segment2* segs_ = nullptr;
   uint32_t n_segs_ = 0, next_seg_ = 0;
-  int64_t column_side_ = kMinColumn;
+  int64_t column_side_ = 0;  // set as each band commits, before a column is planned
   bool leftward_ = false;
   int64_t band_y0_ = 0, band_y1_ = 0;  // the committed band's rows
   int32_t pen_x_ = 0, pen_y_ = 0;

@@ -114,6 +114,13 @@ BandSpec band_spec(const JobSpec& spec);
 Status job_bytes(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
                  JobBytes* bytes);
 
+// The crossing capacity job_prepare() needs for these edges, exactly: a counting pass of CUT
+// (it stores no record) in `buffer`, which takes what job_bytes() says for a capacity of 0.
+// An edge job without CUT (kAllEdges) needs none: 0, and the buffer is not touched (a
+// misaligned one is still kMisalignedBuffer, as for every entry).
+Status job_crossings(const JobSpec& spec, const Edge3* edges, uint32_t n, void* buffer,
+                     size_t buffer_bytes, uint32_t* capacity);
+
 // Every job_prepare* call empties *out first: a call that fails leaves an empty PreparedJob
 // (no points, no spans, no CUTSET), never the previous call's. job_redraw keeps the CUTSET it
 // reads and empties the rest.
@@ -128,6 +135,14 @@ Status job_prepare(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t
 Status job_prepare_solid(const JobSpec& spec, const SolidInput& in, uint32_t crossing_capacity,
                          uint32_t incidence_capacity, void* buffer, size_t buffer_bytes,
                          PreparedJob* out, JobCounters* counters, HiddenReport* report);
+
+// The capacities and the buffer job_prepare_solid() needs for this solid, exactly: counting
+// passes of the hidden-line run in `buffer` (from no capacity up to what the run reports; its
+// strokes counted, none stored), which need at most what the job does. *needs: .crossings,
+// .incidences and .bytes (to ask job_prepare_solid() with). Fails as the job would; on
+// kWorkspaceTooSmall report->bytes_needed says what the run needs, as far as it got.
+Status job_solid_bytes(const JobSpec& spec, const SolidInput& in, void* buffer, size_t buffer_bytes,
+                       StageNeeds* needs, HiddenReport* report);
 
 // Re-plot with another halo width (spec.draw): DRAW and the path run again from the CUTSET
 // that job_prepare() left at the start of the same buffer; CUT does not run (the paper's
@@ -181,6 +196,13 @@ Status job_prepare_curves(const JobSpec& spec, const CurveJobScene& scene, uint3
                           void* buffer, size_t buffer_bytes, PreparedJob* out,
                           JobCounters* counters, size_t* need_bytes = nullptr);
 
+// The hit capacity and the buffer job_prepare_curves() needs for this scene, exactly: counting
+// passes in `buffer` (the crossings from no capacity up to what their hits take, then DRAW
+// counting its chords; no chord is stored), which need at most what the job does.
+// kWorkspaceTooSmall leaves *bytes the buffer the passes need, as far as they got.
+Status job_curves_bytes(const JobSpec& spec, const CurveJobScene& scene, void* buffer,
+                        size_t buffer_bytes, uint32_t* hit_capacity, size_t* bytes);
+
 // A re-plot of a curve job with another halo (steps.draw): job_prepare_curves() left its n_hits
 // hits at the buffer's front, so only DRAW and the path run again (crossings do not depend on
 // the halo). counters (may be null): its curve_cross is kept, the rest are this run's.
@@ -214,7 +236,8 @@ struct EdgeJobStage {
   Status run(const StageNeeds& needs, void* buffer, size_t bytes, StageNeeds* want);
 };
 
-// job_prepare_solid() as a sized stage: needs.crossings and .incidences are the capacities.
+// job_prepare_solid() as a sized stage: needs.crossings and .incidences are the capacities;
+// bytes() is the first guess of a growing buffer (job_solid_bytes() is the bound).
 struct SolidJobStage {
   const JobSpec* spec;
   const SolidInput* in;

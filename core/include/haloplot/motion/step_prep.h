@@ -96,7 +96,7 @@ class StepPrep {
   void pen_segment(bool down, StepSegment* out);
   void resume_move(MotionPlanner& planner, StepSegment* out, bool* have);
   MotionItem travel(const int32_t delta[2]) const;  // pen up, rest to rest
-  Status begin_move(const MotionItem& item);
+  void begin_move(const MotionItem& item);
   void set_profile(uint64_t entry_v2, uint64_t top_v2, uint64_t exit_v2, uint32_t j0,
                    uint32_t j_end);
   uint32_t minor_at(uint32_t j) const;       // the other motor's steps after dominant step j

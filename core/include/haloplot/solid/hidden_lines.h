@@ -132,7 +132,9 @@ struct HiddenLinesStage {
 // What a run of hidden_lines() that ended with `s` in a buffer of `bytes` needs (*want).
 void hidden_lines_needs(Status s, const HiddenReport& report, size_t bytes, StageNeeds* want);
 
-// A first guess at hidden_lines()'s bytes that fits most scenes.
+// A first guess at hidden_lines()'s bytes that fits most scenes: the sized stage's first ask of
+// a growing buffer, not a bound (it can be several times the run's need, or short of it). The
+// bound for a solid job is job_solid_bytes() (job/job.h), a counting pass.
 size_t hidden_lines_first_bytes(const SolidInput& in);
 
 }  // namespace haloplot

@@ -59,6 +59,6 @@ inline bool buffer_misaligned(const void* buffer) {
 // A short, stable, human-readable name, e.g. "crossing capacity exceeded".
 const char* status_name(Status s);
 
-inline bool ok(Status s) { return s == Status::kOk; }
+[[nodiscard]] inline bool ok(Status s) { return s == Status::kOk; }
 
 }  // namespace haloplot
