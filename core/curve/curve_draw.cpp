@@ -273,6 +273,28 @@ bool short_of_end(const Ctl& c, int64_t t, int64_t end, int64_t L) {
   return length32(x1 - x0, y1 - y0) > L;
 }
 
+// How far the gap of arc L on each side of [lo, hi] of c reaches from the crossing inside
+// [lo, hi], as a bound in units (CurveDrawStats::reach): the arc between, at most the speed
+// bound 3 max |leg| (|dx| + |dy| a leg) times hi - lo, plus L and the walk's excess over L
+// (below 2^-14 L + 1/64 unit, and a unit for the floors).
+// A gap walked from an exact point (a joint) has nothing between: `across` 0.
+void note_reach(const Scene& s, int64_t L, int64_t across) {
+  uint64_t reach = kCurveReachUnbounded;
+  if (L < kArcHuge) {
+    const int64_t q32 = L + (L >> 12) + across + 2 * kOne;
+    reach = static_cast<uint64_t>((q32 + kOne - 1) >> kQ);
+  }
+  if (reach > s.st->reach) s.st->reach = reach;
+}
+void note_reach(const Scene& s, const Ctl& c, int64_t lo, int64_t hi, int64_t L) {
+  int64_t leg = 0;
+  for (int i = 0; i < 3; ++i) {
+    const int64_t d = abs64(c.x[i + 1] - c.x[i]) + abs64(c.y[i + 1] - c.y[i]);
+    leg = d > leg ? d : leg;
+  }
+  note_reach(s, L, 3 * leg * (hi - lo));  // below 3 * 2^22 * 2^32 < 2^56
+}
+
 // The gap of arc L on each side of [lo, hi] on edge k. With `carry` (the first pass, which
 // only carries), the sides that run past one of k's ends go on along the chain (walk_chain:
 // end_gap) and are counted as carried; a side whose chord to the end is longer than L cannot
@@ -281,6 +303,7 @@ Gap arc_gap(const Scene& s, uint32_t k, int64_t lo, int64_t hi, int64_t L, bool 
   const Ctl c = s.edge(k);
   lo = lo < 0 ? 0 : lo;
   hi = hi > kOne ? kOne : hi;
+  note_reach(s, c, lo, hi, L);
   Gap g{lo, hi};
   for (int side = 0; side < 2; ++side) {
     const uint32_t end = 2 * k + static_cast<uint32_t>(side);
@@ -430,6 +453,7 @@ void joint_pair(const Scene& s, const uint32_t j[2], const uint32_t k[2]) {
       s.front->vertex(s, front, L);
       L = kArcHuge;
     }
+    note_reach(s, L, 0);
     walk_chain(s, back[i], L);
   }
   ++s.st->gaps;
@@ -553,7 +577,10 @@ uint32_t cut_pass(const Scene& s, uint32_t k, const uint32_t j[2], const Through
       s.front->around(s, k, t, L);
       L = kArcHuge;
     }
-    if (f < 0 && first_pass) walk_chain(s, j[m], L);
+    if (f < 0 && first_pass) {
+      note_reach(s, L, 0);
+      walk_chain(s, j[m], L);
+    }
     most = L > most ? L : most;
   }
   if (f < 0) return 0;

@@ -577,6 +577,19 @@ Status curve_job_fits(const JobSpec& steps, const void* buffer) {
 
 }  // namespace
 
+Status curve_band_spec(const JobSpec& steps, CurveBandSpec* out) {
+  *out = CurveBandSpec{};
+  const Status s = curve_job_fits(steps, nullptr);
+  if (!ok(s)) return s;
+  curve_job_params(steps, &out->cross, &out->draw);
+  out->substep_bits = steps.substep_bits;
+  out->start_x = steps.start_x;
+  out->start_y = steps.start_y;
+  out->clean = steps.clean;
+  out->clean.min_stroke = 0;
+  return Status::kOk;
+}
+
 Status job_prepare_curves(const JobSpec& steps, const CurveJobScene& scene, uint32_t hit_capacity,
                           void* buffer, size_t buffer_bytes, PreparedJob* out,
                           JobCounters* counters, size_t* need_bytes) {

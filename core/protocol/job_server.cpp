@@ -300,6 +300,7 @@ Status JobServer::plot() {
 Status JobServer::plot_curves(const Edge3* edges, uint8_t* job_mem, size_t job_bytes) {
   if (spec_.drawing != DrawingEffect::kHaloed || spec_.draw.mode != HaloMode::kPaper)
     return Status::kUnsupported;
+  if (scene_.band_arena > 0) return plot_curve_bands(edges, job_mem, job_bytes);
   // The hit count is unknown before the search: guess, then run again with the count it
   // reports (it never stores a partial answer).
   StageNeeds needs;
@@ -316,6 +317,22 @@ Status JobServer::plot_curves(const Edge3* edges, uint8_t* job_mem, size_t job_b
   if (clock_) prepare_ticks_ = clock_() - t0;
   if (!ok(s)) return s;
   has_cut_ = true;  // the hits stay at the job buffer's front for a re-plot
+  return start_motion();
+}
+
+// The curve job in bands of the arena the host asked for (kUploadBegin's 21-byte form), as
+// `sim` of the job with that arena plots it: band by band while the pen moves. No hits are
+// kept for a re-plot (each band's are gone with it).
+Status JobServer::plot_curve_bands(const Edge3* edges, uint8_t* job_mem, size_t job_bytes) {
+  if (scene_.band_arena > job_bytes) return Status::kWorkspaceTooSmall;
+  CurveBandSpec spec;
+  Status s = curve_band_spec(spec_, &spec);
+  if (ok(s))
+    s = curve_bands_.begin(spec, reinterpret_cast<const BezierEdge3*>(arena_), n_curves_, edges,
+                           n_edges_, job_mem, scene_.band_arena & ~uint32_t{7});
+  if (!ok(s)) return s;
+  job_ = PreparedJob{};
+  job_.feed = PointFeed{&CurveBands::feed, &curve_bands_};
   return start_motion();
 }
 

@@ -16,6 +16,11 @@ void encode_upload_begin_curves(const UploadBegin& b, uint8_t out[kUploadBeginCu
   put_u32(out + kUploadBeginBytes, b.curves);
 }
 
+void encode_upload_begin_bands(const UploadBegin& b, uint8_t out[kUploadBeginBandsBytes]) {
+  encode_upload_begin_curves(b, out);
+  put_u32(out + kUploadBeginCurvesBytes, b.band_arena);
+}
+
 void encode_curve(const BezierEdge3& c, uint8_t out[kCurveRecordBytes]) {
   for (int i = 0; i < 4; ++i) encode_vertex(c.p[i], out + i * kVertexRecordBytes);
 }
@@ -90,14 +95,18 @@ void encode_status(const StatusReport& r, uint8_t out[kStatusBytes]) {
 }
 
 Status decode_upload_begin(const uint8_t* p, size_t n, UploadBegin* out) {
-  if ((n != kUploadBeginBytes && n != kUploadBeginCurvesBytes) ||
+  if ((n != kUploadBeginBytes && n != kUploadBeginCurvesBytes && n != kUploadBeginBandsBytes) ||
       p[0] > uint8_t(SceneFormat::kIndexed))
     return Status::kMalformedRequest;
   out->format = SceneFormat(p[0]);
   out->vertices = get_u32(p + 1);
   out->edges = get_u32(p + 5);
   out->faces = get_u32(p + 9);
-  out->curves = n == kUploadBeginCurvesBytes ? get_u32(p + kUploadBeginBytes) : 0;
+  out->curves = n >= kUploadBeginCurvesBytes ? get_u32(p + kUploadBeginBytes) : 0;
+  out->band_arena = n == kUploadBeginBandsBytes ? get_u32(p + kUploadBeginCurvesBytes) : 0;
+  // Bands are the curve job's: a scene with curves, in an arena a band can use.
+  if (n == kUploadBeginBandsBytes && (out->curves == 0 || out->band_arena < kMinBandArena))
+    return Status::kMalformedRequest;
   if (out->format == SceneFormat::kEdges && out->vertices != 0) return Status::kMalformedRequest;
   // Curves come with projected edges only: the indexed format's view projects vertices.
   if (out->format != SceneFormat::kEdges && out->curves != 0) return Status::kMalformedRequest;

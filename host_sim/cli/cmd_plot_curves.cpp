@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "cli/band_stats.h"
 #include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/page_options.h"
@@ -25,8 +26,9 @@ namespace {
 // The scene's curve drawing, the chords numbered by the file's data lines, in its units. The
 // stages' settings are a job's (job/job.h curve_job_params): `plot` draws what `sim` and the
 // controller plot.
-bool draw_scene(const std::string& path, int32_t halo_steps, bool exact, HostCurveDraw* d,
-                int32_t* substep_bits, std::string* error) {
+// With an arena (> 0) in bands, as a controller with that arena draws it (chords in steps).
+bool draw_scene(const std::string& path, int32_t halo_steps, bool exact, uint32_t arena,
+                HostCurveDraw* d, BandStats* bands, int32_t* substep_bits, std::string* error) {
   EdgesWithCurves scene;
   const InputError ie = read_edges_with_curves_file(path, &scene, substep_bits);
   if (ie.failed()) {
@@ -39,7 +41,15 @@ bool draw_scene(const std::string& path, int32_t halo_steps, bool exact, HostCur
   CurveCrossParams cp;
   CurveDrawParams p;
   curve_job_params(spec, &cp, &p);
-  const Status s = host_curve_draw(scene.curves, scene.edges, cp, p, d, exact);
+  CurveBandSpec band;
+  Status s = arena > 0 ? curve_band_spec(spec, &band) : Status::kOk;
+  if (ok(s))
+    s = arena > 0 ? host_banded_curve_draw(scene.curves, scene.edges, band, arena, d, bands)
+                  : host_curve_draw(scene.curves, scene.edges, cp, p, d, exact);
+  if (s == Status::kArenaTooSmall) {
+    *error = arena_too_small("plot", arena, bands->need_bytes);
+    return false;
+  }
   if (!ok(s)) {
     *error = path + ": curve drawing failed: " + status_name(s);
     return false;
@@ -86,8 +96,11 @@ std::string refused_option(const Options& o) {
       return std::string(model) +
              " is for models (.obj, .stl, .ply): an .edges file is a scene projected already, "
              "drawn as it is";
-  if (!o.get("--arena").empty())
-    return "--arena: a scene with Bézier edges is drawn whole on the host, not in bands";
+  if (!o.get("--arena").empty() && o.has("--exact-halo"))
+    return "--arena with --exact-halo: the exact halo is drawn whole, on the host only";
+  if (!o.get("--arena").empty() && wants_plotter_outputs(o))
+    return "--gcode and --hpgl plot the whole drawing's path: drop --arena, or give the job "
+           "'arena BYTES' and run `haloplot sim JOB.job --gcode ...`";
   if (!o.get("--cut").empty()) return "--cut: a scene with Bézier edges has no CUTSET to write";
   if (o.get("--halo").empty()) return "--halo W (steps) is required";
   return "";
@@ -114,10 +127,15 @@ int cmd_plot_curves(const Options& o) {
   if (!parse_int(o.get("--halo"), 0, kCoordMax, &halo))
     return fail("--halo '" + o.get("--halo") + "' must be an integer in [0, " +
                 std::to_string(kCoordMax) + "]");
+  int64_t arena = 0;
+  if (!o.get("--arena").empty() && !parse_int(o.get("--arena"), 1024, int64_t{1} << 30, &arena))
+    return fail("--arena needs a byte count in [1024, 2^30]");
   HostCurveDraw d;
+  BandStats bands;
   int32_t units = 0;
   std::string error;
-  if (!draw_scene(o.positional[0], int32_t(halo), o.has("--exact-halo"), &d, &units, &error))
+  if (!draw_scene(o.positional[0], int32_t(halo), o.has("--exact-halo"), uint32_t(arena), &d,
+                  &bands, &units, &error))
     return fail(error);
   if (wants_plotter_outputs(o)) {
     JobSpec spec;
@@ -130,7 +148,7 @@ int cmd_plot_curves(const Options& o) {
     if (const int rc = write_plot_outputs(o, spec, chord_edges(d.chords), style, false)) return rc;
   }
   std::vector<Span> spans = d.chords;
-  spans_to_steps(&spans, units);
+  if (arena == 0) spans_to_steps(&spans, units);  // the bands' chords are in steps already
   int64_t per_mm = 80;
   if (!o.get("--steps-per-mm").empty() && !parse_int(o.get("--steps-per-mm"), 1, 10000, &per_mm))
     return fail("--steps-per-mm '" + o.get("--steps-per-mm") +
@@ -147,7 +165,10 @@ int cmd_plot_curves(const Options& o) {
     });
     if (!error.empty()) return fail(error);
   }
-  if (o.has("--stats")) print_stats(d);
+  if (o.has("--stats")) {
+    print_stats(d);
+    if (arena > 0) print_band_stats(bands, size_t(arena));
+  }
   return 0;
 }
 
@@ -206,12 +227,12 @@ int cmd_demo_curve(const Options& o) {
   return error.empty() ? 0 : fail(error);
 }
 
-bool load_curve_job(const std::string& scene_path, const JobSpec& spec, uint32_t arena,
-                    EdgesWithCurves* scene, int32_t* substep_bits, std::string* error) {
-  if (spec.drawing != DrawingEffect::kHaloed || spec.draw.mode != HaloMode::kPaper || arena > 0) {
+bool load_curve_job(const std::string& scene_path, const JobSpec& spec, EdgesWithCurves* scene,
+                    int32_t* substep_bits, std::string* error) {
+  if (spec.drawing != DrawingEffect::kHaloed || spec.draw.mode != HaloMode::kPaper) {
     *error = scene_path +
-             ": a scene with Bézier edges is drawn haloed with the paper's gap, whole (no exact "
-             "halo, no arena, no other drawing mode yet)";
+             ": a job of a scene with Bézier edges is drawn haloed with the paper's gap (the "
+             "exact halo: `haloplot plot --exact-halo`, on the host)";
     return false;
   }
   const InputError ie = read_edges_with_curves_file(scene_path, scene, substep_bits);

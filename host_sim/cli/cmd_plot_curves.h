@@ -19,9 +19,9 @@ namespace haloplot::host {
 bool edges_file_has_curves(const std::string& path);
 
 // A job's curve scene for the core's curve job (job/job.h job_prepare_curves), which `sim` and
-// `send` (the controller) run alike: read, with the job's settings checked (haloed, the
-// paper's gap, no arena). False with *error saying what is wrong.
-bool load_curve_job(const std::string& scene_path, const JobSpec& spec, uint32_t arena,
-                    EdgesWithCurves* scene, int32_t* substep_bits, std::string* error);
+// `send` (the controller) run alike, whole or (with the job's arena) in bands: read, with the
+// job's settings checked (haloed, the paper's gap). False with *error saying what is wrong.
+bool load_curve_job(const std::string& scene_path, const JobSpec& spec, EdgesWithCurves* scene,
+                    int32_t* substep_bits, std::string* error);
 
 }  // namespace haloplot::host

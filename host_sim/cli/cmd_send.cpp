@@ -125,8 +125,7 @@ bool load_scene(const std::string& job_path, SendScene* sc, std::string* error) 
   if (edges_file_has_curves(scene)) {
     // The controller draws the curves itself (the core's curve job, as `sim` runs it).
     EdgesWithCurves with_curves;
-    if (!load_curve_job(scene, sc->jf.spec, sc->jf.arena, &with_curves, &sc->jf.spec.substep_bits,
-                        error))
+    if (!load_curve_job(scene, sc->jf.spec, &with_curves, &sc->jf.spec.substep_bits, error))
       return false;
     sc->edges = std::move(with_curves.edges);
     sc->curves = std::move(with_curves.curves);
@@ -141,7 +140,7 @@ bool load_scene(const std::string& job_path, SendScene* sc, std::string* error) 
 // exactly as `sim` with the same arena does, and send each band's edges as the plot needs them.
 bool plan_bands(const std::string& job_path, SendScene* sc, std::string* error) {
   const JobFile& jf = sc->jf;
-  if (jf.arena == 0) return true;
+  if (jf.arena == 0 || !sc->curves.empty()) return true;  // curves: uploaded, drawn in bands
   if (sc->obj && !hidden_line_drawing(jf.spec)) {
     *error = job_path + ": 'arena' streams .edges scenes and hidden-line drawings of .obj models";
     return false;
@@ -269,7 +268,9 @@ int SendSession::run() {
   if (o.has("--trace-digest")) {  // test images: the controller sums its traces (0x7D)
     if (int e = request(FrameType(0x7D), {}, "trace-digest")) return e;
   }
-  if (int e = sc.jf.arena > 0 ? stream() : upload_and_plot()) return e;
+  // A curve scene is uploaded whole (its curves are few bytes): the controller draws it in
+  // bands of the job's arena itself.
+  if (int e = sc.jf.arena > 0 && sc.curves.empty() ? stream() : upload_and_plot()) return e;
   if (int e = pause_and_resume()) return e;
   if (int e = stop_early()) return e;
   if (int e = wait_for_end()) return e;
@@ -290,7 +291,7 @@ int SendSession::stream() {
 int SendSession::upload_and_plot() {
   const bool sent = sc.obj ? client.upload_indexed(sc.jf.spec, sc.view, sc.model.vertices,
                                                    sc.model.edge_pairs, &s, &sc.triangles)
-                           : client.upload(sc.jf.spec, sc.edges, &s, &sc.curves);
+                           : client.upload(sc.jf.spec, sc.edges, &s, &sc.curves, sc.jf.arena);
   if (int e = check(sent, "upload")) return e;
   // --resume E: go on with a plot of this job that stopped after E step events (an abort,
   // a reset), drawing nothing twice.

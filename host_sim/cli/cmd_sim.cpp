@@ -152,8 +152,7 @@ int cmd_sim(int argc, char** argv) {
                                                jf.spec.drawing == DrawingEffect::kHiddenDashed);
   stage.emplace("reading " + jf.scene_path + (hidden_on_host ? " and its hidden lines" : ""));
   if (curves) {
-    if (!load_curve_job(jf.scene_path, jf.spec, jf.arena, &curve_scene, &jf.spec.substep_bits,
-                        &error))
+    if (!load_curve_job(jf.scene_path, jf.spec, &curve_scene, &jf.spec.substep_bits, &error))
       return fail(error);
     edges = curve_scene.edges;
   } else if (solid_bands) {
@@ -195,7 +194,9 @@ int cmd_sim(int argc, char** argv) {
   if (o.has("--stats")) {
     print_sim_stats(spec, r, edges.size() + curve_scene.curves.size());
     print_clean_stats(r.job.path, jf.style.steps_per_mm);
-    if (curves)  // the curve job's stages (job/job.h job_prepare_curves)
+    if (curves && jf.arena > 0)  // in bands: each band's crossings are its own, chords once
+      std::fprintf(stderr, "chords=%llu\n", (unsigned long long)r.bands.pieces);
+    else if (curves)  // the curve job's stages (job/job.h job_prepare_curves)
       std::fprintf(stderr, "curve_pieces=%u\ncrossings=%u\ngaps=%llu\nchords=%llu\n",
                    r.job.curve_cross.pieces, r.job.curve_cross.crossings,
                    (unsigned long long)r.job.curve_draw.gaps,

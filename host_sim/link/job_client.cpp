@@ -133,15 +133,20 @@ bool JobClient::chunks(FrameType type, const std::vector<uint8_t>& records, size
 }
 
 bool JobClient::upload(const JobSpec& spec, const std::vector<Edge3>& edges, Status* status,
-                       const std::vector<BezierEdge3>* curves) {
+                       const std::vector<BezierEdge3>* curves, uint32_t band_arena) {
   if (!settings(spec, status)) return false;
   if (!ok(*status)) return true;
   const size_t n_curves = curves ? curves->size() : 0;
   UploadBegin b{SceneFormat::kEdges, 0, uint32_t(edges.size()), 0};
   b.curves = uint32_t(n_curves);
-  // A straight scene sends the 13-byte form, as before curves.
-  std::vector<uint8_t> begin(n_curves > 0 ? kUploadBeginCurvesBytes : kUploadBeginBytes);
-  if (n_curves > 0)
+  b.band_arena = n_curves > 0 ? band_arena : 0;
+  // A straight scene sends the 13-byte form, as before curves; curves whole the 17-byte one.
+  std::vector<uint8_t> begin(b.band_arena > 0 ? kUploadBeginBandsBytes
+                             : n_curves > 0   ? kUploadBeginCurvesBytes
+                                              : kUploadBeginBytes);
+  if (b.band_arena > 0)
+    encode_upload_begin_bands(b, begin.data());
+  else if (n_curves > 0)
     encode_upload_begin_curves(b, begin.data());
   else
     encode_upload_begin(b, begin.data());

@@ -55,8 +55,9 @@ class JobClient {
   bool sync();
   // The whole job: machine, effects, halo, then the scene as projected edges (and, when
   // `curves` is given and not empty, its projected Bézier edges before them: kUploadCurves).
+  // band_arena > 0 (with curves): the controller draws them in bands of that arena.
   bool upload(const JobSpec& spec, const std::vector<Edge3>& edges, Status* status,
-              const std::vector<BezierEdge3>* curves = nullptr);
+              const std::vector<BezierEdge3>* curves = nullptr, uint32_t band_arena = 0);
   // The scene as world vertices and index pairs, projected on the controller with `view`.
   // With `faces` (triangles, for the hidden-line drawings) they are uploaded too.
   bool upload_indexed(const JobSpec& spec, const View& view, const std::vector<Point3>& world,

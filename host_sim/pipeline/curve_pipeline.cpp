@@ -1,5 +1,6 @@
 #include "pipeline/curve_pipeline.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace haloplot::host {
@@ -58,6 +59,34 @@ Status host_curve_draw(const std::vector<BezierEdge3>& curves, const std::vector
       dplan, curves.data(), segments.data(), out->hits.data(), n, dscratch.data(),
       dscratch.size() * 8, SpanSink{&collect_chord, &out->chords}, &intervals, &out->stats);
   out->draw_ms = ms_since(t0);
+  return s;
+}
+
+Status host_banded_curve_draw(const std::vector<BezierEdge3>& curves,
+                              const std::vector<Edge3>& segments, const CurveBandSpec& spec,
+                              size_t arena_bytes, HostCurveDraw* out, BandStats* bands) {
+  *out = HostCurveDraw();
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<uint64_t> arena(arena_bytes / 8);
+  CurveBands plot;
+  Status s = plot.begin(spec, curves.data(), uint32_t(curves.size()), segments.data(),
+                        uint32_t(segments.size()), arena.data(), arena.size() * 8);
+  auto keep = [](void* ctx, const BandPiece& p) {
+    static_cast<std::vector<Span>*>(ctx)->push_back(
+        Span{p.edge, p.t0, p.t1, p.segment.x0, p.segment.y0, p.segment.x1, p.segment.y1});
+  };
+  plot.set_observer(PieceObserver{keep, &out->chords, nullptr});
+  while (ok(s) && !plot.done()) {
+    const PathPoint* points = nullptr;
+    uint32_t n = 0;
+    s = plot.next(&points, &n);
+  }
+  *bands = plot.stats();
+  out->draw_ms = ms_since(t0);
+  std::sort(out->chords.begin(), out->chords.end(), [](const Span& a, const Span& b) {
+    return a.edge != b.edge ? a.edge < b.edge : a.t0 < b.t0;
+  });
+  out->stats.chords = out->chords.size();
   return s;
 }
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "haloplot/band/curve_bands.h"
 #include "haloplot/curve/curve_draw.h"
 
 namespace haloplot::host {
@@ -25,5 +26,12 @@ struct HostCurveDraw {
 Status host_curve_draw(const std::vector<BezierEdge3>& curves, const std::vector<Edge3>& segments,
                        const CurveCrossParams& cross, const CurveDrawParams& params,
                        HostCurveDraw* out, bool exact = false);
+
+// The curve job's drawing in bands (band/curve_bands.h) in an arena of `arena_bytes`, as a
+// controller with that arena draws it: out->chords in steps (the observer's), sorted by edge
+// and along it as the unbanded DRAW emits them, so `plot --arena` writes the same files.
+Status host_banded_curve_draw(const std::vector<BezierEdge3>& curves,
+                              const std::vector<Edge3>& segments, const CurveBandSpec& spec,
+                              size_t arena_bytes, HostCurveDraw* out, BandStats* bands);
 
 }  // namespace haloplot::host

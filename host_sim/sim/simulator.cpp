@@ -54,8 +54,9 @@ Status prepare_whole(const JobSpec& spec, const std::vector<Edge3>& edges, SimRe
 
 // The banded run's feed: the conductor's bands, each band's points also kept for the report,
 // and the tick at which each band was asked for (the plot of the band before ends about then).
+template <typename Conductor>  // BandConductor, or CurveBands (a scene with curves)
 struct BandFeed {
-  BandConductor* conductor;
+  Conductor* conductor;
   SimReport* report;
   const uint64_t* now = nullptr;
   static Status more(void* ctx, const PathPoint** points, uint32_t* n) {
@@ -72,19 +73,20 @@ struct BandFeed {
 };
 
 // The motion of the plot: from r->points, then (with a conductor) from its bands.
-Status run_motion(const JobSpec& spec, BandConductor* conductor, std::ostream* trace, SimReport* r,
+template <typename Conductor = BandConductor>
+Status run_motion(const JobSpec& spec, Conductor* conductor, std::ostream* trace, SimReport* r,
                   TraceForm form = TraceForm::kText, const std::vector<uint32_t>& pause_at = {},
                   uint32_t resume_at = 0) {
   r->planner_bytes = MotionPlanner::workspace_bytes(spec.effects);
   std::vector<uint64_t> planner_ws(r->planner_bytes / 8 + 1);
   RecordingHal hal;
-  BandFeed feed{conductor, r, &hal.now};
+  BandFeed<Conductor> feed{conductor, r, &hal.now};
   PreparedJob job;  // the whole plan's points, or (banded) none and the bands' feed
   job.points = r->points.data();
   job.n_points = uint32_t(r->points.size());
   if (conductor != nullptr) {
-    conductor->set_observer(PieceObserver{&BandFeed::piece, &feed});
-    job.feed = PointFeed{&BandFeed::more, &feed};
+    conductor->set_observer(PieceObserver{&BandFeed<Conductor>::piece, &feed});
+    job.feed = PointFeed{&BandFeed<Conductor>::more, &feed};
   }
   MotionPlanner planner;
   Status s = init_planner(&planner, spec, job, planner_ws.data(), r->planner_bytes);
@@ -139,10 +141,23 @@ Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostre
   if (!ok(s)) return s;
   std::vector<uint64_t> buffer;
   const bool has_curves = curves != nullptr && !curves->empty();
-  if (arena_bytes == 0 || has_curves) {
-    if (arena_bytes > 0) return Status::kUnsupported;  // curves are not drawn in bands yet
+  if (arena_bytes == 0) {
     s = prepare_whole(spec, edges, r, curves);
-    return ok(s) ? run_motion(spec, nullptr, trace, r, form, pause_at, resume_at) : s;
+    return ok(s) ? run_motion(spec, static_cast<BandConductor*>(nullptr), trace, r, form, pause_at,
+                              resume_at)
+                 : s;
+  }
+  if (has_curves) {  // the curve job in bands, as a controller with this arena plots it
+    CurveBandSpec cb;
+    s = curve_band_spec(spec, &cb);
+    if (!ok(s)) return s;
+    buffer.assign(arena_bytes / 8, 0);
+    CurveBands bands;
+    s = bands.begin(cb, curves->data(), uint32_t(curves->size()), edges.data(),
+                    uint32_t(edges.size()), buffer.data(), buffer.size() * 8);
+    if (ok(s)) s = run_motion(spec, &bands, trace, r, form, pause_at, resume_at);
+    r->bands = bands.stats();  // a band that did not fit says what it asked for
+    return s;
   }
   if (!edge_drawing(spec)) return Status::kBadParameter;
   buffer.assign(arena_bytes / 8, 0);

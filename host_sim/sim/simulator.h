@@ -45,7 +45,8 @@ struct SimReport {
 // from where a run of it stopped after that many step events (an abort), as the controller
 // does after `haloplot send --resume` (motion/virtual_run.h skip_events).
 // `curves` (not empty): the scene's Bézier edges, `edges` its straight ones, drawn haloed by
-// the core's curve job (job/job.h job_prepare_curves) as the controller draws them; no arena.
+// the core's curve job (job/job.h job_prepare_curves) as the controller draws them, or with
+// an arena in bands (band/curve_bands.h), as a controller with that arena draws them.
 Status simulate(const JobSpec& spec, const std::vector<Edge3>& edges, std::ostream* trace,
                 SimReport* report, size_t arena_bytes = 0, TraceForm form = TraceForm::kText,
                 const std::vector<uint32_t>& pause_at = {}, uint32_t resume_at = 0,

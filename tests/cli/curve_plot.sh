@@ -29,8 +29,10 @@ expect 'cmp -s t.gcode s.gcode' "sim of the job writes plot's G-code"
 "$tool" plot trefoil.edges --halo 0 -o w.svg --stats 2> w.txt || bad "plot --halo 0"
 expect '[ "$($check count w.svg)" = 1 ] && grep -q "^gaps=0$" w.txt' "halo 0: one stroke, no gap"
 # Refused by name, nothing written.
-for opt in "--cell 100" "--arena 65536" "--cut x.cut" "--reach 4" "--view 10,20" \
-  "--substep 3"; do
+# (An arena is taken, in bands: tests/cli/curve_bands.sh; not with the exact halo, drawn whole,
+# nor with the plotter files of the whole drawing's path.)
+for opt in "--cell 100" "--exact-halo --arena 65536" "--arena 65536 --gcode r.gcode" \
+  "--cut x.cut" "--reach 4" "--view 10,20" "--substep 3"; do
   # shellcheck disable=SC2086
   if "$tool" plot trefoil.edges --halo 80 $opt -o r.svg 2> r.txt; then
     bad "plot of a curve scene with $opt succeeded"
@@ -54,6 +56,11 @@ expect '[ "$(grep -c ^bezier persp.edges)" -gt 24 ] && grep -q "in perspective f
 "$tool" plot persp.edges --halo 80 -o p.svg --stats 2> p.txt || bad "plot persp.edges: $(cat p.txt)"
 expect 'grep -q "^crossings=3$" p.txt && grep -q "^gaps=3$" p.txt && [ "$($check count p.svg)" = 3 ]' \
   "the perspective trefoil: 3 crossings, 3 gaps, 3 strokes"
+# And with the exact halo: a perspective knot plotted with exact gaps, to G-code too.
+"$tool" plot persp.edges --halo 80 --exact-halo -o pe.svg --gcode pe.gcode --stats 2> pe.txt ||
+  bad "plot persp.edges --exact-halo: $(cat pe.txt)"
+expect 'grep -q "^gaps=3$" pe.txt && [ "$($check count pe.svg)" = 3 ] && $check gcode pe.svg pe.gcode > /dev/null' \
+  "the perspective trefoil with the exact halo: 3 gaps, 3 strokes, the G-code's runs"
 printf 'scene persp.edges\ndrawing haloed\nhalo 80\nhalo-mode paper\n' > p.job
 expect '"$tool" sim p.job -o p.trace 2> /dev/null' "sim of the perspective trefoil's job"
 expect '! "$tool" demo-scene --curve helix --perspective 300000 -o x.edges 2> /dev/null && [ ! -e x.edges ]' \

@@ -513,6 +513,29 @@ void curve_scene() {
   CHECK(client.upload(exact, segments, &s, &knot.curves) && ok(s));
   CHECK(client.request(FrameType::kPlot, {}, &s));
   CHECK_MSG(s == Status::kUnsupported, std::string("expected kUnsupported, got ") + status_name(s));
+  // In bands (kUploadBegin's 21-byte form): the trace of sim of the job with that arena, which
+  // is not the unbanded plot's; the form without curves, or with too small an arena, refused.
+  const uint32_t band_arena = 24576;
+  std::ostringstream banded_trace;
+  SimReport br;
+  CHECK(ok(simulate(spec, segments, &banded_trace, &br, band_arena, TraceForm::kText, {}, 0,
+                    &knot.curves)));
+  CHECK(br.bands.bands >= 2);
+  CHECK(banded_trace.str() != want);
+  CHECK(client.upload(spec, segments, &s, &knot.curves, band_arena) && ok(s));
+  CHECK(client.request(FrameType::kPlot, {}, &s) && ok(s));
+  CHECK(client.wait_idle(&r, 0));
+  CHECK_MSG(c.motion.traces.size() == 2 && c.motion.traces[1] == banded_trace.str(),
+            "the controller's curve plot in bands is sim's of the job with that arena");
+  std::vector<uint8_t> bands_begin(kUploadBeginBandsBytes);
+  UploadBegin bb{SceneFormat::kEdges, 0, 1, 0};
+  bb.band_arena = band_arena;  // no curves
+  encode_upload_begin_bands(bb, bands_begin.data());
+  CHECK(client.request(FrameType::kUploadBegin, bands_begin, &s) && s == Status::kMalformedRequest);
+  bb.curves = 2;
+  bb.band_arena = kMinBandArena - 1;
+  encode_upload_begin_bands(bb, bands_begin.data());
+  CHECK(client.request(FrameType::kUploadBegin, bands_begin, &s) && s == Status::kMalformedRequest);
   // 8 KB: the scene fits (1,176 bytes), the crossing search does not; named, no plot.
   Controller small(8 * 1024);
   Loopback small_link(small);

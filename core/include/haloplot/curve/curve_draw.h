@@ -80,7 +80,12 @@ struct CurveDrawStats {
   uint64_t chords = 0;           // chords emitted
   uint64_t hidden = 0;           // edges the halos removed entirely
   uint32_t joints = 0;           // joints where halos carry on
+  // Units, rounded up: no gap reaches farther than this from the point of its crossing (its
+  // arc, the shift its parameter bound allows, the walk's error); kCurveReachUnbounded when a
+  // gap has no end (tangents parallel as rounded). Bands widen by it (band/curve_bands.h).
+  uint64_t reach = 0;
 };
+inline constexpr uint64_t kCurveReachUnbounded = uint64_t{1} << 40;
 
 // Check the input (hits sorted by curve, indices in range, params in range) and size the
 // scratch.

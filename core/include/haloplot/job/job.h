@@ -7,6 +7,7 @@
 #include <stdint.h>
 
 #include "haloplot/band/conductor.h"
+#include "haloplot/band/curve_bands.h"
 #include "haloplot/curve/curve_draw.h"
 #include "haloplot/cut/cut.h"
 #include "haloplot/draw/draw.h"
@@ -175,6 +176,12 @@ inline constexpr int32_t kCurveJobPieceSteps = 16;
 // curves), the paper's gap of spec.draw.halo, chords within the stage's default 1/4 unit.
 // `plot` of a curve scene uses the same, so it draws what the job plots.
 void curve_job_params(const JobSpec& spec, CurveCrossParams* cross, CurveDrawParams* draw);
+
+// The same curve job in bands (band/curve_bands.h), for an arena smaller than the whole
+// drawing's needs: the stages' settings of curve_job_params(), the pen's start, the job's
+// clean-up (without its minimum stroke: a border cuts strokes). kBadParameter for a job
+// job_prepare_curves() refuses too.
+Status curve_band_spec(const JobSpec& spec, CurveBandSpec* out);
 
 // A haloed drawing of a scene with curves (spec.drawing kHaloed, the paper's gap; anything else
 // is kBadParameter): the crossings (run_curve_cross), the curve DRAW's chords (run_curve_draw),

@@ -12,7 +12,8 @@
 // kSceneTooLarge when it cannot fit, before a byte of it is stored): world vertices, index
 // pairs and triangles for the indexed format, then the projected edges (after a scene's
 // projected Bézier edges, kUploadCurves); the rest is the job buffer for CUT, DRAW and the path
-// (core/job), for a scene with curves the curve stages and the path (job_prepare_curves), or
+// (core/job), for a scene with curves the curve stages and the path (job_prepare_curves; with
+// kUploadBegin's band arena, in bands of that many of its bytes: band/curve_bands.h), or
 // for a hidden-line drawing the projected vertices, the hidden-line run and its strokes
 // (job_prepare_solid).
 //
@@ -103,6 +104,7 @@ class JobServer {
   Status plot();
   Status plot_hidden(uint8_t* job_mem, size_t job_bytes);
   Status plot_curves(const Edge3* edges, uint8_t* job_mem, size_t job_bytes);
+  Status plot_curve_bands(const Edge3* edges, uint8_t* job_mem, size_t job_bytes);
   Status replot(const uint8_t* p, uint16_t n);
   Status start_motion();
   Status stream_begin(const uint8_t* p, uint16_t n);
@@ -152,6 +154,7 @@ class JobServer {
   bool streamed_ = false, stream_end_ = false;
   StreamBegin stream_{};
   BandConductor conductor_;
+  CurveBands curve_bands_;  // a curve scene uploaded with a band arena
   Staging staging_ = Staging::kEmpty;
   BandBegin staged_{};
   uint32_t staged_received_ = 0, staging_capacity_ = 0;

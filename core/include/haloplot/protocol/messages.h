@@ -6,6 +6,8 @@
 //                      u32 edges, u32 faces                                      13 bytes
 //                      or the same and u32 curves (format 0 only: a scene with cubic
 //                      Bézier edges, drawn haloed by the curve stages)          17 bytes
+//                      or the same and u32 band arena bytes (>= 1024: the curve job drawn
+//                      in bands of that arena, band/curve_bands.h)              21 bytes
 //   kUploadEdges       Edge3 records: 6 x i32 (x0 y0 z0 x1 y1 z1)            24 per edge
 //   kUploadCurves      BezierEdge3 records: 4 control points of 3 x i32      48 per curve
 //   kUploadVertices    world Point3: 3 x i32                                  12 per vertex
@@ -51,12 +53,13 @@
 namespace haloplot {
 
 inline constexpr size_t kUploadBeginBytes = 13, kUploadBeginCurvesBytes = 17,
-                        kCurveRecordBytes = 48, kEdgeRecordBytes = 24, kVertexRecordBytes = 12,
-                        kIndexRecordBytes = 8, kViewBytes = 24, kHaloBytes = 5, kEffectsBytes = 11,
-                        kMachineBytes = 61, kStatusBytes = 32, kFaceRecordBytes = 16,
-                        kHiddenBytes = 22, kStreamBeginBytes = 9, kBandBeginBytes = 20,
-                        kBandEdgeRecordBytes = 4 + kEdgeRecordBytes, kBandVertexRecordBytes = 16,
-                        kBandSolidEdgeRecordBytes = 12, kBandTriangleRecordBytes = 16;
+                        kUploadBeginBandsBytes = 21, kCurveRecordBytes = 48, kEdgeRecordBytes = 24,
+                        kVertexRecordBytes = 12, kIndexRecordBytes = 8, kViewBytes = 24,
+                        kHaloBytes = 5, kEffectsBytes = 11, kMachineBytes = 61, kStatusBytes = 32,
+                        kFaceRecordBytes = 16, kHiddenBytes = 22, kStreamBeginBytes = 9,
+                        kBandBeginBytes = 20, kBandEdgeRecordBytes = 4 + kEdgeRecordBytes,
+                        kBandVertexRecordBytes = 16, kBandSolidEdgeRecordBytes = 12,
+                        kBandTriangleRecordBytes = 16;
 // The effects as a host before the path clean-up sent them (no minimum stroke), and before the
 // simplification (a minimum stroke, no tolerance): still taken.
 inline constexpr size_t kEffectsShortBytes = 3, kEffectsNoSimplifyBytes = 7;
@@ -83,7 +86,11 @@ struct UploadBegin {
   SceneFormat format = SceneFormat::kEdges;
   uint32_t vertices = 0, edges = 0, faces = 0;
   uint32_t curves = 0;  // the 17-byte form's: Bézier edges besides the straight ones
+  // The 21-byte form's: the curves drawn in bands of this many bytes of the job arena (0: the
+  // curve job whole, in all of it), as `sim` of a job with that arena draws them.
+  uint32_t band_arena = 0;
 };
+inline constexpr uint32_t kMinBandArena = 1024;  // as a streamed plot's (kStreamBegin)
 
 // kPaused: a plot held by kPause, at rest with its pen lifted, until kResume (or kAbort).
 enum class ServerState : uint8_t {
@@ -117,6 +124,8 @@ inline int32_t get_i32(const uint8_t* p) { return int32_t(get_u32(p)); }
 void encode_upload_begin(const UploadBegin& b, uint8_t out[kUploadBeginBytes]);
 // The 17-byte form, with b.curves.
 void encode_upload_begin_curves(const UploadBegin& b, uint8_t out[kUploadBeginCurvesBytes]);
+// The 21-byte form, with b.curves and b.band_arena.
+void encode_upload_begin_bands(const UploadBegin& b, uint8_t out[kUploadBeginBandsBytes]);
 void encode_edge(const Edge3& e, uint8_t out[kEdgeRecordBytes]);
 void encode_curve(const BezierEdge3& c, uint8_t out[kCurveRecordBytes]);
 void encode_vertex(const Point3& p, uint8_t out[kVertexRecordBytes]);
