@@ -153,18 +153,19 @@ inline void check_edge_job(Checker& c, const EdgeScene& sc, const JobSpec& spec,
   PreparedJob job;
   uint32_t capacity = 0;
   if (spec.drawing == DrawingEffect::kHaloed) {
-    if (!ok(job_crossings(spec, sc.edges, sc.n, pool, kPoolBytes, &capacity))) capacity = 0;
+    if (!ok(job_crossings(spec, Edges{sc.edges, sc.n}, pool, kPoolBytes, &capacity))) capacity = 0;
     const uint64_t used = smallest_fit(4 * (uint64_t{capacity} + 16), [&](uint64_t k) {
-      return ok(
-          job_prepare(spec, sc.edges, sc.n, uint32_t(k - 1), pool, kPoolBytes, &job, nullptr));
+      return ok(job_prepare(spec, Edges{sc.edges, sc.n}, uint32_t(k - 1), pool, kPoolBytes, &job,
+                            nullptr));
     });
     // Capacities start at 0: both sides one more, so a scene without crossings is judged too.
     c.judge("job_crossings", sc.name, uint64_t{capacity} + 1, used);
   }
   JobBytes b;
-  if (!ok(job_bytes(spec, sc.edges, sc.n, capacity, &b))) b.peak = 0;
+  if (!ok(job_bytes(spec, Edges{sc.edges, sc.n}, capacity, &b))) b.peak = 0;
   const uint64_t used = smallest_fit(kPoolBytes, [&](uint64_t bytes) {
-    return ok(job_prepare(spec, sc.edges, sc.n, capacity, pool, size_t(bytes), &job, nullptr));
+    return ok(
+        job_prepare(spec, Edges{sc.edges, sc.n}, capacity, pool, size_t(bytes), &job, nullptr));
   });
   c.judge(bytes_query, sc.name, b.total(), used);
 }

@@ -212,13 +212,14 @@ int main() {
   spec.draw = DrawParams{20, HaloMode::kPaper};
   spec.cut.compact_cells = false;
   measure("job_prepare", [&] {
-    return drawn(
-        job_prepare(spec, edges, kEdges, kCrossingCapacity, arena, sizeof arena, &job, nullptr));
+    return drawn(job_prepare(spec, Edges{edges, kEdges}, kCrossingCapacity, arena, sizeof arena,
+                             &job, nullptr));
   });
   JobSpec wider = spec;
   wider.draw.halo = 40;
   measure("job_redraw", [&] {
-    return drawn(job_redraw(wider, kEdges, kCrossingCapacity, arena, sizeof arena, &job, nullptr));
+    return drawn(job_redraw(wider, Edges{edges, kEdges}, kCrossingCapacity, arena, sizeof arena,
+                            &job, nullptr));
   });
   JobSpec hidden = spec;
   hidden.drawing = DrawingEffect::kHiddenRemoved;

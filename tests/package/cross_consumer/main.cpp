@@ -66,7 +66,8 @@ int main() {
   job.drawing = DrawingEffect::kAllEdges;
   PreparedJob prepared;
   JobCounters counters;
-  if (!ok(job_prepare(job, edges, 48, 0, arena, sizeof arena, &prepared, &counters))) return -1;
+  if (!ok(job_prepare(job, Edges{edges, 48}, 0, arena, sizeof arena, &prepared, &counters)))
+    return -1;
   if (!ok(motion.begin(job, prepared))) return -1;
   while (motion.running()) {  // no vector table here: the timer's pending flag is polled
     motion.service();

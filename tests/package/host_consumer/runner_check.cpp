@@ -110,7 +110,8 @@ int check_motion_runner() {
   std::vector<uint64_t> buffer(1 << 14);
   PreparedJob job;
   JobCounters counters;
-  if (!ok(job_prepare(spec, scene, 3, 64, buffer.data(), buffer.size() * 8, &job, &counters)))
+  if (!ok(job_prepare(spec, Edges{scene, 3}, 64, buffer.data(), buffer.size() * 8, &job,
+                      &counters)))
     return 1;
 
   std::vector<Event> want;
