@@ -576,9 +576,13 @@ Status JobServer::plot_streamed() {
   const uint32_t bytes = stream_.arena_bytes & ~uint32_t{7};
   const Status s =
       solid_stream()
-          ? conductor_.begin_streamed_solid(band_spec(spec_), (stream_.flags & kStreamClosed) != 0,
-                                            (stream_.flags & kStreamTurned) != 0, stream, arena_,
-                                            bytes)
+          ? conductor_.begin_streamed_solid(
+                band_spec(spec_),
+                ((stream_.flags & kStreamClosed) != 0 ? SolidStreamFlags::kClosed
+                                                      : SolidStreamFlags::kNone) |
+                    ((stream_.flags & kStreamTurned) != 0 ? SolidStreamFlags::kTurned
+                                                          : SolidStreamFlags::kNone),
+                stream, arena_, bytes)
           : conductor_.begin_streamed(band_spec(spec_), stream_.margin, stream, arena_, bytes);
   if (!ok(s)) return s;
   job_ = PreparedJob{};

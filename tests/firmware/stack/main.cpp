@@ -273,7 +273,8 @@ int main() {
     return 1;
   conductor.set_observer(PieceObserver{});
   measure("BandConductor::begin_streamed_solid", [&] {
-    return conductor.begin_streamed_solid(solid_rows, true, false, band_stream(), arena, 24 * 1024);
+    return conductor.begin_streamed_solid(solid_rows, SolidStreamFlags::kClosed, band_stream(),
+                                          arena, 24 * 1024);
   });
   measure("BandConductor::next (streamed solid)", [&] { return drain(&conductor); });
   return failures == 0 ? 0 : 1;
