@@ -339,7 +339,7 @@ struct StrokeCollector {
                                                                       : kVisible;
     return s;
   }
-  static Status outline(void* ctx, const HiddenPiece& p) {
+  static Status outline(void* ctx, const OutlinePiece& p) {
     auto* self = static_cast<StrokeCollector*>(ctx);
     const Status s = self->finish();
     return ok(s) ? self->add(make_stroke(*p.geometry, p.edge, p.t0, p.t1), kOutline) : s;
