@@ -191,7 +191,7 @@ inline uint32_t check_cut_draw_path(const Report& r) {
   f += probe(r, "plan_path workspace", path_plan_bytes(kEdges), [&](void* b, size_t n, Digest* d) {
     uint32_t count = 0;
     const Status s =
-        plan_path(spans, kEdges, 0, 0, b, n, points, 2 * kEdges, &count, nullptr, PathEnd{});
+        plan_path(spans, kEdges, PenAt{0, 0}, b, n, points, 2 * kEdges, &count, nullptr, PathEnd{});
     add_points(d, points, count);
     return s;
   });

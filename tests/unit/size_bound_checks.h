@@ -223,15 +223,15 @@ inline void check_cut_draw_path(Checker& c, const EdgeScene& sc) {
   const uint64_t path_used = smallest_fit(kPoolBytes, [&](uint64_t bytes) {
     for (uint32_t i = 0; i < n_spans; ++i) work[i] = spans[i];
     uint32_t count = 0;
-    return ok(plan_path(work, n_spans, 0, 0, pool, size_t(bytes), points, kMaxEdges * 16, &count,
-                        nullptr, PathEnd{}));
+    return ok(plan_path(work, n_spans, PenAt{0, 0}, pool, size_t(bytes), points, kMaxEdges * 16,
+                        &count, nullptr, PathEnd{}));
   });
   c.judge("path_plan_bytes", sc.name, path_plan_bytes(n_spans), path_used);
 
   // The planner's look-ahead workspace for the path's points, acceleration on.
   uint32_t n_points = 0;
   for (uint32_t i = 0; i < n_spans; ++i) work[i] = spans[i];
-  if (!ok(plan_path(work, n_spans, 0, 0, pool, kPoolBytes, points, kMaxEdges * 16, &n_points,
+  if (!ok(plan_path(work, n_spans, PenAt{0, 0}, pool, kPoolBytes, points, kMaxEdges * 16, &n_points,
                     nullptr, PathEnd{})))
     return c.judge("MotionPlanner::workspace_bytes", sc.name, 0, 0);
   PlotterEffects fx;
