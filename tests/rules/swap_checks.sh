@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Arguments that cannot be swapped silently: where a public entry takes two values side by side
-# (an edge count and a crossing capacity, two flags, two callbacks, a point's coordinates), their
+# (an edge count and a crossing capacity, two flags, two callbacks, a point's coordinates, the
+# board clock's tick rate and time scale), their
 # types differ, so the swapped call is a compile error, not a run that reads the wrong memory.
 # Each case is a small translation unit compiled (syntax only) against the real headers: the
 # right form must build, the swapped (or the old two-values) form must not.
@@ -95,6 +96,22 @@ try plan_path_point ok "$path
 try plan_path_two_ints refused "$path
   return plan_path(spans, 1, 3, 4, ws, sizeof ws, out, 2, &count, nullptr);
 }"
+
+clock='#include "haloplot/hal/step_clock.h"
+using namespace haloplot;'
+try timer_init_right ok "$clock
+struct B { static int timer_init(TickRate, TimeScale) { return 0; } };
+static_assert(hal::HasTimerInit<B>::value, \"board\");
+int f() { return B::timer_init(TickRate{1000}, TimeScale{1}); }"
+try timer_init_swapped refused "$clock
+struct B { static int timer_init(TickRate, TimeScale) { return 0; } };
+int f() { return B::timer_init(TimeScale{1}, TickRate{1000}); }"
+try timer_init_two_ints refused "$clock
+struct B { static int timer_init(TickRate, TimeScale) { return 0; } };
+int f() { return B::timer_init(1000u, 1u); }"
+try timer_init_old_board refused "$clock
+struct B { static int timer_init(uint32_t, uint32_t) { return 0; } };
+static_assert(hal::HasTimerInit<B>::value, \"a board of two uint32_t is refused\");"
 
 echo "swap_checks: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

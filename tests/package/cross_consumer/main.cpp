@@ -25,7 +25,7 @@ struct Board {
   static void enable_drivers(bool on) { reg(on ? 0x40000010 : 0x40000014) = 16; }
   static void pen_init() {}
   static void pen_set(bool down) { reg(down ? 0x40000010 : 0x40000014) = 32; }
-  static Status timer_init(uint32_t, uint32_t) { return Status::kOk; }
+  static Status timer_init(TickRate, TimeScale) { return Status::kOk; }
   static void timer_start(uint32_t d) { reg(0x40001000) = d; }
   static void timer_next(uint32_t d) { reg(0x40001000) = d; }
   static void timer_stop() { reg(0x40001004) = 0; }

@@ -54,7 +54,7 @@ struct FakeBoard {
     pen_down = down;
     events->push_back(Event{*now, 9, down});
   }
-  static Status timer_init(uint32_t, uint32_t) { return Status::kOk; }
+  static Status timer_init(TickRate, TimeScale) { return Status::kOk; }
   static void timer_start(uint32_t d) { armed = true, left = d; }
   static void timer_next(uint32_t d) { left = d; }
   static void timer_stop() { armed = false; }
