@@ -9,6 +9,7 @@
 #include "drivers/step_timer.h"
 #include "drivers/uart.h"
 #include "drivers/watchdog.h"
+#include "haloplot/hal/step_clock.h"  // TickRate, TimeScale
 
 namespace haloplot::fw {
 

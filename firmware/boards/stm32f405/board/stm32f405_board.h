@@ -11,6 +11,7 @@
 #include "drivers/step_timer.h"
 #include "drivers/usart.h"
 #include "drivers/watchdog.h"
+#include "haloplot/hal/step_clock.h"  // TickRate, TimeScale
 
 namespace haloplot::fw {
 
