@@ -247,7 +247,7 @@ Status BandConductor::plan_column(const PathPoint** points, uint32_t* n) {
   end.x = int32_t((leftward_ ? -c * column_side_ : (c + 1) * column_side_) >> sub);
   end.y = int32_t((last == n_segs_ ? band_y1_ : band_y0_ + (band_y1_ - band_y0_) / 2) >> sub);
   steps_to_band(segs_ + next_seg_, k);  // the column's strokes to steps, after its choice
-  const Status s = plan_path(segs_ + next_seg_, k, pen_x_, pen_y_, ws, ws_size, pts,
+  const Status s = plan_path(segs_ + next_seg_, k, PenAt{pen_x_, pen_y_}, ws, ws_size, pts,
                              path_points_max(k), n, &ps, end, spec_.clean);
   stats_.other_ticks += now() - t0;
   if (!ok(s)) return s;

@@ -252,7 +252,7 @@ Status CurveBands::commit(Band* b) {
   PathPoint* points = reinterpret_cast<PathPoint*>(arena_ + chord_bytes);
   PathStats ps;
   uint32_t np = 0;
-  s = plan_path(chords, n, pen_x_, pen_y_, arena_ + chord_bytes + point_bytes,
+  s = plan_path(chords, n, PenAt{pen_x_, pen_y_}, arena_ + chord_bytes + point_bytes,
                 arena_bytes_ - chord_bytes - point_bytes, points, path_points_max(n), &np, &ps,
                 PathEnd{}, spec_.clean);
   if (!ok(s)) return s;

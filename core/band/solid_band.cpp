@@ -62,7 +62,7 @@ struct SolidSink {
 
   static void begin(void* ctx, uint8_t* tail, size_t bytes, const Edge3* edges);
   static Status piece(void* ctx, const HiddenPiece& p);
-  static Status outline(void* ctx, const HiddenPiece& p);
+  static Status outline(void* ctx, const OutlinePiece& p);
   Status finish() { return n_raw > 0 ? flush_edge() : Status::kOk; }
   Status line_piece(const HiddenPiece& p);
   Status diagonal_piece(const HiddenPiece& p);
@@ -248,7 +248,7 @@ Status SolidSink::store_line(const Edge3& g, int64_t t0, int64_t t1, bool extend
 
 // An outline run inside the band's rows (the fallback asks Kira's condition part by part): a
 // stroke of this band, cut at its borders, so the runs of two bands meet end to end.
-Status SolidSink::outline(void* ctx, const HiddenPiece& p) {
+Status SolidSink::outline(void* ctx, const OutlinePiece& p) {
   SolidSink& self = *static_cast<SolidSink*>(ctx);
   BandConductor::Attempt& a = *self.a;
   if (p.t1 <= p.t0) return Status::kOk;
@@ -399,8 +399,10 @@ Status BandConductor::begin_solid(const BandSpec& spec, SolidSource source, void
   return Status::kOk;
 }
 
-Status BandConductor::begin_streamed_solid(const BandSpec& spec, bool closed, bool turned,
+Status BandConductor::begin_streamed_solid(const BandSpec& spec, SolidStreamFlags flags,
                                            BandStream stream, void* arena, size_t arena_bytes) {
+  const bool closed = has(flags, SolidStreamFlags::kClosed);
+  const bool turned = has(flags, SolidStreamFlags::kTurned);
   if (stream.next == nullptr) return Status::kBadParameter;
   if (spec.style.dash < 1 || spec.style.gap < 1 || spec.style.dash > kCoordMax ||
       spec.style.gap > kCoordMax)

@@ -106,8 +106,9 @@ BandSpec band_spec(const JobSpec& steps) {
   return bs;
 }
 
-Status job_bytes(const JobSpec& steps, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
-                 JobBytes* bytes) {
+Status job_bytes(const JobSpec& steps, Edges in, uint32_t crossing_capacity, JobBytes* bytes) {
+  const Edge3* edges = in.data;
+  const uint32_t n = in.count;
   if (needs_faces(steps.drawing) || !units_ok(steps) || !layers_ok(steps, n))
     return Status::kBadParameter;
   const JobSpec spec = in_units(steps);
@@ -133,8 +134,10 @@ Status job_bytes(const JobSpec& steps, const Edge3* edges, uint32_t n, uint32_t 
   return Status::kOk;
 }
 
-Status job_crossings(const JobSpec& steps, const Edge3* edges, uint32_t n, void* buffer,
-                     size_t buffer_bytes, uint32_t* capacity) {
+Status job_crossings(const JobSpec& steps, Edges in, void* buffer, size_t buffer_bytes,
+                     uint32_t* capacity) {
+  const Edge3* edges = in.data;
+  const uint32_t n = in.count;
   *capacity = 0;
   if (needs_faces(steps.drawing) || !units_ok(steps) || !layers_ok(steps, n))
     return Status::kBadParameter;
@@ -218,8 +221,10 @@ void clear_drawing(PreparedJob* job, bool keep_cutset) {
 }
 }  // namespace
 
-Status job_prepare(const JobSpec& steps, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
-                   void* buffer, size_t buffer_bytes, PreparedJob* out, JobCounters* counters) {
+Status job_prepare(const JobSpec& steps, Edges in, uint32_t crossing_capacity, void* buffer,
+                   size_t buffer_bytes, PreparedJob* out, JobCounters* counters) {
+  const Edge3* edges = in.data;
+  const uint32_t n = in.count;
   clear_drawing(out, false);
   JobCounters c;
   if (needs_faces(steps.drawing) || !units_ok(steps) || !layers_ok(steps, n))
@@ -258,10 +263,12 @@ Status job_prepare(const JobSpec& steps, const Edge3* edges, uint32_t n, uint32_
   return Status::kOk;
 }
 
-Status job_redraw(const JobSpec& steps, uint32_t n, uint32_t crossing_capacity, void* buffer,
+Status job_redraw(const JobSpec& steps, Edges edges, uint32_t crossing_capacity, void* buffer,
                   size_t buffer_bytes, PreparedJob* job, JobCounters* counters) {
   clear_drawing(job, true);
-  if (steps.drawing != DrawingEffect::kHaloed || job->cutset.edges == nullptr || !units_ok(steps))
+  const uint32_t n = edges.count;
+  if (steps.drawing != DrawingEffect::kHaloed || job->cutset.edges == nullptr ||
+      job->cutset.n_edges != n || !units_ok(steps))
     return Status::kBadParameter;
   if (buffer_misaligned(buffer)) return Status::kMisalignedBuffer;
   const JobSpec spec = in_units(steps);
@@ -332,7 +339,7 @@ struct StrokeCollector {
                                                                       : kVisible;
     return s;
   }
-  static Status outline(void* ctx, const HiddenPiece& p) {
+  static Status outline(void* ctx, const OutlinePiece& p) {
     auto* self = static_cast<StrokeCollector*>(ctx);
     const Status s = self->finish();
     return ok(s) ? self->add(make_stroke(*p.geometry, p.edge, p.t0, p.t1), kOutline) : s;
@@ -674,13 +681,13 @@ Status CurveJobStage::run(const StageNeeds& needs, void* buffer, size_t bytes, S
 
 size_t EdgeJobStage::bytes(const StageNeeds& needs) {
   JobBytes b;
-  if (!ok(job_bytes(*spec, edges, n, needs.crossings, &b))) return 0;
+  if (!ok(job_bytes(*spec, edges, needs.crossings, &b))) return 0;
   if (sized != nullptr) *sized = b;
   return b.total();
 }
 
 Status EdgeJobStage::run(const StageNeeds& needs, void* buffer, size_t bytes, StageNeeds* want) {
-  const Status s = job_prepare(*spec, edges, n, needs.crossings, buffer, bytes, out, counters);
+  const Status s = job_prepare(*spec, edges, needs.crossings, buffer, bytes, out, counters);
   cut_runs += counters->cut_runs;
   draw_runs += counters->draw_runs;
   if (s == Status::kCrossingCapacity)

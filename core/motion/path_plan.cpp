@@ -447,9 +447,10 @@ void add_path_stats(PathStats* a, const PathStats& b) {
   a->crumb_length += b.crumb_length;
 }
 
-Status plan_path(Segment2* spans, uint32_t n, int32_t start_x, int32_t start_y, void* workspace,
-                 size_t workspace_bytes, PathPoint* out, uint32_t out_capacity, uint32_t* out_count,
-                 PathStats* stats, PathEnd end, PathClean clean) {
+Status plan_path(Segment2* spans, uint32_t n, PenAt start, void* workspace, size_t workspace_bytes,
+                 PathPoint* out, uint32_t out_capacity, uint32_t* out_count, PathStats* stats,
+                 PathEnd end, PathClean clean) {
+  const int32_t start_x = start.x, start_y = start.y;
   if (buffer_misaligned(workspace)) return Status::kMisalignedBuffer;
   Carver front(workspace, workspace_bytes), grid = front, scratch = front;
   const Workspace ws = carve_workspace(&front, &grid, &scratch, n);
@@ -502,7 +503,7 @@ Status plan_path_layers(Segment2* spans, uint32_t n, const LayerCounts& layers, 
   LayerCounts written;
   written.n = layers.n;
   if (layers.n <= 1) {
-    const Status s = plan_path(spans, n, start_x, start_y, workspace, workspace_bytes, out,
+    const Status s = plan_path(spans, n, PenAt{start_x, start_y}, workspace, workspace_bytes, out,
                                out_capacity, out_count, stats, PathEnd{}, clean);
     written.count[0] = *out_count;
     if (ok(s) && points_per_layer != nullptr) *points_per_layer = written;
@@ -520,8 +521,8 @@ Status plan_path_layers(Segment2* spans, uint32_t n, const LayerCounts& layers, 
     if (m == 0) continue;
     uint32_t wrote = 0;
     PathStats st;
-    const Status s = plan_path(spans + first, m, x, y, workspace, workspace_bytes, out + count,
-                               path_points_max(m), &wrote, &st, PathEnd{}, clean);
+    const Status s = plan_path(spans + first, m, PenAt{x, y}, workspace, workspace_bytes,
+                               out + count, path_points_max(m), &wrote, &st, PathEnd{}, clean);
     if (!ok(s)) return s;
     if (count > 0 && wrote > 0) ++sum.pen_lifts;  // the move to this layer's first stroke
     st.naive_pen_up_length = 0;                   // counted over all layers below

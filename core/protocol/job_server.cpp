@@ -283,7 +283,7 @@ Status JobServer::plot() {
   StageNeeds needs;
   needs.crossings = n_edges_ + 64;
   const uint64_t t0 = clock_ ? clock_() : 0;
-  EdgeJobStage stage{&spec_, edges, n_edges_, &job_, &counters_, nullptr};
+  EdgeJobStage stage{&spec_, Edges{edges, n_edges_}, &job_, &counters_, nullptr};
   FixedMemory memory{job_mem, job_bytes};
   const Status s = run_sized(stage, memory.memory(), &needs);
   crossing_capacity_ = needs.crossings;
@@ -396,8 +396,8 @@ Status JobServer::replot(const uint8_t* p, uint16_t n) {
         2 * (cc.crossings + cc.touches), arena_ + job_offset(), arena_bytes_ - job_offset(), &job_,
         &counters_);
   } else {
-    s = job_redraw(next, n_edges_, crossing_capacity_, arena_ + job_offset(),
-                   arena_bytes_ - job_offset(), &job_, &counters_);
+    s = job_redraw(next, Edges{job_.cutset.edges, n_edges_}, crossing_capacity_,
+                   arena_ + job_offset(), arena_bytes_ - job_offset(), &job_, &counters_);
   }
   if (clock_) redraw_ticks_ = clock_() - t0;
   draw_runs_ += counters_.draw_runs;
@@ -593,9 +593,13 @@ Status JobServer::plot_streamed() {
   const uint32_t bytes = stream_.arena_bytes & ~uint32_t{7};
   const Status s =
       solid_stream()
-          ? conductor_.begin_streamed_solid(band_spec(spec_), (stream_.flags & kStreamClosed) != 0,
-                                            (stream_.flags & kStreamTurned) != 0, stream, arena_,
-                                            bytes)
+          ? conductor_.begin_streamed_solid(
+                band_spec(spec_),
+                ((stream_.flags & kStreamClosed) != 0 ? SolidStreamFlags::kClosed
+                                                      : SolidStreamFlags::kNone) |
+                    ((stream_.flags & kStreamTurned) != 0 ? SolidStreamFlags::kTurned
+                                                          : SolidStreamFlags::kNone),
+                stream, arena_, bytes)
           : conductor_.begin_streamed(band_spec(spec_), stream_.margin, stream, arena_, bytes);
   if (!ok(s)) return s;
   job_ = PreparedJob{};

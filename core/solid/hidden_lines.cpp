@@ -49,13 +49,13 @@ Status fallback_piece(void* ctx, const FallbackPiece& p) {
 Status fallback_outline(void* ctx, const FallbackPiece& p) {
   const Adapter* a = static_cast<const Adapter*>(ctx);
   if (a->sink.outline == nullptr) return Status::kOk;
-  return a->sink.outline(a->sink.context, HiddenPiece{p, a->edges + p.edge, 0, false, true});
+  return a->sink.outline(a->sink.context, OutlinePiece{{p, a->edges + p.edge, 0, false, true}});
 }
 
 Status outline_piece(void* ctx, const OutlineSegment& s) {
   const Adapter* a = static_cast<const Adapter*>(ctx);
   if (a->sink.outline == nullptr) return Status::kOk;
-  return a->sink.outline(a->sink.context, HiddenPiece{s, a->edges + s.edge, 0, false, true});
+  return a->sink.outline(a->sink.context, OutlinePiece{{s, a->edges + s.edge, 0, false, true}});
 }
 
 Status line_piece(const Adapter* a, const LinePiece& p, bool hatch) {

@@ -41,7 +41,8 @@ struct Mps2Board {
   static void pen_set(bool down) { gpio_write(0x20, down ? 0x20 : 0); }
 
   // The step clock: the plan's ticks (tick_hz a second) in timer cycles, `scale` times fast.
-  static haloplot::Status timer_init(uint32_t tick_hz, uint32_t scale) {
+  static haloplot::Status timer_init(haloplot::TickRate tick, haloplot::TimeScale time_scale) {
+    const uint32_t tick_hz = tick.hz, scale = time_scale.factor;
     if (tick_hz == 0 || scale == 0 || kSysclkHz % (uint64_t{tick_hz} * scale) != 0)
       return haloplot::Status::kBadParameter;
     cycles_per_tick = kSysclkHz / tick_hz / scale;

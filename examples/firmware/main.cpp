@@ -99,9 +99,10 @@ int main() {
   // The records CUT will store, counted first in the same memory (28 for these cubes): a guess
   // costs 12 bytes a record too many, or a kCrossingCapacity.
   uint32_t crossings = 0;
-  s = job_crossings(spec, edges, kEdges, job_memory, sizeof job_memory, &crossings);
+  s = job_crossings(spec, Edges{edges, kEdges}, job_memory, sizeof job_memory, &crossings);
   if (!ok(s)) fail("job_crossings", s);
-  s = job_prepare(spec, edges, kEdges, crossings, job_memory, sizeof job_memory, &job, &counters);
+  s = job_prepare(spec, Edges{edges, kEdges}, crossings, job_memory, sizeof job_memory, &job,
+                  &counters);
   if (!ok(s)) fail("job_prepare", s);
   print("crossing_capacity", crossings);
 

@@ -50,7 +50,7 @@ BandConductor conductor;
 Status prepare(const JobSpec& job, PreparedJob* prepared) {
 #if LEAN_PLOT == 1
   JobCounters counters;
-  return job_prepare(job, kScene, kEdges, 16, arena, sizeof arena, prepared, &counters);
+  return job_prepare(job, Edges{kScene, kEdges}, 16, arena, sizeof arena, prepared, &counters);
 #else
   BandSpec spec = band_spec(job);
 #if LEAN_PLOT == 2

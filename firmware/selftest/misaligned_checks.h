@@ -191,7 +191,7 @@ inline uint32_t check_cut_draw_path(const Report& r) {
   f += probe(r, "plan_path workspace", path_plan_bytes(kEdges), [&](void* b, size_t n, Digest* d) {
     uint32_t count = 0;
     const Status s =
-        plan_path(spans, kEdges, 0, 0, b, n, points, 2 * kEdges, &count, nullptr, PathEnd{});
+        plan_path(spans, kEdges, PenAt{0, 0}, b, n, points, 2 * kEdges, &count, nullptr, PathEnd{});
     add_points(d, points, count);
     return s;
   });
@@ -320,10 +320,11 @@ inline uint32_t check_jobs(const Report& r) {
   spec.draw = DrawParams{20, HaloMode::kPaper};
   spec.cut.compact_cells = false;
   JobBytes jb;
-  if (!ok(job_bytes(spec, edges, kEdges, kCrossingCapacity, &jb))) return 1;
+  if (!ok(job_bytes(spec, Edges{edges, kEdges}, kCrossingCapacity, &jb))) return 1;
   static PreparedJob job;
   uint32_t f = probe(r, "job_prepare buffer", jb.total(), [&](void* b, size_t n, Digest* d) {
-    const Status s = job_prepare(spec, edges, kEdges, kCrossingCapacity, b, n, &job, nullptr);
+    const Status s =
+        job_prepare(spec, Edges{edges, kEdges}, kCrossingCapacity, b, n, &job, nullptr);
     add_points(d, job.points, job.n_points);
     return s;
   });
@@ -334,8 +335,8 @@ inline uint32_t check_jobs(const Report& r) {
     // misaligned one the redraw must refuse before it reads anything).
     Status s = Status::kOk;
     if (!buffer_misaligned(b))
-      s = job_prepare(spec, edges, kEdges, kCrossingCapacity, b, n, &job, nullptr);
-    if (ok(s)) s = job_redraw(wider, kEdges, kCrossingCapacity, b, n, &job, nullptr);
+      s = job_prepare(spec, Edges{edges, kEdges}, kCrossingCapacity, b, n, &job, nullptr);
+    if (ok(s)) s = job_redraw(wider, Edges{edges, kEdges}, kCrossingCapacity, b, n, &job, nullptr);
     add_points(d, job.points, job.n_points);
     return s;
   });
@@ -350,7 +351,7 @@ inline uint32_t check_jobs(const Report& r) {
   // The counting passes that size the jobs.
   f += probe(r, "job_crossings buffer", jb.total(), [&](void* b, size_t n, Digest* d) {
     uint32_t capacity = 0;
-    const Status s = job_crossings(spec, edges, kEdges, b, n, &capacity);
+    const Status s = job_crossings(spec, Edges{edges, kEdges}, b, n, &capacity);
     d->add(capacity);
     return s;
   });
@@ -365,7 +366,8 @@ inline uint32_t check_jobs(const Report& r) {
   });
   // The planner of a job prepared in aux.
   PreparedJob ready;
-  if (!ok(job_prepare(spec, edges, kEdges, kCrossingCapacity, aux, kPoolBytes, &ready, nullptr)))
+  if (!ok(job_prepare(spec, Edges{edges, kEdges}, kCrossingCapacity, aux, kPoolBytes, &ready,
+                      nullptr)))
     return f + 1;
   f += probe(r, "init_planner workspace", MotionPlanner::workspace_bytes(spec.effects),
              [&](void* b, size_t n, Digest* d) {

@@ -305,14 +305,14 @@ void plot_on_chip() {
   spec.machine.kinematics = Kinematics::kCoreXY;
   spec.cut.compact_cells = false;  // the same crossings, a quarter of the cell-list bytes
   JobBytes bytes;
-  Status s = job_bytes(spec, edges, kEdges, kCrossingCapacity, &bytes);
+  Status s = job_bytes(spec, Edges{edges, kEdges}, kCrossingCapacity, &bytes);
   if (!ok(s)) fail("job_bytes", s);
   stat("job_bytes", bytes.total());
   PreparedJob job;
   JobCounters counters;
   const uint64_t t3 = counter_ticks();
-  s = job_prepare(spec, edges, kEdges, kCrossingCapacity, job_buffer, sizeof job_buffer, &job,
-                  &counters);
+  s = job_prepare(spec, Edges{edges, kEdges}, kCrossingCapacity, job_buffer, sizeof job_buffer,
+                  &job, &counters);
   const uint64_t t4 = counter_ticks();
   if (!ok(s)) fail("job_prepare", s);
   stat("prepare_instructions", ticks_to_instructions(t4 - t3));

@@ -20,8 +20,9 @@ Status plan_layers(const std::vector<StrokeLayer>& layers, std::vector<PlannedLa
     PlannedLayer p{l.label, std::vector<PathPoint>(path_points_max(n)), l.pen_width, x, y};
     uint32_t count = 0;
     PathStats stats;
-    const Status s = plan_path(segs.data(), n, x, y, work.data(), work.size() * 8, p.path.data(),
-                               uint32_t(p.path.size()), &count, &stats, PathEnd{}, clean);
+    const Status s =
+        plan_path(segs.data(), n, PenAt{x, y}, work.data(), work.size() * 8, p.path.data(),
+                  uint32_t(p.path.size()), &count, &stats, PathEnd{}, clean);
     if (!ok(s)) return s;
     if (sum != nullptr) add_path_stats(sum, stats);
     if (count == 0) continue;  // every stroke cleaned away: no layer in the files

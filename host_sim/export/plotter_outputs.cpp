@@ -31,7 +31,7 @@ Status plan_job_path(const JobSpec& spec, const std::vector<Edge3>& edges, Plann
                         &job, &out->counters};
     s = run_sized(stage, memory.memory(), &needs, &rounds);
   } else {
-    EdgeJobStage stage{&spec, edges.data(), n, &job, &out->counters, &out->bytes};
+    EdgeJobStage stage{&spec, Edges{edges.data(), n}, &job, &out->counters, &out->bytes};
     s = run_sized(stage, memory.memory(), &needs, &rounds);
   }
   out->retries = rounds - 1;

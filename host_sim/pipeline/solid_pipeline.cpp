@@ -34,7 +34,7 @@ Status collect_piece(void* context, const HiddenPiece& p) {
   return Status::kOk;
 }
 
-Status collect_outline(void* context, const HiddenPiece& p) {
+Status collect_outline(void* context, const OutlinePiece& p) {
   Collect* c = static_cast<Collect*>(context);
   c->keep(p);
   c->run->outline.push_back(OutlineSegment{p.edge, p.t0, p.t1});

@@ -186,6 +186,13 @@ Status simulate_solid(const JobSpec& spec, const SolidInput& in, bool closed, st
   return s;
 }
 
+namespace {
+SolidStreamFlags solid_flags(const BandPlan& plan) {
+  return (plan.closed ? SolidStreamFlags::kClosed : SolidStreamFlags::kNone) |
+         (plan.turned ? SolidStreamFlags::kTurned : SolidStreamFlags::kNone);
+}
+}  // namespace
+
 Status simulate_streamed(const JobSpec& spec, BandStream stream, int32_t margin, size_t arena_bytes,
                          std::ostream* trace, SimReport* r, const BandPlan* solid) {
   *r = SimReport{};
@@ -195,11 +202,10 @@ Status simulate_streamed(const JobSpec& spec, BandStream stream, int32_t margin,
   if (edge_drawing(spec) == (solid != nullptr)) return Status::kBadParameter;
   std::vector<uint64_t> buffer(arena_bytes / 8);
   BandConductor conductor;
-  s = solid != nullptr
-          ? conductor.begin_streamed_solid(band_spec(spec), solid->closed, solid->turned, stream,
-                                           buffer.data(), buffer.size() * 8)
-          : conductor.begin_streamed(band_spec(spec), margin, stream, buffer.data(),
-                                     buffer.size() * 8);
+  s = solid != nullptr ? conductor.begin_streamed_solid(band_spec(spec), solid_flags(*solid),
+                                                        stream, buffer.data(), buffer.size() * 8)
+                       : conductor.begin_streamed(band_spec(spec), margin, stream, buffer.data(),
+                                                  buffer.size() * 8);
   return ok(s) ? run_motion(spec, &conductor, trace, r) : s;
 }
 

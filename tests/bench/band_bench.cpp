@@ -77,14 +77,14 @@ Whole whole(const std::vector<Edge3>& edges, const DrawParams& draw) {
   // Twice: the second run sized by the records the first found, so the bytes are the need.
   for (int attempt = 0; attempt < 2; ++attempt) {
     JobBytes b;
-    w.status = job_bytes(spec, edges.data(), n, capacity, &b);
+    w.status = job_bytes(spec, Edges{edges.data(), n}, capacity, &b);
     if (!ok(w.status)) return w;
     std::vector<uint64_t> buffer(b.total() / 8 + 1);
     PreparedJob job;
     JobCounters c;
     const double t0 = bench::now_ms();
-    w.status =
-        job_prepare(spec, edges.data(), n, capacity, buffer.data(), buffer.size() * 8, &job, &c);
+    w.status = job_prepare(spec, Edges{edges.data(), n}, capacity, buffer.data(), buffer.size() * 8,
+                           &job, &c);
     w.ms = bench::now_ms() - t0;
     w.bytes = b.total();
     w.pen_up = c.path.pen_up_length;

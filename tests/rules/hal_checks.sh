@@ -55,7 +55,7 @@ board_fns=(
   'static void step_high(uint8_t) {}' 'static void steps_low() {}'
   'static void set_dir(uint8_t, bool) {}' 'static void enable_drivers(bool) {}'
   'static void pen_init() {}' 'static void pen_set(bool) {}'
-  'static int timer_init(uint32_t, uint32_t) { return 0; }' 'static void timer_start(uint32_t) {}'
+  'static int timer_init(haloplot::TickRate, haloplot::TimeScale) { return 0; }' 'static void timer_start(uint32_t) {}'
   'static void timer_next(uint32_t) {}' 'static void timer_stop() {}'
   'static bool timer_chunk_pending() { return false; }'
   'static void serial_init(uint32_t) {}' 'static bool serial_read(uint8_t*) { return false; }'

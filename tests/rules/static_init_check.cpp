@@ -25,7 +25,7 @@ struct Board {
   static void enable_drivers(bool) {}
   static void pen_init() {}
   static void pen_set(bool) {}
-  static Status timer_init(uint32_t, uint32_t) { return Status::kOk; }
+  static Status timer_init(TickRate, TimeScale) { return Status::kOk; }
   static void timer_start(uint32_t) {}
   static void timer_next(uint32_t) {}
   static void timer_stop() {}

@@ -153,18 +153,19 @@ inline void check_edge_job(Checker& c, const EdgeScene& sc, const JobSpec& spec,
   PreparedJob job;
   uint32_t capacity = 0;
   if (spec.drawing == DrawingEffect::kHaloed) {
-    if (!ok(job_crossings(spec, sc.edges, sc.n, pool, kPoolBytes, &capacity))) capacity = 0;
+    if (!ok(job_crossings(spec, Edges{sc.edges, sc.n}, pool, kPoolBytes, &capacity))) capacity = 0;
     const uint64_t used = smallest_fit(4 * (uint64_t{capacity} + 16), [&](uint64_t k) {
-      return ok(
-          job_prepare(spec, sc.edges, sc.n, uint32_t(k - 1), pool, kPoolBytes, &job, nullptr));
+      return ok(job_prepare(spec, Edges{sc.edges, sc.n}, uint32_t(k - 1), pool, kPoolBytes, &job,
+                            nullptr));
     });
     // Capacities start at 0: both sides one more, so a scene without crossings is judged too.
     c.judge("job_crossings", sc.name, uint64_t{capacity} + 1, used);
   }
   JobBytes b;
-  if (!ok(job_bytes(spec, sc.edges, sc.n, capacity, &b))) b.peak = 0;
+  if (!ok(job_bytes(spec, Edges{sc.edges, sc.n}, capacity, &b))) b.peak = 0;
   const uint64_t used = smallest_fit(kPoolBytes, [&](uint64_t bytes) {
-    return ok(job_prepare(spec, sc.edges, sc.n, capacity, pool, size_t(bytes), &job, nullptr));
+    return ok(
+        job_prepare(spec, Edges{sc.edges, sc.n}, capacity, pool, size_t(bytes), &job, nullptr));
   });
   c.judge(bytes_query, sc.name, b.total(), used);
 }
@@ -222,15 +223,15 @@ inline void check_cut_draw_path(Checker& c, const EdgeScene& sc) {
   const uint64_t path_used = smallest_fit(kPoolBytes, [&](uint64_t bytes) {
     for (uint32_t i = 0; i < n_spans; ++i) work[i] = spans[i];
     uint32_t count = 0;
-    return ok(plan_path(work, n_spans, 0, 0, pool, size_t(bytes), points, kMaxEdges * 16, &count,
-                        nullptr, PathEnd{}));
+    return ok(plan_path(work, n_spans, PenAt{0, 0}, pool, size_t(bytes), points, kMaxEdges * 16,
+                        &count, nullptr, PathEnd{}));
   });
   c.judge("path_plan_bytes", sc.name, path_plan_bytes(n_spans), path_used);
 
   // The planner's look-ahead workspace for the path's points, acceleration on.
   uint32_t n_points = 0;
   for (uint32_t i = 0; i < n_spans; ++i) work[i] = spans[i];
-  if (!ok(plan_path(work, n_spans, 0, 0, pool, kPoolBytes, points, kMaxEdges * 16, &n_points,
+  if (!ok(plan_path(work, n_spans, PenAt{0, 0}, pool, kPoolBytes, points, kMaxEdges * 16, &n_points,
                     nullptr, PathEnd{})))
     return c.judge("MotionPlanner::workspace_bytes", sc.name, 0, 0);
   PlotterEffects fx;

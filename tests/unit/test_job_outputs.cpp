@@ -34,7 +34,7 @@ JobSpec haloed() {
 
 Status prepare(PreparedJob* job, uint32_t capacity, uint8_t* at, size_t bytes,
                const JobSpec& spec) {
-  return job_prepare(spec, edges, kEdges, capacity, at, bytes, job, nullptr);
+  return job_prepare(spec, Edges{edges, kEdges}, capacity, at, bytes, job, nullptr);
 }
 
 void edge_jobs() {
@@ -73,13 +73,14 @@ void redraw() {
   JobSpec wider = haloed();
   wider.draw.halo = 40;
   const size_t just_the_cutset = 256;  // DRAW's scratch and the path cannot fit
-  Status s = job_redraw(wider, kEdges, kCrossingCapacity, buffer(), just_the_cutset, &job, nullptr);
+  Status s = job_redraw(wider, Edges{edges, kEdges}, kCrossingCapacity, buffer(), just_the_cutset,
+                        &job, nullptr);
   CHECK_MSG(s == Status::kWorkspaceTooSmall, std::string("job_redraw: ") + status_name(s));
   CHECK_MSG(job.points == nullptr && job.n_points == 0 && job.spans == nullptr && job.n_spans == 0,
             "job_redraw failed: the previous drawing is left");
   CHECK_MSG(job.cutset.edges == cutset.edges && job.cutset.n_crossings == cutset.n_crossings,
             "job_redraw failed: the CUTSET it reads is gone");
-  s = job_redraw(wider, kEdges, kCrossingCapacity, buffer(), kBytes, &job, nullptr);
+  s = job_redraw(wider, Edges{edges, kEdges}, kCrossingCapacity, buffer(), kBytes, &job, nullptr);
   CHECK_MSG(ok(s) && job.n_points > 0, "job_redraw after a failed one");
 }
 

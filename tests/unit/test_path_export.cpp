@@ -32,7 +32,7 @@ static std::vector<PathPoint> plan(const std::vector<Segment2>& spans, PathStats
   std::vector<PathPoint> out(path_points_max(uint32_t(spans.size())));
   uint32_t n = 0;
   std::vector<Segment2> cleaned = spans;  // the clean-up works in place
-  CHECK(ok(plan_path(cleaned.data(), uint32_t(spans.size()), 0, 0, ws.data(), ws.size() * 8,
+  CHECK(ok(plan_path(cleaned.data(), uint32_t(spans.size()), PenAt{0, 0}, ws.data(), ws.size() * 8,
                      out.data(), uint32_t(out.size()), &n, st, end, clean)));
   out.resize(n);
   return out;
@@ -245,8 +245,8 @@ static void clean_cases() {
     std::vector<uint64_t> ws(path_plan_bytes(2) / 8 - 1);
     std::vector<PathPoint> out(path_points_max(2));
     uint32_t n = 0;
-    CHECK(plan_path(s.data(), 2, 0, 0, ws.data(), ws.size() * 8, out.data(), 4, &n, nullptr) ==
-          Status::kWorkspaceTooSmall);
+    CHECK(plan_path(s.data(), 2, PenAt{0, 0}, ws.data(), ws.size() * 8, out.data(), 4, &n,
+                    nullptr) == Status::kWorkspaceTooSmall);
   }
   {  // A layer of dots plans to nothing; the next starts from the start.
     std::vector<Segment2> s = {{3, 3, 3, 3}, {7, 7, 7, 7}, {10, 0, 20, 0}};

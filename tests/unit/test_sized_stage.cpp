@@ -144,7 +144,8 @@ void job_stage_in_a_fixed_arena() {
   for (int pass = 0; pass < 2; ++pass) {
     PreparedJob job;
     JobCounters counters;
-    EdgeJobStage stage{&spec, edges.data(), uint32_t(edges.size()), &job, &counters, nullptr};
+    EdgeJobStage stage{&spec, Edges{edges.data(), uint32_t(edges.size())}, &job, &counters,
+                       nullptr};
     FixedMemory fixed{arena.data(), arena.size() * 8};
     StageNeeds needs;
     needs.crossings = guess;

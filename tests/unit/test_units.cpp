@@ -44,8 +44,8 @@ Plot plot(const JobSpec& spec, const std::vector<Edge3>& edges) {
   PreparedJob job;
   JobCounters c;
   const uint32_t capacity = uint32_t(edges.size()) * 4 + 64;
-  out.status = job_prepare(spec, edges.data(), uint32_t(edges.size()), capacity, buffer.data(),
-                           buffer.size() * 8, &job, &c);
+  out.status = job_prepare(spec, Edges{edges.data(), uint32_t(edges.size())}, capacity,
+                           buffer.data(), buffer.size() * 8, &job, &c);
   if (!ok(out.status)) return out;
   out.spans.assign(job.spans, job.spans + job.n_spans);
   out.points.assign(job.points, job.points + job.n_points);

@@ -212,13 +212,14 @@ int main() {
   spec.draw = DrawParams{20, HaloMode::kPaper};
   spec.cut.compact_cells = false;
   measure("job_prepare", [&] {
-    return drawn(
-        job_prepare(spec, edges, kEdges, kCrossingCapacity, arena, sizeof arena, &job, nullptr));
+    return drawn(job_prepare(spec, Edges{edges, kEdges}, kCrossingCapacity, arena, sizeof arena,
+                             &job, nullptr));
   });
   JobSpec wider = spec;
   wider.draw.halo = 40;
   measure("job_redraw", [&] {
-    return drawn(job_redraw(wider, kEdges, kCrossingCapacity, arena, sizeof arena, &job, nullptr));
+    return drawn(job_redraw(wider, Edges{edges, kEdges}, kCrossingCapacity, arena, sizeof arena,
+                            &job, nullptr));
   });
   JobSpec hidden = spec;
   hidden.drawing = DrawingEffect::kHiddenRemoved;
@@ -272,7 +273,8 @@ int main() {
     return 1;
   conductor.set_observer(PieceObserver{});
   measure("BandConductor::begin_streamed_solid", [&] {
-    return conductor.begin_streamed_solid(solid_rows, true, false, band_stream(), arena, 24 * 1024);
+    return conductor.begin_streamed_solid(solid_rows, SolidStreamFlags::kClosed, band_stream(),
+                                          arena, 24 * 1024);
   });
   measure("BandConductor::next (streamed solid)", [&] { return drain(&conductor); });
   return failures == 0 ? 0 : 1;

@@ -25,7 +25,7 @@ struct Board {
   static void enable_drivers(bool on) { reg(on ? 0x40000010 : 0x40000014) = 16; }
   static void pen_init() {}
   static void pen_set(bool down) { reg(down ? 0x40000010 : 0x40000014) = 32; }
-  static Status timer_init(uint32_t, uint32_t) { return Status::kOk; }
+  static Status timer_init(TickRate, TimeScale) { return Status::kOk; }
   static void timer_start(uint32_t d) { reg(0x40001000) = d; }
   static void timer_next(uint32_t d) { reg(0x40001000) = d; }
   static void timer_stop() { reg(0x40001004) = 0; }
@@ -66,7 +66,8 @@ int main() {
   job.drawing = DrawingEffect::kAllEdges;
   PreparedJob prepared;
   JobCounters counters;
-  if (!ok(job_prepare(job, edges, 48, 0, arena, sizeof arena, &prepared, &counters))) return -1;
+  if (!ok(job_prepare(job, Edges{edges, 48}, 0, arena, sizeof arena, &prepared, &counters)))
+    return -1;
   if (!ok(motion.begin(job, prepared))) return -1;
   while (motion.running()) {  // no vector table here: the timer's pending flag is polled
     motion.service();

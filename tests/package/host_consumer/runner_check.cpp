@@ -54,7 +54,7 @@ struct FakeBoard {
     pen_down = down;
     events->push_back(Event{*now, 9, down});
   }
-  static Status timer_init(uint32_t, uint32_t) { return Status::kOk; }
+  static Status timer_init(TickRate, TimeScale) { return Status::kOk; }
   static void timer_start(uint32_t d) { armed = true, left = d; }
   static void timer_next(uint32_t d) { left = d; }
   static void timer_stop() { armed = false; }
@@ -110,7 +110,8 @@ int check_motion_runner() {
   std::vector<uint64_t> buffer(1 << 14);
   PreparedJob job;
   JobCounters counters;
-  if (!ok(job_prepare(spec, scene, 3, 64, buffer.data(), buffer.size() * 8, &job, &counters)))
+  if (!ok(job_prepare(spec, Edges{scene, 3}, 64, buffer.data(), buffer.size() * 8, &job,
+                      &counters)))
     return 1;
 
   std::vector<Event> want;

@@ -154,6 +154,16 @@ struct BandStats {
   uint64_t cut_ticks = 0, draw_ticks = 0, other_ticks = 0, wasted_ticks = 0, margin_ticks = 0;
 };
 
+// What the host's dry run knew of a streamed solid that no band can tell: flags rather than two
+// bools, so the two cannot trade places in a call.
+enum class SolidStreamFlags : uint8_t { kNone = 0, kClosed = 1, kTurned = 2 };
+constexpr SolidStreamFlags operator|(SolidStreamFlags a, SolidStreamFlags b) {
+  return SolidStreamFlags(uint8_t(a) | uint8_t(b));
+}
+constexpr bool has(SolidStreamFlags set, SolidStreamFlags flag) {
+  return (uint8_t(set) & uint8_t(flag)) != 0;
+}
+
 class BandConductor {
  public:
   constexpr BandConductor() : no_spec_(0) {}  // see spec_
@@ -166,10 +176,10 @@ class BandConductor {
   // point inside the rows is a crossing with an edge, or a vertex, meeting those rows.
   Status begin_solid(const BandSpec& spec, SolidSource source, void* arena, size_t arena_bytes);
   // The same solid plot from streamed bands (StreamedBand::solid), as the host's dry run with
-  // this arena cut them; `closed` is the whole model's check, which no band can make.
-  // `turned`: the host's plan turned the page (BandStats::turned; its bands' rows are then the
-  // turned frame's, its vertices the page's).
-  Status begin_streamed_solid(const BandSpec& spec, bool closed, bool turned, BandStream stream,
+  // this arena cut them; SolidStreamFlags::kClosed is the whole model's check, which no band
+  // can make; kTurned: the host's plan turned the page (BandStats::turned; its bands' rows are
+  // then the turned frame's, its vertices the page's).
+  Status begin_streamed_solid(const BandSpec& spec, SolidStreamFlags flags, BandStream stream,
                               void* arena, size_t arena_bytes);
   // Checks the scene (one read) and the settings; nothing is cut yet. Every begin takes an
   // arena that starts on a kBufferAlignment (8) boundary, or returns kMisalignedBuffer.

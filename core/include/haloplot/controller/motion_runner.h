@@ -147,7 +147,8 @@ MotionPort MotionRunner<Board, Hal, Queue>::port() {
 template <typename Board, typename Hal, typename Queue>
 Status MotionRunner<Board, Hal, Queue>::begin(const JobSpec& spec, const PreparedJob& job) {
   if (active_) return Status::kBusy;
-  Status s = Board::timer_init(spec.machine.tick_hz, time_scale_ == 0 ? 1 : time_scale_);
+  Status s = Board::timer_init(TickRate{spec.machine.tick_hz},
+                               TimeScale{time_scale_ == 0 ? 1 : time_scale_});
   if (ok(s)) s = init_planner(&planner_, spec, job, planner_ws_, sizeof planner_ws_);
   if (ok(s)) s = prep_.init(spec.machine, spec.effects);
   if (!ok(s)) return s;

@@ -15,6 +15,7 @@
 // roots square a cross product; they use geometry/wide.h, written with 32-bit limbs so the
 // same code runs on a Cortex-M4, which has no __int128.
 #pragma once
+#include <stddef.h>
 #include <stdint.h>
 
 namespace haloplot {
@@ -43,6 +44,21 @@ struct Point3 {
 
 struct Edge3 {
   Point3 a, b;
+};
+
+// A run of edges with its count: the count travels with its pointer, so an entry that also
+// takes a capacity cannot have the two swapped (both would be uint32_t). From an array the
+// count is the array's own.
+struct Edges {
+  const Edge3* data = nullptr;
+  uint32_t count = 0;
+
+  constexpr Edges() = default;
+  constexpr Edges(const Edge3* edges, uint32_t n) : data(edges), count(n) {}
+  template <size_t N>
+  constexpr Edges(const Edge3 (&edges)[N]) : data(edges), count(uint32_t(N)) {  // NOLINT
+    static_assert(N <= 0xffffffffu, "an edge count is 32 bits");
+  }
 };
 
 inline bool in_range(int32_t v) { return v >= 0 && v <= kCoordMax; }

@@ -111,21 +111,20 @@ BandSpec band_spec(const JobSpec& spec);
 // Bytes the job needs for these edges when CUT may store up to `crossing_capacity` records.
 // CUT's plan is computed here (O(N)); kCrossingCapacity from job_prepare() says how many
 // records a retry needs.
-Status job_bytes(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
-                 JobBytes* bytes);
+Status job_bytes(const JobSpec& spec, Edges edges, uint32_t crossing_capacity, JobBytes* bytes);
 
 // The crossing capacity job_prepare() needs for these edges, exactly: a counting pass of CUT
 // (it stores no record) in `buffer`, which takes what job_bytes() says for a capacity of 0.
 // An edge job without CUT (kAllEdges) needs none: 0, and the buffer is not touched (a
 // misaligned one is still kMisalignedBuffer, as for every entry).
-Status job_crossings(const JobSpec& spec, const Edge3* edges, uint32_t n, void* buffer,
-                     size_t buffer_bytes, uint32_t* capacity);
+Status job_crossings(const JobSpec& spec, Edges edges, void* buffer, size_t buffer_bytes,
+                     uint32_t* capacity);
 
 // Every job_prepare* call empties *out first: a call that fails leaves an empty PreparedJob
 // (no points, no spans, no CUTSET), never the previous call's. job_redraw keeps the CUTSET it
 // reads and empties the rest.
-Status job_prepare(const JobSpec& spec, const Edge3* edges, uint32_t n, uint32_t crossing_capacity,
-                   void* buffer, size_t buffer_bytes, PreparedJob* out, JobCounters* counters);
+Status job_prepare(const JobSpec& spec, Edges edges, uint32_t crossing_capacity, void* buffer,
+                   size_t buffer_bytes, PreparedJob* out, JobCounters* counters);
 
 // A hidden-line drawing of a solid (spec.drawing kHiddenRemoved or kHiddenDashed): the
 // hidden-line run (solid/hidden_lines.h) in the buffer, its strokes (solid/modes.h) gathered
@@ -146,8 +145,10 @@ Status job_solid_bytes(const JobSpec& spec, const SolidInput& in, void* buffer, 
 
 // Re-plot with another halo width (spec.draw): DRAW and the path run again from the CUTSET
 // that job_prepare() left at the start of the same buffer; CUT does not run (the paper's
-// point: a new halo width costs only DRAW). `job` is updated in place.
-Status job_redraw(const JobSpec& spec, uint32_t n, uint32_t crossing_capacity, void* buffer,
+// point: a new halo width costs only DRAW). `job` is updated in place. `edges` are the ones
+// job_prepare() was given (their count places the CUTSET's end): another count is
+// kBadParameter.
+Status job_redraw(const JobSpec& spec, Edges edges, uint32_t crossing_capacity, void* buffer,
                   size_t buffer_bytes, PreparedJob* job, JobCounters* counters);
 
 // The planner for a prepared job: its points, then the band feed of a streamed plot, then the
@@ -226,8 +227,7 @@ struct CurveJobStage {
 // capacity. cut_runs and draw_runs add up over every run.
 struct EdgeJobStage {
   const JobSpec* spec;
-  const Edge3* edges;
-  uint32_t n;
+  Edges edges;
   PreparedJob* out;
   JobCounters* counters;
   JobBytes* sized;  // may be null: the last query's bytes per stage

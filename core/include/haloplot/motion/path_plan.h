@@ -23,6 +23,12 @@ struct Segment2 {
   int32_t x0, y0, x1, y1;
 };
 
+// Where the pen stands, in plot steps: one value, so a plan's start is not two int32_t side
+// by side that could be swapped.
+struct PenAt {
+  int32_t x, y;
+};
+
 struct PathPoint {
   int32_t x, y;
   uint8_t pen_down;  // 1: draw from the previous point to here; 0: travel here pen up
@@ -68,13 +74,13 @@ struct PathEnd {
   int32_t x = 0, y = 0;
 };
 
-// Plan from pen position (start_x, start_y). `out` must hold path_points_max(n) points. With
+// Plan from pen position `start`. `out` must hold path_points_max(n) points. With
 // clean.on the spans are cleaned in place first (motion/stroke_clean.h: merged spans and dots
 // left as dots, none moved); with it off they are planned as given, a dot as a dot.
 // `workspace` starts on a kBufferAlignment (8) boundary, or the plan returns kMisalignedBuffer.
-Status plan_path(Segment2* spans, uint32_t n, int32_t start_x, int32_t start_y, void* workspace,
-                 size_t workspace_bytes, PathPoint* out, uint32_t out_capacity, uint32_t* out_count,
-                 PathStats* stats, PathEnd end = PathEnd{}, PathClean clean = PathClean{});
+Status plan_path(Segment2* spans, uint32_t n, PenAt start, void* workspace, size_t workspace_bytes,
+                 PathPoint* out, uint32_t out_capacity, uint32_t* out_count, PathStats* stats,
+                 PathEnd end = PathEnd{}, PathClean clean = PathClean{});
 
 // Line kinds drawn one after another, a pen each (the plot SVG's layers): visible edges,
 // hidden dashes, intersection lines, hatching, outlines. A count per layer, in that order.

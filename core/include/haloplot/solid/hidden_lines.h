@@ -99,6 +99,10 @@ struct HiddenPiece : EdgePiece {
   bool hatch = false;
 };
 
+// An outline run handed to HiddenSink::outline: its own type, so a piece callback and an
+// outline callback cannot trade places in a HiddenSink.
+struct OutlinePiece : HiddenPiece {};
+
 struct HiddenSink {
   // Called once, before the first piece: [tail, tail + tail_bytes) of the buffer is free
   // until hidden_lines() returns. `edges` are every edge of the run as projected (the drawn
@@ -106,7 +110,7 @@ struct HiddenSink {
   // until the buffer is used again, so a caller keeps no copy of its own. May be null.
   void (*begin)(void* context, uint8_t* tail, size_t tail_bytes, const Edge3* edges);
   Status (*piece)(void* context, const HiddenPiece& piece);
-  Status (*outline)(void* context, const HiddenPiece& segment);  // may be null
+  Status (*outline)(void* context, const OutlinePiece& segment);  // may be null
   void* context;
 };
 

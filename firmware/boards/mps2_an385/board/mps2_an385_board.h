@@ -9,6 +9,7 @@
 #include "drivers/step_timer.h"
 #include "drivers/uart.h"
 #include "drivers/watchdog.h"
+#include "haloplot/hal/step_clock.h"  // TickRate, TimeScale
 
 namespace haloplot::fw {
 
@@ -23,8 +24,8 @@ struct Mps2An385Board {
   static void pen_init() { pen_solenoid(false); }
   static void pen_set(bool down) { pen_solenoid(down); }
   // The step clock on the APB timer 0.
-  static Status timer_init(uint32_t tick_hz, uint32_t scale) {
-    return step_timer_init(tick_hz, scale);
+  static Status timer_init(TickRate tick, TimeScale scale) {
+    return step_timer_init(tick.hz, scale.factor);
   }
   static void timer_start(uint32_t first_delay) { step_timer_start(first_delay); }
   static void timer_next(uint32_t delay) { step_timer_next(delay); }

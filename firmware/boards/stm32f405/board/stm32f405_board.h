@@ -11,6 +11,7 @@
 #include "drivers/step_timer.h"
 #include "drivers/usart.h"
 #include "drivers/watchdog.h"
+#include "haloplot/hal/step_clock.h"  // TickRate, TimeScale
 
 namespace haloplot::fw {
 
@@ -25,8 +26,8 @@ struct Stm32f405Board {
   static void pen_init() { servo_init(); }
   static void pen_set(bool down) { servo_pen(down); }
   // The step clock on SysTick.
-  static Status timer_init(uint32_t tick_hz, uint32_t scale) {
-    return step_timer_init(tick_hz, scale);
+  static Status timer_init(TickRate tick, TimeScale scale) {
+    return step_timer_init(tick.hz, scale.factor);
   }
   static void timer_start(uint32_t first_delay) { step_timer_start(first_delay); }
   static void timer_next(uint32_t delay) { step_timer_next(delay); }
