@@ -84,8 +84,9 @@ Status BandConductor::commit_band(Attempt& a) {
     frame_point(a.turned, e, int64_t{sp.t1_minus_1} + 1, &g.x1, &g.y1);
     if (observer_.piece != nullptr) {  // in the page's frame, a turned plot's turned back
       const Edge3 page_line = line && turned_ ? unturn_edge(e) : e;
-      observer_.piece(observer_.ctx, BandPiece{line ? kNoFace : a.g.id(sp.local), sp.t0,
-                                               int64_t{sp.t1_minus_1} + 1, page_segment(g),
+      observer_.piece(observer_.ctx, BandPiece{{line ? kNoFace : a.g.id(sp.local), sp.t0,
+                                                int64_t{sp.t1_minus_1} + 1},
+                                               page_segment(g),
                                                line ? &page_line : nullptr});
     }
     u[i] = g;

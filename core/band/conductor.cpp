@@ -247,7 +247,7 @@ Status BandConductor::draw_band(Attempt& a) {
     s = draw(a.cs, spec_.draw, p, scratch, SpanSink{&Attempt::on_span, &a}, nullptr);
   } else {
     for (uint32_t k = 0; k < a.g.n && ok(s); ++k)
-      s = Attempt::on_span(&a, Span{k, 0, kFracOne, 0, 0, 0, 0});
+      s = Attempt::on_span(&a, Span{{k, 0, kFracOne}, 0, 0, 0, 0});
   }
   stats_.draw_ticks += now() - t0;
   if (s == Status::kSinkFull)

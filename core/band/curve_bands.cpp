@@ -44,7 +44,7 @@ struct OwnedChords {
         Segment2 steps = g;
         round_to_steps(&steps, 1, self->substep_bits);
         self->observer->piece(self->observer->ctx,
-                              BandPiece{self->band->ids[s.edge], s.t0, s.t1, steps});
+                              BandPiece{{self->band->ids[s.edge], s.t0, s.t1}, steps});
       }
     }
     ++self->count;

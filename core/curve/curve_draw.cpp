@@ -895,7 +895,7 @@ Status emit_visible(const Ctl& c, uint32_t k, uint64_t t0, uint64_t t1, uint64_t
   if (n == 0) n = 1;
   int64_t x, y;
   point_at(c, t0, &x, &y);
-  Span span{k, static_cast<int64_t>(t0), 0, round_unit(x), round_unit(y), 0, 0};
+  Span span{{k, static_cast<int64_t>(t0), 0}, round_unit(x), round_unit(y), 0, 0};
   for (uint64_t j = 1; j <= n; ++j) {
     const uint64_t t = t0 + w * j / n;
     point_at(c, t, &x, &y);

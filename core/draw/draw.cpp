@@ -21,7 +21,7 @@ namespace {
 
 Status emit(const SpanSink& sink, const Edge3& edge, uint32_t e, int64_t t0, int64_t t1,
             DrawStats& st) {
-  Span s{e, t0, t1, 0, 0, 0, 0};
+  Span s{{e, t0, t1}, 0, 0, 0, 0};
   span_point(edge, t0, &s.x0, &s.y0);
   span_point(edge, t1, &s.x1, &s.y1);
   ++st.spans;

@@ -126,7 +126,7 @@ struct OutlineRuns {
   Status finish() {
     Status s = Status::kOk;
     if (have && sink.outline != nullptr)
-      s = sink.outline(sink.context, FallbackPiece{e, run_t0, run_t1, 0, false, true});
+      s = sink.outline(sink.context, FallbackPiece{{e, run_t0, run_t1}, 0, false, true});
     have = false;
     return s;
   }
@@ -265,7 +265,7 @@ struct FallbackRun {
   Point3 a{}, b{};
   int64_t lo = 0, hi = kOne;
   bool by_class = false, vc_edge = false;
-  FallbackPiece pending{0, 0, 0, 0, false, true};
+  FallbackPiece pending{{0, 0, 0}, 0, false, true};
   bool have = false;
   Status status = Status::kOk;
   int32_t last_q = 0;
@@ -336,7 +336,7 @@ struct FallbackRun {
       return;
     }
     if (have) flush();
-    pending = FallbackPiece{e, t0, t1, v.q, v.hidden, v.tested};
+    pending = FallbackPiece{{e, t0, t1}, v.q, v.hidden, v.tested};
     have = true;
   }
 
@@ -390,7 +390,7 @@ struct FallbackRun {
     }
     by_class = params.use_classes && (se.cls == EdgeClass::kH1 || se.cls == EdgeClass::kH2);
     vc_edge = params.use_vc && (se.cls == EdgeClass::kH3 || se.cls == EdgeClass::kH4);
-    pending = FallbackPiece{e, 0, 0, 0, false, true};
+    pending = FallbackPiece{{e, 0, 0}, 0, false, true};
     have = false;
     status = Status::kOk;
     if (params.outline) {

@@ -316,7 +316,7 @@ Status emit_edge_qi_pieces(const Topology& topo, const uint8_t* front, const Cut
   const Ctx c{topo, front, cutset, inc, state.two_sided, state.pierces ? &state.grid : nullptr};
   if (degenerate(c, e) || state.q_at_v0[e] == kQiUnknown) return Status::kOk;
   Status status = Status::kOk;
-  QiPiece pending{e, 0, 0, 0};
+  QiPiece pending{{e, 0, 0}, 0};
   bool have = false;
   auto flush = [&]() {
     if (have && status == Status::kOk) status = sink.emit(sink.context, pending);
@@ -329,7 +329,7 @@ Status emit_edge_qi_pieces(const Topology& topo, const uint8_t* front, const Cut
       return;
     }
     flush();
-    pending = QiPiece{e, t0, t1, q};
+    pending = QiPiece{{e, t0, t1}, q};
     have = true;
   });
   flush();

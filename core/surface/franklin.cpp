@@ -476,7 +476,7 @@ struct EdgePieces {
   Edge3 ed;
   bool every_piece;
   FranklinSink sink;
-  FranklinPiece pending{e, 0, 0, false, {}, {}};
+  FranklinPiece pending{{e, 0, 0}, false, {}, {}};
   bool have = false;
   bool last_hidden = false;
 
@@ -499,7 +499,7 @@ struct EdgePieces {
     }
     Status r = Status::kOk;
     if (have) r = sink.emit(sink.context, pending);
-    pending = FranklinPiece{e, t0, t1, hidden, from, to};
+    pending = FranklinPiece{{e, t0, t1}, hidden, from, to};
     have = true;
     return r;
   }

@@ -23,7 +23,7 @@ struct Collector {
     Collector& c = *static_cast<Collector*>(context);
     if (!p.hidden) {
       if (c.count < c.capacity)
-        c.segments[c.count] = RegionSegment{p.edge, p.t0, p.t1, p.from, p.to};
+        c.segments[c.count] = RegionSegment{{p.edge, p.t0, p.t1}, p.from, p.to};
       ++c.count;
     }
     if (c.have && c.run.edge == p.edge && c.run.hidden == p.hidden && c.run.t1 == p.t0) {

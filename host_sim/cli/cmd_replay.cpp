@@ -34,9 +34,9 @@ int cmd_replay(int argc, char** argv) {
     const auto pts = simplify(stroke, rep.scale, 1);
     for (size_t i = 1; i < pts.size(); ++i)
       down_length += length_floor(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
-    if (pts.size() == 1) spans.push_back(Span{0, 0, 0, pts[0].x, pts[0].y, pts[0].x, pts[0].y});
+    if (pts.size() == 1) spans.push_back(Span{{0, 0, 0}, pts[0].x, pts[0].y, pts[0].x, pts[0].y});
     for (size_t i = 1; i < pts.size(); ++i)
-      spans.push_back(Span{0, 0, 0, pts[i - 1].x, pts[i - 1].y, pts[i].x, pts[i].y});
+      spans.push_back(Span{{0, 0, 0}, pts[i - 1].x, pts[i - 1].y, pts[i].x, pts[i].y});
   }
   const std::string error = write_atomically(o.get("-o"), [&](std::ostream& out) {
     write_svg(out, spans, SvgStyle{});

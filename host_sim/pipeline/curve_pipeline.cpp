@@ -73,7 +73,7 @@ Status host_banded_curve_draw(const std::vector<BezierEdge3>& curves,
                         uint32_t(segments.size()), arena.data(), arena.size() * 8);
   auto keep = [](void* ctx, const BandPiece& p) {
     static_cast<std::vector<Span>*>(ctx)->push_back(
-        Span{p.edge, p.t0, p.t1, p.segment.x0, p.segment.y0, p.segment.x1, p.segment.y1});
+        Span{{p.edge, p.t0, p.t1}, p.segment.x0, p.segment.y0, p.segment.x1, p.segment.y1});
   };
   plot.set_observer(PieceObserver{keep, &out->chords, nullptr});
   while (ok(s) && !plot.done()) {

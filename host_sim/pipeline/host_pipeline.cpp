@@ -61,12 +61,12 @@ Status host_banded_draw(const std::vector<Edge3>& edges, const CutParams& cut,
   spec.cut = cut;
   std::vector<uint64_t> arena(arena_bytes / 8);
   BandConductor conductor;
-  conductor.set_observer(PieceObserver{[](void* ctx, const BandPiece& p) {
-                                         static_cast<std::vector<Span>*>(ctx)->push_back(
-                                             Span{p.edge, p.t0, p.t1, p.segment.x0, p.segment.y0,
-                                                  p.segment.x1, p.segment.y1});
-                                       },
-                                       &out->spans});
+  conductor.set_observer(PieceObserver{
+      [](void* ctx, const BandPiece& p) {
+        static_cast<std::vector<Span>*>(ctx)->push_back(
+            Span{{p.edge, p.t0, p.t1}, p.segment.x0, p.segment.y0, p.segment.x1, p.segment.y1});
+      },
+      &out->spans});
   const auto t0 = std::chrono::steady_clock::now();
   Status s = conductor.begin(spec, array_edge_source(edges.data(), uint32_t(edges.size())),
                              arena.data(), arena.size() * 8);

@@ -54,7 +54,7 @@ Status collect_stroke(void* context, const HatchStroke& s) {
 Status collect_visible(void* context, const FranklinPiece& p) {
   if (!p.hidden)
     static_cast<std::vector<RegionSegment>*>(context)->push_back(
-        RegionSegment{p.edge, p.t0, p.t1, p.from, p.to});
+        RegionSegment{{p.edge, p.t0, p.t1}, p.from, p.to});
   return Status::kOk;
 }
 

@@ -41,12 +41,12 @@ Banded run_bands(const CurveScene& sc, const CurveBandSpec& spec, size_t arena_b
   CurveBands bands;
   out.status = bands.begin(spec, sc.curves.data(), uint32_t(sc.curves.size()), sc.segments.data(),
                            uint32_t(sc.segments.size()), arena.data(), arena.size() * 8);
-  bands.set_observer(PieceObserver{[](void* ctx, const BandPiece& p) {
-                                     static_cast<std::vector<Span>*>(ctx)->push_back(
-                                         Span{p.edge, p.t0, p.t1, p.segment.x0, p.segment.y0,
-                                              p.segment.x1, p.segment.y1});
-                                   },
-                                   &out.chords, nullptr});
+  bands.set_observer(PieceObserver{
+      [](void* ctx, const BandPiece& p) {
+        static_cast<std::vector<Span>*>(ctx)->push_back(
+            Span{{p.edge, p.t0, p.t1}, p.segment.x0, p.segment.y0, p.segment.x1, p.segment.y1});
+      },
+      &out.chords, nullptr});
   while (ok(out.status) && !bands.done()) {
     const PathPoint* pts = nullptr;
     uint32_t n = 0;

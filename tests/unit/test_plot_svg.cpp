@@ -117,7 +117,7 @@ void layers_against_exports() {
       const int32_t x0 = 500 + 40 * coord(rng), y0 = 700 + 40 * coord(rng);
       const int32_t x1 = x0 + 40 * step(rng), y1 = y0 + 40 * step(rng);
       if (x0 == x1 && y0 == y1) continue;
-      l.spans.push_back(Span{0, 0, 0, x0, y0, x1, y1});
+      l.spans.push_back(Span{{0, 0, 0}, x0, y0, x1, y1});
       ++want[undirected(Pt{x0, y0}, Pt{x1, y1})];
     }
   std::vector<PlannedLayer> planned;
@@ -226,7 +226,7 @@ void layers_cut_from_one_path() {
     for (int i = 0; i < 200; ++i) {
       const int32_t x0 = 100 + 30 * coord(rng), y0 = 100 + 30 * coord(rng);
       const int32_t x1 = x0 + 30 * step(rng), y1 = y0 + 30 * step(rng);
-      if (x0 != x1 || y0 != y1) layers[k].spans.push_back(Span{0, 0, 0, x0, y0, x1, y1});
+      if (x0 != x1 || y0 != y1) layers[k].spans.push_back(Span{{0, 0, 0}, x0, y0, x1, y1});
     }
   std::vector<Segment2> segs;
   LayerCounts counts;

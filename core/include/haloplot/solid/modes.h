@@ -62,7 +62,7 @@ class DashedRuns {
 int64_t paper_length(const Edge3& e);
 
 inline Span make_stroke(const Edge3& e, uint32_t edge, int64_t t0, int64_t t1) {
-  Span s{edge, t0, t1, 0, 0, 0, 0};
+  Span s{{edge, t0, t1}, 0, 0, 0, 0};
   span_point(e, t0, &s.x0, &s.y0);
   span_point(e, t1, &s.x1, &s.y1);
   return s;
