@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "io/cut_file.h"
+#include "pipeline/host_pipeline.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
