@@ -18,33 +18,57 @@ uint32_t cutset_capacity(uint32_t n_edges, size_t bytes) {
 
 namespace {
 
-// What a cell list holds per (cell, edge) pair: the edge's index, or a compact copy of its
-// projected endpoints with the index (CutParams::compact_cells). Both read like an edge.
+// What a cell list holds per (cell, edge) pair: the edge's index, or a copy of the edge
+// beside it (CutParams::compact_cells), so the pair loop never leaves the cell list. Both
+// read like an edge.
 struct IndexEntry {
   uint32_t edge;
   static IndexEntry make(const Edge3&, uint32_t i) { return IndexEntry{i}; }
+  const Edge3& segment(const Edge3* edges) const { return edges[edge]; }
 };
-struct Point2 {
-  int32_t x, y;
-};
-struct CompactEntry {
-  Point2 a, b;
+struct CompactEntry {  // 28 bytes
+  Edge3 copy;
   uint32_t edge;
-  static CompactEntry make(const Edge3& e, uint32_t i) {
-    return CompactEntry{{e.a.x, e.a.y}, {e.b.x, e.b.y}, i};
-  }
+  static CompactEntry make(const Edge3& e, uint32_t i) { return CompactEntry{e, i}; }
+  const Edge3& segment(const Edge3*) const { return copy; }
 };
-inline const Edge3& geometry(const IndexEntry& x, const Edge3* edges) { return edges[x.edge]; }
-inline const CompactEntry& geometry(const CompactEntry& x, const Edge3*) { return x; }
 
 size_t entry_bytes(const CutParams& p) {
   return p.compact_cells ? sizeof(CompactEntry) : sizeof(IndexEntry);
 }
 
-// Scratch layout: cell_start[cells + 1], then the cell lists (cell_pairs entries). After the
-// cell loop the same bytes hold next[n_edges] for grouping, so the scratch is the larger.
-size_t scratch_for(uint32_t cells, uint32_t cell_pairs, uint32_t n_edges, size_t entry) {
-  const size_t grid_part = carve_round((size_t{cells} + 1) * 4) + size_t{cell_pairs} * entry;
+// The most parts a stage splits into, whatever the caller's count: enough for the cores a
+// host has, few enough that the parts' bookkeeping stays small on a stack.
+constexpr uint32_t kMaxParts = 16;
+
+// Fewer parts where each would get less than Parts::min_work (pair tests in the cell loop, 16
+// a record in the sorting).
+uint32_t part_count(const CutParams& p, uint64_t work) {
+  if (p.parts == nullptr) return 1;
+  uint32_t n = p.parts->split();
+  if (n > kMaxParts) n = kMaxParts;
+  const uint64_t worth = p.parts->min_work == 0 ? n : work / p.parts->min_work;
+  if (worth < n) n = worth < 1 ? 1 : uint32_t(worth);
+  return n;
+}
+
+// The parts the cell lists are filled in (each walks its share of the edges twice): a walk
+// costs about as much as a few pair tests per cell it visits.
+uint32_t fill_part_count(const CutParams& p, uint32_t n_edges) {
+  return part_count(p, uint64_t{n_edges} * 8);
+}
+
+// Scratch layout: cell_start[cells + 1], then, when the lists are filled in several parts,
+// each part's cursor into every cell (parts * cells), then the cell lists (cell_pairs
+// entries). After the cell loop the same bytes hold next[n_edges] for grouping, so the
+// scratch is the larger.
+size_t cursor_bytes(uint32_t cells, uint32_t fill_parts) {
+  return fill_parts > 1 ? carve_round(size_t{fill_parts} * cells * 4) : 0;
+}
+size_t scratch_for(uint32_t cells, uint32_t cell_pairs, uint32_t n_edges, size_t entry,
+                   uint32_t fill_parts) {
+  const size_t grid_part = carve_round((size_t{cells} + 1) * 4) + cursor_bytes(cells, fill_parts) +
+                           size_t{cell_pairs} * entry;
   const size_t group_part = size_t{n_edges} * 4;
   return grid_part > group_part ? grid_part : group_part;
 }
@@ -82,13 +106,23 @@ inline bool owns(const CellBox& cb, int32_t ax, int32_t dx, int32_t ay, int32_t 
          (cb.y0 - ay) * den <= py && py < (cb.y0 + cb.side - ay) * den;
 }
 
-// C6.2-C6.5 for one pair inside a cell whose boxes overlap; edge ei < edge ej. The projected
-// test runs on the cell entries; depths and near misses go back to the full edges.
+// floor(num * 2^32 / den) for 0 <= num < den < 2^41: frac_q32_small's value. Where 64-bit
+// division is one instruction (64-bit targets) and den < 2^32 (every crossing of edges
+// shorter than 2^16 steps), a single division gives it: num * 2^32 < den * 2^32 <= 2^64.
+inline uint32_t crossing_position(int64_t num, int64_t den) {
+#if UINTPTR_MAX > 0xffffffffu
+  if (den <= 0xffffffff) return uint32_t((uint64_t(num) << 32) / uint64_t(den));
+#endif
+  return frac_q32_small(num, den);
+}
+
+// C6.2-C6.5 for one pair inside a cell whose boxes overlap (or that crosses, by
+// crossing_mask); edge ei < edge ej. Near misses go back to the full edges.
 template <typename Entry>
 void test_pair(const Grid& g, const CellBox& cb, const Edge3* edges, const Entry& ei,
                const Entry& ej, int32_t reach, Recorder& rec, CutStats& st) {
-  const auto& p = geometry(ei, edges);
-  const auto& q = geometry(ej, edges);
+  const Edge3& p = ei.segment(edges);
+  const Edge3& q = ej.segment(edges);
   const uint32_t ep = ei.edge, eq = ej.edge;
   const CrossingTest x = test_crossing(p, q);
   if (x.crosses) {
@@ -97,13 +131,13 @@ void test_pair(const Grid& g, const CellBox& cb, const Edge3* edges, const Entry
       ++st.rejected;
       return;
     }
-    const int depth = compare_depth_at_crossing(edges[ep], edges[eq], x);  // C6.4
+    const int depth = compare_depth_at_crossing(p, q, x);  // C6.4
     if (depth == 0) {
       ++st.equal_depth;
       return;
     }
     const uint32_t behind = depth < 0 ? ep : eq, front = depth < 0 ? eq : ep;
-    const uint32_t t = frac_q32_small(depth < 0 ? x.tn : x.un, x.den);
+    const uint32_t t = crossing_position(depth < 0 ? x.tn : x.un, x.den);
     if (rec.rows && !position_in_rows(edges[behind], t, rec.row_lo, rec.row_hi)) {
       ++st.outside_rows;
       return;
@@ -125,13 +159,12 @@ void test_pair(const Grid& g, const CellBox& cb, const Edge3* edges, const Entry
 // C3-C5 for one kind of cell entry: a two-pass counting sort. Count edges per cell, turn
 // counts into end offsets, then drop each edge into its cell from the back. Edges are walked
 // in descending order so every cell's list comes out ascending. No comparison sort, no linked
-// lists. Returns the lists; cell_start[c] .. cell_start[c + 1] are cell c's.
+// lists. Fills list; cell_start[c] .. cell_start[c + 1] are cell c's.
 template <typename Entry>
-const Entry* fill_cells(const CutPlan& plan, const Edge3* edges, uint32_t* cell_start) {
+void fill_cells(const CutPlan& plan, const Edge3* edges, uint32_t* cell_start, Entry* list) {
   const uint32_t n = plan.n_edges;
   const Grid& g = plan.grid;
   const uint32_t cells = g.cells();
-  Entry* list = reinterpret_cast<Entry*>(cell_start + ((size_t{cells} + 1 + 1) & ~size_t{1}));
   for (uint32_t c = 0; c <= cells; ++c) cell_start[c] = 0;
   for (uint32_t i = 0; i < n; ++i)
     for_each_cell(g, edges[i], plan.params.cover, plan.params.reach,
@@ -146,7 +179,91 @@ const Entry* fill_cells(const CutPlan& plan, const Edge3* edges, uint32_t* cell_
   // Each cell_start[c + 1] now holds the start of cell c; shift back into place.
   for (uint32_t c = 0; c < cells; ++c) cell_start[c] = cell_start[c + 1];
   cell_start[cells] = total;
-  return list;
+}
+
+// The same counting sort in parts of the edges, each with its own cursor into every cell:
+// part j counts its edges per cell, one pass over the counts gives each part its place in
+// every cell's list (after the parts before it), and part j drops its edges there in
+// ascending order. Every cell's list comes out as the one-part fill makes it, entry for entry.
+template <typename Entry>
+struct FillParts {
+  const CutPlan* plan;
+  const Edge3* edges;
+  uint32_t* cursor;  // part j's are cursor[j * cells .. (j + 1) * cells)
+  Entry* list;
+  uint32_t n;
+
+  uint32_t first_edge(uint32_t j) const { return uint32_t(uint64_t{plan->n_edges} * j / n); }
+  static void count(void* arg, uint32_t j) {
+    const FillParts* self = static_cast<const FillParts*>(arg);
+    const CutPlan& plan = *self->plan;
+    const uint32_t cells = plan.grid.cells();
+    uint32_t* mine = self->cursor + size_t{j} * cells;
+    for (uint32_t c = 0; c < cells; ++c) mine[c] = 0;
+    for (uint32_t i = self->first_edge(j); i < self->first_edge(j + 1); ++i)
+      for_each_cell(plan.grid, self->edges[i], plan.params.cover, plan.params.reach,
+                    [&](uint32_t c) { ++mine[c]; });
+  }
+  static void fill(void* arg, uint32_t j) {
+    const FillParts* self = static_cast<const FillParts*>(arg);
+    const CutPlan& plan = *self->plan;
+    uint32_t* mine = self->cursor + size_t{j} * plan.grid.cells();
+    for (uint32_t i = self->first_edge(j); i < self->first_edge(j + 1); ++i) {
+      const Entry e = Entry::make(self->edges[i], i);
+      for_each_cell(plan.grid, self->edges[i], plan.params.cover, plan.params.reach,
+                    [&](uint32_t c) { self->list[mine[c]++] = e; });
+    }
+  }
+};
+
+// Out of line, as test_in_parts.
+template <typename Entry>
+__attribute__((noinline)) void fill_in_parts(const CutPlan& plan, const Edge3* edges,
+                                             uint32_t n_parts, uint32_t* cell_start,
+                                             uint32_t* cursor, Entry* list) {
+  const uint32_t cells = plan.grid.cells();
+  FillParts<Entry> fp{&plan, edges, cursor, list, n_parts};
+  run_parts(*plan.params.parts, n_parts, &FillParts<Entry>::count, &fp);
+  uint32_t at = 0;
+  for (uint32_t c = 0; c < cells; ++c) {
+    cell_start[c] = at;
+    for (uint32_t j = 0; j < n_parts; ++j) {
+      uint32_t& k = cursor[size_t{j} * cells + c];
+      const uint32_t count = k;
+      k = at;
+      at += count;
+    }
+  }
+  cell_start[cells] = at;
+  run_parts(*plan.params.parts, n_parts, &FillParts<Entry>::fill, &fp);
+}
+
+// Where a 64-bit multiply is one instruction (64-bit targets), deciding a pair outright is
+// cheaper than the branches that would skip the work: the box test passes about half the
+// pairs sharing a cell, unpredictably, and the side tests after it again. So there the pair
+// loop (C6.2, without near misses) computes all four side values of every pair, branch-free,
+// into a mask of the pairs that properly cross, and only those take the branches after it.
+// Elsewhere (a Cortex-M has no such multiply) the boxes go first.
+constexpr bool kDecideEveryPair = UINTPTR_MAX > 0xffffffffu;
+
+// Bit (j - j0) set for every j in [j0, j1) (at most 64) whose segment properly crosses P:
+// test_crossing()'s strict sign rule, on the side values it computes, relative to P's start.
+template <typename Entry>
+uint64_t crossing_mask(const Entry* list, const Edge3* edges, int64_t pax, int64_t pay, int64_t pdx,
+                       int64_t pdy, uint32_t j0, uint32_t j1) {
+  uint64_t mask = 0;
+  for (uint32_t j = j0; j < j1; ++j) {
+    const Edge3& q = list[j].segment(edges);
+    const int64_t qax = q.a.x - pax, qay = q.a.y - pay, qbx = q.b.x - pax, qby = q.b.y - pay;
+    const int64_t qdx = qbx - qax, qdy = qby - qay;
+    const int64_t s1 = pdx * qay - pdy * qax, s2 = pdx * qby - pdy * qbx;  // Q's ends, P's line
+    const int64_t s3 = qdy * qax - qdx * qay;                  // P's start against Q's line
+    const int64_t s4 = qdx * (pdy - qay) - qdy * (pdx - qax);  // P's end
+    const bool apart12 = ((s1 < 0) & (s2 > 0)) | ((s1 > 0) & (s2 < 0));
+    const bool apart34 = ((s3 < 0) & (s4 > 0)) | ((s3 > 0) & (s4 < 0));
+    mask |= uint64_t(apart12 & apart34) << (j - j0);
+  }
+  return mask;
 }
 
 // C6: every pair inside cells [c_begin, c_end). The part that reports progress maps its own
@@ -165,13 +282,24 @@ void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_st
     st.pairs_tested += k * (k - 1) / 2;
     const CellBox cb{c, g.ox + int64_t{col} * g.cell, g.oy + int64_t{row} * g.cell, g.cell};
     for (uint32_t i = begin; i + 1 < end; ++i) {
+      if (kDecideEveryPair && r == 0) {
+        const Edge3& p = list[i].segment(edges);
+        const int64_t pdx = p.b.x - p.a.x, pdy = p.b.y - p.a.y;
+        for (uint32_t j0 = i + 1; j0 < end; j0 += 64) {
+          const uint32_t j1 = end - j0 > 64 ? j0 + 64 : end;
+          for (uint64_t m = crossing_mask(list, edges, p.a.x, p.a.y, pdx, pdy, j0, j1); m != 0;
+               m &= m - 1)
+            test_pair(g, cb, edges, list[i], list[j0 + uint32_t(__builtin_ctzll(m))], r, rec, st);
+        }
+        continue;
+      }
       // P's box once per row, then Q's box against it: a cheap reject before the exact
       // test, since most pairs sharing a cell do not even overlap.
-      const auto& p = geometry(list[i], edges);
+      const Edge3& p = list[i].segment(edges);
       const int32_t px0 = min_i32(p.a.x, p.b.x) - r, px1 = max_i32(p.a.x, p.b.x) + r;
       const int32_t py0 = min_i32(p.a.y, p.b.y) - r, py1 = max_i32(p.a.y, p.b.y) + r;
       for (uint32_t j = i + 1; j < end; ++j) {
-        const auto& q = geometry(list[j], edges);
+        const Edge3& q = list[j].segment(edges);
         const int32_t qx0 = min_i32(q.a.x, q.b.x), qx1 = max_i32(q.a.x, q.b.x);
         const int32_t qy0 = min_i32(q.a.y, q.b.y), qy1 = max_i32(q.a.y, q.b.y);
         // One branch on all four (not four that each mispredict): most pairs are rejected.
@@ -187,21 +315,6 @@ void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_st
       ++row;
     }
   }
-}
-
-// The most parts a stage splits into, whatever the caller's count: enough for the cores a
-// host has, few enough that the parts' bookkeeping stays small on a stack.
-constexpr uint32_t kMaxParts = 16;
-
-// Fewer parts where each would get less than Parts::min_work (pair tests in the cell loop, 16
-// a record in the sorting).
-uint32_t part_count(const CutParams& p, uint64_t work) {
-  if (p.parts == nullptr) return 1;
-  uint32_t n = p.parts->split();
-  if (n > kMaxParts) n = kMaxParts;
-  const uint64_t worth = p.parts->min_work == 0 ? n : work / p.parts->min_work;
-  if (worth < n) n = worth < 1 ? 1 : uint32_t(worth);
-  return n;
 }
 
 // The cell loop's work: the pairs each cell tests, and the cell itself.
@@ -299,9 +412,16 @@ __attribute__((noinline)) void test_in_parts(const CutPlan& plan, const Edge3* e
 template <typename Entry>
 void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recorder& rec,
                    CutStats& st) {
-  uint32_t* cell_start = static_cast<uint32_t*>(scratch);
-  const Entry* list = fill_cells<Entry>(plan, edges, cell_start);
   const uint32_t cells = plan.grid.cells();
+  const uint32_t fill_parts = fill_part_count(plan.params, plan.n_edges);
+  uint32_t* cell_start = static_cast<uint32_t*>(scratch);
+  uint8_t* after_start = static_cast<uint8_t*>(scratch) + carve_round((size_t{cells} + 1) * 4);
+  Entry* list = reinterpret_cast<Entry*>(after_start + cursor_bytes(cells, fill_parts));
+  if (fill_parts == 1)
+    fill_cells(plan, edges, cell_start, list);
+  else
+    fill_in_parts(plan, edges, fill_parts, cell_start, reinterpret_cast<uint32_t*>(after_start),
+                  list);
   st.cell_pairs = cell_start[cells];  // the exact count (the plan's is an upper bound)
   if (plan.params.phase) plan.params.phase(plan.params.phase_context, CutPhase::kCellsFilled);
   uint64_t work = 0;
@@ -428,7 +548,8 @@ Status plan_cut(const Edge3* edges, uint32_t n, const CutParams& params, CutPlan
   }
   if (pairs > 0xffffffffu) return Status::kCellPairOverflow;
   p.cell_pairs = static_cast<uint32_t>(pairs);
-  p.scratch_bytes = scratch_for(p.grid.cells(), p.cell_pairs, n, entry_bytes(params));
+  p.scratch_bytes =
+      scratch_for(p.grid.cells(), p.cell_pairs, n, entry_bytes(params), fill_part_count(params, n));
   *plan = p;
   return Status::kOk;
 }
