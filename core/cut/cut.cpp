@@ -58,17 +58,26 @@ uint32_t fill_part_count(const CutParams& p, uint32_t n_edges) {
   return part_count(p, uint64_t{n_edges} * 8);
 }
 
-// Scratch layout: cell_start[cells + 1], then, when the lists are filled in several parts,
-// each part's cursor into every cell (parts * cells), then the cell lists (cell_pairs
-// entries). After the cell loop the same bytes hold next[n_edges] for grouping, so the
-// scratch is the larger.
-size_t cursor_bytes(uint32_t cells, uint32_t fill_parts) {
-  return fill_parts > 1 ? carve_round(size_t{fill_parts} * cells * 4) : 0;
+// One cell a walk visited, and for which edge.
+struct Visit {
+  uint32_t cell, edge;
+};
+
+// Scratch layout: cell_start[cells + 1], then the fill's own bytes, then the cell lists
+// (cell_pairs entries). The fill's bytes: each part's cursor into every cell (parts * cells)
+// when the lists are filled in parts; with one part and compact entries, a log of the walk's
+// visits (one per (cell, edge) pair, and a spare), so each edge is walked once rather than twice
+// (not with index entries, where the log would double the scratch). After the cell loop the same
+// bytes hold next[n_edges] for grouping, so the scratch is the larger.
+size_t fill_bytes(const CutParams& p, uint32_t cells, uint32_t cell_pairs, uint32_t fill_parts) {
+  if (fill_parts > 1) return carve_round(size_t{fill_parts} * cells * 4);
+  return p.compact_cells ? (size_t{cell_pairs} + 1) * sizeof(Visit) : 0;  // one spare
 }
-size_t scratch_for(uint32_t cells, uint32_t cell_pairs, uint32_t n_edges, size_t entry,
-                   uint32_t fill_parts) {
-  const size_t grid_part = carve_round((size_t{cells} + 1) * 4) + cursor_bytes(cells, fill_parts) +
-                           size_t{cell_pairs} * entry;
+size_t scratch_for(const CutParams& p, uint32_t cells, uint32_t cell_pairs, uint32_t n_edges) {
+  const uint32_t fill_parts = fill_part_count(p, n_edges);
+  const size_t grid_part = carve_round((size_t{cells} + 1) * 4) +
+                           fill_bytes(p, cells, cell_pairs, fill_parts) +
+                           size_t{cell_pairs} * entry_bytes(p);
   const size_t group_part = size_t{n_edges} * 4;
   return grid_part > group_part ? grid_part : group_part;
 }
@@ -181,6 +190,46 @@ void fill_cells(const CutPlan& plan, const Edge3* edges, uint32_t* cell_start, E
   cell_start[cells] = total;
 }
 
+// The same with one walk: it logs every visit (in edge order) as it counts, and the fill
+// reads the log instead of walking again. cell_start[c + 1] holds cell c's start, then moves
+// on with each entry dropped there to c's end, which is c + 1's start.
+template <typename Entry>
+void fill_cells_logged(const CutPlan& plan, const Edge3* edges, uint32_t* cell_start, Visit* log,
+                       Entry* list) {
+  const uint32_t cells = plan.grid.cells();
+  for (uint32_t c = 0; c <= cells; ++c) cell_start[c] = 0;
+  uint32_t logged = 0;  // at most plan.cell_pairs: the exact cover is inside the boxes
+  for (uint32_t i = 0; i < plan.n_edges; ++i) {
+    CellBlock b;
+    if (cells_in_block(plan.grid, edges[i], plan.params.cover, plan.params.reach, &b)) {
+      // Weighted, so no branch per cell: a cell of weight 0 is written to the log's next slot
+      // (overwritten by the next visit, or the spare slot at its end) and counted 0 times.
+      for (int q = 0; q < 4; ++q) {
+        cell_start[b.cell[q] + 1] += b.weight[q];
+        log[logged] = Visit{b.cell[q], i};
+        logged += b.weight[q];
+      }
+      continue;
+    }
+    for_each_cell(plan.grid, edges[i], plan.params.cover, plan.params.reach, [&](uint32_t c) {
+      ++cell_start[c + 1];
+      log[logged++] = Visit{c, i};
+    });
+  }
+  uint32_t at = 0;
+  for (uint32_t c = 0; c < cells; ++c) {
+    const uint32_t count = cell_start[c + 1];
+    cell_start[c + 1] = at;
+    at += count;
+  }
+  // The writes scatter over every cell's list: ask for each one's line a few visits ahead.
+  constexpr uint32_t kAhead = 16;
+  for (uint32_t v = 0; v < logged; ++v) {
+    if (v + kAhead < logged) __builtin_prefetch(&list[cell_start[log[v + kAhead].cell + 1]], 1);
+    list[cell_start[log[v].cell + 1]++] = Entry::make(edges[log[v].edge], log[v].edge);
+  }
+}
+
 // The same counting sort in parts of the edges, each with its own cursor into every cell:
 // part j counts its edges per cell, one pass over the counts gives each part its place in
 // every cell's list (after the parts before it), and part j drops its edges there in
@@ -255,12 +304,13 @@ uint64_t crossing_mask(const Entry* list, const Edge3* edges, int64_t pax, int64
   for (uint32_t j = j0; j < j1; ++j) {
     const Edge3& q = list[j].segment(edges);
     const int64_t qax = q.a.x - pax, qay = q.a.y - pay, qbx = q.b.x - pax, qby = q.b.y - pay;
-    const int64_t qdx = qbx - qax, qdy = qby - qay;
     const int64_t s1 = pdx * qay - pdy * qax, s2 = pdx * qby - pdy * qbx;  // Q's ends, P's line
-    const int64_t s3 = qdy * qax - qdx * qay;                  // P's start against Q's line
-    const int64_t s4 = qdx * (pdy - qay) - qdy * (pdx - qax);  // P's end
-    const bool apart12 = ((s1 < 0) & (s2 > 0)) | ((s1 > 0) & (s2 < 0));
-    const bool apart34 = ((s3 < 0) & (s4 > 0)) | ((s3 > 0) & (s4 < 0));
+    const int64_t s3 = (qby - qay) * qax - (qbx - qax) * qay;  // P's start against Q's line
+    // P's end: s4 = s3 + cross(dq, dp), and cross(dp, dq) = s2 - s1 (all below 2^43).
+    const int64_t s4 = s3 + s1 - s2;
+    // Strictly apart: signs differ and neither is zero (an end on the other's line).
+    const bool apart12 = ((s1 ^ s2) < 0) & (s1 != 0) & (s2 != 0);
+    const bool apart34 = ((s3 ^ s4) < 0) & (s3 != 0) & (s4 != 0);
     mask |= uint64_t(apart12 & apart34) << (j - j0);
   }
   return mask;
@@ -415,13 +465,15 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
   const uint32_t cells = plan.grid.cells();
   const uint32_t fill_parts = fill_part_count(plan.params, plan.n_edges);
   uint32_t* cell_start = static_cast<uint32_t*>(scratch);
-  uint8_t* after_start = static_cast<uint8_t*>(scratch) + carve_round((size_t{cells} + 1) * 4);
-  Entry* list = reinterpret_cast<Entry*>(after_start + cursor_bytes(cells, fill_parts));
-  if (fill_parts == 1)
-    fill_cells(plan, edges, cell_start, list);
+  uint8_t* fill_at = static_cast<uint8_t*>(scratch) + carve_round((size_t{cells} + 1) * 4);
+  Entry* list = reinterpret_cast<Entry*>(
+      fill_at + fill_bytes(plan.params, cells, plan.cell_pairs, fill_parts));
+  if (fill_parts > 1)
+    fill_in_parts(plan, edges, fill_parts, cell_start, reinterpret_cast<uint32_t*>(fill_at), list);
+  else if (plan.params.compact_cells)
+    fill_cells_logged(plan, edges, cell_start, reinterpret_cast<Visit*>(fill_at), list);
   else
-    fill_in_parts(plan, edges, fill_parts, cell_start, reinterpret_cast<uint32_t*>(after_start),
-                  list);
+    fill_cells(plan, edges, cell_start, list);
   st.cell_pairs = cell_start[cells];  // the exact count (the plan's is an upper bound)
   if (plan.params.phase) plan.params.phase(plan.params.phase_context, CutPhase::kCellsFilled);
   uint64_t work = 0;
@@ -548,8 +600,7 @@ Status plan_cut(const Edge3* edges, uint32_t n, const CutParams& params, CutPlan
   }
   if (pairs > 0xffffffffu) return Status::kCellPairOverflow;
   p.cell_pairs = static_cast<uint32_t>(pairs);
-  p.scratch_bytes =
-      scratch_for(p.grid.cells(), p.cell_pairs, n, entry_bytes(params), fill_part_count(params, n));
+  p.scratch_bytes = scratch_for(params, p.grid.cells(), p.cell_pairs, n);
   *plan = p;
   return Status::kOk;
 }

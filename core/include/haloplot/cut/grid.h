@@ -111,6 +111,48 @@ void for_each_cell(const Grid& g, const Edge3& e, CellCover cover, int32_t reach
   }
 }
 
+// for_each_cell()'s cells when they lie in a 2 x 2 block of cells (most edges, when the cell
+// side is about the edges' length), without a branch on the edge: the block's four cells, each
+// with weight 1 where for_each_cell() visits it and 0 where not. Returns false, and writes
+// nothing, for a larger block. The 2 x 2 exact case decides the row at the column border by a
+// product comparison where for_each_cell() divides: floor(y0 + dy (X - x0) / dx) >= Y, with
+// Y an integer and dx > 0, holds exactly when dy (X - x0) >= (Y - y0) dx (below 2^41 each).
+struct CellBlock {
+  uint32_t cell[4];
+  uint32_t weight[4];
+};
+inline bool cells_in_block(const Grid& g, const Edge3& e, CellCover cover, int32_t reach,
+                           CellBlock* out) {
+  const bool swap = e.a.x > e.b.x;  // read left to right, as for_each_cell() does
+  const int32_t x0 = swap ? e.b.x : e.a.x, y0 = swap ? e.b.y : e.a.y;
+  const int32_t x1 = swap ? e.a.x : e.b.x, y1 = swap ? e.a.y : e.b.y;
+  const int32_t xmax_scene = g.ox + static_cast<int32_t>(g.nx) * g.cell - 1;
+  const int32_t ymax_scene = g.oy + static_cast<int32_t>(g.ny) * g.cell - 1;
+  const uint32_t c0 = g.col(max_i32(x0 - reach, g.ox));
+  const uint32_t c1 = g.col(min_i32(x1 + reach, xmax_scene));
+  const uint32_t r0 = g.row(max_i32(min_i32(y0, y1) - reach, g.oy));
+  const uint32_t r1 = g.row(min_i32(max_i32(y0, y1) + reach, ymax_scene));
+  if (c1 - c0 > 1 || r1 - r0 > 1) return false;
+  const uint32_t two_cols = c1 - c0, two_rows = r1 - r0;
+  // The exact walk's row at the border x = X between the columns: r1 (k) or r0.
+  const int64_t border_x = g.ox + static_cast<int64_t>(c1) * g.cell;
+  const int64_t border_y = g.oy + static_cast<int64_t>(r1) * g.cell;
+  const bool k = int64_t{y1 - y0} * (border_x - x0) >= (border_y - y0) * int64_t{x1 - x0};
+  const bool rising = y0 < y1;
+  // Rising, the walk takes (c0, r0), (c0, r1) if k, (c1, r0) if not, and (c1, r1); falling,
+  // (c0, r1), (c0, r0) if not k, (c1, r1) if k, and (c1, r0).
+  const bool exact = cover == CellCover::kExact && reach == 0 && two_cols != 0 && two_rows != 0;
+  out->cell[0] = r0 * g.nx + c0;
+  out->cell[1] = r0 * g.nx + c1;
+  out->cell[2] = r1 * g.nx + c0;
+  out->cell[3] = r1 * g.nx + c1;
+  out->weight[0] = exact ? uint32_t(rising || !k) : 1u;
+  out->weight[1] = exact ? uint32_t(!rising || !k) : two_cols;
+  out->weight[2] = exact ? uint32_t(!rising || k) : two_rows;
+  out->weight[3] = exact ? uint32_t(rising || k) : (two_cols & two_rows);
+  return true;
+}
+
 struct GridParams {
   uint32_t lambda_q8 = 256;  // cell side = lambda * average projected length; Q8.8, 1.0 default
   int32_t cell = 0;          // > 0 forces the cell side in steps (benchmarks, tests)
