@@ -63,15 +63,26 @@ struct Visit {
   uint32_t cell, edge;
 };
 
+// A log's spare slots: the branch-free block walk writes four visits' slots per edge, of
+// which only the visited ones are kept.
+constexpr uint32_t kLogSpare = 4;
+// Each part's log slot count when the lists are filled in `parts` from logs of at most
+// `cell_pairs` visits in all (a part whose visits outgrow its share walks again instead).
+uint32_t log_slots(uint32_t cell_pairs, uint32_t parts) { return cell_pairs / parts + kLogSpare; }
+
 // Scratch layout: cell_start[cells + 1], then the fill's own bytes, then the cell lists
 // (cell_pairs entries). The fill's bytes: each part's cursor into every cell (parts * cells)
-// when the lists are filled in parts; with one part and compact entries, a log of the walk's
-// visits (one per (cell, edge) pair, and a spare), so each edge is walked once rather than twice
-// (not with index entries, where the log would double the scratch). After the cell loop the same
-// bytes hold next[n_edges] for grouping, so the scratch is the larger.
+// when the lists are filled in parts; and with compact entries, each part's log of its walk's
+// visits, so each edge is walked once rather than twice (not with index entries, where the
+// logs would double the scratch). After the cell loop the same bytes hold next[n_edges] for
+// grouping, so the scratch is the larger.
+size_t cursor_bytes(uint32_t cells, uint32_t fill_parts) {
+  return fill_parts > 1 ? carve_round(size_t{fill_parts} * cells * 4) : 0;
+}
 size_t fill_bytes(const CutParams& p, uint32_t cells, uint32_t cell_pairs, uint32_t fill_parts) {
-  if (fill_parts > 1) return carve_round(size_t{fill_parts} * cells * 4);
-  return p.compact_cells ? (size_t{cell_pairs} + 1) * sizeof(Visit) : 0;  // one spare
+  const size_t logs =
+      p.compact_cells ? size_t{fill_parts} * log_slots(cell_pairs, fill_parts) * sizeof(Visit) : 0;
+  return cursor_bytes(cells, fill_parts) + logs;
 }
 size_t scratch_for(const CutParams& p, uint32_t cells, uint32_t cell_pairs, uint32_t n_edges) {
   const uint32_t fill_parts = fill_part_count(p, n_edges);
@@ -190,73 +201,104 @@ void fill_cells(const CutPlan& plan, const Edge3* edges, uint32_t* cell_start, E
   cell_start[cells] = total;
 }
 
-// The same with one walk: it logs every visit (in edge order) as it counts, and the fill
-// reads the log instead of walking again. cell_start[c + 1] holds cell c's start, then moves
-// on with each entry dropped there to c's end, which is c + 1's start.
+// A walk of edges [e0, e1) that adds each visit to count[cell] and, while they fit, logs the
+// visits in order into log[0 .. slots) (null: no log). Returns how many it logged, or slots + 1
+// when they did not all fit (the fill then walks again). The exact cover lies inside the
+// boxes, so a log with the plan's cell_pairs + kLogSpare slots always fits.
+uint32_t count_and_log(const CutPlan& plan, const Edge3* edges, uint32_t e0, uint32_t e1,
+                       uint32_t* count, Visit* log, uint32_t slots) {
+  uint32_t logged = 0;
+  bool fits = log != nullptr;
+  for (uint32_t i = e0; i < e1; ++i) {
+    CellBlock b;
+    if (cells_in_block(plan.grid, edges[i], plan.params.cover, plan.params.reach, &b)) {
+      fits = fits && logged + kLogSpare <= slots;
+      // Weighted, so no branch per cell: a cell of weight 0 is written to the log's next slot
+      // (overwritten by the next visit, or a spare slot) and counted 0 times.
+      for (int q = 0; q < 4; ++q) {
+        count[b.cell[q]] += b.weight[q];
+        if (fits) {
+          log[logged] = Visit{b.cell[q], i};
+          logged += b.weight[q];
+        }
+      }
+      continue;
+    }
+    for_each_cell(plan.grid, edges[i], plan.params.cover, plan.params.reach, [&](uint32_t c) {
+      ++count[c];
+      fits = fits && logged < slots;
+      if (fits) log[logged++] = Visit{c, i};
+    });
+  }
+  return fits ? logged : slots + 1;
+}
+
+// Drops the logged visits' entries into the lists at cursor[cell], moving each cursor on.
+template <typename Entry>
+void fill_from_log(const Edge3* edges, const Visit* log, uint32_t logged, uint32_t* cursor,
+                   Entry* list) {
+  // The writes scatter over every cell's list: ask for each one's line a few visits ahead.
+  constexpr uint32_t kAhead = 16;
+  for (uint32_t v = 0; v < logged; ++v) {
+    if (v + kAhead < logged) __builtin_prefetch(&list[cursor[log[v + kAhead].cell]], 1);
+    list[cursor[log[v].cell]++] = Entry::make(edges[log[v].edge], log[v].edge);
+  }
+}
+
+// The same with one walk, for compact entries: it logs every visit (in edge order) as it
+// counts, and the fill reads the log instead of walking again. cell_start[c + 1] holds cell
+// c's start, then moves on with each entry dropped there to c's end, which is c + 1's start.
 template <typename Entry>
 void fill_cells_logged(const CutPlan& plan, const Edge3* edges, uint32_t* cell_start, Visit* log,
                        Entry* list) {
   const uint32_t cells = plan.grid.cells();
   for (uint32_t c = 0; c <= cells; ++c) cell_start[c] = 0;
-  uint32_t logged = 0;  // at most plan.cell_pairs: the exact cover is inside the boxes
-  for (uint32_t i = 0; i < plan.n_edges; ++i) {
-    CellBlock b;
-    if (cells_in_block(plan.grid, edges[i], plan.params.cover, plan.params.reach, &b)) {
-      // Weighted, so no branch per cell: a cell of weight 0 is written to the log's next slot
-      // (overwritten by the next visit, or the spare slot at its end) and counted 0 times.
-      for (int q = 0; q < 4; ++q) {
-        cell_start[b.cell[q] + 1] += b.weight[q];
-        log[logged] = Visit{b.cell[q], i};
-        logged += b.weight[q];
-      }
-      continue;
-    }
-    for_each_cell(plan.grid, edges[i], plan.params.cover, plan.params.reach, [&](uint32_t c) {
-      ++cell_start[c + 1];
-      log[logged++] = Visit{c, i};
-    });
-  }
+  const uint32_t logged = count_and_log(plan, edges, 0, plan.n_edges, cell_start + 1, log,
+                                        log_slots(plan.cell_pairs, 1));
   uint32_t at = 0;
   for (uint32_t c = 0; c < cells; ++c) {
     const uint32_t count = cell_start[c + 1];
     cell_start[c + 1] = at;
     at += count;
   }
-  // The writes scatter over every cell's list: ask for each one's line a few visits ahead.
-  constexpr uint32_t kAhead = 16;
-  for (uint32_t v = 0; v < logged; ++v) {
-    if (v + kAhead < logged) __builtin_prefetch(&list[cell_start[log[v + kAhead].cell + 1]], 1);
-    list[cell_start[log[v].cell + 1]++] = Entry::make(edges[log[v].edge], log[v].edge);
-  }
+  fill_from_log(edges, log, logged, cell_start + 1, list);
 }
 
-// The same counting sort in parts of the edges, each with its own cursor into every cell:
-// part j counts its edges per cell, one pass over the counts gives each part its place in
-// every cell's list (after the parts before it), and part j drops its edges there in
-// ascending order. Every cell's list comes out as the one-part fill makes it, entry for entry.
+// The same counting sort in parts of the edges, each with its own cursor into every cell (and
+// its own log, with compact entries): part j counts its edges per cell, one pass over the
+// counts gives each part its place in every cell's list (after the parts before it), and part
+// j drops its edges there in ascending order, from its log if that holds all its visits, else
+// walking again. Every cell's list comes out as the one-part fill makes it, entry for entry.
 template <typename Entry>
 struct FillParts {
   const CutPlan* plan;
   const Edge3* edges;
   uint32_t* cursor;  // part j's are cursor[j * cells .. (j + 1) * cells)
+  Visit* logs;       // part j's are logs[j * slots .. (j + 1) * slots), or null
+  uint32_t slots;
   Entry* list;
   uint32_t n;
+  uint32_t logged[kMaxParts] = {};
 
   uint32_t first_edge(uint32_t j) const { return uint32_t(uint64_t{plan->n_edges} * j / n); }
   static void count(void* arg, uint32_t j) {
-    const FillParts* self = static_cast<const FillParts*>(arg);
-    const CutPlan& plan = *self->plan;
-    const uint32_t cells = plan.grid.cells();
+    FillParts* self = static_cast<FillParts*>(arg);
+    const uint32_t cells = self->plan->grid.cells();
     uint32_t* mine = self->cursor + size_t{j} * cells;
     for (uint32_t c = 0; c < cells; ++c) mine[c] = 0;
-    for (uint32_t i = self->first_edge(j); i < self->first_edge(j + 1); ++i)
-      for_each_cell(plan.grid, self->edges[i], plan.params.cover, plan.params.reach,
-                    [&](uint32_t c) { ++mine[c]; });
+    Visit* log = self->logs ? self->logs + size_t{j} * self->slots : nullptr;
+    self->logged[j] = count_and_log(*self->plan, self->edges, self->first_edge(j),
+                                    self->first_edge(j + 1), mine, log, self->slots);
   }
   static void fill(void* arg, uint32_t j) {
     const FillParts* self = static_cast<const FillParts*>(arg);
     const CutPlan& plan = *self->plan;
     uint32_t* mine = self->cursor + size_t{j} * plan.grid.cells();
+    if (self->logs != nullptr && self->logged[j] <= self->slots) {
+      fill_from_log(self->edges, self->logs + size_t{j} * self->slots, self->logged[j], mine,
+                    self->list);
+      return;
+    }
     for (uint32_t i = self->first_edge(j); i < self->first_edge(j + 1); ++i) {
       const Entry e = Entry::make(self->edges[i], i);
       for_each_cell(plan.grid, self->edges[i], plan.params.cover, plan.params.reach,
@@ -269,9 +311,14 @@ struct FillParts {
 template <typename Entry>
 __attribute__((noinline)) void fill_in_parts(const CutPlan& plan, const Edge3* edges,
                                              uint32_t n_parts, uint32_t* cell_start,
-                                             uint32_t* cursor, Entry* list) {
+                                             uint8_t* fill_at, Entry* list) {
   const uint32_t cells = plan.grid.cells();
-  FillParts<Entry> fp{&plan, edges, cursor, list, n_parts};
+  uint32_t* cursor = reinterpret_cast<uint32_t*>(fill_at);
+  Visit* logs = plan.params.compact_cells
+                    ? reinterpret_cast<Visit*>(fill_at + cursor_bytes(cells, n_parts))
+                    : nullptr;
+  FillParts<Entry> fp{&plan, edges,  cursor, logs, log_slots(plan.cell_pairs, n_parts),
+                      list,  n_parts};
   run_parts(*plan.params.parts, n_parts, &FillParts<Entry>::count, &fp);
   uint32_t at = 0;
   for (uint32_t c = 0; c < cells; ++c) {
@@ -469,7 +516,7 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
   Entry* list = reinterpret_cast<Entry*>(
       fill_at + fill_bytes(plan.params, cells, plan.cell_pairs, fill_parts));
   if (fill_parts > 1)
-    fill_in_parts(plan, edges, fill_parts, cell_start, reinterpret_cast<uint32_t*>(fill_at), list);
+    fill_in_parts(plan, edges, fill_parts, cell_start, fill_at, list);
   else if (plan.params.compact_cells)
     fill_cells_logged(plan, edges, cell_start, reinterpret_cast<Visit*>(fill_at), list);
   else

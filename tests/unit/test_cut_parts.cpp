@@ -2,7 +2,8 @@
 // any number of parts, run in any order or on threads, with near misses, with rows, with the
 // bounding-box cover, and with a record capacity so tight that parts outgrow their slices
 // (they run again into what the others left) or that the whole does not fit (the count a
-// retry needs, as one part says it).
+// retry needs, as one part says it); and with edges so uneven that the first parts' cell
+// visits outgrow their share of the fill's logs.
 #include <cstring>
 #include <vector>
 
@@ -104,5 +105,10 @@ int main() {
     p.row_hi = 600000;
     check_scene("random, rows", edges, p);
   }
+  // Long edges first, short ones after: the first parts visit far more cells than their
+  // share of the fill's logs, so they walk again (the lists, and so the CUTSET, the same).
+  std::vector<Edge3> uneven = scenes::paper_random(600, 150000, 11);
+  for (const Edge3& e : scenes::paper_random(3400, 5000, 12)) uneven.push_back(e);
+  check_scene("uneven lengths", uneven, CutParams{});
   return check::finish("cut_parts");
 }
