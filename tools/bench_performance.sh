@@ -4,10 +4,27 @@
 # report with the machine and the date. Usage: tools/bench_performance.sh [--quick]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# CGAL is section 2's sweep-line peer. Install it where this can (Debian or Ubuntu, as root);
+# elsewhere say so: the report is then made without it, and says that too.
+if ! dpkg-query -W -f='${Status}' libcgal-dev 2>/dev/null | grep -q 'ok installed'; then
+  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+    echo "bench_performance: installing libcgal-dev (CGAL, the peer in section 2) with apt-get" >&2
+    { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq libcgal-dev; } \
+      >/dev/null || echo "bench_performance: apt-get could not install libcgal-dev;" \
+      "section 2 is made without CGAL" >&2
+  else
+    echo "bench_performance: libcgal-dev is not installed and this cannot install it (it needs" \
+      "root and apt-get); section 2 is made without CGAL unless CMake finds CGAL elsewhere" >&2
+  fi
+fi
 cmake --preset host >/dev/null
 cmake --build --preset host -j "$(nproc)" --target cut_bench step_tick_bench >/dev/null
 out=docs/reports
 mkdir -p "$out"
+# Section 11 (threads) is tools/bench_threads.sh's: keep it as that script last wrote it.
+threads_section=$(mktemp)
+trap 'rm -f "$threads_section"' EXIT
+[ -f "$out/performance.md" ] && sed -n '/^## 11\. Threads/,$p' "$out/performance.md" > "$threads_section"
 build/host/tests/bench/cut_bench "$out" "${1:-}"
 tick=$(bash tools/bench_step_tick.sh | sed -n 's/^instructions per step event: //p')
 cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
@@ -51,7 +68,12 @@ cgal=$(dpkg-query -W -f='${Version}' libcgal-dev 2>/dev/null || echo "not instal
   bash tools/bench_plot_gcode.sh
   echo
   bash tools/bench_open_mesh.sh
-} > "$out/performance.md"
+  if [ -s "$threads_section" ]; then
+    echo
+    cat "$threads_section"
+  fi
+} > "$out/performance.md.new"
+mv "$out/performance.md.new" "$out/performance.md"
 rm -f "$out/performance.body.md"
 if command -v rsvg-convert >/dev/null 2>&1; then
   for f in "$out"/perf_*.svg; do rsvg-convert -b white "$f" -o "${f%.svg}.png"; done

@@ -12,6 +12,7 @@
 #include "demo/cube_array.h"
 #include "demo/random_scene.h"
 #include "perf_common.h"
+#include "pipeline/thread_parts.h"
 
 #ifdef HALOPLOT_HAVE_CGAL
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -179,11 +180,27 @@ int main(int argc, char** argv) {
         "is in "
         "the last column.\n\n";
 
-  // 2. Peers on N = 50,000, L = 0.01.
+  // 2. Peers on N = 50,000, L = 0.01: CUT on one thread and on all the machine's.
   {
     const auto edges = paper_random(50000, 10000, 777);
-    const bench::CutTiming cut = bench::time_cut(edges, CutParams{}, runs);
+    const uint32_t threads = machine_threads();
+    CutParams all;
+    all.parts = thread_parts(threads);
+    // Alternated, so a busy spell on the machine touches both alike.
+    std::vector<bench::CutTiming> one_runs, all_runs;
+    for (int r = 0; r < runs; ++r) {
+      one_runs.push_back(bench::time_cut(edges, CutParams{}, 3));
+      all_runs.push_back(bench::time_cut(edges, all, 3));
+    }
+    auto median_of = [](std::vector<bench::CutTiming> v) {
+      std::sort(v.begin(), v.end(), [](const bench::CutTiming& a, const bench::CutTiming& b) {
+        return a.total < b.total;
+      });
+      return v[v.size() / 2];
+    };
+    const bench::CutTiming cut = median_of(one_runs), cut_all = median_of(all_runs);
     const uint64_t v = cut.stats.crossings + cut.stats.equal_depth;
+    const uint64_t v_all = cut_all.stats.crossings + cut_all.stats.equal_depth;
     std::vector<double> tb;
     uint64_t vb = 0;
     for (int r = 0; r < std::max(1, runs / 2); ++r) {
@@ -192,41 +209,60 @@ int main(int argc, char** argv) {
       tb.push_back(now_ms() - t0);
     }
     const double base = median(tb);
+    const std::string all_label = "all " + std::to_string(threads) + " threads";
+    auto faster = [&](double t) {
+      return fmt(t / cut.total, 1) + "× | " + fmt(t / cut_all.total, 1) + "× |";
+    };
     md << "## 2. Against the peers (N = 50,000, L = 0.01, one run of this report)\n\n"
-       << "| method | crossings | ms | CUT is faster by |\n|---|---:|---:|---:|\n"
-       << "| haloplot CUT (default grid, exact predicates) | " << v << " | " << fmt(cut.total, 2)
-       << " | 1× |\n"
+       << "| method | crossings | ms | CUT on one thread is faster by | CUT on " << all_label
+       << " is faster by |\n|---|---:|---:|---:|---:|\n"
+       << "| haloplot CUT, one thread (default grid, exact predicates) | " << v << " | "
+       << fmt(cut.total, 2) << " | 1× | " << fmt(cut.total / cut_all.total, 2) << "× |\n"
+       << "| haloplot CUT, " << all_label << " (`--threads " << threads << "`) | " << v_all << " | "
+       << fmt(cut_all.total, 2) << " | " << fmt(cut_all.total / cut.total, 2) << "× | 1× |\n"
        << "| all pairs after an x-sort (same predicates) | " << vb << " | " << fmt(base, 1) << " | "
-       << fmt(base / cut.total, 1) << "× |\n";
+       << faster(base) << "\n";
 #ifdef HALOPLOT_HAVE_CGAL
     const auto epeck =
         cgal_sweep<CGAL::Exact_predicates_exact_constructions_kernel>(edges, quick ? 1 : 3);
     const auto epick =
         cgal_sweep<CGAL::Exact_predicates_inexact_constructions_kernel>(edges, quick ? 1 : 3);
     md << "| CGAL `compute_intersection_points`, exact constructions (Epeck) | " << epeck.second
-       << " | " << fmt(epeck.first, 1) << " | " << fmt(epeck.first / cut.total, 1) << "× |\n"
+       << " | " << fmt(epeck.first, 1) << " | " << faster(epeck.first) << "\n"
        << "| CGAL `compute_intersection_points`, inexact constructions (Epick) | " << epick.second
-       << " | " << fmt(epick.first, 1) << " | " << fmt(epick.first / cut.total, 1) << "× |\n";
-    md << "\nCGAL counts intersection points, so a point where k segments meet counts once; in "
-          "random "
-          "scenes that never happens and the counts agree exactly"
-       << (epeck.second == v ? " (they do here)" : " (**here they differ: see the note**)")
+       << " | " << fmt(epick.first, 1) << " | " << faster(epick.first) << "\n";
+    md << "\n**CUT against CGAL's sweep with exact constructions (the aim: at least 50×): "
+       << fmt(epeck.first / cut.total, 1) << "× on one thread, "
+       << fmt(epeck.first / cut_all.total, 1) << "× on " << all_label
+       << ".** CGAL runs on one thread either way. CGAL counts "
+          "intersection points, so a point where k segments meet counts once; in random scenes "
+          "that never happens and the counts agree exactly"
+       << (epeck.second == v && v_all == v ? " (they do here)"
+                                           : " (**here they differ: see the note**)")
        << ".\n\n";
 #else
-    md << "\nCGAL was not installed when this report was made (Debian: libcgal-dev); the benchmark "
+    md << "\nCGAL was not installed when this report was made (Debian: libcgal-dev; "
+          "tools/bench_performance.sh installs it when it runs as root with apt); the benchmark "
           "builds and runs without it.\n\n";
 #endif
     if (vb != v) md << "**The baseline's count differs from CUT's: a bug.**\n\n";
-    md << "Where CUT's time goes on this scene (phase clock, median): T1 " << fmt(cut.t1, 2)
-       << " ms (grid choice and the two cell walks: a counting pass and a fill pass whose writes "
-          "scatter over the cell lists), T2 "
+    if (v_all != v) md << "**CUT's count on threads differs from one thread's: a bug.**\n\n";
+    md << "Each CUT figure is the median of " << runs
+       << " rounds (each the median of 3 runs), one thread and all threads alternating. Where "
+          "CUT's time goes on one thread (phase clock): T1 "
+       << fmt(cut.t1, 2)
+       << " ms (the plan: range check, grid choice and the bound on (cell, edge) pairs; then one "
+          "walk per edge that counts its cells and logs them, and a fill that reads the log and "
+          "drops a copy of each edge, 28 bytes, into its cells' lists), T2 "
        << fmt(cut.t2, 2) << " ms (" << cut.stats.pairs_tested
-       << " pairs sharing a cell; most fail the bounding-box test, whose branch the CPU cannot "
-          "predict, so the loop pays for mispredictions more than for arithmetic), grouping "
-       << fmt(cut.group, 2)
-       << " ms. The exact predicates themselves are a small share: every decision is a few 64-bit "
-          "multiplies. CGAL's own time varies by about 1.7x between runs on these machines, so "
-          "read its ratio with that margin.\n\n";
+       << " pairs sharing a cell, every one decided by its four side values without a branch "
+          "into a mask of the pairs that cross; only those "
+       << (cut.stats.crossings + cut.stats.equal_depth + cut.stats.rejected)
+       << " take the branches after it: which cell owns the crossing, depth, position), grouping "
+       << fmt(cut.group, 2) << " ms. On " << all_label << ": T1 " << fmt(cut_all.t1, 2)
+       << " ms, T2 " << fmt(cut_all.t2, 2) << " ms, grouping " << fmt(cut_all.group, 2)
+       << " ms (the plan and the grouping's counting run on one thread). CGAL's own time varies "
+          "by about 1.7x between runs on these machines, so read its ratio with that margin.\n\n";
   }
 
   // 3. Scaling at about one crossing per edge: L = 2.236 / sqrt(N).
@@ -344,9 +380,11 @@ int main(int argc, char** argv) {
        << "| scene | CUT scratch, bytes per edge (freed after CUT) | CUTSET, bytes per edge | DRAW "
           "scratch |\n|---|---:|---|---:|\n"
        << mem
-       << "\nCUT's scratch holds the cell index (4 bytes per cell, at most 2N + 64 cells) and the "
-          "(cell, edge) list (4 bytes per pair). The CUTSET keeps 4 bytes per edge plus 12 per "
-          "crossing. "
+       << "\nCUT's scratch holds the cell index (4 bytes per cell, at most 2N + 64 cells), the "
+          "(cell, edge) lists (28 bytes per pair: a copy of the edge beside its index; 4 with "
+          "`compact_cells` off, as on a controller) and the log of the cell walk (8 bytes per "
+          "pair, compact lists only), all sized by the bound from the edges' boxes. The CUTSET "
+          "keeps 4 bytes per edge plus 12 per crossing. "
           "DRAW needs 16 bytes per crossing on the busiest edge only.\n\n";
   }
 
