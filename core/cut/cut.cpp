@@ -18,20 +18,50 @@ uint32_t cutset_capacity(uint32_t n_edges, size_t bytes) {
 
 namespace {
 
-// What a cell list holds per (cell, edge) pair: the edge's index, or a copy of the edge
-// beside it (CutParams::compact_cells), so the pair loop never leaves the cell list. Both
-// read like an edge.
+// A host (a 64-bit target) spends memory and code for speed where a controller (a 32-bit
+// one) keeps its RAM and flash as they were: there the compact cell entries carry the depths
+// too, the cell walk is logged so each edge is walked once, the fill splits into parts, and
+// the pair loop decides every pair without a branch (test_cells).
+constexpr bool kHost = UINTPTR_MAX > 0xffffffffu;
+
+template <bool kFirst, typename A, typename B>
+struct Pick {
+  using type = A;
+};
+template <typename A, typename B>
+struct Pick<false, A, B> {
+  using type = B;
+};
+
+// What a cell list holds per (cell, edge) pair: the edge's index, or a copy of the edge's
+// projection beside it (CutParams::compact_cells), so the pair loop never leaves the cell
+// list. Each gives the pair loop an edge-like segment, and the edge that holds its depths.
 struct IndexEntry {
   uint32_t edge;
   static IndexEntry make(const Edge3&, uint32_t i) { return IndexEntry{i}; }
   const Edge3& segment(const Edge3* edges) const { return edges[edge]; }
+  const Edge3& depths(const Edge3* edges) const { return edges[edge]; }
 };
-struct CompactEntry {  // 28 bytes
+struct Point2 {
+  int32_t x, y;
+};
+struct ProjectionEntry {  // 20 bytes: a controller's compact entry
+  Point2 a, b;
+  uint32_t edge;
+  static ProjectionEntry make(const Edge3& e, uint32_t i) {
+    return ProjectionEntry{{e.a.x, e.a.y}, {e.b.x, e.b.y}, i};
+  }
+  const ProjectionEntry& segment(const Edge3*) const { return *this; }
+  const Edge3& depths(const Edge3* edges) const { return edges[edge]; }
+};
+struct EdgeEntry {  // 28 bytes: a host's, the depths beside the projection
   Edge3 copy;
   uint32_t edge;
-  static CompactEntry make(const Edge3& e, uint32_t i) { return CompactEntry{e, i}; }
+  static EdgeEntry make(const Edge3& e, uint32_t i) { return EdgeEntry{e, i}; }
   const Edge3& segment(const Edge3*) const { return copy; }
+  const Edge3& depths(const Edge3*) const { return copy; }
 };
+using CompactEntry = Pick<kHost, EdgeEntry, ProjectionEntry>::type;
 
 size_t entry_bytes(const CutParams& p) {
   return p.compact_cells ? sizeof(CompactEntry) : sizeof(IndexEntry);
@@ -55,7 +85,7 @@ uint32_t part_count(const CutParams& p, uint64_t work) {
 // The parts the cell lists are filled in (each walks its share of the edges twice): a walk
 // costs about as much as a few pair tests per cell it visits.
 uint32_t fill_part_count(const CutParams& p, uint32_t n_edges) {
-  return part_count(p, uint64_t{n_edges} * 8);
+  return kHost ? part_count(p, uint64_t{n_edges} * 8) : 1;
 }
 
 // One cell a walk visited, and for which edge.
@@ -73,15 +103,16 @@ uint32_t log_slots(uint32_t cell_pairs, uint32_t parts) { return cell_pairs / pa
 // Scratch layout: cell_start[cells + 1], then the fill's own bytes, then the cell lists
 // (cell_pairs entries). The fill's bytes: each part's cursor into every cell (parts * cells)
 // when the lists are filled in parts; and with compact entries, each part's log of its walk's
-// visits, so each edge is walked once rather than twice (not with index entries, where the
-// logs would double the scratch). After the cell loop the same bytes hold next[n_edges] for
-// grouping, so the scratch is the larger.
+// visits, so each edge is walked once rather than twice (both on a host only; not with index
+// entries, where the logs would double the scratch). After the cell loop the same bytes hold
+// next[n_edges] for grouping, so the scratch is the larger.
 size_t cursor_bytes(uint32_t cells, uint32_t fill_parts) {
   return fill_parts > 1 ? carve_round(size_t{fill_parts} * cells * 4) : 0;
 }
 size_t fill_bytes(const CutParams& p, uint32_t cells, uint32_t cell_pairs, uint32_t fill_parts) {
-  const size_t logs =
-      p.compact_cells ? size_t{fill_parts} * log_slots(cell_pairs, fill_parts) * sizeof(Visit) : 0;
+  const size_t logs = kHost && p.compact_cells
+                          ? size_t{fill_parts} * log_slots(cell_pairs, fill_parts) * sizeof(Visit)
+                          : 0;
   return cursor_bytes(cells, fill_parts) + logs;
 }
 size_t scratch_for(const CutParams& p, uint32_t cells, uint32_t cell_pairs, uint32_t n_edges) {
@@ -141,8 +172,8 @@ inline uint32_t crossing_position(int64_t num, int64_t den) {
 template <typename Entry>
 void test_pair(const Grid& g, const CellBox& cb, const Edge3* edges, const Entry& ei,
                const Entry& ej, int32_t reach, Recorder& rec, CutStats& st) {
-  const Edge3& p = ei.segment(edges);
-  const Edge3& q = ej.segment(edges);
+  const auto& p = ei.segment(edges);
+  const auto& q = ej.segment(edges);
   const uint32_t ep = ei.edge, eq = ej.edge;
   const CrossingTest x = test_crossing(p, q);
   if (x.crosses) {
@@ -151,7 +182,7 @@ void test_pair(const Grid& g, const CellBox& cb, const Edge3* edges, const Entry
       ++st.rejected;
       return;
     }
-    const int depth = compare_depth_at_crossing(p, q, x);  // C6.4
+    const int depth = compare_depth_at_crossing(ei.depths(edges), ej.depths(edges), x);  // C6.4
     if (depth == 0) {
       ++st.equal_depth;
       return;
@@ -340,7 +371,7 @@ __attribute__((noinline)) void fill_in_parts(const CutPlan& plan, const Edge3* e
 // loop (C6.2, without near misses) computes all four side values of every pair, branch-free,
 // into a mask of the pairs that properly cross, and only those take the branches after it.
 // Elsewhere (a Cortex-M has no such multiply) the boxes go first.
-constexpr bool kDecideEveryPair = UINTPTR_MAX > 0xffffffffu;
+constexpr bool kDecideEveryPair = kHost;
 
 // Bit (j - j0) set for every j in [j0, j1) (at most 64) whose segment properly crosses P:
 // test_crossing()'s strict sign rule, on the side values it computes, relative to P's start.
@@ -349,7 +380,7 @@ uint64_t crossing_mask(const Entry* list, const Edge3* edges, int64_t pax, int64
                        int64_t pdy, uint32_t j0, uint32_t j1) {
   uint64_t mask = 0;
   for (uint32_t j = j0; j < j1; ++j) {
-    const Edge3& q = list[j].segment(edges);
+    const auto& q = list[j].segment(edges);
     const int64_t qax = q.a.x - pax, qay = q.a.y - pay, qbx = q.b.x - pax, qby = q.b.y - pay;
     const int64_t s1 = pdx * qay - pdy * qax, s2 = pdx * qby - pdy * qbx;  // Q's ends, P's line
     const int64_t s3 = (qby - qay) * qax - (qbx - qax) * qay;  // P's start against Q's line
@@ -380,7 +411,7 @@ void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_st
     const CellBox cb{c, g.ox + int64_t{col} * g.cell, g.oy + int64_t{row} * g.cell, g.cell};
     for (uint32_t i = begin; i + 1 < end; ++i) {
       if (kDecideEveryPair && r == 0) {
-        const Edge3& p = list[i].segment(edges);
+        const auto& p = list[i].segment(edges);
         const int64_t pdx = p.b.x - p.a.x, pdy = p.b.y - p.a.y;
         for (uint32_t j0 = i + 1; j0 < end; j0 += 64) {
           const uint32_t j1 = end - j0 > 64 ? j0 + 64 : end;
@@ -392,11 +423,11 @@ void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_st
       }
       // P's box once per row, then Q's box against it: a cheap reject before the exact
       // test, since most pairs sharing a cell do not even overlap.
-      const Edge3& p = list[i].segment(edges);
+      const auto& p = list[i].segment(edges);
       const int32_t px0 = min_i32(p.a.x, p.b.x) - r, px1 = max_i32(p.a.x, p.b.x) + r;
       const int32_t py0 = min_i32(p.a.y, p.b.y) - r, py1 = max_i32(p.a.y, p.b.y) + r;
       for (uint32_t j = i + 1; j < end; ++j) {
-        const Edge3& q = list[j].segment(edges);
+        const auto& q = list[j].segment(edges);
         const int32_t qx0 = min_i32(q.a.x, q.b.x), qx1 = max_i32(q.a.x, q.b.x);
         const int32_t qy0 = min_i32(q.a.y, q.b.y), qy1 = max_i32(q.a.y, q.b.y);
         // One branch on all four (not four that each mispredict): most pairs are rejected.
@@ -515,9 +546,9 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
   uint8_t* fill_at = static_cast<uint8_t*>(scratch) + carve_round((size_t{cells} + 1) * 4);
   Entry* list = reinterpret_cast<Entry*>(
       fill_at + fill_bytes(plan.params, cells, plan.cell_pairs, fill_parts));
-  if (fill_parts > 1)
+  if (kHost && fill_parts > 1)
     fill_in_parts(plan, edges, fill_parts, cell_start, fill_at, list);
-  else if (plan.params.compact_cells)
+  else if (kHost && plan.params.compact_cells)
     fill_cells_logged(plan, edges, cell_start, reinterpret_cast<Visit*>(fill_at), list);
   else
     fill_cells(plan, edges, cell_start, list);

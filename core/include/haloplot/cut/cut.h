@@ -30,9 +30,10 @@ using PhaseFn = void (*)(void* context, CutPhase phase);
 struct CutParams {
   GridParams grid;
   CellCover cover = CellCover::kExact;
-  // Cell lists hold a copy of each edge beside its index (28 bytes per (cell, edge) pair)
-  // instead of its index (4 bytes), so the pair loop reads memory in order rather than
-  // jumping through the edge array: faster, at 24 more bytes per pair. Off for tight RAM.
+  // Cell lists hold a copy of each edge's projection beside its index (20 bytes per (cell,
+  // edge) pair; on a 64-bit host 28, the depths too) instead of its index (4 bytes), so the
+  // pair loop reads memory in order rather than jumping through the edge array: faster, at 16
+  // (24) more bytes per pair. Off for tight RAM.
   bool compact_cells = true;
   // Record (and count) only the crossings whose position on the behind edge lies in rows
   // [row_lo, row_hi) (geometry/rows.h): a solid's band needs no cut outside its rows, and a
