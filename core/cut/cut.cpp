@@ -82,8 +82,8 @@ uint32_t part_count(const CutParams& p, uint64_t work) {
   return n;
 }
 
-// The parts the cell lists are filled in (each walks its share of the edges twice): a walk
-// costs about as much as a few pair tests per cell it visits.
+// The parts the cell lists are filled in (each walks its share of the edges): a walk costs
+// about as much as a few pair tests per cell it visits.
 uint32_t fill_part_count(const CutParams& p, uint32_t n_edges) {
   return kHost ? part_count(p, uint64_t{n_edges} * 8) : 1;
 }
@@ -375,6 +375,7 @@ constexpr bool kDecideEveryPair = kHost;
 
 // Bit (j - j0) set for every j in [j0, j1) (at most 64) whose segment properly crosses P:
 // test_crossing()'s strict sign rule, on the side values it computes, relative to P's start.
+static_assert(kCrossBits + 2 <= 63, "side values, and s4 = s3 + s1 - s2, must fit int64_t");
 template <typename Entry>
 uint64_t crossing_mask(const Entry* list, const Edge3* edges, int64_t pax, int64_t pay, int64_t pdx,
                        int64_t pdy, uint32_t j0, uint32_t j1) {

@@ -117,6 +117,7 @@ void for_each_cell(const Grid& g, const Edge3& e, CellCover cover, int32_t reach
 // nothing, for a larger block. The 2 x 2 exact case decides the row at the column border by a
 // product comparison where for_each_cell() divides: floor(y0 + dy (X - x0) / dx) >= Y, with
 // Y an integer and dx > 0, holds exactly when dy (X - x0) >= (Y - y0) dx (below 2^41 each).
+static_assert(2 * kDiffBits <= 63, "the block's border comparison must fit int64_t");
 struct CellBlock {
   uint32_t cell[4];
   uint32_t weight[4];
