@@ -432,9 +432,10 @@ int main(int argc, char** argv) {
           "scratch |\n|---|---:|---|---:|\n"
        << mem
        << "\nCUT's scratch holds the cell index (4 bytes per cell, at most 2N + 64 cells), the "
-          "(cell, edge) lists (28 bytes per pair: a copy of the edge beside its index; 4 with "
-          "`compact_cells` off, as on a controller) and the log of the cell walk (8 bytes per "
-          "pair, compact lists only), all sized by the bound from the edges' boxes. The CUTSET "
+          "(cell, edge) lists (28 bytes per pair on a 64-bit host, as here: a copy of the edge "
+          "beside its index; 20 on a 32-bit controller, the projection only; 4 with "
+          "`compact_cells` off) and, on a host, the log of the cell walk (8 bytes per pair), all "
+          "sized by the bound from the edges' boxes. The CUTSET "
           "keeps 4 bytes per edge plus 12 per crossing. "
           "DRAW needs 16 bytes per crossing on the busiest edge only.\n\n";
   }
