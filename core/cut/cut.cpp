@@ -37,6 +37,8 @@ struct CompactEntry {
 inline const Edge3& geometry(const IndexEntry& x, const Edge3* edges) { return edges[x.edge]; }
 inline const CompactEntry& geometry(const CompactEntry& x, const Edge3*) { return x; }
 
+bool is_marked(const uint32_t* marked, uint32_t e) { return (marked[e >> 5] >> (e & 31)) & 1u; }
+
 size_t entry_bytes(const CutParams& p) {
   return p.compact_cells ? sizeof(CompactEntry) : sizeof(IndexEntry);
 }
@@ -158,6 +160,7 @@ void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_st
   const Grid& g = plan.grid;
   const uint32_t cells = g.cells();
   const int32_t r = plan.params.reach;
+  const uint32_t* marked = plan.params.marked;
   uint32_t col = c_begin % g.nx, row = c_begin / g.nx;
   for (uint32_t c = c_begin; c < c_end; ++c) {
     const uint32_t begin = cell_start[c], end = cell_start[c + 1];
@@ -170,7 +173,9 @@ void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_st
       const auto& p = geometry(list[i], edges);
       const int32_t px0 = min_i32(p.a.x, p.b.x) - r, px1 = max_i32(p.a.x, p.b.x) + r;
       const int32_t py0 = min_i32(p.a.y, p.b.y) - r, py1 = max_i32(p.a.y, p.b.y) + r;
+      const bool p_marked = marked == nullptr || is_marked(marked, list[i].edge);
       for (uint32_t j = i + 1; j < end; ++j) {
+        if (!p_marked && !is_marked(marked, list[j].edge)) continue;
         const auto& q = geometry(list[j], edges);
         const int32_t qx0 = min_i32(q.a.x, q.b.x), qx1 = max_i32(q.a.x, q.b.x);
         const int32_t qy0 = min_i32(q.a.y, q.b.y), qy1 = max_i32(q.a.y, q.b.y);
