@@ -6,6 +6,9 @@
 //               bands in a 64 KB arena, as firmware/selftest/band_selftest.cpp plots it, the
 //               points drained without a motion run. Prints "fw fig4 BANDS PIECES RECORDS
 //               CUT_INSTRUCTIONS DRAW_INSTRUCTIONS MARGIN_PASS_INSTRUCTIONS".
+//   BENCH_DRAW: 20 x 20 cubes as Figure 4 shows its 28 x 28, in one piece (no bands, halo 50,
+//               the paper's gap): CUT, then DRAW alone between the histogram's marks. Prints "fw
+//               draw CROSSINGS SPANS CUT_INSTRUCTIONS DRAW_INSTRUCTIONS".
 // The crossings, pieces and records are the same on every CPU (the script checks); the
 // instruction counts are the CPU's (counter.cpp).
 #include "haloplot/haloplot.h"
@@ -15,6 +18,9 @@
 
 #if defined(BENCH_CUT)
 #include "haloplot/scene/random_edges.h"
+#elif defined(BENCH_DRAW)
+#include "haloplot/memory/sized_stage.h"
+#include "haloplot/scene/cube_array.h"
 #else
 #include "haloplot/band/conductor.h"
 #include "haloplot/scene/cube_array.h"
@@ -90,6 +96,52 @@ void run() {
     print_numbers("fw row", v, 6);
     ++seed;
   }
+}
+#elif defined(BENCH_DRAW)
+constexpr int32_t kCubes = 20;  // Figure 4's view of 20 x 20 cubes: all of it fits the SRAM map
+constexpr uint32_t kEdges = 12 * kCubes * kCubes;
+Edge3 edges[kEdges];
+alignas(8) uint8_t arena[300 * 1024];   // the CUTSET and CUT's scratch
+alignas(8) uint8_t scratch[16 * 1024];  // DRAW's
+
+Status count_span(void* count, const Span&) {
+  ++*static_cast<uint64_t*>(count);
+  return Status::kOk;
+}
+
+void run() {
+  CubeArrayParams cubes;
+  cubes.cubes = kCubes;
+  Status s = cube_array(cubes, edges, kEdges);
+  if (!ok(s)) fail("cube array", s);
+  CutParams params;
+  params.compact_cells = false;  // 4 bytes per (cell, edge) pair, as the other parts
+  CutPlan plan;
+  s = plan_cut(edges, kEdges, params, &plan);
+  if (!ok(s)) fail("plan_cut", s);
+  CutSet crossings;
+  CutStats cut_stats;
+  CutStage cut{&plan, edges, &crossings, &cut_stats};
+  StageNeeds needs;
+  needs.crossings = 16 * 1024;
+  FixedMemory memory{arena, sizeof arena};
+  const uint64_t t0 = counter_ticks();
+  s = run_sized(cut, memory.memory(), &needs);
+  const uint64_t t1 = counter_ticks();
+  if (!ok(s)) fail("cut", s);
+  if (draw_scratch_bytes(crossings) > sizeof scratch) fail("draw scratch", Status::kBadParameter);
+  DrawStats st;
+  uint64_t spans = 0;
+  bench_span_begin();
+  const uint64_t t2 = counter_ticks();
+  s = draw(crossings, DrawParams{50, HaloMode::kPaper}, scratch, sizeof scratch,
+           SpanSink{count_span, &spans}, &st);
+  const uint64_t t3 = counter_ticks();
+  bench_span_end();
+  if (!ok(s)) fail("draw", s);
+  const uint64_t v[] = {crossings.n_crossings, spans, ticks_to_instructions(t1 - t0),
+                        ticks_to_instructions(t3 - t2)};
+  print_numbers("fw draw", v, 4);
 }
 #else
 constexpr uint32_t kEdges = 9408;  // cube_array_edges of the default 28 x 28

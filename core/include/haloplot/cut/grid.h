@@ -7,6 +7,7 @@
 
 #include "haloplot/geometry/contract.h"
 #include "haloplot/geometry/fraction.h"
+#include "haloplot/geometry/product.h"
 
 namespace haloplot {
 

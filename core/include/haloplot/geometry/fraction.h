@@ -8,8 +8,6 @@
 #pragma once
 #include <stdint.h>
 
-#include "haloplot/geometry/product.h"
-
 namespace haloplot {
 
 inline constexpr int kFracBits = 32;
@@ -51,7 +49,7 @@ int64_t scale_round(int64_t a, int64_t num, int64_t den);
 
 // Round a position p0 + d * t32 / 2^32 to the nearest step (halves round up). |d| < 2^21.
 inline int32_t lerp_round(int32_t p0, int32_t d, int64_t t32) {
-  const int64_t scaled = mul_32x64(d, t32) + (int64_t{1} << (kFracBits - 1));
+  const int64_t scaled = int64_t{d} * t32 + (int64_t{1} << (kFracBits - 1));
   return p0 + static_cast<int32_t>(scaled >> kFracBits);  // arithmetic shift = floor
 }
 

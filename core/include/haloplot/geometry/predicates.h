@@ -72,10 +72,10 @@ int32_t floor_along(int32_t a, int32_t d, int64_t n, int64_t den);
 
 // Depth comparison at the crossing: sign of (depth of P) - (depth of Q), exactly. Each depth
 // times den is a coordinate * den plus a difference * numerator: below 2^62 in magnitude.
-// (32 x 64 products whose results fit: product.h's mul_32x64.)
+// (Plain 64-bit products: on the Cortex-M0+ product.h's mul_32x64 measured no faster here.)
 inline int compare_depth_at_crossing(const Edge3& p, const Edge3& q, const CrossingTest& c) {
-  const int64_t zp = mul_32x64(p.a.z, c.den) + mul_32x64(p.b.z - p.a.z, c.tn);
-  const int64_t zq = mul_32x64(q.a.z, c.den) + mul_32x64(q.b.z - q.a.z, c.un);
+  const int64_t zp = int64_t{p.a.z} * c.den + int64_t{p.b.z - p.a.z} * c.tn;
+  const int64_t zq = int64_t{q.a.z} * c.den + int64_t{q.b.z - q.a.z} * c.un;
   return sign(zp - zq);
 }
 
