@@ -74,10 +74,10 @@ build() {
 
 machine() { if [ "$1" = RV32 ]; then echo virt; else echo mps2-an386; fi; }
 
-# run TAG CPU: both images' output lines in $out/TAG/CPU/{cut,fig4}.out
+# run TAG CPU: the images' output lines in $out/TAG/CPU/{cut,fig4,draw}.out
 run() {
   local dir=$out/$1/$2 part
-  for part in cut fig4; do
+  for part in cut fig4 draw; do
     qemu_run "$(machine "$2")" "$dir/bench/cpu_bench_$part.elf" > "$dir/$part.out" ||
       { cat "$dir/$part.out" >&2; echo "bench_cpus: the $2 $part run failed" >&2; exit 1; }
   done
@@ -134,6 +134,7 @@ fi
 for tag in $tags; do
   for cpu in $cpus; do run "$tag" "$cpu"; done
   profile "$tag" M0+ cut
+  profile "$tag" M0+ draw
 done
 
 # The section: the counts, checked equal in what they count on every CPU and both sources (the
@@ -147,6 +148,10 @@ def lines(tag, cpu, part):
     return [l.split()[2:] for l in open(f"{out}/{tag}/{cpu}/{part}.out") if l.startswith("fw ")]
 rows = {(t, c): [list(map(int, r)) for r in lines(t, c, "cut")] for t in tags for c in cpus}
 fig4 = {(t, c): list(map(int, lines(t, c, "fig4")[0])) for t in tags for c in cpus}
+draw = {(t, c): list(map(int, lines(t, c, "draw")[0])) for t in tags for c in cpus}
+for k, v in draw.items():
+    if v[:2] != draw[("now", cpus[0])][:2]:
+        sys.exit(f"bench_cpus: 20 x 20 cubes on {k}: other crossings or spans")
 ref = rows[("now", cpus[0])]
 for k, v in rows.items():
     if [r[:4] + r[5:] for r in v] != [r[:4] + r[5:] for r in ref]:
@@ -186,24 +191,6 @@ for name, f in (("CUT", lambda v: v[3]), ("DRAW", lambda v: v[4]), ("CUT + DRAW"
                 ("the margin pass (CUT in bands, once)", lambda v: v[5])):
     print(f"| {name} | " + " | ".join(n(f(fig4[("now", c)])) for c in cpus) +
           f" | {ratio(f(fig4[('now', 'M0+')]), f(fig4[('now', 'M4')]))} |")
-def profile(tag):
-    total, self, lib = 0, {}, {}
-    for l in open(f"{out}/{tag}/M0+/cut.profile"):
-        f = l.split()
-        if f[0] == "total": total = int(f[1])
-        elif f[0] == "self": self[f[2]] = float(f[1])
-        elif f[0] == "lib": lib[(f[2], f[3])] = (float(f[1]), int(f[4]))
-    return total, self, lib
-def short(sym):
-    name = subprocess.run(["c++filt", sym], capture_output=True, text=True).stdout.strip()
-    name = name.replace("(anonymous namespace)::", "").replace("haloplot::", "")
-    depth, plain = 0, ""
-    for ch in name:  # template arguments dropped
-        depth += ch == "<"
-        if depth == 0: plain += ch
-        depth -= ch == ">"
-    plain = plain.split("(")[0].split()  # the arguments and the return type dropped
-    return "`" + (plain[-1] if plain else sym) + "`"
 if baseline:
     print()
     print(f"Before (the core at {baseline}) and now, the same benchmark:")
@@ -219,33 +206,65 @@ if baseline:
     print()
     print(f"The M0+ takes {mb:.2f} times the M4's instructions for CUT on these rows before, {ma:.2f} now.")
 print()
-print("Where the M0+'s instructions go in CUT on the EDGE rows (one run; QEMU's in_asm and exec")
-print("logs between the benchmark's marks, by function, each function's own instructions;")
-print("`__aeabi_lmul` is libgcc's 64 x 64 multiply, which ARMv6-M, with MULS only, calls):")
+print("DRAW alone: 20 x 20 cubes seen as Figure 4 (4,800 edges, halo 50, the paper's gap) in one")
+print(f"piece, {n(draw[('now', cpus[0])][0])} crossings, {n(draw[('now', cpus[0])][1])} spans; instructions:")
 print()
-runs = [(t, profile(t)) for t in tags]
-names = set()
-for t, (total, self, lib) in runs:
-    names |= {k for k, v in sorted(self.items(), key=lambda kv: -kv[1])[:8]}
-names.add("__aeabi_lmul")
-print("| function | " + " | ".join("share, " + ("before" if t == "base" else "now") for t in tags) + " |")
-print("|---|" + "---:|" * len(tags))
-last = runs[-1][1][1]
-for k in sorted(names, key=lambda k: -max(r[1][1].get(k, 0) for r in runs)):
-    print(f"| {short(k)} | " + " | ".join(f"{100 * r[1][1].get(k, 0):.1f} %" for r in runs) + " |")
-print("| instructions | " + " | ".join(n(r[1][0]) for r in runs) + " |")
-print()
-print("Calls of `__aeabi_lmul` by caller (its instructions with them, as shares of the run):")
-print()
-print("| caller | " + " | ".join(("before" if t == "base" else "now") for t in tags) + " |")
-print("|---|" + "---:|" * len(tags))
-callers = {k[1] for t, (total, self, lib) in runs for k in lib if k[0] == "__aeabi_lmul"}
-for cl in sorted(callers, key=lambda cl: -max(r[1][2].get(("__aeabi_lmul", cl), (0, 0))[0] for r in runs)):
-    cells = []
+print("| | " + " | ".join(cpus) + " | M0+ / M4 |")
+print("|---|" + "---:|" * len(cpus) + "---:|")
+for tag in tags:
+    for name, i in (("CUT", 2), ("DRAW", 3)):
+        label = name + (", before" if tag == "base" else "")
+        print(f"| {label} | " + " | ".join(n(draw[(tag, c)][i]) for c in cpus) +
+              f" | {ratio(draw[(tag, 'M0+')][i], draw[(tag, 'M4')][i])} |")
+def profile(tag, part):
+    total, self, lib = 0, {}, {}
+    for l in open(f"{out}/{tag}/M0+/{part}.profile"):
+        f = l.split()
+        if f[0] == "total": total = int(f[1])
+        elif f[0] == "self": self[f[2]] = float(f[1])
+        elif f[0] == "lib": lib[(f[2], f[3])] = (float(f[1]), int(f[4]))
+    return total, self, lib
+def short(sym):
+    name = subprocess.run(["c++filt", sym], capture_output=True, text=True).stdout.strip()
+    name = name.replace("(anonymous namespace)::", "").replace("haloplot::", "")
+    depth, plain = 0, ""
+    for ch in name:  # template arguments dropped
+        depth += ch == "<"
+        if depth == 0: plain += ch
+        depth -= ch == ">"
+    plain = plain.split("(")[0].split()  # the arguments and the return type dropped
+    return "`" + (plain[-1] if plain else sym) + "`"
+def when(t): return "before" if t == "base" else "now"
+for part, what in (("cut", "CUT on the EDGE rows"), ("draw", "DRAW of the 20 x 20 cubes")):
+    print()
+    print(f"Where the M0+'s instructions go in {what} (one run; QEMU's in_asm and exec logs between")
+    print("the benchmark's marks, by function, each function's own instructions; `__aeabi_lmul` is")
+    print("libgcc's 64 x 64 multiply, which ARMv6-M, with MULS only, calls; `__aeabi_*div*` and")
+    print("`__*divdi3` its divisions, which it has no instruction for at any width):")
+    print()
+    runs = [(t, profile(t, part)) for t in tags]
+    names = {"__aeabi_lmul"}
     for t, (total, self, lib) in runs:
-        share, calls = lib.get(("__aeabi_lmul", cl), (0, 0))
-        cells.append(f"{n(calls)} ({100 * share:.1f} %)")
-    print(f"| {short(cl)} | " + " | ".join(cells) + " |")
+        names |= {k for k, v in sorted(self.items(), key=lambda kv: -kv[1])[:8]}
+    print("| function | " + " | ".join("share, " + when(t) for t in tags) + " |")
+    print("|---|" + "---:|" * len(tags))
+    for k in sorted(names, key=lambda k: -max(r[1][1].get(k, 0) for r in runs)):
+        print(f"| {short(k)} | " + " | ".join(f"{100 * r[1][1].get(k, 0):.1f} %" for r in runs) + " |")
+    print("| instructions | " + " | ".join(n(r[1][0]) for r in runs) + " |")
+    print()
+    print("Library calls by caller, the largest (calls, and the routine's instructions with the")
+    print("routines it calls as shares of the run):")
+    print()
+    print("| routine | caller | " + " | ".join(when(t) for t in tags) + " |")
+    print("|---|---|" + "---:|" * len(tags))
+    keys = {k for t, (total, self, lib) in runs for k in lib}
+    keys = sorted(keys, key=lambda k: -max(r[1][2].get(k, (0, 0))[0] for r in runs))
+    for k in keys[:8]:
+        cells = []
+        for t, (total, self, lib) in runs:
+            share, calls = lib.get(k, (0, 0))
+            cells.append(f"{n(calls)} ({100 * share:.1f} %)")
+        print(f"| `{k[0]}` | {short(k[1])} | " + " | ".join(cells) + " |")
 PY
 }
 section > "$out/section.md"
