@@ -125,9 +125,13 @@ profile() {
 tags="now"
   for cpu in $cpus; do build "$root" now "$cpu"; done
 if [ -n "$baseline" ]; then
-  rm -rf "$out/src-base"
-  mkdir -p "$out/src-base"
-  git archive "$baseline" | tar -x -C "$out/src-base"
+  rev=$(git rev-parse "$baseline")
+  if [ "$(cat "$out/src-base.rev" 2>/dev/null)" != "$rev" ]; then  # kept for the next run
+    rm -rf "$out/src-base"
+    mkdir -p "$out/src-base"
+    git archive "$rev" | tar -x -C "$out/src-base"
+    echo "$rev" > "$out/src-base.rev"
+  fi
   for cpu in $cpus; do build "$out/src-base" base "$cpu"; done
   tags="base now"
 fi
@@ -238,12 +242,12 @@ def when(t): return "before" if t == "base" else "now"
 for part, what in (("cut", "CUT on the EDGE rows"), ("draw", "DRAW of the 20 x 20 cubes")):
     print()
     print(f"Where the M0+'s instructions go in {what} (one run; QEMU's in_asm and exec logs between")
-    print("the benchmark's marks, by function, each function's own instructions; `__aeabi_lmul` is")
-    print("libgcc's 64 x 64 multiply, which ARMv6-M, with MULS only, calls; `__aeabi_*div*` and")
-    print("`__*divdi3` its divisions, which it has no instruction for at any width):")
+    print("the benchmark's marks, by function, each function's own instructions; `__aeabi_lmul` and")
+    print("`__muldi3` are libgcc's 64 x 64 multiply, which ARMv6-M, with MULS only, calls;")
+    print("`__aeabi_*div*` and `__*divdi3` its divisions, which it has no instruction for at any width):")
     print()
     runs = [(t, profile(t, part)) for t in tags]
-    names = {"__aeabi_lmul"}
+    names = {k for k in ("__aeabi_lmul", "__muldi3") if any(r[1][1].get(k, 0) for r in runs)}
     for t, (total, self, lib) in runs:
         names |= {k for k, v in sorted(self.items(), key=lambda kv: -kv[1])[:8]}
     print("| function | " + " | ".join("share, " + when(t) for t in tags) + " |")
