@@ -77,11 +77,14 @@ struct CellBox {
 // Does the cell hold the crossing point a + d * n / den (per axis)? Exact, and division-free:
 // x0 <= a + d n / den < x0 + side  <=>  (x0 - a) den <= d n < (x0 + side - a) den, den > 0.
 // Every product stays below 2^21 * 2^41 = 2^62.
+// (The cell's offsets from a are below 2^21 in magnitude, int32_t: 32 x 64 products.)
 inline bool owns(const CellBox& cb, int32_t ax, int32_t dx, int32_t ay, int32_t dy, int64_t n,
                  int64_t den) {
-  const int64_t px = int64_t{dx} * n, py = int64_t{dy} * n;
-  return (cb.x0 - ax) * den <= px && px < (cb.x0 + cb.side - ax) * den &&
-         (cb.y0 - ay) * den <= py && py < (cb.y0 + cb.side - ay) * den;
+  const int64_t px = mul_32x64(dx, n), py = mul_32x64(dy, n);
+  const int32_t x0 = int32_t(cb.x0 - ax), x1 = int32_t(cb.x0 + cb.side - ax);
+  const int32_t y0 = int32_t(cb.y0 - ay), y1 = int32_t(cb.y0 + cb.side - ay);
+  return mul_32x64(x0, den) <= px && px < mul_32x64(x1, den) && mul_32x64(y0, den) <= py &&
+         py < mul_32x64(y1, den);
 }
 
 // C6.2-C6.5 for one pair inside a cell whose boxes overlap; edge ei < edge ej. The projected
@@ -165,8 +168,10 @@ void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_st
   for (uint32_t c = c_begin; c < c_end; ++c) {
     const uint32_t begin = cell_start[c], end = cell_start[c + 1];
     const uint64_t k = end - begin;
-    st.pairs_tested += k * (k - 1) / 2;
-    const CellBox cb{c, g.ox + int64_t{col} * g.cell, g.oy + int64_t{row} * g.cell, g.cell};
+    st.pairs_tested += mul_u32x32(uint32_t(k), uint32_t(k) - 1) / 2;  // 0 for k = 0 too
+    // col, row and the cell side below 2^21: 32 x 32 -> 64 products (geometry/product.h)
+    const CellBox cb{c, g.ox + mul_32x32(int32_t(col), g.cell),
+                     g.oy + mul_32x32(int32_t(row), g.cell), g.cell};
     for (uint32_t i = begin; i + 1 < end; ++i) {
       // P's box once per row, then Q's box against it: a cheap reject before the exact
       // test, since most pairs sharing a cell do not even overlap.
@@ -429,7 +434,7 @@ Status plan_cut(const Edge3* edges, uint32_t n, const CutParams& params, CutPlan
     const uint32_t c1 = g.col(min_i32(max_i32(e.a.x, e.b.x) + r, xmax));
     const uint32_t r0 = g.row(max_i32(min_i32(e.a.y, e.b.y) - r, g.oy));
     const uint32_t r1 = g.row(min_i32(max_i32(e.a.y, e.b.y) + r, ymax));
-    pairs += uint64_t{c1 - c0 + 1} * (r1 - r0 + 1);
+    pairs += mul_u32x32(c1 - c0 + 1, r1 - r0 + 1);
   }
   if (pairs > 0xffffffffu) return Status::kCellPairOverflow;
   p.cell_pairs = static_cast<uint32_t>(pairs);
