@@ -105,8 +105,13 @@ Status short_of(const Arena& a, HiddenReport* r) {
   return Status::kWorkspaceTooSmall;
 }
 
-// CUT over every edge; its scratch is given back afterwards. kWorkspaceTooSmall: the arena is
-// short (arena->need says how much it needed).
+// CUT over every edge; its scratch is given back afterwards. The scratch comes first and the
+// CUTSET above it; once CUT is done the CUTSET (its index and the records it stored) moves
+// down onto the scratch, and the rest of its capacity is free again. The next stages then
+// reuse the pages CUT wrote instead of new ones past a capacity that is mostly a guess (the
+// host's first guess on a 1M-triangle torus is six times the records stored). The high-water
+// mark is the same as with the CUTSET first. kWorkspaceTooSmall: the arena is short
+// (arena->need says how much it needed).
 Status cut_step(const Edge3* edges, uint32_t n, const HiddenParams& params, Arena* arena,
                 CutSet* cutset, HiddenReport* r) {
   CutPlan plan;
@@ -114,14 +119,26 @@ Status cut_step(const Edge3* edges, uint32_t n, const HiddenParams& params, Aren
   if (s != Status::kOk) return s;
   const size_t cutset_size = cutset_bytes(n, params.crossing_capacity);
   r->bytes_cut = cutset_size + plan.scratch_bytes;
-  uint8_t* cutset_mem = arena->take(cutset_size);
   const size_t mark = arena->used;
   uint8_t* cut_scratch = arena->take(plan.scratch_bytes);
-  if (cutset_mem == nullptr || cut_scratch == nullptr) return Status::kWorkspaceTooSmall;
+  uint8_t* cutset_mem = cut_scratch == nullptr ? nullptr : arena->take(cutset_size);
+  if (cutset_mem == nullptr) {
+    arena->used = mark;
+    arena->need = mark + carve_round(plan.scratch_bytes) + carve_round(cutset_size);
+    return Status::kWorkspaceTooSmall;
+  }
   s = run_cut(plan, edges, cut_scratch, plan.scratch_bytes, cutset_mem, cutset_size, cutset,
               &r->cut);
   arena->used = mark;
-  return s;
+  if (s != Status::kOk) return s;
+  // Down onto the scratch, in order (the destination lies below the source).
+  const size_t words = (cutset_bytes(n, cutset->n_crossings) + 3) / 4;
+  uint32_t* to = reinterpret_cast<uint32_t*>(arena->take(words * 4));
+  const uint32_t* from = reinterpret_cast<const uint32_t*>(cutset_mem);
+  for (size_t i = 0; i < words; ++i) to[i] = from[i];
+  cutset->first = to;
+  cutset->crossings = reinterpret_cast<const Crossing*>(to + (size_t{n} + 1));
+  return Status::kOk;
 }
 
 // One run's state, shared by its steps: the arena, the report so far, and what each step built
@@ -169,7 +186,11 @@ Status HiddenRun::build_edges() {
     to.row_lo = params.band_y0;
     to.row_hi = params.band_y1 - 1;
   }
-  const Status s = build_topology(in, arena.base + arena.used, arena.size - arena.used, &topo, to);
+  // At most the bytes the build can need: its scratch, at the top of what it is given, then
+  // lies on pages the next stages write again (a growing buffer is far larger than the build).
+  const size_t free = arena.size - arena.used, most = topology_bytes(in);
+  const Status s =
+      build_topology(in, arena.base + arena.used, most < free ? most : free, &topo, to);
   if (s == Status::kWorkspaceTooSmall) {
     arena.need = arena.used + topology_bytes(in);
     return out_of_room();
