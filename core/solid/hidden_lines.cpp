@@ -141,6 +141,32 @@ Status cut_step(const Edge3* edges, uint32_t n, const HiddenParams& params, Aren
   return Status::kOk;
 }
 
+// Copies n items down to `at` (at most where they are: forward is safe); returns their new
+// place and moves `at` past them.
+template <typename T>
+T* move_down(uint8_t** at, T* from, size_t n) {
+  T* to = reinterpret_cast<T*>(*at);
+  for (size_t i = 0; i < n; ++i) {
+    const T x = from[i];
+    to[i] = x;
+  }
+  *at += carve_round(n * sizeof(T));
+  return to;
+}
+
+// The incidences' arrays packed down from `at` in their order, each cut to what it holds: the
+// records' capacity is a first guess (one per vertex) and mostly unwritten, and the stages
+// after them would otherwise start on new pages beyond it. Returns their end.
+uint8_t* pack_incidences(Incidences* inc, const Topology& topo, uint8_t* at) {
+  inc->by_edge = move_down(&at, inc->by_edge, inc->n);
+  inc->edge_first = move_down(&at, inc->edge_first, size_t{topo.n_edges} + 1);
+  if (inc->by_vertex == nullptr) return at;
+  inc->by_vertex = move_down(&at, inc->by_vertex, inc->n);
+  inc->vertex_first = move_down(&at, inc->vertex_first, size_t{topo.n_vertices} + 1);
+  inc->same_next = move_down(&at, inc->same_next, topo.n_vertices);
+  return at;
+}
+
 // One run's state, shared by its steps: the arena, the report so far, and what each step built
 // for the next. Every step that fails writes the report before it returns.
 struct HiddenRun {
@@ -171,6 +197,7 @@ struct HiddenRun {
   }
   Status build_edges();
   Status cut_and_touches();
+  Status add_stars();
   Status lines(const uint8_t* hiding_front);
   Status qi_method(bool* gave_up);
   Status fallback_method(bool manifold);
@@ -180,8 +207,8 @@ struct HiddenRun {
 // arena and keeps its first kept_bytes.
 Status HiddenRun::build_edges() {
   TopologyOptions to;
+  to.stars = false;   // built after CUT (add_stars), which does not read them
   if (params.band) {  // the band's fallback reads no stars, and no side beyond its rows
-    to.stars = false;
     to.rows = true;
     to.row_lo = params.band_y0;
     to.row_hi = params.band_y1 - 1;
@@ -226,10 +253,22 @@ Status HiddenRun::cut_and_touches() {
   s = find_incidences(topo, params.incidence_capacity, inc_mem, r.bytes_incidence, &inc,
                       &r.incidences_needed, by_vertex);
   if (s != Status::kOk) return fail(s);
-  // The search's scratch ends the block, and its 8 bytes of alignment slack: both free again.
-  arena.used -= incidence_scratch_bytes(topo) + 8;
+  // The search's scratch ends the block, and its 8 bytes of alignment slack: both free again;
+  // so is the records' capacity beyond the ones found.
+  arena.used = size_t(pack_incidences(&inc, topo, inc_mem) - arena.base);
   r.incidences = inc.n;
   r.coincident_vertices = inc.coincident_vertices;
+  return params.band ? Status::kOk : add_stars();
+}
+
+// The vertex stars the QI, the fallback's V.C. table and the outlines read, kept from here on.
+Status HiddenRun::add_stars() {
+  const size_t bytes = topology_star_bytes(topo);
+  uint8_t* mem = arena.take(bytes);
+  if (mem == nullptr) return out_of_room();
+  const Status s = build_topology_stars(&topo, mem, bytes);
+  if (s != Status::kOk) return fail(s);
+  r.bytes_topology += bytes;
   return Status::kOk;
 }
 
