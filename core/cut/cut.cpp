@@ -63,6 +63,8 @@ struct EdgeEntry {  // 28 bytes: a host's, the depths beside the projection
 };
 using CompactEntry = Pick<kHost, EdgeEntry, ProjectionEntry>::type;
 
+bool is_marked(const uint32_t* marked, uint32_t e) { return (marked[e >> 5] >> (e & 31)) & 1u; }
+
 size_t entry_bytes(const CutParams& p) {
   return p.compact_cells ? sizeof(CompactEntry) : sizeof(IndexEntry);
 }
@@ -150,11 +152,14 @@ struct CellBox {
 // Does the cell hold the crossing point a + d * n / den (per axis)? Exact, and division-free:
 // x0 <= a + d n / den < x0 + side  <=>  (x0 - a) den <= d n < (x0 + side - a) den, den > 0.
 // Every product stays below 2^21 * 2^41 = 2^62.
+// (The cell's offsets from a are below 2^21 in magnitude, int32_t: 32 x 64 products.)
 inline bool owns(const CellBox& cb, int32_t ax, int32_t dx, int32_t ay, int32_t dy, int64_t n,
                  int64_t den) {
-  const int64_t px = int64_t{dx} * n, py = int64_t{dy} * n;
-  return (cb.x0 - ax) * den <= px && px < (cb.x0 + cb.side - ax) * den &&
-         (cb.y0 - ay) * den <= py && py < (cb.y0 + cb.side - ay) * den;
+  const int64_t px = mul_32x64(dx, n), py = mul_32x64(dy, n);
+  const int32_t x0 = int32_t(cb.x0 - ax), x1 = int32_t(cb.x0 + cb.side - ax);
+  const int32_t y0 = int32_t(cb.y0 - ay), y1 = int32_t(cb.y0 + cb.side - ay);
+  return mul_32x64(x0, den) <= px && px < mul_32x64(x1, den) && mul_32x64(y0, den) <= py &&
+         py < mul_32x64(y1, den);
 }
 
 // floor(num * 2^32 / den) for 0 <= num < den < 2^41: frac_q32_small's value. Where 64-bit
@@ -378,7 +383,7 @@ constexpr bool kDecideEveryPair = kHost;
 static_assert(kCrossBits + 2 <= 63, "side values, and s4 = s3 + s1 - s2, must fit int64_t");
 template <typename Entry>
 uint64_t crossing_mask(const Entry* list, const Edge3* edges, int64_t pax, int64_t pay, int64_t pdx,
-                       int64_t pdy, uint32_t j0, uint32_t j1) {
+                       int64_t pdy, uint32_t j0, uint32_t j1, const uint32_t* only_marked) {
   uint64_t mask = 0;
   for (uint32_t j = j0; j < j1; ++j) {
     const auto& q = list[j].segment(edges);
@@ -390,7 +395,9 @@ uint64_t crossing_mask(const Entry* list, const Edge3* edges, int64_t pax, int64
     // Strictly apart: signs differ and neither is zero (an end on the other's line).
     const bool apart12 = ((s1 ^ s2) < 0) & (s1 != 0) & (s2 != 0);
     const bool apart34 = ((s3 ^ s4) < 0) & (s3 != 0) & (s4 != 0);
-    mask |= uint64_t(apart12 & apart34) << (j - j0);
+    // Only pairs with a marked edge (CutParams::marked), when P is not marked itself.
+    const bool wanted = only_marked == nullptr || is_marked(only_marked, list[j].edge);
+    mask |= uint64_t(apart12 & apart34 & wanted) << (j - j0);
   }
   return mask;
 }
@@ -404,20 +411,25 @@ void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_st
   const Grid& g = plan.grid;
   const uint32_t cells = g.cells();
   const int32_t r = plan.params.reach;
+  const uint32_t* marked = plan.params.marked;
   uint32_t col = c_begin % g.nx, row = c_begin / g.nx;
   for (uint32_t c = c_begin; c < c_end; ++c) {
     const uint32_t begin = cell_start[c], end = cell_start[c + 1];
     const uint64_t k = end - begin;
-    st.pairs_tested += k * (k - 1) / 2;
-    const CellBox cb{c, g.ox + int64_t{col} * g.cell, g.oy + int64_t{row} * g.cell, g.cell};
+    st.pairs_tested += mul_u32x32(uint32_t(k), uint32_t(k) - 1) / 2;  // 0 for k = 0 too
+    // col, row and the cell side below 2^21: 32 x 32 -> 64 products (geometry/product.h)
+    const CellBox cb{c, g.ox + mul_32x32(int32_t(col), g.cell),
+                     g.oy + mul_32x32(int32_t(row), g.cell), g.cell};
     for (uint32_t i = begin; i + 1 < end; ++i) {
       if (kDecideEveryPair && r == 0) {
         const auto& p = list[i].segment(edges);
         const int64_t pdx = p.b.x - p.a.x, pdy = p.b.y - p.a.y;
+        const bool p_marked = marked == nullptr || is_marked(marked, list[i].edge);
+        const uint32_t* only_marked = p_marked ? nullptr : marked;
         for (uint32_t j0 = i + 1; j0 < end; j0 += 64) {
           const uint32_t j1 = end - j0 > 64 ? j0 + 64 : end;
-          for (uint64_t m = crossing_mask(list, edges, p.a.x, p.a.y, pdx, pdy, j0, j1); m != 0;
-               m &= m - 1)
+          for (uint64_t m = crossing_mask(list, edges, p.a.x, p.a.y, pdx, pdy, j0, j1, only_marked);
+               m != 0; m &= m - 1)
             test_pair(g, cb, edges, list[i], list[j0 + uint32_t(__builtin_ctzll(m))], r, rec, st);
         }
         continue;
@@ -427,7 +439,9 @@ void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_st
       const auto& p = list[i].segment(edges);
       const int32_t px0 = min_i32(p.a.x, p.b.x) - r, px1 = max_i32(p.a.x, p.b.x) + r;
       const int32_t py0 = min_i32(p.a.y, p.b.y) - r, py1 = max_i32(p.a.y, p.b.y) + r;
+      const bool p_marked = marked == nullptr || is_marked(marked, list[i].edge);
       for (uint32_t j = i + 1; j < end; ++j) {
+        if (!p_marked && !is_marked(marked, list[j].edge)) continue;
         const auto& q = list[j].segment(edges);
         const int32_t qx0 = min_i32(q.a.x, q.b.x), qx1 = max_i32(q.a.x, q.b.x);
         const int32_t qy0 = min_i32(q.a.y, q.b.y), qy1 = max_i32(q.a.y, q.b.y);
@@ -675,7 +689,7 @@ Status plan_cut(const Edge3* edges, uint32_t n, const CutParams& params, CutPlan
     const uint32_t c1 = g.col(min_i32(max_i32(e.a.x, e.b.x) + r, xmax));
     const uint32_t r0 = g.row(max_i32(min_i32(e.a.y, e.b.y) - r, g.oy));
     const uint32_t r1 = g.row(min_i32(max_i32(e.a.y, e.b.y) + r, ymax));
-    pairs += uint64_t{c1 - c0 + 1} * (r1 - r0 + 1);
+    pairs += mul_u32x32(c1 - c0 + 1, r1 - r0 + 1);
   }
   if (pairs > 0xffffffffu) return Status::kCellPairOverflow;
   p.cell_pairs = static_cast<uint32_t>(pairs);

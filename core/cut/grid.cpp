@@ -1,5 +1,6 @@
 #include "haloplot/cut/grid.h"
 
+#include "haloplot/geometry/product.h"
 #include "haloplot/geometry/wide.h"
 
 namespace haloplot {
@@ -9,8 +10,9 @@ uint32_t average_length(const Edge3* edges, uint32_t n) {
   const uint32_t stride = n > kLengthSample ? n / kLengthSample : 1;
   uint64_t sum = 0, count = 0;  // at most 2^32 lengths below 2^21: fits in 53 bits
   for (uint32_t i = 0; i < n; i += stride, ++count) {
-    const int64_t dx = edges[i].b.x - edges[i].a.x, dy = edges[i].b.y - edges[i].a.y;
-    sum += isqrt_u64(static_cast<uint64_t>(dx * dx + dy * dy));
+    const int32_t dx = edges[i].b.x - edges[i].a.x, dy = edges[i].b.y - edges[i].a.y;
+    sum += isqrt_u64(static_cast<uint64_t>(mul_narrow<kDiffBits, kDiffBits>(dx, dx) +
+                                           mul_narrow<kDiffBits, kDiffBits>(dy, dy)));
   }
   return static_cast<uint32_t>(sum / count);
 }

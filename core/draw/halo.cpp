@@ -52,13 +52,14 @@ Gap disc_gap(const Edge3& behind, int64_t cx, int64_t cy, int32_t r) {
 
 template <typename Sqrt>
 Gap paper_gap(const Edge3& behind, const Edge3& front, uint32_t t32, int32_t halo) {
-  const int64_t pdx = behind.b.x - behind.a.x, pdy = behind.b.y - behind.a.y;
-  const int64_t qdx = front.b.x - front.a.x, qdy = front.b.y - front.a.y;
-  int64_t d = cross(pdx, pdy, qdx, qdy);  // nonzero: the edges cross properly
+  // Differences of in-range coordinates (|.| < 2^kDiffBits): 32 x 32 -> 64 products.
+  const int32_t pdx = behind.b.x - behind.a.x, pdy = behind.b.y - behind.a.y;
+  const int32_t qdx = front.b.x - front.a.x, qdy = front.b.y - front.a.y;
+  int64_t d = cross_diffs(pdx, pdy, qdx, qdy);  // nonzero: the edges cross properly
   if (d < 0) d = -d;
   if (d == 0) return kWhole;  // cannot happen for a CUT crossing; stay safe for bad input
   // half-gap in t = W * |dq| / |d|; numerator < 2^20 * 2^31.5, denominator < 2^51.
-  const int64_t num = int64_t{halo} * static_cast<int64_t>(Sqrt::length_q10_ceil(qdx, qdy));
+  const int64_t num = mul_32x64(halo, static_cast<int64_t>(Sqrt::length_q10_ceil(qdx, qdy)));
   const int64_t h = q32_ceil_clamped(num, d << 10);  // d > 0 here
   // The exact crossing lies in [t32, t32 + 1) / 2^32.
   return Gap{int64_t{t32} - h, int64_t{t32} + 1 + h};

@@ -1,13 +1,19 @@
 #include "haloplot/draw/precision.h"
 
+#include "haloplot/geometry/contract.h"
+#include "haloplot/geometry/product.h"
 #include "haloplot/geometry/wide.h"
 
 namespace haloplot {
 namespace {
 
-// |(dx, dy)|^2 in Q20: < 2^42 << 20 < 2^62.
+// |(dx, dy)|^2 in Q20: < 2^42 << 20 < 2^62. The differences are below 2^kDiffBits, so the
+// squares are 32 x 32 -> 64 products (geometry/product.h).
 uint64_t square_q20(int64_t dx, int64_t dy) {
-  return static_cast<uint64_t>(dx * dx + dy * dy) << 20;
+  const int32_t x = static_cast<int32_t>(dx), y = static_cast<int32_t>(dy);
+  return static_cast<uint64_t>(mul_narrow<kDiffBits, kDiffBits>(x, x) +
+                               mul_narrow<kDiffBits, kDiffBits>(y, y))
+         << 20;
 }
 
 int bit_length(uint64_t v) { return v ? 64 - __builtin_clzll(v) : 0; }
@@ -45,8 +51,9 @@ uint64_t SqrtExact::length_q10_ceil(int64_t dx, int64_t dy) {
   uint64_t s = SqrtTable::length_q10_ceil(dx, dy);
   s = (s + l2 / s) / 2;
   s = (s + l2 / s) / 2;
-  while (s * s < l2) ++s;               // Newton's floor may sit one below the root
-  while ((s - 1) * (s - 1) >= l2) --s;  // the least s with s^2 >= l2
+  // s is within one of the root, below 2^31: its squares are 32 x 32 -> 64 products
+  while (mul_u32x32(uint32_t(s), uint32_t(s)) < l2) ++s;  // Newton's floor may sit one below
+  while (mul_u32x32(uint32_t(s - 1), uint32_t(s - 1)) >= l2) --s;  // the least s, s^2 >= l2
   return s;
 }
 

@@ -88,10 +88,41 @@ uint64_t isqrt(Wide v) {
   return root;
 }
 
+namespace {
+
+// One step of the bit-pair method in 32 bits: valid while the root stays below 2^30
+// (v < 2^60), where the shifted remainder, at most 2 (2^29 - 1) * 4 + 3, fits 32 bits.
+inline void isqrt_step(uint32_t two_bits, uint32_t& root, uint32_t& rem) {
+  rem = (rem << 2) | two_bits;
+  const uint32_t trial = (root << 2) | 1u;
+  root <<= 1;
+  if (rem >= trial) {
+    rem -= trial;
+    root |= 1u;
+  }
+}
+
+}  // namespace
+
 uint32_t isqrt_u64(uint64_t v) {
-  // The same bit-pair method on 64 bits, starting at the highest non-zero pair (CLZ is one
-  // instruction on both targets): lengths below 2^21 need 21 steps, not 32.
+  // The bit-pair method, starting at the highest non-zero pair (CLZ is one instruction on
+  // most targets): lengths below 2^21 need 21 steps, not 32.
   if (v == 0) return 0;
+  if (v < (uint64_t{1} << 60)) {
+    // The same steps on 32-bit words: the high word's pairs, then the low word's. The
+    // Cortex-M0+ shifts 64 bits by a variable amount in a library call; 32 bits in one.
+    const uint32_t hi = static_cast<uint32_t>(v >> 32), lo = static_cast<uint32_t>(v);
+    uint32_t root = 0, rem = 0;
+    int first_low = 30;
+    if (hi != 0) {
+      for (int shift = (31 - __builtin_clz(hi)) & ~1; shift >= 0; shift -= 2)
+        isqrt_step((hi >> shift) & 3u, root, rem);
+    } else {
+      first_low = (31 - __builtin_clz(lo)) & ~1;
+    }
+    for (int shift = first_low; shift >= 0; shift -= 2) isqrt_step((lo >> shift) & 3u, root, rem);
+    return root;
+  }
   uint64_t root = 0, rem = 0;
   for (int shift = (63 - __builtin_clzll(v)) & ~1; shift >= 0; shift -= 2) {
     rem = (rem << 2) | ((v >> shift) & 3u);

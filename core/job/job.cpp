@@ -467,7 +467,10 @@ Status job_solid_bytes(const JobSpec& steps, const SolidInput& in, void* buffer,
   JobBytes path;
   size_path_stages(collect.count, &path);
   const size_t below = collect.tail != nullptr ? size_t(collect.tail - base) : 0;  // no sink call
-  const size_t run = below + size_t{collect.count} * (sizeof(Segment2) + 1);
+  // The run's own high-water mark may lie above the tail it gave the sink: CUT's scratch and
+  // full CUTSET capacity, given back before the tail was handed on (solid/hidden_lines.cpp).
+  const size_t strokes_run = below + size_t{collect.count} * (sizeof(Segment2) + 1);
+  const size_t run = strokes_run > report->bytes_used ? strokes_run : report->bytes_used;
   const size_t move = 2 * strokes + collect.count;
   const size_t plan = strokes + path.points + path.path;
   n.bytes = run > move ? run : move;

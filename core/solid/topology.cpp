@@ -261,6 +261,35 @@ void drop_flat_diagonals(Topology* topo, const uint8_t* facing) {
   t.n_edges = n;
 }
 
+size_t topology_star_bytes(const Topology& topo) {
+  ByteCounter c;
+  c.take<uint32_t>(size_t{topo.n_vertices} + 1);
+  c.take<uint32_t>(2 * size_t{topo.n_edges});
+  c.take<uint32_t>(size_t{topo.n_vertices} + 1);
+  c.take<uint32_t>(size_t{topo.n_triangles} * 3);
+  return c.total + 8;
+}
+
+Status build_topology_stars(Topology* topo, void* buffer, size_t bytes) {
+  Topology& t = *topo;
+  Carver carve(buffer, bytes);
+  t.vertex_edge_first = carve.take<uint32_t>(size_t{t.n_vertices} + 1);
+  t.vertex_edges = carve.take<uint32_t>(2 * size_t{t.n_edges});
+  t.vertex_face_first = carve.take<uint32_t>(size_t{t.n_vertices} + 1);
+  t.vertex_faces = carve.take<uint32_t>(size_t{t.n_triangles} * 3);
+  if (carve.short_) {
+    t.vertex_edge_first = t.vertex_edges = t.vertex_face_first = t.vertex_faces = nullptr;
+    return Status::kWorkspaceTooSmall;
+  }
+  SolidInput in;
+  in.vertices = t.vertices;
+  in.n_vertices = t.n_vertices;
+  in.triangles = t.triangles;
+  in.n_triangles = t.n_triangles;
+  build_stars(in, t);
+  return Status::kOk;
+}
+
 size_t topology_bytes(const SolidInput& in) {
   ByteCounter kept;
   count_kept(kept, in, size_t{in.n_edges} + size_t{in.n_triangles} * 3);  // at most this many

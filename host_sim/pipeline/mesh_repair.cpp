@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <unordered_map>
+#include <tuple>
 #include <utility>
 
 #include "io/pair_set.h"
@@ -11,37 +11,102 @@
 namespace haloplot::host {
 namespace {
 
-// Integer world coordinates (within +-2^20) packed into one key.
-uint64_t position_key(int64_t x, int64_t y, int64_t z) {
-  const int64_t off = int64_t(1) << 21;
-  return uint64_t(x + off) << 44 | uint64_t(y + off) << 22 | uint64_t(z + off);
+// A vertex's cell: its coordinates' quotients by the cell's side (rounded toward zero, so the
+// cells next to 0 are wider), compared in (x, y, z) order. Moving every cell by one offset
+// keeps that order: the neighbours in one direction of cells in order come in order.
+struct CellPos {
+  int64_t x, y, z;
+  bool operator<(const CellPos& o) const {
+    return x != o.x ? x < o.x : y != o.y ? y < o.y : z < o.z;
+  }
+  bool operator==(const CellPos& o) const { return x == o.x && y == o.y && z == o.z; }
+};
+
+// Where a vertex may be welded to: an earlier vertex within the tolerance. `rank` is the
+// order the search of weld_map below meets it in: the neighbouring cells in (dx, dy, dz) order
+// (the earlier vertex's cell less the later one's), each cell's vertices in file order.
+struct WeldCandidate {
+  uint32_t later, rank, earlier;
+  bool operator<(const WeldCandidate& o) const {
+    return later != o.later ? later < o.later
+           : rank != o.rank ? rank < o.rank
+                            : earlier < o.earlier;
+  }
+};
+
+// Every pair of vertices within `tolerance` whose cells are at most `reach` apart in each
+// axis, as a candidate of the later one: the vertices sorted by cell, and each cell's
+// vertices paired with its own and with those of the 13 neighbours after it in key order (a
+// pointer per neighbour direction, moving forward with the cell). Each pair of cells is met
+// once; a clean mesh has few pairs.
+std::vector<WeldCandidate> close_pairs(const std::vector<Point3>& v, int64_t cell, int64_t reach,
+                                       double tolerance) {
+  struct Entry {
+    CellPos key;
+    uint32_t vertex;
+  };
+  std::vector<Entry> e(v.size());
+  for (uint32_t i = 0; i < v.size(); ++i)
+    e[i] = Entry{CellPos{v[i].x / cell, v[i].y / cell, v[i].z / cell}, i};
+  std::sort(e.begin(), e.end(), [](const Entry& a, const Entry& b) {
+    return a.key == b.key ? a.vertex < b.vertex : a.key < b.key;
+  });
+  std::vector<uint32_t> first;  // the cells: entries [first[c], first[c + 1])
+  for (uint32_t i = 0; i < e.size(); ++i)
+    if (i == 0 || !(e[i].key == e[i - 1].key)) first.push_back(i);
+  const uint32_t cells = uint32_t(first.size());
+  first.push_back(uint32_t(e.size()));
+  const double tol2 = tolerance * tolerance;
+  std::vector<WeldCandidate> out;
+  // Vertices a (cell A) and b (cell B, B - A = d): a candidate of the later one.
+  auto pair = [&](uint32_t a, uint32_t b, int64_t dx, int64_t dy, int64_t dz) {
+    const double ex = double(v[b].x) - v[a].x, ey = double(v[b].y) - v[a].y,
+                 ez = double(v[b].z) - v[a].z;
+    if (ex * ex + ey * ey + ez * ez > tol2) return;
+    if (a < b)  // b is later: its cell less a's is -d
+      out.push_back({b, uint32_t((1 - dx) * 9 + (1 - dy) * 3 + (1 - dz)), a});
+    else
+      out.push_back({a, uint32_t((1 + dx) * 9 + (1 + dy) * 3 + (1 + dz)), b});
+  };
+  struct Direction {
+    int64_t dx, dy, dz;
+    uint32_t at;  // the first cell not before this cell moved by (dx, dy, dz)
+  };
+  std::vector<Direction> forward;
+  for (int64_t dx = -reach; dx <= reach; ++dx)
+    for (int64_t dy = -reach; dy <= reach; ++dy)
+      for (int64_t dz = -reach; dz <= reach; ++dz)
+        if (std::make_tuple(dx, dy, dz) > std::make_tuple(0, 0, 0))
+          forward.push_back({dx, dy, dz, 0});
+  for (uint32_t c = 0; c < cells; ++c) {
+    const CellPos key = e[first[c]].key;
+    for (uint32_t i = first[c]; i < first[c + 1]; ++i)
+      for (uint32_t j = i + 1; j < first[c + 1]; ++j) pair(e[i].vertex, e[j].vertex, 0, 0, 0);
+    for (Direction& d : forward) {
+      const CellPos want{key.x + d.dx, key.y + d.dy, key.z + d.dz};
+      while (d.at < cells && e[first[d.at]].key < want) ++d.at;
+      if (d.at == cells || !(e[first[d.at]].key == want)) continue;
+      for (uint32_t i = first[c]; i < first[c + 1]; ++i)
+        for (uint32_t j = first[d.at]; j < first[d.at + 1]; ++j)
+          pair(e[i].vertex, e[j].vertex, d.dx, d.dy, d.dz);
+    }
+  }
+  return out;
 }
 
-// For each vertex, the vertex it becomes (the first kept one at its place, or itself).
+// For each vertex, the vertex it becomes: the first kept one at its place (in the order the
+// cells around it are searched: (dx, dy, dz) from -1 to 1, each cell's vertices in file order)
+// or itself. Decided in file order, so a candidate counts only when it was kept itself.
 std::vector<uint32_t> weld_map(const std::vector<Point3>& v, double tolerance) {
   std::vector<uint32_t> to(v.size());
   const int64_t cell = std::max<int64_t>(1, int64_t(std::ceil(tolerance)));
-  std::unordered_map<uint64_t, std::vector<uint32_t>> grid;
-  const double tol2 = tolerance * tolerance;
+  std::vector<WeldCandidate> near = close_pairs(v, cell, tolerance > 0 ? 1 : 0, tolerance);
+  std::sort(near.begin(), near.end());
+  size_t k = 0;
   for (uint32_t i = 0; i < v.size(); ++i) {
     to[i] = i;
-    const int64_t cx = v[i].x / cell, cy = v[i].y / cell, cz = v[i].z / cell;
-    const int64_t reach = tolerance > 0 ? 1 : 0;
-    for (int64_t dx = -reach; dx <= reach && to[i] == i; ++dx)
-      for (int64_t dy = -reach; dy <= reach && to[i] == i; ++dy)
-        for (int64_t dz = -reach; dz <= reach && to[i] == i; ++dz) {
-          auto it = grid.find(position_key(cx + dx, cy + dy, cz + dz));
-          if (it == grid.end()) continue;
-          for (uint32_t k : it->second) {
-            const double ex = double(v[k].x) - v[i].x, ey = double(v[k].y) - v[i].y,
-                         ez = double(v[k].z) - v[i].z;
-            if (ex * ex + ey * ey + ez * ez <= tol2) {
-              to[i] = k;
-              break;
-            }
-          }
-        }
-    if (to[i] == i) grid[position_key(cx, cy, cz)].push_back(i);
+    for (; k < near.size() && near[k].later == i; ++k)
+      if (to[i] == i && to[near[k].earlier] == near[k].earlier) to[i] = near[k].earlier;
   }
   return to;
 }
@@ -51,40 +116,48 @@ std::vector<uint32_t> weld_map(const std::vector<Point3>& v, double tolerance) {
 void weld_vertices(ObjModel* model, double tolerance, RepairReport* report) {
   const std::vector<uint32_t> to = weld_map(model->vertices, tolerance);
   std::vector<uint32_t> index(to.size());
-  std::vector<Point3> kept;
+  uint32_t kept = 0;
   for (uint32_t i = 0; i < to.size(); ++i) {
     if (to[i] == i) {
-      index[i] = uint32_t(kept.size());
-      kept.push_back(model->vertices[i]);
+      index[i] = kept;
+      model->vertices[kept++] = model->vertices[i];  // kept < i or kept == i: moves down
     } else {
       index[i] = index[to[i]];
       ++report->merged_vertices;
     }
   }
-  model->vertices = kept;
-  std::vector<std::vector<uint32_t>> faces;
-  std::vector<uint32_t> lines;
+  model->vertices.resize(kept);
+  // Faces renumbered in place; those left with fewer than three corners dropped (the rest
+  // move down, with their lines).
+  size_t out = 0, out_lines = 0;
+  const size_t n_lines = model->face_lines.size();  // the first faces' lines (all, or none)
   for (size_t f = 0; f < model->faces.size(); ++f) {
-    std::vector<uint32_t> c;
-    for (uint32_t v : model->faces[f])
-      if (c.empty() || c.back() != index[v]) c.push_back(index[v]);
-    while (c.size() > 1 && c.back() == c.front()) c.pop_back();
-    if (c.size() < 3) {
+    std::vector<uint32_t>& c = model->faces[f];
+    size_t n = 0;
+    for (uint32_t v : c)
+      if (n == 0 || c[n - 1] != index[v]) c[n++] = index[v];
+    while (n > 1 && c[n - 1] == c[0]) --n;
+    c.resize(n);
+    if (n < 3) {
       ++report->dropped_faces;
       continue;
     }
-    faces.push_back(c);
-    if (f < model->face_lines.size()) lines.push_back(model->face_lines[f]);
+    if (f < n_lines) model->face_lines[out_lines++] = model->face_lines[f];
+    if (out != f) model->faces[out] = std::move(c);
+    ++out;
   }
-  model->faces = faces;
-  model->face_lines = lines;
+  model->faces.resize(out);
+  model->face_lines.resize(out_lines);
   std::vector<uint32_t> edges;
+  edges.reserve(model->edge_pairs.size());
   PairSet seen;
   for (size_t e = 0; e + 1 < model->edge_pairs.size(); e += 2) {
     const uint32_t a = index[model->edge_pairs[e]], b = index[model->edge_pairs[e + 1]];
-    if (a != b && seen.insert(pair_key(a, b))) edges.insert(edges.end(), {a, b});
+    if (a == b || !seen.insert(pair_key(a, b))) continue;
+    edges.push_back(a);
+    edges.push_back(b);
   }
-  model->edge_pairs = edges;
+  model->edge_pairs = std::move(edges);
 }
 
 namespace {

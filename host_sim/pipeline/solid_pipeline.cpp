@@ -2,17 +2,22 @@
 
 #include <algorithm>
 #include <chrono>
+#include <utility>
 
 #include "pipeline/host_memory.h"
 
 namespace haloplot::host {
 namespace {
 
+// The pieces as they come. The geometry of an edge beyond the drawn ones (a diagonal, a line
+// on the faces) is kept aside with its index; SolidRun::edges is filled once the stage's
+// buffer is given back (a drawn edge's geometry is the scene's), so the two never take
+// memory at the same time.
 struct Collect {
   SolidRun* run;
+  std::vector<std::pair<uint32_t, Edge3>> others;
   void keep(const HiddenPiece& p) {
-    if (run->edges.size() <= p.edge) run->edges.resize(p.edge + 1);
-    run->edges[p.edge] = *p.geometry;
+    if (p.edge >= run->n_drawn) others.push_back({p.edge, *p.geometry});
   }
 };
 
@@ -100,7 +105,7 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
   needs.crossings = 4 * (in.n_edges + 3 * in.n_triangles) + 1024;
   needs.incidences = in.n_vertices + 64;
   HiddenReport r;
-  Collect c{out};
+  Collect c{out, {}};
   HiddenLinesStage stage{&in, params, HiddenSink{nullptr, &collect_piece, &collect_outline, &c}, &r,
                          hidden_lines_first_bytes(in)};
   auto restart = restarting(&stage, [out, &in] {
@@ -113,12 +118,10 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
     out->hatch_faces.clear();
     out->n_drawn = in.n_edges;
   });
-  // Room for the drawn edges and about as many diagonals as faces (a quad mesh's: half that),
-  // so the pieces' edges seldom grow the vector by copying it.
-  out->edges.reserve(size_t{in.n_edges} + in.n_triangles);
   out->pieces.reserve(2 * size_t{in.n_edges});  // a piece or two a drawn edge
   HostMemory memory;
   const Status s = run_sized(restart, memory.memory(), &needs);
+  memory.words = ZeroedWords();  // the stage's buffer back before the edges take theirs
   out->check = r.check;
   out->classes = r.classes;
   out->cut = r.cut;
@@ -139,8 +142,12 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
   out->bytes_fallback = r.bytes_fallback;
   out->bytes_outline = r.bytes_outline;
   out->bytes_intersections = r.bytes_intersections;
-  // Every drawn edge's geometry, also for edges that gave no piece (seen end-on).
-  if (out->edges.size() < in.n_edges) out->edges.resize(in.n_edges);
+  // Every drawn edge's geometry, also for edges that gave no piece (seen end-on), and those of
+  // the other edges that gave pieces (the rest stay zero).
+  uint32_t n_geometry = in.n_edges;
+  for (const auto& o : c.others) n_geometry = std::max(n_geometry, o.first + 1);
+  out->edges.assign(n_geometry, Edge3{});
+  for (const auto& o : c.others) out->edges[o.first] = o.second;
   for (uint32_t e = 0; e < in.n_edges; ++e)
     out->edges[e] =
         Edge3{scene.vertices[scene.edge_pairs[2 * e]], scene.vertices[scene.edge_pairs[2 * e + 1]]};

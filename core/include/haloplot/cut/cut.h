@@ -46,6 +46,11 @@ struct CutParams {
   // CUTSET is the same with or without one. Progress is then reported by one part, from its
   // thread. A pointer, so the params stay as small as they were on a controller.
   const Parts* parts = nullptr;
+  // Test only the pairs with at least one marked edge (bit e % 32 of marked[e / 32]); null:
+  // every pair. The hidden lines mark the edges a crossing behind which can change a QI (folds,
+  // contours on paper, irregular edges: solid/hidden_lines.cpp); a crossing behind any other
+  // edge changes nothing, and on a smooth mesh those are all but a few of them.
+  const uint32_t* marked = nullptr;
   ProgressFn progress = nullptr;
   void* progress_context = nullptr;
   PhaseFn phase = nullptr;  // optional

@@ -7,6 +7,7 @@
 
 #include "haloplot/geometry/contract.h"
 #include "haloplot/geometry/fraction.h"
+#include "haloplot/geometry/product.h"
 
 namespace haloplot {
 
@@ -32,7 +33,7 @@ struct Grid {
     reciprocal = ((uint64_t{1} << 42) + uint64_t(side) - 1) / uint64_t(side);
   }
   uint32_t divide(uint32_t v) const {
-    return static_cast<uint32_t>((uint64_t{v} * reciprocal) >> 42);
+    return static_cast<uint32_t>(mul_u32x64(v, reciprocal) >> 42);
   }
   uint32_t cells() const { return nx * ny; }
   uint32_t col(int32_t x) const { return divide(static_cast<uint32_t>(x - ox)); }

@@ -6,7 +6,11 @@
 // outlines are asked) otherwise.
 //
 // Memory: one caller buffer, carved stage by stage; CUT's scratch is given back before the
-// incidences are found. Before the first piece is emitted every stage has carved what it
+// incidences are found (the CUTSET, carved above the scratch, then moves down onto it, cut to
+// the records stored; the incidences are packed the same way, and the vertex stars are built
+// after them: what a run holds at once stays near what it uses, not what it first guessed).
+// The report's bytes_used is the high-water mark, which may lie above the tail handed to the
+// sink. Before the first piece is emitted every stage has carved what it
 // needs, and the sink is told where the unused tail of the buffer begins (the controller's
 // job puts its strokes there). A short buffer fails with kWorkspaceTooSmall and says how many
 // bytes the run had reached (bytes_needed, a lower bound: later stages were not sized);

@@ -64,6 +64,13 @@ struct TopologyOptions {
 Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology* out,
                       const TopologyOptions& options = TopologyOptions{});
 
+// The stars of a topology built without them (TopologyOptions::stars false), carved from
+// `buffer` (topology_star_bytes() bytes at most; kWorkspaceTooSmall when shorter): the same
+// arrays the build would have made. hidden_lines() adds them after CUT, on pages CUT's scratch
+// used, so they are not held through CUT (on a 1M-triangle mesh, 28 of its peak's MB).
+size_t topology_star_bytes(const Topology& topo);
+Status build_topology_stars(Topology* topo, void* buffer, size_t bytes);
+
 // A band's run (solid/hidden_lines.h, HiddenParams::band) draws no diagonal and reads no star:
 // a diagonal matters there only as an edge that drawn edges pass behind. One whose two faces lie
 // on opposite sides of it on paper (a regular side, both faces' projected areas of one sign and

@@ -1,0 +1,82 @@
+// What a hidden-line run holds does not grow with the capacities it was first given: the host
+// asks with a guess (its CUTSET capacity on a torus is several times the records CUT stores,
+// its incidence capacity one per vertex), and the stages after CUT must not start beyond the
+// unwritten rest of those (solid/hidden_lines.h: the CUTSET and the incidences are packed down
+// to what they hold). The tail handed to the sink, which lies above everything the run keeps
+// while it emits its pieces, must be the same with the exact capacities and with capacities
+// ten times as large; and the pieces the same.
+#include <cstdint>
+#include <vector>
+
+#include "check.h"
+#include "haloplot/solid/hidden_lines.h"
+#include "support/solid_scenes.h"
+
+namespace {
+
+using namespace haloplot;
+
+struct Run {
+  size_t tail = 0;
+  std::vector<int64_t> pieces;  // edge, t0, t1, q of each piece in order
+  static void begin(void* ctx, uint8_t* tail, size_t, const Edge3*) {
+    static_cast<Run*>(ctx)->tail = size_t(tail - static_cast<Run*>(ctx)->base);
+  }
+  static Status piece(void* ctx, const HiddenPiece& p) {
+    static_cast<Run*>(ctx)->pieces.insert(static_cast<Run*>(ctx)->pieces.end(),
+                                          {int64_t{p.edge}, p.t0, p.t1, int64_t{p.q}});
+    return Status::kOk;
+  }
+  uint8_t* base = nullptr;
+};
+
+Status run(const SolidInput& in, uint32_t crossings, uint32_t incidences,
+           std::vector<uint64_t>* buffer, Run* out, HiddenReport* r) {
+  HiddenParams p;
+  p.intersections = true;
+  p.crossing_capacity = crossings;
+  p.incidence_capacity = incidences;
+  out->base = reinterpret_cast<uint8_t*>(buffer->data());
+  return hidden_lines(in, p, buffer->data(), buffer->size() * 8,
+                      HiddenSink{&Run::begin, &Run::piece, nullptr, out}, r);
+}
+
+void check_scene(const char* name, const solid_scenes::Mesh& m, const View& view) {
+  host::SolidScene scene;
+  CHECK_MSG(solid_scenes::project(m, view, &scene), name);
+  const SolidInput in = host::solid_input(scene);
+  std::vector<uint64_t> buffer(hidden_lines_first_bytes(in) * 4 / 8 + 1);
+  // The exact counts, from a run asked with none.
+  Run probe;
+  HiddenReport r;
+  uint32_t crossings = 0, incidences = 0;
+  for (int i = 0; i < 3; ++i) {
+    const Status s = run(in, crossings, incidences, &buffer, &probe, &r);
+    if (s == Status::kCrossingCapacity) crossings = uint32_t(r.cut.crossings + r.cut.near_misses);
+    if (s == Status::kIncidenceCapacity) incidences = r.incidences_needed;
+    probe = Run{};
+  }
+  Run exact, large;
+  HiddenReport re, rl;
+  CHECK_MSG(run(in, crossings, incidences, &buffer, &exact, &re) == Status::kOk, name);
+  CHECK_MSG(
+      run(in, 10 * crossings + 1000, 10 * incidences + 1000, &buffer, &large, &rl) == Status::kOk,
+      name);
+  CHECK_MSG(re.used_qi && rl.used_qi, name);
+  CHECK_MSG(exact.tail > 0 && exact.tail == large.tail, name);
+  CHECK_MSG(exact.pieces == large.pieces && !exact.pieces.empty(), name);
+  // The larger capacities are carved, only not held: the high-water mark does grow.
+  CHECK_MSG(rl.bytes_used > re.bytes_used, name);
+}
+
+}  // namespace
+
+int main() {
+  solid_scenes::Mesh torus, spheres;
+  solid_scenes::torus(&torus, 0, 0, 0, 300000, 120000, 60, 30);
+  solid_scenes::sphere(&spheres, -250000, 0, 0, 150000, 16, 24);
+  solid_scenes::sphere(&spheres, 250000, 50000, 60000, 150000, 16, 24);
+  check_scene("torus", torus, solid_scenes::view(30000, 25000));
+  check_scene("two spheres", spheres, solid_scenes::view(-40000, 35000));
+  return check::finish("hidden_memory");
+}
