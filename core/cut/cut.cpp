@@ -384,8 +384,7 @@ static_assert(kCrossBits + 2 <= 63, "side values, and s4 = s3 + s1 - s2, must fi
 template <typename Entry>
 uint64_t crossing_mask(const Entry* list, const Edge3* edges, int64_t pax, int64_t pay, int64_t pdx,
                        int64_t pdy, uint32_t j0, uint32_t j1, const uint32_t* only_marked) {
-  uint64_t mask = 0;
-  for (uint32_t j = j0; j < j1; ++j) {
+  auto crosses = [&](uint32_t j) {
     const auto& q = list[j].segment(edges);
     const int64_t qax = q.a.x - pax, qay = q.a.y - pay, qbx = q.b.x - pax, qby = q.b.y - pay;
     const int64_t s1 = pdx * qay - pdy * qax, s2 = pdx * qby - pdy * qbx;  // Q's ends, P's line
@@ -395,10 +394,16 @@ uint64_t crossing_mask(const Entry* list, const Edge3* edges, int64_t pax, int64
     // Strictly apart: signs differ and neither is zero (an end on the other's line).
     const bool apart12 = ((s1 ^ s2) < 0) & (s1 != 0) & (s2 != 0);
     const bool apart34 = ((s3 ^ s4) < 0) & (s3 != 0) & (s4 != 0);
-    // Only pairs with a marked edge (CutParams::marked), when P is not marked itself.
-    const bool wanted = only_marked == nullptr || is_marked(only_marked, list[j].edge);
-    mask |= uint64_t(apart12 & apart34 & wanted) << (j - j0);
+    return apart12 & apart34;
+  };
+  uint64_t mask = 0;
+  if (only_marked == nullptr) {
+    for (uint32_t j = j0; j < j1; ++j) mask |= uint64_t(crosses(j)) << (j - j0);
+    return mask;
   }
+  // Only pairs with a marked edge (CutParams::marked): P is not marked, so Q must be.
+  for (uint32_t j = j0; j < j1; ++j)
+    mask |= uint64_t(crosses(j) & is_marked(only_marked, list[j].edge)) << (j - j0);
   return mask;
 }
 
