@@ -76,9 +76,10 @@ void print_solid_stats(const SolidRun& r, const TriangulateStats& tri) {
                  o.one_by_one);
   std::fprintf(stderr,
                "bytes_topology=%zu\nbytes_incidence=%zu\nbytes_cut=%zu\nbytes_qi=%zu\n"
-               "bytes_fallback=%zu\nbytes_outline=%zu\nbytes_intersections=%zu\nhidden_ms=%.3f\n",
+               "bytes_fallback=%zu\nbytes_outline=%zu\nbytes_intersections=%zu\n"
+               "hidden_ms=%.3f\nhidden_cpu_ms=%.3f\n",
                r.bytes_topology, r.bytes_incidence, r.bytes_cut, r.bytes_qi, r.bytes_fallback,
-               r.bytes_outline, r.bytes_intersections, r.ms_total);
+               r.bytes_outline, r.bytes_intersections, r.ms_total, r.cpu_ms_total);
 }
 
 // The job `sim` runs for this drawing, for --gcode and --hpgl: a hidden-line drawing's
