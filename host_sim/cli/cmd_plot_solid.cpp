@@ -160,7 +160,7 @@ int cmd_plot_solid(const Options& o) {
   // The file's model (faces, sides, the reader's text) is freed now; give its pages back before
   // the hidden lines take their own (main.cpp keeps freed memory for reuse, which the stage's
   // large buffers, fresh pages, never reuse): a 1M-triangle plot's peak is the larger of the
-  // two, not their sum.
+  // two, not their sum. A small model's are kept: the stage's smaller buffers reuse them.
   give_back_freed_memory();
   SolidRun run;
   Status s = Status::kOk;
