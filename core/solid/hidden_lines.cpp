@@ -230,11 +230,13 @@ Status HiddenRun::lines(const uint8_t* hiding_front) {
 // fallback must settle instead; its memory is given back then.
 Status HiddenRun::qi_method(bool* gave_up) {
   const size_t before_method = arena.used;
-  r.bytes_qi = qi_bytes(topo);
+  r.bytes_qi = qi_bytes(topo, params.qi_part_vertices);
   uint8_t* qi_mem = arena.take(r.bytes_qi);
   if (qi_mem == nullptr) return out_of_room();
   QiState state;
-  Status s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi);
+  const QiSplit split{params.qi_part_vertices, params.cut.parts};  // CUT's runner serves it too
+  Status s =
+      propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi, false, split);
   if (s != Status::kOk) return fail(s);
   // Where a sliver folds over on paper, the model's facing disagrees with the geometry the
   // QI walks and it finds conflicts: once more with the facing the geometry shows, before
@@ -245,7 +247,7 @@ Status HiddenRun::qi_method(bool* gave_up) {
     r.projected_facing = true;
     r.classes = classify(&topo, front, nullptr);
     r.qi = QiStats{};
-    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi);
+    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi, false, split);
     if (s != Status::kOk) return fail(s);
   }
   // Conflicts left: does the mesh pierce itself? Once more, stopping where edges pass through
@@ -253,7 +255,7 @@ Status HiddenRun::qi_method(bool* gave_up) {
   if (r.qi.conflicts > 0 && params.method != HiddenMethod::kQiPaperOnly) {
     const uint32_t first = r.qi.conflicts;
     r.qi = QiStats{};
-    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi, true);
+    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi, true, split);
     if (s != Status::kOk) return fail(s);
     r.qi.first_conflicts = first;
   }

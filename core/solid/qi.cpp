@@ -211,83 +211,183 @@ bool qi_contour_diagonal(const Topology& topo, const QiState& state, uint32_t e)
   return topo.edges[e].cls == EdgeClass::kH3 || edge_on_contour(topo, e);
 }
 
-size_t qi_bytes(const Topology& topo) {
+namespace {
+
+// The propagation's parts (qi.h's QiSplit): vertices by number, part_vertices to a part; an
+// edge belongs to the part of its v0. A part walks its own edges from its own vertices; where
+// one of them ends at another part's vertex, the QI it arrives with is kept (a crossing record)
+// and checked against that vertex's own once every part is done.
+struct CrossRecord {
+  uint32_t vertex;
+  int32_t base;
+};
+
+struct Split {
+  uint32_t part_vertices;
+  uint32_t n_parts;
+  uint32_t part(uint32_t v) const { return v / part_vertices; }
+};
+
+Split split_of(const Topology& topo, uint32_t part_vertices) {
+  const uint32_t pv = part_vertices < 1 ? 1 : part_vertices;
+  const uint32_t n = topo.n_vertices / pv + (topo.n_vertices % pv != 0 ? 1 : 0);
+  return Split{pv, n < 1 ? 1 : n};
+}
+
+// Edges whose ends lie in different parts: the crossing records a run can make.
+uint32_t crossing_edges(const Topology& topo, const Split& sp) {
+  if (sp.n_parts == 1) return 0;
+  uint32_t n = 0;
+  for (uint32_t e = 0; e < topo.n_edges; ++e)
+    n += sp.part(topo.edges[e].v0) != sp.part(topo.edges[e].v1) ? 1 : 0;
+  return n;
+}
+
+}  // namespace
+
+size_t qi_bytes(const Topology& topo, uint32_t part_vertices) {
+  const Split sp = split_of(topo, part_vertices);
   ByteCounter c;
   c.take<uint8_t>(face_grid_bytes(topo));
   c.take<int32_t>(topo.n_vertices);
   c.take<int32_t>(topo.n_edges);
   c.take<uint32_t>(topo.n_vertices);
+  if (sp.n_parts > 1) {
+    c.take<uint32_t>(2 * size_t{sp.n_parts} + 1);
+    c.take<CrossRecord>(crossing_edges(topo, sp));
+    c.take<QiStats>(sp.n_parts);
+  }
   return c.total + 8;
 }
 
 namespace {
 
-// One breadth-first propagation over every part of the mesh (qi.h), into s.
-void propagate(const Ctx& c, QiState& s, uint32_t* queue, QiStats& st) {
+// The vertices [lo, hi) a breadth-first spread may enter; an edge is its own when its v0 is.
+struct Own {
+  uint32_t lo, hi;
+  bool has(uint32_t v) const { return lo <= v && v < hi; }
+};
+
+// Breadth first from queue[0, tail) (Heger's queue), over the edges of `own` not yet walked.
+// An edge that arrives outside `own` leaves a crossing record instead of entering it.
+void spread(const Ctx& c, QiState& s, const FaceGrid& fg, const Own& own, uint32_t* queue,
+            uint32_t tail, CrossRecord* cross, uint32_t* n_cross, QiStats& st) {
   const Topology& topo = c.topo;
-  const FaceGrid& fg = s.grid;
-  for (uint32_t v = 0; v < topo.n_vertices; ++v) s.base[v] = kQiUnknown;
-  for (uint32_t e = 0; e < topo.n_edges; ++e) s.q_at_v0[e] = kQiUnknown;
-  for (uint32_t seed = 0; seed < topo.n_vertices; ++seed) {
-    if (s.base[seed] != kQiUnknown) continue;
-    // A seed needs an edge that is not a point on paper, to ask the faces with a direction.
-    uint32_t via = kNoFace;
-    for (uint32_t k = topo.vertex_edge_first[seed]; k < topo.vertex_edge_first[seed + 1]; ++k)
-      if (!degenerate(c, topo.vertex_edges[k])) via = topo.vertex_edges[k];
-    if (via == kNoFace) continue;
-    s.base[seed] = cast_base(c, fg, seed, other_end(topo.edges[via], seed));
-    ++st.ray_casts;
-    ++st.components;
-    uint32_t head = 0, tail = 0;
-    queue[tail++] = seed;
-    while (head < tail) {
-      const uint32_t v = queue[head++];
-      for (uint32_t k = topo.vertex_edge_first[v]; k < topo.vertex_edge_first[v + 1]; ++k) {
-        const uint32_t e = topo.vertex_edges[k];
-        if (s.q_at_v0[e] != kQiUnknown) continue;
-        const SolidEdge& se = topo.edges[e];
-        const uint32_t x = other_end(se, v);
-        int32_t arrive_base;
-        if (degenerate(c, e)) {
-          ++st.degenerate;
-          arrive_base = s.base[v];
-          s.q_at_v0[e] = s.base[v];  // a point: nothing is drawn from it
-        } else {
-          const Point3 pv = topo.vertices[v], px = topo.vertices[x];
-          const Local start = local_cover(c, v, vertex_toward(pv, px));
-          count_local(start, &st);
-          const int32_t q0 = s.base[v] + start.total();
-          if ((q0 & 1) != 0) ++st.occluded;
-          const bool forward = se.v0 == v;
-          const int32_t q1 = walk(c, e, forward, q0, &st, [](int64_t, int64_t, int32_t) {});
-          const Local end = local_cover(c, x, vertex_toward(px, pv));
-          count_local(end, &st);
-          arrive_base = q1 - end.total();
-          s.q_at_v0[e] = forward ? q0 : q1;
-        }
-        ++st.edges_walked;
-        if (s.base[x] == kQiUnknown) {
-          s.base[x] = arrive_base;
-          queue[tail++] = x;
-        } else if (s.base[x] != arrive_base) {
-          // Two paths disagree: Heger re-initialises. Exact predicates should never get here.
-          ++st.conflicts;
-          if (!degenerate(c, e)) {
-            s.base[x] = cast_base(c, fg, x, v);
-            ++st.ray_casts;
-          }
+  uint32_t head = 0;
+  while (head < tail) {
+    const uint32_t v = queue[head++];
+    for (uint32_t k = topo.vertex_edge_first[v]; k < topo.vertex_edge_first[v + 1]; ++k) {
+      const uint32_t e = topo.vertex_edges[k];
+      const SolidEdge& se = topo.edges[e];
+      // Another part's edge is neither read nor written here (its part may be running).
+      if (!own.has(se.v0) || s.q_at_v0[e] != kQiUnknown) continue;
+      const uint32_t x = other_end(se, v);
+      int32_t arrive_base;
+      if (degenerate(c, e)) {
+        ++st.degenerate;
+        arrive_base = s.base[v];
+        s.q_at_v0[e] = s.base[v];  // a point: nothing is drawn from it
+      } else {
+        const Point3 pv = topo.vertices[v], px = topo.vertices[x];
+        const Local start = local_cover(c, v, vertex_toward(pv, px));
+        count_local(start, &st);
+        const int32_t q0 = s.base[v] + start.total();
+        if ((q0 & 1) != 0) ++st.occluded;
+        const bool forward = se.v0 == v;
+        const int32_t q1 = walk(c, e, forward, q0, &st, [](int64_t, int64_t, int32_t) {});
+        const Local end = local_cover(c, x, vertex_toward(px, pv));
+        count_local(end, &st);
+        arrive_base = q1 - end.total();
+        s.q_at_v0[e] = forward ? q0 : q1;
+      }
+      ++st.edges_walked;
+      if (!own.has(x)) {
+        cross[(*n_cross)++] = CrossRecord{x, arrive_base};
+      } else if (s.base[x] == kQiUnknown) {
+        s.base[x] = arrive_base;
+        queue[tail++] = x;
+      } else if (s.base[x] != arrive_base) {
+        // Two paths disagree: Heger re-initialises. Exact predicates should never get here.
+        ++st.conflicts;
+        if (!degenerate(c, e)) {
+          s.base[x] = cast_base(c, fg, x, v);
+          ++st.ray_casts;
         }
       }
     }
   }
 }
 
+// Every vertex of `own` not yet reached seeds a spread with a ray cast.
+void propagate_own(const Ctx& c, QiState& s, const Own& own, uint32_t* queue, CrossRecord* cross,
+                   uint32_t* n_cross, QiStats& st) {
+  const Topology& topo = c.topo;
+  for (uint32_t seed = own.lo; seed < own.hi; ++seed) {
+    if (s.base[seed] != kQiUnknown) continue;
+    // A seed needs an edge that is not a point on paper, to ask the faces with a direction.
+    uint32_t via = kNoFace;
+    for (uint32_t k = topo.vertex_edge_first[seed]; k < topo.vertex_edge_first[seed + 1]; ++k)
+      if (!degenerate(c, topo.vertex_edges[k])) via = topo.vertex_edges[k];
+    if (via == kNoFace) continue;
+    s.base[seed] = cast_base(c, s.grid, seed, other_end(topo.edges[via], seed));
+    ++st.ray_casts;
+    ++st.components;
+    queue[0] = seed;
+    spread(c, s, s.grid, own, queue, 1, cross, n_cross, st);
+  }
+}
+
+void add(QiStats& to, const QiStats& p) {
+  to.components += p.components;
+  to.ray_casts += p.ray_casts;
+  to.conflicts += p.conflicts;
+  to.edges_walked += p.edges_walked;
+  to.crossings += p.crossings;
+  to.wedge += p.wedge;
+  to.delta += p.delta;
+  to.quarter += p.quarter;
+  to.half += p.half;
+  to.occluded += p.occluded;
+  to.degenerate += p.degenerate;
+  to.pierces += p.pierces;
+  to.pierce_tests += p.pierce_tests;
+}
+
+// The parts' shared state; part k writes base and queue at its own vertices, q_at_v0 at its own
+// edges, and its own slice of the crossing records and its stats.
+struct PartRun {
+  const Ctx* c;
+  QiState* s;
+  Split sp;
+  uint32_t* queue;
+  uint32_t* cross_first;  // [n_parts + 1]: part k's records start here
+  uint32_t* cross_used;   // [n_parts]: how many it made
+  CrossRecord* cross;
+  QiStats* stats;
+  uint32_t workers;
+};
+
+void run_part(const PartRun& r, uint32_t k) {
+  const uint32_t lo = k * r.sp.part_vertices;
+  const uint32_t n = r.c->topo.n_vertices;
+  const Own own{lo, n - lo < r.sp.part_vertices ? n : lo + r.sp.part_vertices};
+  uint32_t made = 0;
+  propagate_own(*r.c, *r.s, own, r.queue + lo, r.cross + r.cross_first[k], &made, r.stats[k]);
+  r.cross_used[k] = made;
+}
+
+void run_worker(void* arg, uint32_t w) {
+  const PartRun& r = *static_cast<const PartRun*>(arg);
+  for (uint32_t k = w; k < r.sp.n_parts; k += r.workers) run_part(r, k);
+}
+
 }  // namespace
 
 Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cutset,
                     const Incidences& inc, void* buffer, size_t bytes, QiState* out, QiStats* stats,
-                    bool find_pierces) {
+                    bool find_pierces, QiSplit split) {
   if (cutset.n_edges != topo.n_edges) return Status::kBadParameter;
+  const Split sp = split_of(topo, split.part_vertices);
   Carver carve(buffer, bytes);
   const size_t grid_bytes = face_grid_bytes(topo);
   uint8_t* grid_buffer = carve.take<uint8_t>(grid_bytes);
@@ -295,6 +395,12 @@ Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cu
   s.base = carve.take<int32_t>(topo.n_vertices);
   s.q_at_v0 = carve.take<int32_t>(topo.n_edges);
   uint32_t* queue = carve.take<uint32_t>(topo.n_vertices);
+  PartRun r{};
+  if (sp.n_parts > 1) {
+    r.cross_first = carve.take<uint32_t>(2 * size_t{sp.n_parts} + 1);
+    r.cross = carve.take<CrossRecord>(crossing_edges(topo, sp));
+    r.stats = carve.take<QiStats>(sp.n_parts);
+  }
   if (carve.short_) return Status::kWorkspaceTooSmall;
   const Status gs = build_face_grid(topo, grid_buffer, grid_bytes, &s.grid);
   if (gs != Status::kOk) return gs;
@@ -304,8 +410,49 @@ Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cu
     s.pierces = true;
     c.pierce_grid = &s.grid;
   }
+  for (uint32_t v = 0; v < topo.n_vertices; ++v) s.base[v] = kQiUnknown;
+  for (uint32_t e = 0; e < topo.n_edges; ++e) s.q_at_v0[e] = kQiUnknown;
   QiStats st;
-  propagate(c, s, queue, st);
+  uint32_t none = 0;
+  if (sp.n_parts == 1) {
+    propagate_own(c, s, Own{0, topo.n_vertices}, queue, nullptr, &none, st);
+  } else {
+    // Each part's records start where the edges it owns that leave it begin.
+    uint32_t* first = r.cross_first;
+    for (uint32_t k = 0; k <= sp.n_parts; ++k) first[k] = 0;
+    for (uint32_t e = 0; e < topo.n_edges; ++e) {
+      const uint32_t p0 = sp.part(topo.edges[e].v0);
+      if (p0 != sp.part(topo.edges[e].v1)) ++first[p0 + 1];
+    }
+    for (uint32_t k = 0; k < sp.n_parts; ++k) first[k + 1] += first[k];
+    r.cross_used = first + sp.n_parts + 1;
+    for (uint32_t k = 0; k < sp.n_parts; ++k) r.stats[k] = QiStats{};
+    r.c = &c;
+    r.s = &s;
+    r.sp = sp;
+    r.queue = queue;
+    const Parts runner = split.parts != nullptr ? *split.parts : Parts{};
+    const uint32_t want = runner.split();
+    r.workers = want < sp.n_parts ? want : sp.n_parts;
+    run_parts(runner, r.workers, &run_worker, &r);
+    // In part order, so the sums and any conflict are the same however the parts ran.
+    uint32_t tail = 0;
+    for (uint32_t k = 0; k < sp.n_parts; ++k) {
+      add(st, r.stats[k]);
+      for (uint32_t i = first[k]; i < first[k] + r.cross_used[k]; ++i) {
+        const CrossRecord& x = r.cross[i];
+        if (s.base[x.vertex] == kQiUnknown) {  // reached from no edge of its own part
+          s.base[x.vertex] = x.base;
+          queue[tail++] = x.vertex;
+        } else if (s.base[x.vertex] != x.base) {
+          ++st.conflicts;
+        }
+      }
+    }
+    // What only another part's edge reached (a vertex whose own edges are points on paper)
+    // spreads from there over the edges left.
+    spread(c, s, s.grid, Own{0, topo.n_vertices}, queue, tail, nullptr, &none, st);
+  }
   *out = s;
   if (stats != nullptr) *stats = st;
   return Status::kOk;

@@ -83,7 +83,7 @@ SolidInput solid_input(const SolidScene& scene) {
 
 Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackParams kira,
                         SolidRun* out, bool outlines, bool intersections, const HatchParams* hatch,
-                        const Parts* parts) {
+                        const Parts* parts, uint32_t qi_part_vertices) {
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
   *out = SolidRun{};
@@ -96,6 +96,7 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
   if (hatch != nullptr) params.hatch_params = *hatch;
   params.kira = kira.use_classes || kira.use_vc;
   params.cut.parts = parts;
+  params.qi_part_vertices = qi_part_vertices;
   // First guesses; the core says what a short run needs (never a wrong or partial answer).
   StageNeeds needs;
   needs.crossings = 4 * (in.n_edges + 3 * in.n_triangles) + 1024;

@@ -78,6 +78,7 @@ bool model_closed(const SolidScene& scene);
 // fallback's shortcuts (classes, V.C.); they are only used on manifold meshes.
 Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackParams kira,
                         SolidRun* out, bool outlines = false, bool intersections = false,
-                        const HatchParams* hatch = nullptr, const Parts* parts = nullptr);
+                        const HatchParams* hatch = nullptr, const Parts* parts = nullptr,
+                        uint32_t qi_part_vertices = kQiPartVertices);
 
 }  // namespace haloplot::host

@@ -10,6 +10,7 @@
 // Prints a Markdown table (docs/reports/performance.md, "Threads").
 #include <time.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -19,6 +20,10 @@
 
 #include "bench/perf_common.h"
 #include "demo/random_scene.h"
+#include "haloplot/solid/classify.h"
+#include "haloplot/solid/face_grid.h"
+#include "haloplot/solid/incidence.h"
+#include "haloplot/solid/qi.h"
 #include "haloplot/solid/topology.h"
 #include "pipeline/host_pipeline.h"
 #include "pipeline/solid_pipeline.h"
@@ -98,6 +103,45 @@ std::vector<Edge3> stage_edges(const SolidScene& scene) {
   return edges;
 }
 
+// What the QI propagation reads, built once as the stage builds it: the topology and its
+// classes, CUT over its edges, the incidences.
+struct QiInputs {
+  std::vector<uint64_t> topo_mem, inc_mem;
+  Topology topo;
+  std::vector<uint8_t> front;
+  HostCut cut;
+  Incidences inc;
+};
+
+bool qi_inputs(const SolidScene& scene, QiInputs* q) {
+  const SolidInput in = solid_input(scene);
+  q->topo_mem.assign(topology_bytes(in) / 8 + 1, 0);
+  if (build_topology(in, q->topo_mem.data(), q->topo_mem.size() * 8, &q->topo) != Status::kOk)
+    return false;
+  q->front.assign(q->topo.n_triangles, 0);
+  classify(&q->topo, q->front.data(), in.facing);
+  std::vector<Edge3> edges(q->topo.n_edges);
+  for (uint32_t e = 0; e < q->topo.n_edges; ++e) edges[e] = q->topo.edge3(e);
+  if (host_cut(edges, CutParams{}, &q->cut) != Status::kOk) return false;
+  const uint32_t capacity = q->topo.n_vertices + 64;
+  q->inc_mem.assign(incidence_bytes(q->topo, capacity) / 8 + 1, 0);
+  uint32_t needed = 0;
+  return find_incidences(q->topo, capacity, q->inc_mem.data(), q->inc_mem.size() * 8, &q->inc,
+                         &needed) == Status::kOk;
+}
+
+struct QiRun {
+  std::vector<uint64_t> mem;
+  QiState state;
+  QiStats stats;
+};
+
+bool same_qi(const Topology& topo, const QiRun& a, const QiRun& b) {
+  return std::memcmp(a.state.base, b.state.base, size_t{topo.n_vertices} * 4) == 0 &&
+         std::memcmp(a.state.q_at_v0, b.state.q_at_v0, size_t{topo.n_edges} * 4) == 0 &&
+         a.stats.conflicts == b.stats.conflicts && a.stats.ray_casts == b.stats.ray_casts;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -146,20 +190,50 @@ int main(int argc, char** argv) {
   row("its CUT alone (" + std::to_string(edges.size()) + " edges, " +
           std::to_string(cuts[0].set.n_crossings) + " crossings)",
       cut_one, cut_many, same_cut(cuts[0], cuts[1]));
+  // The QI propagation alone, in its parts (solid/qi.h's QiSplit); its face grid, built
+  // first on one thread, timed apart.
+  QiInputs qin;
+  if (!qi_inputs(scene, &qin)) return 1;
+  QiRun qis[2];
+  Time qi_one, qi_many;
+  measure(
+      runs, threads,
+      [&](const Parts* p) {
+        QiRun& q = qis[p == nullptr ? 0 : 1];
+        q.mem.assign(qi_bytes(qin.topo) / 8 + 1, 0);
+        return propagate_qi(qin.topo, qin.front.data(), qin.cut.set, qin.inc, q.mem.data(),
+                            q.mem.size() * 8, &q.state, &q.stats, false,
+                            QiSplit{kQiPartVertices, p}) == Status::kOk;
+      },
+      &qi_one, &qi_many);
+  row("its QI propagation alone (" + std::to_string(qis[0].stats.components) + " parts, " +
+          std::to_string(qis[0].stats.edges_walked) + " edges walked)",
+      qi_one, qi_many, same_qi(qin.topo, qis[0], qis[1]));
+  double grid_ms = 1e300;
+  for (int r = 0; r < runs; ++r) {
+    std::vector<uint64_t> g(face_grid_bytes(qin.topo) / 8 + 1);
+    FaceGrid fg;
+    const double c0 = cpu_ms();
+    if (build_face_grid(qin.topo, g.data(), g.size() * 8, &fg) != Status::kOk) return 1;
+    grid_ms = std::min(grid_ms, cpu_ms() - c0);
+  }
   // Where CUT's time goes on one thread: what the parts split (the cell loop, the sorting)
   // and what stays serial (the cell lists, the grouping's scatter).
   const bench::CutTiming phases = bench::time_cut(edges, CutParams{}, runs);
-  // Amdahl's bound for the stage: only the pairs (and the sorting, left out here) split.
-  const double share = cut_one.cpu / one.cpu;
-  const double split = share * phases.t2 / phases.total;
+  // Amdahl's bound for the stage: CUT's pairs (the sorting left out here) and the QI's walks
+  // split; the rest runs on one thread.
+  const double cut_share = cut_one.cpu / one.cpu, qi_share = qi_one.cpu / one.cpu;
+  const double split =
+      (cut_one.cpu * phases.t2 / phases.total + std::max(0.0, qi_one.cpu - grid_ms)) / one.cpu;
   std::fprintf(
       stderr,
-      "CUT's share of the stage, 1 thread: %.0f %% (CPU); its phases (wall, median of %d): "
-      "plan and cell lists %.0f ms, pairs %.0f ms, grouping and sorting %.0f ms. So the "
-      "part of the stage that runs in parts is about %.0f %%, and %u threads can make "
-      "the stage at most %.2f times as fast",
-      100 * share, runs, phases.t1, phases.t2, phases.group, 100 * split, threads,
-      1 / (1 - split + split / threads));
+      "Shares of the stage, 1 thread (CPU): CUT %.0f %%, the QI propagation %.0f %%. CUT's "
+      "phases (wall, median of %d): plan and cell lists %.0f ms, pairs %.0f ms, grouping and "
+      "sorting %.0f ms; the QI's face grid %.0f ms before its walks. So the part of the stage "
+      "that runs in parts (CUT's pairs, the QI's walks) is about %.0f %%, and %u threads can "
+      "make the stage at most %.2f times as fast",
+      100 * cut_share, 100 * qi_share, runs, phases.t1, phases.t2, phases.group, grid_ms,
+      100 * split, threads, 1 / (1 - split + split / threads));
   const std::vector<Edge3> random = paper_random(50000, 10000, 1);
   HostCut haloed[2];
   Time h_one, h_many;

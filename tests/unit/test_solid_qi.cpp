@@ -4,6 +4,11 @@
 // and in perspective. The two methods share only CUT's crossings and the exact cover
 // predicate; one carries counts along the mesh, the other asks every face in a grid cell.
 //
+// The propagation in parts (qi.h's QiSplit) must give the QI of one part exactly: with every
+// vertex a part of its own, each vertex is seeded by its own ray cast and every walk checked
+// against the cast at its far end (no conflict allowed); with parts of 7 vertices run on three
+// threads, the pieces and outlines of one part, byte for byte.
+//
 // They must agree exactly: at the middle of every piece the fallback tests, the QI the
 // propagation gave that point equals the count the fallback found (both in halves). The
 // visible length per edge then agrees to far better than the 1 step the issue allows; that is
@@ -14,6 +19,7 @@
 
 #include "check.h"
 #include "pipeline/surface_pipeline.h"
+#include "pipeline/thread_parts.h"
 #include "solid/cover.h"
 #include "support/solid_refs.h"
 #include "support/solid_scenes.h"
@@ -43,6 +49,7 @@ struct Totals {
   uint64_t scenes = 0, pieces = 0, edges = 0;
   QiStats qi;
   uint64_t vc_saved = 0, tests_with = 0, tests_without = 0, class_saved = 0;
+  uint64_t split_ray_casts = 0;  // with every vertex a part: a cast each, checked by the walks
   uint64_t outline_tests = 0, outline_segments = 0, circuits = 0, one_by_one = 0;
   uint64_t franklin_deleted_faces = 0, franklin_culled = 0;
 } totals;
@@ -103,6 +110,42 @@ void check_outlines(const SolidScene& scene, const SolidRun& qi, const std::stri
   totals.one_by_one += qi.outline_stats.one_by_one;
 }
 
+bool same_pieces(const std::vector<SolidPiece>& a, const std::vector<SolidPiece>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i].edge != b[i].edge || a[i].t0 != b[i].t0 || a[i].t1 != b[i].t1 || a[i].q != b[i].q ||
+        a[i].hidden != b[i].hidden)
+      return false;
+  return true;
+}
+
+void split_agrees(const SolidScene& scene, const SolidRun& whole, const std::string& label) {
+  for (const uint32_t part_vertices : {1u, 7u}) {
+    SolidRun split;
+    const Parts* parts = part_vertices == 7 ? thread_parts(3) : nullptr;
+    const Status s = run_hidden_lines(scene, HiddenMethod::kQi, FallbackParams{}, &split, true,
+                                      false, nullptr, parts, part_vertices);
+    const std::string what = label + ", parts of " + std::to_string(part_vertices) + " vertices";
+    CHECK_MSG(s == Status::kOk, what + ": " + status_name(s));
+    if (s != Status::kOk) continue;
+    CHECK_MSG(split.qi.conflicts == 0,
+              what + ": " + std::to_string(split.qi.conflicts) + " conflicts");
+    CHECK_MSG(split.qi.edges_walked == whole.qi.edges_walked,
+              what + ": walked " + std::to_string(split.qi.edges_walked) + " edges, one part " +
+                  std::to_string(whole.qi.edges_walked));
+    CHECK_MSG(same_pieces(split.pieces, whole.pieces) &&
+                  same_pieces(split.contour_diagonals, whole.contour_diagonals),
+              what + ": pieces differ from one part's");
+    bool outline_same = split.outline.size() == whole.outline.size();
+    for (size_t i = 0; outline_same && i < split.outline.size(); ++i)
+      outline_same = split.outline[i].edge == whole.outline[i].edge &&
+                     split.outline[i].t0 == whole.outline[i].t0 &&
+                     split.outline[i].t1 == whole.outline[i].t1;
+    CHECK_MSG(outline_same, what + ": outlines differ from one part's");
+    if (part_vertices == 1) totals.split_ray_casts += split.qi.ray_casts;
+  }
+}
+
 void agree(const SolidScene& scene, const std::string& label) {
   SolidRun qi, fb, kira;
   const Status s1 = run_hidden_lines(scene, HiddenMethod::kQi, FallbackParams{}, &qi, true);
@@ -115,6 +158,7 @@ void agree(const SolidScene& scene, const std::string& label) {
   if (s1 != Status::kOk || s2 != Status::kOk || s3 != Status::kOk) return;
   CHECK_MSG(qi.check.manifold(), label + ": test scenes are closed manifolds");
   CHECK_MSG(qi.qi.conflicts == 0, label + ": " + std::to_string(qi.qi.conflicts) + " conflicts");
+  split_agrees(scene, qi, label);
   const size_t n = scene.edge_pairs.size() / 2;
   const auto fq = index_by_edge(qi.pieces, n);
   const auto ff = index_by_edge(fb.pieces, n);
@@ -267,6 +311,8 @@ int main(int argc, char** argv) {
       "%llu segments asked one by one\n",
       (unsigned long long)totals.outline_segments, (unsigned long long)totals.circuits,
       (unsigned long long)totals.outline_tests, (unsigned long long)totals.one_by_one);
+  std::printf("in parts of one vertex: %llu ray casts, each checked against the walks\n",
+              (unsigned long long)totals.split_ray_casts);
   std::printf("Franklin: %llu faces deleted by blocking faces, %llu (face, cell) pairs culled\n",
               (unsigned long long)totals.franklin_deleted_faces,
               (unsigned long long)totals.franklin_culled);

@@ -54,6 +54,8 @@ struct HiddenParams {
   CutParams cut;
   uint32_t crossing_capacity = 0;   // CUTSET records (CUT says the count if short)
   uint32_t incidence_capacity = 0;  // vertex-on-edge incidences
+  // The QI propagation's parts (solid/qi.h's QiSplit), run by cut.parts' runner when given.
+  uint32_t qi_part_vertices = kQiPartVertices;
   // A band of a solid plotted in bands (band/conductor.h): the input holds the faces and edges
   // meeting rows [band_y0, band_y1) and only those rows are drawn (the fallback's window, no
   // V.C. table: a vertex outside the rows may miss faces of its star). `closed` is the whole

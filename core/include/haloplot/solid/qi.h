@@ -40,6 +40,7 @@
 
 #include "haloplot/cut/cutset.h"
 #include "haloplot/geometry/edge_piece.h"
+#include "haloplot/memory/parts.h"
 #include "haloplot/solid/face_grid.h"
 #include "haloplot/solid/incidence.h"
 #include "haloplot/solid/topology.h"
@@ -80,7 +81,23 @@ struct QiState {
 // Does the QI count both sides of every face: the mesh is not a closed oriented manifold.
 inline bool qi_two_sided(const Topology& topo) { return !topo.check.manifold(); }
 
-size_t qi_bytes(const Topology& topo);
+// The propagation in parts, which threads may run at once (memory/parts.h): vertices by
+// number, part_vertices to a part, and each edge with its v0. A part seeds its own ray casts and
+// walks its own edges; an edge that ends in another part leaves the QI it arrives with, which is
+// checked against that vertex's own once every part is done (a difference is a conflict, as two
+// paths in one part disagreeing is). The split depends on the mesh alone, never on the runner,
+// so the QI, its statistics and the picture are the same however many threads ran it. A mesh
+// smaller than one part propagates as one, as it always did. Parts of 2^15 vertices: a part is
+// then worth far more than starting a thread, and the extra ray casts (one per part and piece
+// of it, each against one grid cell's faces) stay a few dozen on a million-triangle model.
+inline constexpr uint32_t kQiPartVertices = uint32_t{1} << 15;
+
+struct QiSplit {
+  uint32_t part_vertices = kQiPartVertices;  // tests split small meshes
+  const Parts* parts = nullptr;              // null: the parts one after another, here
+};
+
+size_t qi_bytes(const Topology& topo, uint32_t part_vertices = kQiPartVertices);
 
 // `cutset` must be CUT's result over topo's edges in topo's order (reach 0); `front` is from
 // classify(). Any mesh: two-sided when it is not a closed oriented manifold.
@@ -88,7 +105,7 @@ size_t qi_bytes(const Topology& topo);
 // itself; the caller asks for it once a propagation without has met conflicts).
 Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cutset,
                     const Incidences& inc, void* buffer, size_t bytes, QiState* out, QiStats* stats,
-                    bool find_pierces = false);
+                    bool find_pierces = false, QiSplit split = {});
 
 // A piece of an edge with one QI: positions in Q0.32 along the edge from v0 (t1 <= 2^32).
 struct QiPiece : EdgePiece {
