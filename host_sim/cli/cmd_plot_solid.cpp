@@ -76,9 +76,10 @@ void print_solid_stats(const SolidRun& r, const TriangulateStats& tri) {
                  o.one_by_one);
   std::fprintf(stderr,
                "bytes_topology=%zu\nbytes_incidence=%zu\nbytes_cut=%zu\nbytes_qi=%zu\n"
-               "bytes_fallback=%zu\nbytes_outline=%zu\nbytes_intersections=%zu\nhidden_ms=%.3f\n",
+               "bytes_fallback=%zu\nbytes_outline=%zu\nbytes_intersections=%zu\n"
+               "hidden_ms=%.3f\nhidden_cpu_ms=%.3f\n",
                r.bytes_topology, r.bytes_incidence, r.bytes_cut, r.bytes_qi, r.bytes_fallback,
-               r.bytes_outline, r.bytes_intersections, r.ms_total);
+               r.bytes_outline, r.bytes_intersections, r.ms_total, r.cpu_ms_total);
 }
 
 // The job `sim` runs for this drawing, for --gcode and --hpgl: a hidden-line drawing's
@@ -159,7 +160,7 @@ int cmd_plot_solid(const Options& o) {
   // The file's model (faces, sides, the reader's text) is freed now; give its pages back before
   // the hidden lines take their own (main.cpp keeps freed memory for reuse, which the stage's
   // large buffers, fresh pages, never reuse): a 1M-triangle plot's peak is the larger of the
-  // two, not their sum.
+  // two, not their sum. A small model's are kept: the stage's smaller buffers reuse them.
   give_back_freed_memory();
   SolidRun run;
   Status s = Status::kOk;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <utility>
 
 #include "pipeline/host_memory.h"
@@ -89,6 +90,7 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
                         SolidRun* out, bool outlines, bool intersections, const HatchParams* hatch,
                         const Parts* parts, uint32_t qi_part_vertices) {
   const auto t0 = std::chrono::steady_clock::now();
+  const std::clock_t c0 = std::clock();
   *out = SolidRun{};
   const SolidInput in = solid_input(scene);
   HiddenParams params;
@@ -153,6 +155,7 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
         Edge3{scene.vertices[scene.edge_pairs[2 * e]], scene.vertices[scene.edge_pairs[2 * e + 1]]};
   out->ms_total =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  out->cpu_ms_total = double(std::clock() - c0) * 1000 / CLOCKS_PER_SEC;
   return s;
 }
 

@@ -50,6 +50,8 @@ struct SolidRun {
   size_t bytes_topology = 0, bytes_incidence = 0, bytes_qi = 0, bytes_fallback = 0, bytes_cut = 0,
          bytes_intersections = 0;
   double ms_total = 0;
+  // The same run's CPU time, every thread's (a shared machine's clocks are fairer in CPU).
+  double cpu_ms_total = 0;
   std::vector<SolidPiece> pieces;             // drawn edges
   std::vector<SolidPiece> contour_diagonals;  // H3 diagonals (QI only): edge >= drawn count
   // Intersection lines (when asked): edge >= every edge's count; the two faces of each piece.

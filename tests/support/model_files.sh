@@ -2,6 +2,8 @@
 # and a sphere through a torus. band_dashes and the QEMU link test draw the same solids.
 # Usage: torus_obj R r NU NV         a torus around the y axis, NU x NV quads
 #        torus_sphere_obj            the 10 x 5 torus (R 1.5, r 0.5) with a 6 x 5 sphere through it
+#        uv_sphere_obj R NS NT       a UV sphere around the y axis, NS segments, NT rings:
+#                                    2 NS (NT - 1) triangles
 torus_obj() {
   awk -v R="$1" -v r="$2" -v nu="$3" -v nv="$4" 'BEGIN {
     pi = 3.14159265358979
@@ -35,6 +37,26 @@ torus_sphere_obj() {
     }
     for (k = 0; k < ns; k++)
       printf "f %d %d %d\n", bot, base + 2 + (nt - 2) * ns + k, base + 2 + (nt - 2) * ns + (k + 1) % ns
+  }'
+}
+
+uv_sphere_obj() {
+  awk -v s="$1" -v ns="$2" -v nt="$3" 'BEGIN {
+    pi = 3.14159265358979
+    printf "v 0 %.6f 0\n", s
+    for (t = 1; t < nt; t++) for (k = 0; k < ns; k++) {
+      th = pi * t / nt; ph = 2 * pi * k / ns
+      printf "v %.6f %.6f %.6f\n", s * sin(th) * cos(ph), s * cos(th), s * sin(th) * sin(ph)
+    }
+    printf "v 0 %.6f 0\n", -s
+    top = 1; bot = 2 + (nt - 1) * ns
+    for (k = 0; k < ns; k++) printf "f %d %d %d\n", top, 2 + (k + 1) % ns, 2 + k
+    for (t = 0; t < nt - 2; t++) for (k = 0; k < ns; k++) {
+      a = 2 + t * ns + k; b = 2 + t * ns + (k + 1) % ns
+      printf "f %d %d %d %d\n", a, b, b + ns, a + ns
+    }
+    for (k = 0; k < ns; k++)
+      printf "f %d %d %d\n", bot, 2 + (nt - 2) * ns + k, 2 + (nt - 2) * ns + (k + 1) % ns
   }'
 }
 

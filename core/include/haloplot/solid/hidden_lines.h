@@ -1,9 +1,11 @@
 // Hidden lines of a solid model in one call, for the host tool and the controller alike:
-// topology and checks, classes, CUT over every edge, incidences, then Appel/Heger QI (with
-// Kira's outlines traced when asked) on any mesh (counting both sides of every face where the
-// mesh is not a closed oriented manifold: solid/qi.h), or the topology-free fallback (with Kira's
-// V.C. table and classes when the mesh allows, and Kira's outline condition asked part by part when
-// outlines are asked) otherwise.
+// topology and checks, classes, CUT over every edge (outside a band, only the pairs with an edge
+// a crossing behind which can change a count of faces: a fold, a contour on paper, an irregular
+// edge; behind any other the count stays, so the pieces are the same), incidences, then
+// Appel/Heger QI (with Kira's outlines traced when asked) on any mesh (counting both sides of
+// every face where the mesh is not a closed oriented manifold: solid/qi.h), or the topology-free
+// fallback (with Kira's V.C. table and classes when the mesh allows, and Kira's outline
+// condition asked part by part when outlines are asked) otherwise.
 //
 // Memory: one caller buffer, carved stage by stage; CUT's scratch is given back before the
 // incidences are found (the CUTSET, carved above the scratch, then moves down onto it, cut to
