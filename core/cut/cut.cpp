@@ -383,7 +383,7 @@ constexpr bool kDecideEveryPair = kHost;
 static_assert(kCrossBits + 2 <= 63, "side values, and s4 = s3 + s1 - s2, must fit int64_t");
 template <typename Entry>
 uint64_t crossing_mask(const Entry* list, const Edge3* edges, int64_t pax, int64_t pay, int64_t pdx,
-                       int64_t pdy, uint32_t j0, uint32_t j1, const uint32_t* only_marked) {
+                       int64_t pdy, uint32_t j0, uint32_t j1) {
   auto crosses = [&](uint32_t j) {
     const auto& q = list[j].segment(edges);
     const int64_t qax = q.a.x - pax, qay = q.a.y - pay, qbx = q.b.x - pax, qby = q.b.y - pay;
@@ -397,13 +397,7 @@ uint64_t crossing_mask(const Entry* list, const Edge3* edges, int64_t pax, int64
     return apart12 & apart34;
   };
   uint64_t mask = 0;
-  if (only_marked == nullptr) {
-    for (uint32_t j = j0; j < j1; ++j) mask |= uint64_t(crosses(j)) << (j - j0);
-    return mask;
-  }
-  // Only pairs with a marked edge (CutParams::marked): P is not marked, so Q must be.
-  for (uint32_t j = j0; j < j1; ++j)
-    mask |= uint64_t(crosses(j) & is_marked(only_marked, list[j].edge)) << (j - j0);
+  for (uint32_t j = j0; j < j1; ++j) mask |= uint64_t(crosses(j)) << (j - j0);
   return mask;
 }
 
@@ -426,15 +420,16 @@ void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_st
     const CellBox cb{c, g.ox + mul_32x32(int32_t(col), g.cell),
                      g.oy + mul_32x32(int32_t(row), g.cell), g.cell};
     for (uint32_t i = begin; i + 1 < end; ++i) {
-      if (kDecideEveryPair && r == 0) {
+      const bool p_marked = marked == nullptr || is_marked(marked, list[i].edge);
+      // An unmarked P (CutParams::marked) pairs only with the few marked Q: the loop below asks
+      // each Q's mark first, a branch that seldom goes the other way, and decides no more.
+      if (kDecideEveryPair && r == 0 && p_marked) {
         const auto& p = list[i].segment(edges);
         const int64_t pdx = p.b.x - p.a.x, pdy = p.b.y - p.a.y;
-        const bool p_marked = marked == nullptr || is_marked(marked, list[i].edge);
-        const uint32_t* only_marked = p_marked ? nullptr : marked;
         for (uint32_t j0 = i + 1; j0 < end; j0 += 64) {
           const uint32_t j1 = end - j0 > 64 ? j0 + 64 : end;
-          for (uint64_t m = crossing_mask(list, edges, p.a.x, p.a.y, pdx, pdy, j0, j1, only_marked);
-               m != 0; m &= m - 1)
+          for (uint64_t m = crossing_mask(list, edges, p.a.x, p.a.y, pdx, pdy, j0, j1); m != 0;
+               m &= m - 1)
             test_pair(g, cb, edges, list[i], list[j0 + uint32_t(__builtin_ctzll(m))], r, rec, st);
         }
         continue;
@@ -444,7 +439,6 @@ void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_st
       const auto& p = list[i].segment(edges);
       const int32_t px0 = min_i32(p.a.x, p.b.x) - r, px1 = max_i32(p.a.x, p.b.x) + r;
       const int32_t py0 = min_i32(p.a.y, p.b.y) - r, py1 = max_i32(p.a.y, p.b.y) + r;
-      const bool p_marked = marked == nullptr || is_marked(marked, list[i].edge);
       for (uint32_t j = i + 1; j < end; ++j) {
         if (!p_marked && !is_marked(marked, list[j].edge)) continue;
         const auto& q = list[j].segment(edges);
