@@ -105,23 +105,6 @@ Status short_of(const Arena& a, HiddenReport* r) {
   return Status::kWorkspaceTooSmall;
 }
 
-// The edges a crossing behind which can change the count of faces over a point: a fold by the
-// model's facing (the QI's own rule), an edge whose faces lie on one side of it on paper (a
-// contour, also after the QI's retry with the projected facing, and two-sided counting's rule),
-// and any edge that is not a regular two-faced one (a boundary, a fin, a seam; its other faces
-// are not all at hand yet). Behind any other edge, one of its faces stops covering the walking
-// point where the other starts: nothing changes, in the QI or in the fallback's counts, so CUT
-// need not find those crossings, nearly all of them on a smooth mesh (the 1M-triangle torus:
-// some 2,800 edges of 1.5 million are marked).
-void mark_crossing_edges(const Topology& topo, uint32_t* marked) {
-  for (uint32_t w = 0; w < (topo.n_edges + 31) / 32; ++w) marked[w] = 0;
-  for (uint32_t e = 0; e < topo.n_edges; ++e) {
-    const SolidEdge& se = topo.edges[e];
-    if (!se.regular || is_fold(se.cls) || paper_jump(topo, e) != 0)
-      marked[e >> 5] |= uint32_t{1} << (e & 31);
-  }
-}
-
 // CUT over every edge; its scratch is given back afterwards. The scratch comes first and the
 // CUTSET above it; once CUT is done the CUTSET (its index and the records it stored) moves
 // down onto the scratch, and the rest of its capacity is free again. The next stages then
@@ -405,6 +388,15 @@ Status HiddenRun::fallback_method(bool manifold) {
 }
 
 }  // namespace
+
+void mark_crossing_edges(const Topology& topo, uint32_t* marked) {
+  for (uint32_t w = 0; w < (topo.n_edges + 31) / 32; ++w) marked[w] = 0;
+  for (uint32_t e = 0; e < topo.n_edges; ++e) {
+    const SolidEdge& se = topo.edges[e];
+    if (!se.regular || is_fold(se.cls) || paper_jump(topo, e) != 0)
+      marked[e >> 5] |= uint32_t{1} << (e & 31);
+  }
+}
 
 Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buffer, size_t bytes,
                     HiddenSink sink, HiddenReport* report) {

@@ -22,6 +22,7 @@
 #include "demo/random_scene.h"
 #include "haloplot/solid/classify.h"
 #include "haloplot/solid/face_grid.h"
+#include "haloplot/solid/hidden_lines.h"
 #include "haloplot/solid/incidence.h"
 #include "haloplot/solid/qi.h"
 #include "haloplot/solid/topology.h"
@@ -92,23 +93,15 @@ bool same_cut(const HostCut& a, const HostCut& b) {
          std::memcmp(x.crossings, y.crossings, size_t{x.n_crossings} * sizeof(Crossing)) == 0;
 }
 
-// Every edge of the torus as the hidden-line stage's CUT sees it (the topology's, diagonals too).
-std::vector<Edge3> stage_edges(const SolidScene& scene) {
-  const SolidInput in = solid_input(scene);
-  std::vector<uint64_t> buffer(topology_bytes(in) / 8 + 1);
-  Topology topo;
-  if (build_topology(in, buffer.data(), buffer.size() * 8, &topo) != Status::kOk) std::exit(1);
-  std::vector<Edge3> edges(topo.n_edges);
-  for (uint32_t e = 0; e < topo.n_edges; ++e) edges[e] = topo.edge3(e);
-  return edges;
-}
-
-// What the QI propagation reads, built once as the stage builds it: the topology and its
-// classes, CUT over its edges, the incidences.
+// What the stage's CUT and QI propagation read, built once as the stage builds them: the
+// topology and its classes, its edges and the marked ones (the pairs CUT tests), CUT, the
+// incidences.
 struct QiInputs {
   std::vector<uint64_t> topo_mem, inc_mem;
   Topology topo;
   std::vector<uint8_t> front;
+  std::vector<Edge3> edges;
+  std::vector<uint32_t> marked;
   HostCut cut;
   Incidences inc;
 };
@@ -120,9 +113,13 @@ bool qi_inputs(const SolidScene& scene, QiInputs* q) {
     return false;
   q->front.assign(q->topo.n_triangles, 0);
   classify(&q->topo, q->front.data(), in.facing);
-  std::vector<Edge3> edges(q->topo.n_edges);
-  for (uint32_t e = 0; e < q->topo.n_edges; ++e) edges[e] = q->topo.edge3(e);
-  if (host_cut(edges, CutParams{}, &q->cut) != Status::kOk) return false;
+  q->edges.resize(q->topo.n_edges);
+  for (uint32_t e = 0; e < q->topo.n_edges; ++e) q->edges[e] = q->topo.edge3(e);
+  q->marked.assign((size_t{q->topo.n_edges} + 31) / 32, 0);
+  mark_crossing_edges(q->topo, q->marked.data());
+  CutParams cp;
+  cp.marked = q->marked.data();
+  if (host_cut(q->edges, cp, &q->cut) != Status::kOk) return false;
   const uint32_t capacity = q->topo.n_vertices + 64;
   q->inc_mem.assign(incidence_bytes(q->topo, capacity) / 8 + 1, 0);
   uint32_t needed = 0;
@@ -176,7 +173,12 @@ int main(int argc, char** argv) {
       &one, &many);
   row("hidden-line stage, torus of " + std::to_string(scene.triangles.size()) + " triangles", one,
       many, same_pieces(runs_of[0], runs_of[1]));
-  const std::vector<Edge3> edges = stage_edges(scene);
+  // The QI propagation alone, in its parts (solid/qi.h's QiSplit); its face grid, built
+  // first on one thread, timed apart.
+  QiInputs qin;
+  if (!qi_inputs(scene, &qin)) return 1;
+  // The stage's CUT alone: its edges, the marked ones paired with the rest.
+  const std::vector<Edge3>& edges = qin.edges;
   HostCut cuts[2];
   Time cut_one, cut_many;
   measure(
@@ -184,16 +186,16 @@ int main(int argc, char** argv) {
       [&](const Parts* p) {
         CutParams cp;
         cp.parts = p;
+        cp.marked = qin.marked.data();
+        cp.compact_cells = false;  // as the stage's (solid/hidden_lines.cpp)
         return host_cut(edges, cp, &cuts[p == nullptr ? 0 : 1]) == Status::kOk;
       },
       &cut_one, &cut_many);
-  row("its CUT alone (" + std::to_string(edges.size()) + " edges, " +
-          std::to_string(cuts[0].set.n_crossings) + " crossings)",
+  uint32_t n_marked = 0;
+  for (uint32_t w : qin.marked) n_marked += uint32_t(__builtin_popcount(w));
+  row("its CUT alone (" + std::to_string(edges.size()) + " edges, " + std::to_string(n_marked) +
+          " marked, " + std::to_string(cuts[0].set.n_crossings) + " crossings)",
       cut_one, cut_many, same_cut(cuts[0], cuts[1]));
-  // The QI propagation alone, in its parts (solid/qi.h's QiSplit); its face grid, built
-  // first on one thread, timed apart.
-  QiInputs qin;
-  if (!qi_inputs(scene, &qin)) return 1;
   QiRun qis[2];
   Time qi_one, qi_many;
   measure(
@@ -219,7 +221,10 @@ int main(int argc, char** argv) {
   }
   // Where CUT's time goes on one thread: what the parts split (the cell loop, the sorting)
   // and what stays serial (the cell lists, the grouping's scatter).
-  const bench::CutTiming phases = bench::time_cut(edges, CutParams{}, runs);
+  CutParams staged;
+  staged.marked = qin.marked.data();
+  staged.compact_cells = false;
+  const bench::CutTiming phases = bench::time_cut(edges, staged, runs);
   // Amdahl's bound for the stage: CUT's pairs (the sorting left out here) and the QI's walks
   // split; the rest runs on one thread.
   const double cut_share = cut_one.cpu / one.cpu, qi_share = qi_one.cpu / one.cpu;

@@ -149,4 +149,15 @@ void hidden_lines_needs(Status s, const HiddenReport& report, size_t bytes, Stag
 // bound for a solid job is job_solid_bytes() (job/job.h), a counting pass.
 size_t hidden_lines_first_bytes(const SolidInput& in);
 
+// The edges a crossing behind which can change the count of faces over a point, as bits
+// (edge e: bit e % 32 of marked[e / 32], (n_edges + 31) / 32 words): a fold by the model's
+// facing (the QI's own rule), an edge whose faces lie on one side of it on paper (a contour,
+// also after the QI's retry with the projected facing, and two-sided counting's rule), and any
+// edge that is not a regular two-faced one (a boundary, a fin, a seam; its other faces are not
+// all at hand before the stars). Behind any other edge one of its faces stops covering the
+// walking point where the other starts: nothing changes, in the QI or in the fallback's counts,
+// so the hidden lines' CUT pairs only these with the rest (CutParams::marked); on a smooth mesh
+// they are few (the 1M-triangle torus: some 2,800 edges of 1.5 million). Needs classify().
+void mark_crossing_edges(const Topology& topo, uint32_t* marked);
+
 }  // namespace haloplot
