@@ -250,7 +250,7 @@ int main(int argc, char** argv) {
         return host_cut(random, cp, &haloed[p == nullptr ? 0 : 1]) == Status::kOk;
       },
       &h_one, &h_many);
-  row("CUT of the paper's random scene (N = 50,000, L = 0.01, " +
+  row("CUT of the paper's random scene (N = 50,000, L = 0.01, seed 1, " +
           std::to_string(haloed[0].set.n_crossings) + " crossings)",
       h_one, h_many, same_cut(haloed[0], haloed[1]));
   return 0;
