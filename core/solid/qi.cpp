@@ -270,8 +270,8 @@ struct Own {
 
 // Breadth first from queue[0, tail) (Heger's queue), over the edges of `own` not yet walked.
 // An edge that arrives outside `own` leaves a crossing record instead of entering it.
-void spread(const Ctx& c, QiState& s, const FaceGrid& fg, const Own& own, uint32_t* queue,
-            uint32_t tail, CrossRecord* cross, uint32_t* n_cross, QiStats& st) {
+void spread(const Ctx& c, QiState& s, const Own& own, uint32_t* queue, uint32_t tail,
+            CrossRecord* cross, uint32_t* n_cross, QiStats& st) {
   const Topology& topo = c.topo;
   uint32_t head = 0;
   while (head < tail) {
@@ -310,7 +310,7 @@ void spread(const Ctx& c, QiState& s, const FaceGrid& fg, const Own& own, uint32
         // Two paths disagree: Heger re-initialises. Exact predicates should never get here.
         ++st.conflicts;
         if (!degenerate(c, e)) {
-          s.base[x] = cast_base(c, fg, x, v);
+          s.base[x] = cast_base(c, s.grid, x, v);
           ++st.ray_casts;
         }
       }
@@ -333,7 +333,7 @@ void propagate_own(const Ctx& c, QiState& s, const Own& own, uint32_t* queue, Cr
     ++st.ray_casts;
     ++st.components;
     queue[0] = seed;
-    spread(c, s, s.grid, own, queue, 1, cross, n_cross, st);
+    spread(c, s, own, queue, 1, cross, n_cross, st);
   }
 }
 
@@ -451,7 +451,7 @@ Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cu
     }
     // What only another part's edge reached (a vertex whose own edges are points on paper)
     // spreads from there over the edges left.
-    spread(c, s, s.grid, Own{0, topo.n_vertices}, queue, tail, nullptr, &none, st);
+    spread(c, s, Own{0, topo.n_vertices}, queue, tail, nullptr, &none, st);
   }
   *out = s;
   if (stats != nullptr) *stats = st;
