@@ -30,32 +30,49 @@ struct Arena {
   }
 };
 
+// An edge's geometry for the sink: from CUT's array where the run keeps it (a band's), from
+// the topology otherwise, into `at` (the caller's stack: valid during the sink's call, and
+// each call has its own, whatever thread emits it).
 struct Adapter {
   HiddenSink sink;
-  const Edge3* edges;
+  const Edge3* edges;  // null once CUT is done, outside a band (HiddenRun::cut_and_touches)
+  const Topology* topo;
   uint32_t n_edges;  // lines on the faces are numbered after every edge
+  const Edge3* geometry(uint32_t e, Edge3* at) const {
+    if (edges != nullptr) return edges + e;
+    *at = topo->edge3(e);
+    return at;
+  }
 };
 
 Status qi_piece(void* ctx, const QiPiece& p) {
   const Adapter* a = static_cast<const Adapter*>(ctx);
-  return a->sink.piece(a->sink.context, HiddenPiece{p, a->edges + p.edge, p.q, p.q != 0, true});
+  Edge3 g;
+  return a->sink.piece(a->sink.context,
+                       HiddenPiece{p, a->geometry(p.edge, &g), p.q, p.q != 0, true});
 }
 
 Status fallback_piece(void* ctx, const FallbackPiece& p) {
   const Adapter* a = static_cast<const Adapter*>(ctx);
-  return a->sink.piece(a->sink.context, HiddenPiece{p, a->edges + p.edge, p.q, p.hidden, p.tested});
+  Edge3 g;
+  return a->sink.piece(a->sink.context,
+                       HiddenPiece{p, a->geometry(p.edge, &g), p.q, p.hidden, p.tested});
 }
 
 Status fallback_outline(void* ctx, const FallbackPiece& p) {
   const Adapter* a = static_cast<const Adapter*>(ctx);
   if (a->sink.outline == nullptr) return Status::kOk;
-  return a->sink.outline(a->sink.context, OutlinePiece{{p, a->edges + p.edge, 0, false, true}});
+  Edge3 g;
+  return a->sink.outline(a->sink.context,
+                         OutlinePiece{{p, a->geometry(p.edge, &g), 0, false, true}});
 }
 
 Status outline_piece(void* ctx, const OutlineSegment& s) {
   const Adapter* a = static_cast<const Adapter*>(ctx);
   if (a->sink.outline == nullptr) return Status::kOk;
-  return a->sink.outline(a->sink.context, OutlinePiece{{s, a->edges + s.edge, 0, false, true}});
+  Edge3 g;
+  return a->sink.outline(a->sink.context,
+                         OutlinePiece{{s, a->geometry(s.edge, &g), 0, false, true}});
 }
 
 Status line_piece(const Adapter* a, const LinePiece& p, bool hatch) {
@@ -111,9 +128,11 @@ Status short_of(const Arena& a, HiddenReport* r) {
 // reuse the pages CUT wrote instead of new ones past a capacity that is mostly a guess (the
 // host's first guess on a 1M-triangle torus is six times the records stored). The high-water
 // mark is the same as with the CUTSET first. Only pairs with a marked edge are tested (null:
-// every pair). kWorkspaceTooSmall: the arena is short (arena->need says how much it needed).
+// every pair). With `drop_edges` the edges are the last block carved before CUT, and the
+// CUTSET moves down onto them instead (the run reads them no more). kWorkspaceTooSmall: the
+// arena is short (arena->need says how much it needed).
 Status cut_step(const Edge3* edges, uint32_t n, const HiddenParams& params, const uint32_t* marked,
-                Arena* arena, CutSet* cutset, HiddenReport* r) {
+                bool drop_edges, Arena* arena, CutSet* cutset, HiddenReport* r) {
   CutParams cp = params.cut;
   cp.marked = marked;
   // With few edges marked, few pairs get past the marks to read geometry: cell lists of indices
@@ -135,9 +154,9 @@ Status cut_step(const Edge3* edges, uint32_t n, const HiddenParams& params, cons
   }
   s = run_cut(plan, edges, cut_scratch, plan.scratch_bytes, cutset_mem, cutset_size, cutset,
               &r->cut);
-  arena->used = mark;
+  arena->used = drop_edges ? size_t(reinterpret_cast<const uint8_t*>(edges) - arena->base) : mark;
   if (s != Status::kOk) return s;
-  // Down onto the scratch, in order (the destination lies below the source).
+  // Down onto the scratch (or the edges), in order (the destination lies below the source).
   const size_t words = (cutset_bytes(n, cutset->n_crossings) + 3) / 4;
   uint32_t* to = reinterpret_cast<uint32_t*>(arena->take(words * 4));
   const uint32_t* from = reinterpret_cast<const uint32_t*>(cutset_mem);
@@ -184,7 +203,7 @@ struct HiddenRun {
   HiddenReport r;
   Topology topo;
   uint8_t* front = nullptr;
-  Edge3* edges = nullptr;
+  Edge3* edges = nullptr;      // every edge as CUT reads it; given back after CUT outside a band
   uint32_t* marked = nullptr;  // the edges CUT pairs with every other (mark_crossing_edges)
   CutSet cutset;
   Incidences inc;
@@ -193,7 +212,12 @@ struct HiddenRun {
 
   HiddenRun(const SolidInput& input, const HiddenParams& p, void* buffer, size_t bytes,
             HiddenSink s, HiddenReport* out)
-      : in(input), params(p), sink(s), report(out), arena(buffer, bytes), adapter{s, nullptr, 0} {}
+      : in(input),
+        params(p),
+        sink(s),
+        report(out),
+        arena(buffer, bytes),
+        adapter{s, nullptr, nullptr, 0} {}
 
   Status fail(Status s) { return *report = r, s; }
   Status out_of_room() { return *report = r, short_of(arena, report); }
@@ -211,7 +235,10 @@ struct HiddenRun {
 };
 
 // Topology, classes, and every edge as CUT sees it. The build takes what it needs of the free
-// arena and keeps its first kept_bytes.
+// arena and keeps its first kept_bytes. Outside a band the edges come last, just below CUT's
+// scratch, so that CUT gives them back with it: only CUT reads them (the sink's geometry comes
+// from the topology), and on the 1M-triangle torus they are 36 MB the QI would otherwise hold
+// on to (its peak: the stars and the QI's own blocks then take their pages).
 Status HiddenRun::build_edges() {
   TopologyOptions to;
   to.stars = false;   // built after CUT (add_stars), which does not read them
@@ -238,26 +265,30 @@ Status HiddenRun::build_edges() {
   r.check = topo.check;
   r.n_drawn = topo.n_drawn;
   r.n_edges = topo.n_edges;
+  const size_t edge_bytes = size_t{topo.n_edges} * sizeof(Edge3);
   front = arena.take(topo.n_triangles);
-  edges = reinterpret_cast<Edge3*>(arena.take(size_t{topo.n_edges} * sizeof(Edge3)));
-  if (front == nullptr || edges == nullptr) return out_of_room();
+  if (params.band) edges = reinterpret_cast<Edge3*>(arena.take(edge_bytes));
+  if (front == nullptr || (params.band && edges == nullptr)) return out_of_room();
   r.classes = classify(&topo, front, in.facing);
-  for (uint32_t e = 0; e < topo.n_edges; ++e) edges[e] = topo.edge3(e);
   // A band's CUT pairs every edge, as it always did: its arena stays as the conductor sized it.
   if (!params.band) {
     marked = reinterpret_cast<uint32_t*>(arena.take((size_t{topo.n_edges} + 31) / 32 * 4));
-    if (marked == nullptr) return out_of_room();
+    edges = reinterpret_cast<Edge3*>(arena.take(edge_bytes));
+    if (marked == nullptr || edges == nullptr) return out_of_room();
     mark_crossing_edges(topo, marked);
   }
-  adapter = Adapter{sink, edges, topo.n_edges};
+  for (uint32_t e = 0; e < topo.n_edges; ++e) edges[e] = topo.edge3(e);
+  adapter = Adapter{sink, edges, &topo, topo.n_edges};
   return Status::kOk;
 }
 
 // CUT, then the singular touches CUT leaves out: every place an edge's visibility may change.
 Status HiddenRun::cut_and_touches() {
-  Status s = cut_step(edges, topo.n_edges, params, marked, &arena, &cutset, &r);
+  const bool drop_edges = !params.band;  // a band's sink reads them (HiddenSink::begin)
+  Status s = cut_step(edges, topo.n_edges, params, marked, drop_edges, &arena, &cutset, &r);
   if (s == Status::kWorkspaceTooSmall) return out_of_room();
   if (s != Status::kOk) return fail(s);
+  if (drop_edges) edges = nullptr, adapter.edges = nullptr;
   // A band's fallback uses no V.C. table: it needs the incidences by edge only.
   const bool by_vertex = !params.band;
   r.bytes_incidence = incidence_bytes(topo, params.incidence_capacity, by_vertex);

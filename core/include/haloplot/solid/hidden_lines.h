@@ -9,14 +9,14 @@
 //
 // Memory: one caller buffer, carved stage by stage; CUT's scratch is given back before the
 // incidences are found (the CUTSET, carved above the scratch, then moves down onto it, cut to
-// the records stored; the incidences are packed the same way, and the vertex stars are built
-// after them: what a run holds at once stays near what it uses, not what it first guessed).
-// The report's bytes_used is the high-water mark, which may lie above the tail handed to the
-// sink. Before the first piece is emitted every stage has carved what it
-// needs, and the sink is told where the unused tail of the buffer begins (the controller's
-// job puts its strokes there). A short buffer fails with kWorkspaceTooSmall and says how many
-// bytes the run had reached (bytes_needed, a lower bound: later stages were not sized);
-// kCrossingCapacity and kIncidenceCapacity say the counts a retry needs.
+// the records stored; outside a band CUT's copy of the edges goes with its scratch; the incidences
+// are packed the same way, and the vertex stars are built after them: what a run holds at once
+// stays near what it uses, not what it first guessed). The report's bytes_used is the high-water
+// mark, which may lie above the tail handed to the sink. Before the first piece is emitted every
+// stage has carved what it needs, and the sink is told where the unused tail of the buffer begins
+// (the controller's job puts its strokes there). A short buffer fails with kWorkspaceTooSmall and
+// says how many bytes the run had reached (bytes_needed, a lower bound: later stages were not
+// sized); kCrossingCapacity and kIncidenceCapacity say the counts a retry needs.
 #pragma once
 #include <stddef.h>
 #include <stdint.h>
@@ -99,7 +99,7 @@ struct HiddenReport {
 // intersection lines'). With its projection for rounding; q in halves or kQiUnknown (class or
 // V.C. decided).
 struct HiddenPiece : EdgePiece {
-  const Edge3* geometry;  // valid during the call only
+  const Edge3* geometry;  // valid during the call only (it may lie on the emitter's stack)
   int32_t q;
   bool hidden;
   bool tested;  // false: too short for a test point (solid/fallback.h); a band merges it
@@ -113,9 +113,12 @@ struct OutlinePiece : HiddenPiece {};
 
 struct HiddenSink {
   // Called once, before the first piece: [tail, tail + tail_bytes) of the buffer is free
-  // until hidden_lines() returns. `edges` are every edge of the run as projected (the drawn
-  // ones first, in input order), in the buffer below the tail: they stay there after the run
-  // until the buffer is used again, so a caller keeps no copy of its own. May be null.
+  // until hidden_lines() returns. In a band's run (HiddenParams::band) `edges` are every edge
+  // of the run as projected (the drawn ones first, in input order), in the buffer below the
+  // tail: they stay there after the run until the buffer is used again, so a caller keeps no
+  // copy of its own. Any other run gives CUT's copy of them back once CUT is done (the QI
+  // holds its most there) and passes null: each piece still carries its geometry.
+  // `begin` may be null.
   void (*begin)(void* context, uint8_t* tail, size_t tail_bytes, const Edge3* edges);
   Status (*piece)(void* context, const HiddenPiece& piece);
   Status (*outline)(void* context, const OutlinePiece& segment);  // may be null
