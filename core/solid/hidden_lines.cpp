@@ -192,6 +192,20 @@ uint8_t* pack_incidences(Incidences* inc, const Topology& topo, uint8_t* at) {
   return at;
 }
 
+// The bytes handed to the topology's build (TopologyOptions::stars false): at most what it
+// can need, since its scratch lies at their top and a host's pages stay resident once written.
+// Without its stars it keeps only the edges (at most one a drawn edge and one a triangle
+// side); topology_bytes() also counts the stars, which would put the scratch above all the
+// later stages reach (on the 1M-triangle torus some 44 MB higher, 16 MB of the plot's peak). A
+// band's run keeps the bound its conductor sized it with.
+size_t topology_build_bytes(const SolidInput& in, bool band) {
+  const size_t all = topology_bytes(in);
+  if (band) return all;
+  const size_t edges = size_t{in.n_edges} + 3 * size_t{in.n_triangles};
+  const size_t bound = carve_round(edges * sizeof(SolidEdge)) + topology_scratch_bytes(in) + 8;
+  return bound < all ? bound : all;
+}
+
 // One run's state, shared by its steps: the arena, the report so far, and what each step built
 // for the next. Every step that fails writes the report before it returns.
 struct HiddenRun {
@@ -249,7 +263,7 @@ Status HiddenRun::build_edges() {
   }
   // At most the bytes the build can need: its scratch, at the top of what it is given, then
   // lies on pages the next stages write again (a growing buffer is far larger than the build).
-  const size_t free = arena.size - arena.used, most = topology_bytes(in);
+  const size_t free = arena.size - arena.used, most = topology_build_bytes(in, params.band);
   const Status s =
       build_topology(in, arena.base + arena.used, most < free ? most : free, &topo, to);
   if (s == Status::kWorkspaceTooSmall) {
