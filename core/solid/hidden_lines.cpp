@@ -30,49 +30,55 @@ struct Arena {
   }
 };
 
-// An edge's geometry for the sink: from CUT's array where the run keeps it (a band's), from
-// the topology otherwise, into `at` (the caller's stack: valid during the sink's call, and
-// each call has its own, whatever thread emits it).
+// An edge's geometry for the sink. A band's run keeps CUT's array of the edges (its sink reads
+// them: HiddenSink::begin) and hands on pointers into it, as it always did; any other run gave
+// that array back after CUT, and makes each piece's geometry from the topology on the
+// emitter's stack (valid during the sink's call, all HiddenPiece::geometry promises).
 struct Adapter {
   HiddenSink sink;
-  const Edge3* edges;  // null once CUT is done, outside a band (HiddenRun::cut_and_touches)
+  const Edge3* edges;  // a band's; null outside a band once CUT is done
   const Topology* topo;
   uint32_t n_edges;  // lines on the faces are numbered after every edge
-  const Edge3* geometry(uint32_t e, Edge3* at) const {
-    if (edges != nullptr) return edges + e;
-    *at = topo->edge3(e);
-    return at;
-  }
 };
 
+// The QI's pieces and outlines (never in a band).
 Status qi_piece(void* ctx, const QiPiece& p) {
   const Adapter* a = static_cast<const Adapter*>(ctx);
-  Edge3 g;
-  return a->sink.piece(a->sink.context,
-                       HiddenPiece{p, a->geometry(p.edge, &g), p.q, p.q != 0, true});
-}
-
-Status fallback_piece(void* ctx, const FallbackPiece& p) {
-  const Adapter* a = static_cast<const Adapter*>(ctx);
-  Edge3 g;
-  return a->sink.piece(a->sink.context,
-                       HiddenPiece{p, a->geometry(p.edge, &g), p.q, p.hidden, p.tested});
-}
-
-Status fallback_outline(void* ctx, const FallbackPiece& p) {
-  const Adapter* a = static_cast<const Adapter*>(ctx);
-  if (a->sink.outline == nullptr) return Status::kOk;
-  Edge3 g;
-  return a->sink.outline(a->sink.context,
-                         OutlinePiece{{p, a->geometry(p.edge, &g), 0, false, true}});
+  const Edge3 g = a->topo->edge3(p.edge);
+  return a->sink.piece(a->sink.context, HiddenPiece{p, &g, p.q, p.q != 0, true});
 }
 
 Status outline_piece(void* ctx, const OutlineSegment& s) {
   const Adapter* a = static_cast<const Adapter*>(ctx);
   if (a->sink.outline == nullptr) return Status::kOk;
-  Edge3 g;
-  return a->sink.outline(a->sink.context,
-                         OutlinePiece{{s, a->geometry(s.edge, &g), 0, false, true}});
+  const Edge3 g = a->topo->edge3(s.edge);
+  return a->sink.outline(a->sink.context, OutlinePiece{{s, &g, 0, false, true}});
+}
+
+// The fallback's, in a band (the array kept).
+Status fallback_piece(void* ctx, const FallbackPiece& p) {
+  const Adapter* a = static_cast<const Adapter*>(ctx);
+  return a->sink.piece(a->sink.context, HiddenPiece{p, a->edges + p.edge, p.q, p.hidden, p.tested});
+}
+
+Status fallback_outline(void* ctx, const FallbackPiece& p) {
+  const Adapter* a = static_cast<const Adapter*>(ctx);
+  if (a->sink.outline == nullptr) return Status::kOk;
+  return a->sink.outline(a->sink.context, OutlinePiece{{p, a->edges + p.edge, 0, false, true}});
+}
+
+// The fallback's outside a band (the array given back).
+Status fallback_piece_made(void* ctx, const FallbackPiece& p) {
+  const Adapter* a = static_cast<const Adapter*>(ctx);
+  const Edge3 g = a->topo->edge3(p.edge);
+  return a->sink.piece(a->sink.context, HiddenPiece{p, &g, p.q, p.hidden, p.tested});
+}
+
+Status fallback_outline_made(void* ctx, const FallbackPiece& p) {
+  const Adapter* a = static_cast<const Adapter*>(ctx);
+  if (a->sink.outline == nullptr) return Status::kOk;
+  const Edge3 g = a->topo->edge3(p.edge);
+  return a->sink.outline(a->sink.context, OutlinePiece{{p, &g, 0, false, true}});
 }
 
 Status line_piece(const Adapter* a, const LinePiece& p, bool hatch) {
@@ -425,9 +431,12 @@ Status HiddenRun::fallback_method(bool manifold) {
     return out_of_room();
   if (sink.begin != nullptr)
     sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used, edges);
-  Status s = run_fallback(topo, front, cutset, inc, fp, fb_mem, r.bytes_fallback,
-                          FallbackSink{&fallback_piece, &adapter, &fallback_outline}, &r.fallback,
-                          share ? &crossing_grid : nullptr);
+  const bool kept = adapter.edges != nullptr;  // a band's
+  Status s =
+      run_fallback(topo, front, cutset, inc, fp, fb_mem, r.bytes_fallback,
+                   kept ? FallbackSink{&fallback_piece, &adapter, &fallback_outline}
+                        : FallbackSink{&fallback_piece_made, &adapter, &fallback_outline_made},
+                   &r.fallback, share ? &crossing_grid : nullptr);
   if (s == Status::kOk) s = lines(fp.any_facing ? nullptr : front);
   return finish(s);
 }
