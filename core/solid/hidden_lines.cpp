@@ -36,9 +36,8 @@ struct Arena {
 // emitter's stack (valid during the sink's call, all HiddenPiece::geometry promises).
 struct Adapter {
   HiddenSink sink;
-  const Edge3* edges;  // a band's; null outside a band once CUT is done
-  const Topology* topo;
-  uint32_t n_edges;  // lines on the faces are numbered after every edge
+  const Edge3* edges;    // a band's; null outside a band once CUT is done
+  const Topology* topo;  // the edges' geometry; lines on the faces are numbered after them
 };
 
 // The QI's pieces and outlines (never in a band).
@@ -82,7 +81,7 @@ Status fallback_outline_made(void* ctx, const FallbackPiece& p) {
 }
 
 Status line_piece(const Adapter* a, const LinePiece& p, bool hatch) {
-  return a->sink.piece(a->sink.context, HiddenPiece{{a->n_edges + p.edge, p.t0, p.t1},
+  return a->sink.piece(a->sink.context, HiddenPiece{{a->topo->n_edges + p.edge, p.t0, p.t1},
                                                     p.segment,
                                                     p.q,
                                                     p.hidden,
@@ -217,7 +216,6 @@ size_t topology_build_bytes(const SolidInput& in, bool band) {
 struct HiddenRun {
   const SolidInput& in;
   const HiddenParams& params;
-  HiddenSink sink;
   HiddenReport* report;
   Arena arena;
   HiddenReport r;
@@ -228,16 +226,11 @@ struct HiddenRun {
   CutSet cutset;
   Incidences inc;
   FaceGrid crossing_grid;
-  Adapter adapter;
+  Adapter adapter;  // holds the run's sink (one copy: this frame is on a chip's deepest stack)
 
   HiddenRun(const SolidInput& input, const HiddenParams& p, void* buffer, size_t bytes,
             HiddenSink s, HiddenReport* out)
-      : in(input),
-        params(p),
-        sink(s),
-        report(out),
-        arena(buffer, bytes),
-        adapter{s, nullptr, nullptr, 0} {}
+      : in(input), params(p), report(out), arena(buffer, bytes), adapter{s, nullptr, nullptr} {}
 
   Status fail(Status s) { return *report = r, s; }
   Status out_of_room() { return *report = r, short_of(arena, report); }
@@ -298,7 +291,8 @@ Status HiddenRun::build_edges() {
     mark_crossing_edges(topo, marked);
   }
   for (uint32_t e = 0; e < topo.n_edges; ++e) edges[e] = topo.edge3(e);
-  adapter = Adapter{sink, edges, &topo, topo.n_edges};
+  adapter.edges = edges;
+  adapter.topo = &topo;
   return Status::kOk;
 }
 
@@ -396,8 +390,9 @@ Status HiddenRun::qi_method(bool* gave_up) {
     if (outline_mem == nullptr) return out_of_room();
   }
   crossing_grid = state.grid;  // the lines ask the QI's grid of every face
-  if (sink.begin != nullptr)
-    sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used, edges);
+  if (adapter.sink.begin != nullptr)
+    adapter.sink.begin(adapter.sink.context, arena.base + arena.used, arena.size - arena.used,
+                       edges);
   r.used_qi = true;
   s = emit_qi_pieces(topo, front, cutset, inc, state, QiSink{&qi_piece, &adapter});
   if (s == Status::kOk) s = lines(state.two_sided ? nullptr : front);
@@ -429,8 +424,9 @@ Status HiddenRun::fallback_method(bool manifold) {
   uint8_t* fb_mem = arena.take(r.bytes_fallback);
   if (fb_mem == nullptr || !carve_shared_grid(topo, params, &arena, &crossing_grid, &r))
     return out_of_room();
-  if (sink.begin != nullptr)
-    sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used, edges);
+  if (adapter.sink.begin != nullptr)
+    adapter.sink.begin(adapter.sink.context, arena.base + arena.used, arena.size - arena.used,
+                       edges);
   const bool kept = adapter.edges != nullptr;  // a band's
   Status s =
       run_fallback(topo, front, cutset, inc, fp, fb_mem, r.bytes_fallback,
