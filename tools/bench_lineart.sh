@@ -250,7 +250,7 @@ section() {
   echo "about 80 µs, the difference the first run of the stage's ~100 KB of code (instruction-cache"
   echo "and TLB misses, the dynamic linker binding the library calls it makes) and 7 page faults,"
   echo "most on the executable's pages (2 in a warm run): a fresh process's costs, not the stage's"
-  echo "work, and Line Art's first evaluation has its own (about 3 times its warm one on the"
+  echo "work, and Line Art's first evaluation has its own (3 to 4 times its warm one on the"
   echo "cubes). On the larger models the fresh and warm figures also differ by the first touches of"
   echo "the arena (1.2 MB on the 10 x 10 cubes: a few hundred page faults); mapping it fresh or on a"
   echo "huge page instead of calloc's heap measured no better here (15 fresh runs each,"
@@ -275,11 +275,11 @@ section() {
   fi
   echo "Against back-face culling, the stricter peer, it is under 3 on: $(listed under3.warm.culled)."
   if [ -s "$work/under3.warm.culled" ]; then
-    echo "The least ratio against culling is $(printf '%.2f' "${least_culled%% *}") (${least_culled#* }): 3 there asks a stage"
+    echo "The least ratio against culling is $(r2 "${least_culled%% *}" 1) (${least_culled#* }): 3 there asks a stage"
     echo "$(echo "scale=2; 3 / ${least_culled%% *}" | bc | sed 's/^\./0./') times as fast as now."
   fi
   echo "With Line Art's loading time taken out of its warm CPU time (the conservative reading),"
-  echo "the least warm ratio is $(printf '%.2f' "${least_unloaded%% *}") (${least_unloaded#* })."
+  echo "the least warm ratio is $(r2 "${least_unloaded%% *}" 1) (${least_unloaded#* })."
   echo "First run against first run, under 3 on: $(listed under3.first). A fresh \`plot\`'s stage"
   echo "against warm Line Art (the unlike comparison), under 3 on: $(listed under3.fresh)."
   echo
