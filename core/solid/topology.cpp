@@ -19,9 +19,10 @@ uint64_t key_of(uint32_t a, uint32_t b) {
   return a < b ? (uint64_t{a} << 32) | b : (uint64_t{b} << 32) | a;
 }
 
-bool key_less(const SideKey& x, const SideKey& y) {
+// A lambda, not a function: the sorts call it inline.
+constexpr auto key_less = [](const SideKey& x, const SideKey& y) {
   return x.key < y.key || (x.key == y.key && x.ref < y.ref);
-}
+};
 
 // Index of `key` among sorted drawn keys, or n if absent (binary search).
 uint32_t find_key(const SideKey* keys, uint32_t n, uint64_t key) {
