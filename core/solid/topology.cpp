@@ -151,10 +151,11 @@ uint32_t undrawn_sides(const SolidInput& in, const TopologyOptions& options, con
   return n_side;
 }
 
-// The build's parts and what they share: part i counts and stores the undrawn sides of its
-// range of triangles, numbers the diagonals of its range of sorted sides, attaches the faces of
-// the edges whose lesser vertex lies in its range of vertices (it alone writes them, in side
-// order as one part would) and checks its range of edges.
+// The build's parts and what they share: part i stores the undrawn sides of its range of
+// triangles or (with room for a count per vertex) of its range of lesser vertices, numbers the
+// diagonals of its range of sorted sides, attaches the faces of the edges whose lesser vertex
+// lies in its range of vertices (it alone writes them, in side order as one part would) and
+// checks its range of edges.
 struct Build {
   const SolidInput& in;
   const TopologyOptions& options;
@@ -207,19 +208,69 @@ uint32_t count_sides(Build& b) {
   return b.sides_before[b.k];
 }
 
-// Stores the undrawn sides and sorts them into b.side, so the diagonals are numbered
-// independently of the triangle order; in parts through `spare` (n_side keys) when given.
-void sort_sides(Build& b, uint64_t* spare) {
-  uint64_t* to = spare != nullptr ? spare : b.side;
+// Stores the undrawn sides, part i those of its triangles, and sorts them whole, so the
+// diagonals are numbered independently of the triangle order.
+void sort_sides(Build& b) {
   b.run([&](uint32_t i) {
     undrawn_sides(b.in, b.options, b.drawn, b.triangle_begin(i), b.triangle_begin(i + 1),
-                  to + b.sides_before[i]);
+                  b.side + b.sides_before[i]);
   });
-  auto less = [](uint64_t x, uint64_t y) { return x < y; };
-  if (spare != nullptr)
-    sort_in_parts(b.parts, b.k, spare, b.side, b.n_side, less);
-  else
-    sort_total(b.side, b.n_side, less);
+  sort_total(b.side, b.n_side, [](uint64_t x, uint64_t y) { return x < y; });
+}
+
+// Calls f(key) for each undrawn side in the rows whose lesser vertex is in [v_lo, v_hi), in
+// side order.
+template <typename F>
+void undrawn_by_vertex(const Build& b, uint32_t v_lo, uint32_t v_hi, F f) {
+  const uint32_t sides = b.in.n_triangles * 3;
+  for (uint32_t s = 0; s < sides; ++s) {
+    const Triangle& tri = b.in.triangles[s / 3];
+    const uint32_t a = tri.v[s % 3], c = tri.v[(s % 3 + 1) % 3];
+    const uint32_t lesser = a < c ? a : c;
+    if (lesser < v_lo || lesser >= v_hi) continue;
+    const uint64_t key = key_of(a, c);
+    if (b.drawn.find(key) == b.in.n_edges && side_in_rows(b.in, b.options, a, c)) f(key);
+  }
+}
+
+// The sorted sides without a sort, where there is room for a count per vertex (`start`,
+// n_vertices + 1): part i counts, then stores, the undrawn sides whose lesser vertex is in its
+// range of vertices, each vertex's together from where the vertices before it end, and sorts
+// each vertex's few. Counts into start[v + 1], then makes them each vertex's first slot;
+// returns the sides.
+uint32_t count_sides_by_vertex(Build& b, uint32_t* start) {
+  const uint32_t nv = b.in.n_vertices;
+  b.run([&](uint32_t i) {
+    const uint32_t lo = part_begin(nv, b.k, i), hi = part_begin(nv, b.k, i + 1);
+    uint32_t* count = start + 1;
+    for (uint32_t v = lo; v < hi; ++v) count[v] = 0;
+    undrawn_by_vertex(b, lo, hi, [&](uint64_t key) { ++count[key >> 32]; });
+  });
+  start[0] = 0;
+  uint32_t before = 0;
+  for (uint32_t i = 0; i < b.k; ++i) {
+    b.sides_before[i] = before;  // where part i's sides begin
+    for (uint32_t v = part_begin(nv, b.k, i); v < part_begin(nv, b.k, i + 1); ++v) {
+      const uint32_t c = start[v + 1];
+      start[v + 1] = before;  // vertex v's next slot while storing; its end after
+      before += c;
+    }
+  }
+  return before;
+}
+
+void sort_sides_by_vertex(Build& b, uint32_t* start) {
+  const uint32_t nv = b.in.n_vertices;
+  b.run([&](uint32_t i) {
+    const uint32_t lo = part_begin(nv, b.k, i), hi = part_begin(nv, b.k, i + 1);
+    undrawn_by_vertex(b, lo, hi, [&](uint64_t key) { b.side[start[(key >> 32) + 1]++] = key; });
+    uint32_t from = b.sides_before[i];  // start[lo] may be the part before's, still storing
+    for (uint32_t v = lo; v < hi; ++v) {
+      insertion_sort(b.side + from, start[v + 1] - from,
+                     [](uint64_t x, uint64_t y) { return x < y; });
+      from = start[v + 1];
+    }
+  });
 }
 
 // The diagonals: one per distinct sorted side. Returns how many.
@@ -448,9 +499,10 @@ size_t topology_scratch_bytes(const SolidInput& in) {
 }
 
 // In parts, the build takes more room than in one, never more than topology_bytes(): a copy of
-// the drawn keys and of the undrawn sides (sorted in parts from the copy), and an index of the
-// diagonals by vertex, each where the kept arrays will be or in the gap above them, and only
-// when it fits (otherwise the build does that step as one part would: the same result).
+// the drawn keys (sorted in parts from the copy), a count of undrawn sides per vertex (the sides
+// then stored by vertex, needing no sort) and an index of the diagonals by vertex, each where
+// the kept arrays will be or in the gap above them, and only when it fits (otherwise the build
+// does that step as one part would: the same result).
 Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology* out,
                       const TopologyOptions& options) {
   const Status checked = check_input(in);
@@ -491,17 +543,26 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
   // The diagonals' keys come first, so the kept arrays are carved for the exact number of edges.
   // The index of the drawn keys goes where the kept arrays will be, then above them (each time
   // only where nothing written before the next lookup can reach it).
-  index_drawn(lo, reinterpret_cast<uint8_t*>(drawn), in.n_vertices, &b.drawn);
-  b.n_side = count_sides(b);
+  uint8_t* index_end = index_drawn(lo, reinterpret_cast<uint8_t*>(drawn), in.n_vertices, &b.drawn);
+  // In parts, the sides by vertex where a count per vertex fits below the most scratch.
+  const size_t most_scratch = topology_scratch_bytes(in);
+  uint32_t* side_start =
+      b.k > 1 && b.drawn.by_vertex != nullptr && size_t(hi - index_end) > most_scratch
+          ? room_for<uint32_t>(index_end, hi - most_scratch, size_t{in.n_vertices} + 1)
+          : nullptr;
+  b.n_side = side_start != nullptr ? count_sides_by_vertex(b, side_start) : count_sides(b);
   ByteCounter scratch_size;
   count_scratch(scratch_size, in.n_edges, b.n_side);
   if (size_t(hi - lo) < scratch_size.total) return Status::kWorkspaceTooSmall;
   Carver scratch(hi - scratch_size.total, scratch_size.total - drawn_bytes);
   b.side = scratch.take<uint64_t>(b.n_side);
   b.nfaces = scratch.take<uint8_t>(size_t{in.n_edges} + b.n_side);
-  uint8_t* index_end = index_drawn(lo, hi - scratch_size.total, in.n_vertices, &b.drawn);
-  sort_sides(b,
-             b.k > 1 ? room_for<uint64_t>(index_end, hi - scratch_size.total, b.n_side) : nullptr);
+  if (side_start != nullptr) {  // the drawn keys' index stays where it is, below the counts
+    sort_sides_by_vertex(b, side_start);
+  } else {
+    index_drawn(lo, hi - scratch_size.total, in.n_vertices, &b.drawn);
+    sort_sides(b);
+  }
   const uint32_t n_diagonals = count_diagonals(b);
   Carver carve(lo, size_t(hi - lo) - scratch_size.total);
   t.edges = carve.take<SolidEdge>(size_t{in.n_edges} + n_diagonals);
