@@ -2,8 +2,8 @@
 
 #include "haloplot/sort/lower_bound.h"
 #include "memory/carve.h"
+#include "solid/build_parts.h"
 #include "solid/cover.h"
-#include "solid/sort_parts.h"
 #include "sort/in_place_sort.h"
 
 namespace haloplot {
@@ -23,6 +23,8 @@ uint64_t key_of(uint32_t a, uint32_t b) {
 constexpr auto key_less = [](const SideKey& x, const SideKey& y) {
   return x.key < y.key || (x.key == y.key && x.ref < y.ref);
 };
+
+constexpr auto u64_less = [](uint64_t x, uint64_t y) { return x < y; };
 
 // Index of `key` among sorted drawn keys, or n if absent (binary search).
 uint32_t find_key(const SideKey* keys, uint32_t n, uint64_t key) {
@@ -215,7 +217,7 @@ void sort_sides(Build& b) {
     undrawn_sides(b.in, b.options, b.drawn, b.triangle_begin(i), b.triangle_begin(i + 1),
                   b.side + b.sides_before[i]);
   });
-  sort_total(b.side, b.n_side, [](uint64_t x, uint64_t y) { return x < y; });
+  sort_total(b.side, b.n_side, u64_less);
 }
 
 // Calls f(key) for each undrawn side in the rows whose lesser vertex is in [v_lo, v_hi), in
@@ -233,44 +235,75 @@ void undrawn_by_vertex(const Build& b, uint32_t v_lo, uint32_t v_hi, F f) {
   }
 }
 
-// The sorted sides without a sort, where there is room for a count per vertex (`start`,
-// n_vertices + 1): part i counts, then stores, the undrawn sides whose lesser vertex is in its
-// range of vertices, each vertex's together from where the vertices before it end, and sorts
-// each vertex's few. Counts into start[v + 1], then makes them each vertex's first slot;
-// returns the sides.
-uint32_t count_sides_by_vertex(Build& b, uint32_t* start) {
+// Items in order of their keys without a sort of them all, where there is room for a count per
+// vertex (`start`, n_vertices + 1) and the key begins with the item's lesser vertex (a drawn
+// edge's, an undrawn side's): part i counts the items whose lesser vertex is in its range of
+// vertices (each(v_lo, v_hi, f) calls f(lesser vertex, item) for those, in order), then stores
+// them from where the vertices before end and sorts each vertex's few. First count_by_vertex:
+// the counts into start[v + 1], then each vertex's next slot; where part i's items begin into
+// before[i]; returns the items. Then store_by_vertex: start[v] becomes v's first item.
+template <typename Each>
+uint32_t count_by_vertex(Build& b, uint32_t* start, uint32_t* before, Each each) {
   const uint32_t nv = b.in.n_vertices;
   b.run([&](uint32_t i) {
     const uint32_t lo = part_begin(nv, b.k, i), hi = part_begin(nv, b.k, i + 1);
     uint32_t* count = start + 1;
     for (uint32_t v = lo; v < hi; ++v) count[v] = 0;
-    undrawn_by_vertex(b, lo, hi, [&](uint64_t key) { ++count[key >> 32]; });
+    each(lo, hi, [&](uint32_t v, const auto&) { ++count[v]; });
   });
   start[0] = 0;
-  uint32_t before = 0;
+  uint32_t n = 0;
   for (uint32_t i = 0; i < b.k; ++i) {
-    b.sides_before[i] = before;  // where part i's sides begin
+    before[i] = n;
     for (uint32_t v = part_begin(nv, b.k, i); v < part_begin(nv, b.k, i + 1); ++v) {
       const uint32_t c = start[v + 1];
-      start[v + 1] = before;  // vertex v's next slot while storing; its end after
-      before += c;
+      start[v + 1] = n;  // vertex v's next slot while storing; its end after
+      n += c;
     }
   }
-  return before;
+  return n;
 }
 
-void sort_sides_by_vertex(Build& b, uint32_t* start) {
+template <typename T, typename Each, typename Less>
+void store_by_vertex(Build& b, uint32_t* start, const uint32_t* before, T* out, Each each,
+                     Less less) {
   const uint32_t nv = b.in.n_vertices;
   b.run([&](uint32_t i) {
     const uint32_t lo = part_begin(nv, b.k, i), hi = part_begin(nv, b.k, i + 1);
-    undrawn_by_vertex(b, lo, hi, [&](uint64_t key) { b.side[start[(key >> 32) + 1]++] = key; });
-    uint32_t from = b.sides_before[i];  // start[lo] may be the part before's, still storing
+    each(lo, hi, [&](uint32_t v, const T& item) { out[start[v + 1]++] = item; });
+    uint32_t from = before[i];  // start[lo] may be the part before's, still storing
     for (uint32_t v = lo; v < hi; ++v) {
-      insertion_sort(b.side + from, start[v + 1] - from,
-                     [](uint64_t x, uint64_t y) { return x < y; });
+      sort_total(out + from, start[v + 1] - from, less);
       from = start[v + 1];
     }
   });
+}
+
+// The undrawn sides by their lesser vertex, for count_by_vertex and store_by_vertex.
+auto sides_by_vertex(const Build& b) {
+  return [&b](uint32_t v_lo, uint32_t v_hi, auto f) {
+    undrawn_by_vertex(b, v_lo, v_hi, [&](uint64_t key) { f(uint32_t(key >> 32), key); });
+  };
+}
+
+// The drawn keys sorted and indexed by lesser vertex (the index at [at, end), as index_drawn
+// makes it), in parts; false, and nothing done, where the index does not fit.
+bool sort_drawn_by_vertex(Build& b, uint8_t* at, const uint8_t* end, SideKey* drawn) {
+  uint32_t* start = room_for<uint32_t>(at, end, size_t{b.in.n_vertices} + 1);
+  if (start == nullptr) return false;
+  const uint32_t* pairs = b.in.edge_pairs;
+  const uint32_t n = b.in.n_edges;
+  auto each = [pairs, n](uint32_t v_lo, uint32_t v_hi, auto f) {
+    for (uint32_t e = 0; e < n; ++e) {
+      const uint32_t x = pairs[2 * e], y = pairs[2 * e + 1], lesser = x < y ? x : y;
+      if (lesser >= v_lo && lesser < v_hi) f(lesser, SideKey{key_of(x, y), e});
+    }
+  };
+  uint32_t before[kMaxBuildParts];
+  count_by_vertex(b, start, before, each);
+  store_by_vertex(b, start, before, drawn, each, key_less);
+  b.drawn.by_vertex = start;
+  return true;
 }
 
 // The diagonals: one per distinct sorted side. Returns how many.
@@ -525,32 +558,33 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
   t.n_triangles = in.n_triangles;
   Build b(in, options, DrawnKeys{drawn, in.n_edges}, t);
 
-  // Drawn edges keep their input order and index; a repeat is an input error.
-  SideKey* drawn_copy =
-      b.k > 1 ? room_for<SideKey>(lo, reinterpret_cast<uint8_t*>(drawn), in.n_edges) : nullptr;
-  SideKey* fill = drawn_copy != nullptr ? drawn_copy : drawn;
-  b.run([&](uint32_t i) {
-    for (uint32_t e = part_begin(in.n_edges, b.k, i); e < part_begin(in.n_edges, b.k, i + 1); ++e)
-      fill[e] = SideKey{key_of(in.edge_pairs[2 * e], in.edge_pairs[2 * e + 1]), e};
-  });
-  if (drawn_copy != nullptr)
-    sort_in_parts(b.parts, b.k, drawn_copy, drawn, in.n_edges, key_less);
-  else
+  // Drawn edges keep their input order and index; a repeat is an input error. In parts, sorted
+  // by vertex where their index will be (it is made on the way).
+  const bool drawn_sorted =
+      b.k > 1 && sort_drawn_by_vertex(b, lo, reinterpret_cast<uint8_t*>(drawn), drawn);
+  if (!drawn_sorted) {
+    for (uint32_t e = 0; e < in.n_edges; ++e)
+      drawn[e] = SideKey{key_of(in.edge_pairs[2 * e], in.edge_pairs[2 * e + 1]), e};
     sort_total(drawn, in.n_edges, key_less);
+  }
   for (uint32_t i = 1; i < in.n_edges; ++i)
     if (drawn[i].key == drawn[i - 1].key) return Status::kBadParameter;
 
   // The diagonals' keys come first, so the kept arrays are carved for the exact number of edges.
   // The index of the drawn keys goes where the kept arrays will be, then above them (each time
   // only where nothing written before the next lookup can reach it).
-  uint8_t* index_end = index_drawn(lo, reinterpret_cast<uint8_t*>(drawn), in.n_vertices, &b.drawn);
+  uint8_t* index_end =
+      drawn_sorted ? align8(lo) + (size_t{in.n_vertices} + 1) * sizeof(uint32_t)
+                   : index_drawn(lo, reinterpret_cast<uint8_t*>(drawn), in.n_vertices, &b.drawn);
   // In parts, the sides by vertex where a count per vertex fits below the most scratch.
   const size_t most_scratch = topology_scratch_bytes(in);
   uint32_t* side_start =
       b.k > 1 && b.drawn.by_vertex != nullptr && size_t(hi - index_end) > most_scratch
           ? room_for<uint32_t>(index_end, hi - most_scratch, size_t{in.n_vertices} + 1)
           : nullptr;
-  b.n_side = side_start != nullptr ? count_sides_by_vertex(b, side_start) : count_sides(b);
+  b.n_side = side_start != nullptr
+                 ? count_by_vertex(b, side_start, b.sides_before, sides_by_vertex(b))
+                 : count_sides(b);
   ByteCounter scratch_size;
   count_scratch(scratch_size, in.n_edges, b.n_side);
   if (size_t(hi - lo) < scratch_size.total) return Status::kWorkspaceTooSmall;
@@ -558,7 +592,7 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
   b.side = scratch.take<uint64_t>(b.n_side);
   b.nfaces = scratch.take<uint8_t>(size_t{in.n_edges} + b.n_side);
   if (side_start != nullptr) {  // the drawn keys' index stays where it is, below the counts
-    sort_sides_by_vertex(b, side_start);
+    store_by_vertex(b, side_start, b.sides_before, b.side, sides_by_vertex(b), u64_less);
   } else {
     index_drawn(lo, hi - scratch_size.total, in.n_vertices, &b.drawn);
     sort_sides(b);
