@@ -9,8 +9,9 @@
 namespace haloplot {
 
 // The most parts the build splits into, whatever the runner's count: enough for a host's
-// cores, few enough that the parts' bookkeeping (a few counts each) fits a stack.
-constexpr uint32_t kMaxBuildParts = 16;
+// cores, few enough that the parts' bookkeeping (a few counts each) fits a stack. One on a
+// 32-bit chip, which runs no parts: its stack keeps no room for theirs.
+constexpr uint32_t kMaxBuildParts = UINTPTR_MAX > 0xffffffffu ? 16 : 1;
 
 // Parts for `work` items (about one lookup each): fewer where each would get less than
 // Parts::min_work, one without a runner.
