@@ -32,6 +32,10 @@ inline uint32_t part_begin(uint32_t n, uint32_t k, uint32_t i) {
 // f(i) for every part i < k, by the runner when p has one (any order, perhaps at once).
 template <typename F>
 void each_part(const Parts* p, uint32_t k, F& f) {
+  if (kMaxBuildParts == 1) {  // a chip: no runner to hand the parts to
+    for (uint32_t i = 0; i < k; ++i) f(i);
+    return;
+  }
   const Parts none;
   run_parts(
       p != nullptr ? *p : none, k, [](void* a, uint32_t i) { (*static_cast<F*>(a))(i); }, &f);

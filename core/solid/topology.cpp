@@ -180,6 +180,8 @@ struct Build {
         k(build_part_count(o.parts, uint64_t{input.n_triangles} * 3 + input.n_edges)),
         drawn(d),
         t(topo) {}
+  // More than one part (never on a chip: there the steps only parts take are left out).
+  bool split() const { return kMaxBuildParts > 1 && k > 1; }
   template <typename F>
   void run(F f) {
     each_part(parts, k, f);
@@ -201,7 +203,7 @@ struct Build {
 
 // Counts the undrawn sides of every part's triangles; returns them all.
 uint32_t count_sides(Build& b) {
-  uint32_t count[kMaxBuildParts];
+  uint32_t count[kMaxBuildParts] = {};
   b.run([&](uint32_t i) {
     count[i] = undrawn_sides(b.in, b.options, b.drawn, b.triangle_begin(i), b.triangle_begin(i + 1),
                              nullptr);
@@ -299,7 +301,7 @@ bool sort_drawn_by_vertex(Build& b, uint8_t* at, const uint8_t* end, SideKey* dr
       if (lesser >= v_lo && lesser < v_hi) f(lesser, SideKey{key_of(x, y), e});
     }
   };
-  uint32_t before[kMaxBuildParts];
+  uint32_t before[kMaxBuildParts] = {};
   count_by_vertex(b, start, before, each);
   store_by_vertex(b, start, before, drawn, each, key_less);
   b.drawn.by_vertex = start;
@@ -308,7 +310,7 @@ bool sort_drawn_by_vertex(Build& b, uint8_t* at, const uint8_t* end, SideKey* dr
 
 // The diagonals: one per distinct sorted side. Returns how many.
 uint32_t count_diagonals(Build& b) {
-  uint32_t count[kMaxBuildParts];
+  uint32_t count[kMaxBuildParts] = {};
   b.run([&](uint32_t i) {
     count[i] = 0;
     for (uint32_t s = b.side_begin(i); s < b.side_begin(i + 1); ++s)
@@ -561,7 +563,7 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
   // Drawn edges keep their input order and index; a repeat is an input error. In parts, sorted
   // by vertex where their index will be (it is made on the way).
   const bool drawn_sorted =
-      b.k > 1 && sort_drawn_by_vertex(b, lo, reinterpret_cast<uint8_t*>(drawn), drawn);
+      b.split() && sort_drawn_by_vertex(b, lo, reinterpret_cast<uint8_t*>(drawn), drawn);
   if (!drawn_sorted) {
     for (uint32_t e = 0; e < in.n_edges; ++e)
       drawn[e] = SideKey{key_of(in.edge_pairs[2 * e], in.edge_pairs[2 * e + 1]), e};
@@ -579,7 +581,7 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
   // In parts, the sides by vertex where a count per vertex fits below the most scratch.
   const size_t most_scratch = topology_scratch_bytes(in);
   uint32_t* side_start =
-      b.k > 1 && b.drawn.by_vertex != nullptr && size_t(hi - index_end) > most_scratch
+      b.split() && b.drawn.by_vertex != nullptr && size_t(hi - index_end) > most_scratch
           ? room_for<uint32_t>(index_end, hi - most_scratch, size_t{in.n_vertices} + 1)
           : nullptr;
   b.n_side = side_start != nullptr
@@ -611,7 +613,7 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
   t.scratch_bytes = scratch_size.total;
   number_edges(b);
   index_end = index_drawn(carve.next, hi - scratch_size.total, in.n_vertices, &b.drawn);
-  if (b.k > 1) {  // the diagonals' own index, so the parts' lookups stay near one vertex's keys
+  if (b.split()) {  // the diagonals' own index, so the parts' lookups stay near one vertex's keys
     const SolidEdge* diagonals = t.edges + t.n_drawn;
     b.diagonal_by_vertex =
         index_by_vertex(index_end, hi - scratch_size.total, in.n_vertices, n_diagonals,
