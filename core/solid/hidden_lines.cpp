@@ -189,6 +189,7 @@ struct HiddenRun {
   CutSet cutset;
   Incidences inc;
   FaceGrid crossing_grid;
+  LineParts line_parts;  // the intersection lines' parts and their buffer
   Adapter adapter;
 
   HiddenRun(const SolidInput& input, const HiddenParams& p, void* buffer, size_t bytes,
@@ -205,6 +206,7 @@ struct HiddenRun {
   Status build_edges();
   Status cut_and_touches();
   Status add_stars();
+  void carve_line_parts();
   Status lines(const uint8_t* hiding_front);
   Status qi_method(bool* gave_up);
   Status fallback_method(bool manifold);
@@ -285,13 +287,33 @@ Status HiddenRun::add_stars() {
   return Status::kOk;
 }
 
+// The intersection lines' parts keep their pieces in the arena (solid/intersection_lines.h),
+// carved before the sink is given the tail, and only with a runner that splits (the host's
+// threads: a controller's tail stays as it was). Their room is what lies below the high-water
+// mark the run has reached (CUT's scratch, written once already, so the run's peak stays), at
+// least kLeast (a fresh high-water mark by at most that), at most kMost; a part that fills its
+// share draws the rest of its cells in turn, so the size costs time, never a piece.
+void HiddenRun::carve_line_parts() {
+  const Parts* parts = params.cut.parts;
+  if (!params.intersections || parts == nullptr || parts->split() < 2) return;
+  constexpr size_t kLeast = size_t{64} << 10, kMost = size_t{16} << 20;
+  size_t bytes = arena.high - arena.used;
+  if (bytes < kLeast) bytes = kLeast;
+  if (bytes > kMost) bytes = kMost;
+  if (bytes > arena.size - arena.used) bytes = arena.size - arena.used;
+  bytes &= ~size_t{7};
+  uint8_t* mem = arena.take(bytes);
+  if (mem != nullptr) line_parts = LineParts{parts, mem, bytes};
+}
+
 // The lines on the faces, after the edges: intersection lines, then hatching.
 Status HiddenRun::lines(const uint8_t* hiding_front) {
   const LineRows rows{params.band, params.band_y0, params.band_y1};
   Status ls = Status::kOk;
   if (params.intersections)
     ls = draw_intersections(topo, hiding_front, crossing_grid,
-                            LineSink{&intersection_piece, &adapter}, &r.intersections, rows);
+                            LineSink{&intersection_piece, &adapter}, &r.intersections, rows,
+                            line_parts);
   if (ls == Status::kOk && params.hatch)
     ls = draw_hatch_lines(topo, hiding_front, crossing_grid, params.hatch_params,
                           uint32_t(r.intersections.segments), LineSink{&hatch_piece, &adapter},
@@ -345,6 +367,7 @@ Status HiddenRun::qi_method(bool* gave_up) {
     if (outline_mem == nullptr) return out_of_room();
   }
   crossing_grid = state.grid;  // the lines ask the QI's grid of every face
+  carve_line_parts();
   if (sink.begin != nullptr)
     sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used, edges);
   r.used_qi = true;
@@ -378,6 +401,7 @@ Status HiddenRun::fallback_method(bool manifold) {
   uint8_t* fb_mem = arena.take(r.bytes_fallback);
   if (fb_mem == nullptr || !carve_shared_grid(topo, params, &arena, &crossing_grid, &r))
     return out_of_room();
+  carve_line_parts();
   if (sink.begin != nullptr)
     sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used, edges);
   Status s = run_fallback(topo, front, cutset, inc, fp, fb_mem, r.bytes_fallback,
