@@ -129,8 +129,8 @@ struct PartRun {
   PartOut* out;
 };
 
-void run_part(void* arg, uint32_t k) {
-  const PartRun& r = *static_cast<const PartRun*>(arg);
+void run_part(const PartRun* run, uint32_t k) {
+  const PartRun& r = *run;
   PartOut& out = r.out[k];
   for (uint32_t c = out.cell_lo; c < out.cell_hi; ++c) {
     const uint32_t n_segments = out.n_segments, n_pieces = out.n_pieces;
@@ -177,26 +177,40 @@ void add(IntersectionStats& to, const IntersectionStats& p) {
   to.face_tests += p.face_tests;
 }
 
-// How many parts: the runner's count, at most kMaxLineParts, fewer where a part would get
-// fewer face entries than Parts::min_work or a share of the buffer too small to keep a few
-// pieces; one without a runner or a buffer.
-uint32_t line_part_count(const FaceGrid& fg, const LineParts& lp, size_t* share) {
+// Each worker (one a thread of the runner) draws the parts w, w + workers, ...: parts a few
+// times as many as the workers, so where the pairs crowd (the cells of the far side of a
+// model, seen through its near side) every worker gets some of them.
+struct Workers {
+  const PartRun* r;
+  uint32_t n_parts, n_workers;
+};
+void run_worker(void* arg, uint32_t w) {
+  const Workers& ws = *static_cast<const Workers*>(arg);
+  for (uint32_t k = w; k < ws.n_parts; k += ws.n_workers) run_part(ws.r, k);
+}
+constexpr uint32_t kPartsPerWorker = 4;
+
+// How many workers: the runner's count, at most kMaxLineParts / kPartsPerWorker, fewer where
+// one would get fewer face entries than Parts::min_work; one without a runner, or without a
+// buffer that gives each part a share to keep a few pieces in.
+uint32_t line_workers(const FaceGrid& fg, const LineParts& lp, size_t* share) {
   if (lp.parts == nullptr || lp.buffer == nullptr) return 1;
   uint32_t n = lp.parts->split();
-  if (n > kMaxLineParts) n = kMaxLineParts;
+  if (n > kMaxLineParts / kPartsPerWorker) n = kMaxLineParts / kPartsPerWorker;
   const uint64_t entries = fg.first[fg.grid.cells()];
   const uint64_t worth = lp.parts->min_work == 0 ? n : entries / lp.parts->min_work;
   if (worth < n) n = worth < 1 ? 1 : uint32_t(worth);
   const size_t books = carve_round(sizeof(PartOut) * kMaxLineParts);
-  if (lp.bytes < books) return 1;
-  *share = (lp.bytes - books) / n & ~size_t{7};
+  if (n < 2 || lp.bytes < books) return 1;
+  *share = (lp.bytes - books) / (n * kPartsPerWorker) & ~size_t{7};
   constexpr size_t kLeast = 4 * (sizeof(FoundSegment) + sizeof(FoundPiece));
   return *share < kLeast ? 1 : n;
 }
 
 Status draw_in_parts(const Topology& topo, const uint8_t* front, const FaceGrid& fg, LineSink sink,
-                     IntersectionStats& st, LineRows rows, const LineParts& lp, uint32_t n,
+                     IntersectionStats& st, LineRows rows, const LineParts& lp, uint32_t workers,
                      size_t share) {
+  const uint32_t n = workers * kPartsPerWorker;
   uint8_t* at = static_cast<uint8_t*>(lp.buffer);
   PartOut* out = reinterpret_cast<PartOut*>(at);
   at += carve_round(sizeof(PartOut) * kMaxLineParts);
@@ -211,11 +225,13 @@ Status draw_in_parts(const Topology& topo, const uint8_t* front, const FaceGrid&
     while (c < cells && fg.first[c] < until) ++c;
   }
   PartRun r{&topo, front, &fg, rows, out};
-  run_parts(*lp.parts, n, &run_part, &r);
+  Workers ws{&r, n, workers};
+  run_parts(*lp.parts, workers, &run_worker, &ws);
   uint32_t index = 0;
   Status s = Status::kOk;
   for (uint32_t k = 0; k < n && ok(s); ++k) {
     add(st, out[k].st);
+    if (out[k].stop_cell < out[k].cell_hi) ++st.parts_full;
     s = hand_on(r, out[k], sink, &index, st);
   }
   return s;
@@ -227,7 +243,7 @@ Status draw_intersections(const Topology& topo, const uint8_t* front, const Face
                           LineSink sink, IntersectionStats* stats, LineRows rows, LineParts lp) {
   IntersectionStats st;
   size_t share = 0;
-  const uint32_t n = line_part_count(fg, lp, &share);
+  const uint32_t n = line_workers(fg, lp, &share);
   uint32_t index = 0;
   const Status s = n > 1
                        ? draw_in_parts(topo, front, fg, sink, st, rows, lp, n, share)

@@ -28,6 +28,9 @@ namespace haloplot {
 struct IntersectionStats : LineCounts {
   uint64_t pairs = 0;     // face pairs asked the exact question (boxes overlap, no shared corner)
   uint64_t segments = 0;  // pairs that cross
+  // In parts: the parts whose share of the buffer filled up (they handed the rest of their
+  // cells to the calling thread). The one count that depends on the parts.
+  uint32_t parts_full = 0;
 };
 
 // The parts to draw in and their buffer (8-byte aligned; any size: what does not fit is drawn
@@ -37,12 +40,12 @@ struct LineParts {
   void* buffer = nullptr;
   size_t bytes = 0;
 };
-inline constexpr uint32_t kMaxLineParts = 16;  // whatever the runner's count
+inline constexpr uint32_t kMaxLineParts = 64;  // parts (4 a thread), whatever the runner's count
 
 // Every crossing of topo's faces in the grid, piece by piece. `front`: each triangle's facing
 // when the faces make closed solids (only front faces hide; the grid may hold those alone);
-// null: both sides of every face. The pieces, their order and the stats do not depend on the
-// parts (when the sink fails, the stats may count pairs past the piece it refused).
+// null: both sides of every face. The pieces, their order and the stats (but parts_full) do
+// not depend on the parts (when the sink fails, the stats may count pairs past the piece it refused).
 Status draw_intersections(const Topology& topo, const uint8_t* front, const FaceGrid& fg,
                           LineSink sink, IntersectionStats* stats, LineRows rows = LineRows{},
                           LineParts parts = LineParts{});
