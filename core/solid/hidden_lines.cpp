@@ -173,6 +173,47 @@ uint8_t* pack_incidences(Incidences* inc, const Topology& topo, uint8_t* at) {
   return at;
 }
 
+// The marks (mark_crossing_edges) of words [w0, w1): edges 32 w0 to 32 w1.
+void mark_words(const Topology& topo, uint32_t* marked, uint32_t w0, uint32_t w1) {
+  const uint32_t end = w1 * 32 < topo.n_edges ? w1 * 32 : topo.n_edges;
+  for (uint32_t w = w0; w < w1; ++w) marked[w] = 0;
+  for (uint32_t e = w0 * 32; e < end; ++e) {
+    const SolidEdge& se = topo.edges[e];
+    if (!se.regular || is_fold(se.cls) || paper_jump(topo, e) != 0)
+      marked[e >> 5] |= uint32_t{1} << (e & 31);
+  }
+}
+
+// Every edge as CUT sees it, and its mark (marked: null in a band), in parts of whole mark
+// words: most of the time is the kernel's first touch of the edges' fresh pages (36 MB on the
+// 1M-triangle torus), which threads share.
+struct EdgeFill {
+  const Topology* topo;
+  Edge3* edges;
+  uint32_t* marked;
+  uint32_t words, n_parts;
+};
+void fill_edge_part(void* arg, uint32_t k) {
+  const EdgeFill& f = *static_cast<const EdgeFill*>(arg);
+  const uint32_t w0 = uint32_t(uint64_t{f.words} * k / f.n_parts);
+  const uint32_t w1 = uint32_t(uint64_t{f.words} * (k + 1) / f.n_parts);
+  const uint32_t n = f.topo->n_edges, e1 = w1 * 32 < n ? w1 * 32 : n;
+  for (uint32_t e = w0 * 32; e < e1; ++e) f.edges[e] = f.topo->edge3(e);
+  if (f.marked != nullptr) mark_words(*f.topo, f.marked, w0, w1);
+}
+void fill_edges(const Topology& topo, Edge3* edges, uint32_t* marked, const Parts* parts) {
+  constexpr uint32_t kMostParts = 16;
+  EdgeFill f{&topo, edges, marked, (topo.n_edges + 31) / 32, 1};
+  if (parts != nullptr) {
+    // An edge costs about as much as a pair test's fraction: parts of min_work edges at least.
+    const uint64_t worth = parts->min_work == 0 ? f.words : topo.n_edges / parts->min_work;
+    f.n_parts = parts->split() < kMostParts ? parts->split() : kMostParts;
+    if (worth < f.n_parts) f.n_parts = worth < 1 ? 1 : uint32_t(worth);
+    if (f.n_parts > f.words) f.n_parts = f.words < 1 ? 1 : f.words;
+  }
+  run_parts(parts != nullptr ? *parts : Parts{}, f.n_parts, &fill_edge_part, &f);
+}
+
 // One run's state, shared by its steps: the arena, the report so far, and what each step built
 // for the next. Every step that fails writes the report before it returns.
 struct HiddenRun {
@@ -244,13 +285,12 @@ Status HiddenRun::build_edges() {
   edges = reinterpret_cast<Edge3*>(arena.take(size_t{topo.n_edges} * sizeof(Edge3)));
   if (front == nullptr || edges == nullptr) return out_of_room();
   r.classes = classify(&topo, front, in.facing);
-  for (uint32_t e = 0; e < topo.n_edges; ++e) edges[e] = topo.edge3(e);
   // A band's CUT pairs every edge, as it always did: its arena stays as the conductor sized it.
   if (!params.band) {
     marked = reinterpret_cast<uint32_t*>(arena.take((size_t{topo.n_edges} + 31) / 32 * 4));
     if (marked == nullptr) return out_of_room();
-    mark_crossing_edges(topo, marked);
   }
+  fill_edges(topo, edges, marked, params.cut.parts);
   adapter = Adapter{sink, edges, topo.n_edges};
   return Status::kOk;
 }
@@ -414,12 +454,7 @@ Status HiddenRun::fallback_method(bool manifold) {
 }  // namespace
 
 void mark_crossing_edges(const Topology& topo, uint32_t* marked) {
-  for (uint32_t w = 0; w < (topo.n_edges + 31) / 32; ++w) marked[w] = 0;
-  for (uint32_t e = 0; e < topo.n_edges; ++e) {
-    const SolidEdge& se = topo.edges[e];
-    if (!se.regular || is_fold(se.cls) || paper_jump(topo, e) != 0)
-      marked[e >> 5] |= uint32_t{1} << (e & 31);
-  }
+  mark_words(topo, marked, 0, (topo.n_edges + 31) / 32);
 }
 
 Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buffer, size_t bytes,
