@@ -230,7 +230,7 @@ struct HiddenRun {
   CutSet cutset;
   Incidences inc;
   FaceGrid crossing_grid;
-  LineParts line_parts;  // the intersection lines' parts and their buffer
+  PartsBuffer end_parts;  // the QI pieces' and the intersection lines' parts, one after another
   Adapter adapter;
 
   HiddenRun(const SolidInput& input, const HiddenParams& p, void* buffer, size_t bytes,
@@ -247,7 +247,7 @@ struct HiddenRun {
   Status build_edges();
   Status cut_and_touches();
   Status add_stars();
-  void carve_line_parts();
+  void carve_end_parts(bool pierces);
   Status lines(const uint8_t* hiding_front);
   Status qi_method(bool* gave_up);
   Status fallback_method(bool manifold);
@@ -327,23 +327,25 @@ Status HiddenRun::add_stars() {
   return Status::kOk;
 }
 
-// The intersection lines' parts keep their pieces in the arena (solid/intersection_lines.h),
-// carved before the sink is given the tail, and only with a runner that splits (the host's
-// threads: a controller's tail stays as it was). Their room is what lies below the high-water
-// mark the run has reached (CUT's scratch, written once already, so the run's peak stays), at
-// least kLeast (a fresh high-water mark by at most that), at most kMost; a part that fills its
-// share draws the rest of its cells in turn, so the size costs time, never a piece.
-void HiddenRun::carve_line_parts() {
+// The end of the stage in parts keeps its pieces in the arena (the QI's emission where the
+// walks stop at pierces, solid/qi.h, then the intersection lines, solid/intersection_lines.h,
+// in the same buffer), carved before the sink is given the tail, and only with a runner that
+// splits (the host's threads: a controller's tail stays as it was). Its room is what lies below
+// the high-water mark the run has reached (CUT's scratch, written once already, so the run's
+// peak stays), at least kLeast (a fresh high-water mark by at most that), at most
+// params.end_parts_bytes; a part that fills its share leaves the rest of its work to the
+// calling thread, so the size costs time, never a piece.
+void HiddenRun::carve_end_parts(bool pierces) {
   const Parts* parts = params.cut.parts;
-  if (!params.intersections || parts == nullptr || parts->split() < 2) return;
-  constexpr size_t kLeast = size_t{64} << 10, kMost = size_t{16} << 20;
+  if (!(params.intersections || pierces) || parts == nullptr || parts->split() < 2) return;
+  constexpr size_t kLeast = size_t{64} << 10;
   size_t bytes = arena.high - arena.used;
   if (bytes < kLeast) bytes = kLeast;
-  if (bytes > kMost) bytes = kMost;
+  if (bytes > params.end_parts_bytes) bytes = params.end_parts_bytes;
   if (bytes > arena.size - arena.used) bytes = arena.size - arena.used;
   bytes &= ~size_t{7};
   uint8_t* mem = arena.take(bytes);
-  if (mem != nullptr) line_parts = LineParts{parts, mem, bytes};
+  if (mem != nullptr) end_parts = PartsBuffer{parts, mem, bytes};
 }
 
 // The lines on the faces, after the edges: intersection lines, then hatching.
@@ -353,7 +355,7 @@ Status HiddenRun::lines(const uint8_t* hiding_front) {
   if (params.intersections)
     ls = draw_intersections(topo, hiding_front, crossing_grid,
                             LineSink{&intersection_piece, &adapter}, &r.intersections, rows,
-                            line_parts);
+                            end_parts);
   if (ls == Status::kOk && params.hatch)
     ls = draw_hatch_lines(topo, hiding_front, crossing_grid, params.hatch_params,
                           uint32_t(r.intersections.segments), LineSink{&hatch_piece, &adapter},
@@ -407,11 +409,11 @@ Status HiddenRun::qi_method(bool* gave_up) {
     if (outline_mem == nullptr) return out_of_room();
   }
   crossing_grid = state.grid;  // the lines ask the QI's grid of every face
-  carve_line_parts();
+  carve_end_parts(state.pierces);
   if (sink.begin != nullptr)
     sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used, edges);
   r.used_qi = true;
-  s = emit_qi_pieces(topo, front, cutset, inc, state, QiSink{&qi_piece, &adapter});
+  s = emit_qi_pieces(topo, front, cutset, inc, state, QiSink{&qi_piece, &adapter}, end_parts);
   if (s == Status::kOk) s = lines(state.two_sided ? nullptr : front);
   if (s == Status::kOk && params.outline)
     s = find_outlines(topo, front, cutset, inc, state, outline_mem, r.bytes_outline,
@@ -441,7 +443,7 @@ Status HiddenRun::fallback_method(bool manifold) {
   uint8_t* fb_mem = arena.take(r.bytes_fallback);
   if (fb_mem == nullptr || !carve_shared_grid(topo, params, &arena, &crossing_grid, &r))
     return out_of_room();
-  carve_line_parts();
+  carve_end_parts(false);
   if (sink.begin != nullptr)
     sink.begin(sink.context, arena.base + arena.used, arena.size - arena.used, edges);
   Status s = run_fallback(topo, front, cutset, inc, fp, fb_mem, r.bytes_fallback,

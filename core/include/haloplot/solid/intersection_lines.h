@@ -33,19 +33,16 @@ struct IntersectionStats : LineCounts {
   uint32_t parts_full = 0;
 };
 
-// The parts to draw in and their buffer (8-byte aligned; any size: what does not fit is drawn
-// on the calling thread). Null runner or buffer: one part, here, with no buffer.
-struct LineParts {
-  const Parts* parts = nullptr;
-  void* buffer = nullptr;
-  size_t bytes = 0;
-};
+// The parts to draw in and their buffer (any size: what does not fit is drawn on the calling
+// thread). Null runner or buffer: one part, here, with no buffer.
+using LineParts = PartsBuffer;
 inline constexpr uint32_t kMaxLineParts = 64;  // parts (4 a thread), whatever the runner's count
 
 // Every crossing of topo's faces in the grid, piece by piece. `front`: each triangle's facing
 // when the faces make closed solids (only front faces hide; the grid may hold those alone);
 // null: both sides of every face. The pieces, their order and the stats (but parts_full) do
-// not depend on the parts (when the sink fails, the stats may count pairs past the piece it refused).
+// not depend on the parts (when the sink fails, the stats may count pairs past the piece it
+// refused).
 Status draw_intersections(const Topology& topo, const uint8_t* front, const FaceGrid& fg,
                           LineSink sink, IntersectionStats* stats, LineRows rows = LineRows{},
                           LineParts parts = LineParts{});
