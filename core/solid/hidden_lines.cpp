@@ -329,15 +329,18 @@ Status HiddenRun::add_stars() {
 
 // The end of the stage in parts keeps its pieces in the arena (the QI's emission where the
 // walks stop at pierces, solid/qi.h, then the intersection lines, solid/intersection_lines.h,
-// in the same buffer), carved before the sink is given the tail, and only with a runner that
-// splits (the host's threads: a controller's tail stays as it was). Its room is what lies below
-// the high-water mark the run has reached (CUT's scratch, written once already, so the run's
-// peak stays), at least kLeast (a fresh high-water mark by at most that), at most
-// params.end_parts_bytes; a part that fills its share leaves the rest of its work to the
-// calling thread, so the size costs time, never a piece.
+// in the same buffer), carved before the sink is given the tail, and only when the caller asks
+// (HiddenParams::end_parts_bytes, the host tool: a controller's tail stays as it was) with a
+// runner that splits. Its room is what lies below the high-water mark the run has reached
+// (CUT's scratch, written once already, so the run's peak stays), at least kLeast (a fresh
+// high-water mark by at most that), at most params.end_parts_bytes; a part that fills its
+// share leaves the rest of its work to the calling thread, so the size costs time, never a
+// piece.
 void HiddenRun::carve_end_parts(bool pierces) {
   const Parts* parts = params.cut.parts;
-  if (!(params.intersections || pierces) || parts == nullptr || parts->split() < 2) return;
+  if (!(params.intersections || pierces) || parts == nullptr || parts->split() < 2 || params.band ||
+      params.end_parts_bytes == 0)
+    return;
   constexpr size_t kLeast = size_t{64} << 10;
   size_t bytes = arena.high - arena.used;
   if (bytes < kLeast) bytes = kLeast;
