@@ -6,6 +6,9 @@
 namespace haloplot {
 namespace {
 
+// A 32-bit chip runs no parts (no runner there): their code is not built into its image.
+constexpr bool kRunsParts = UINTPTR_MAX > 0xffffffffu;
+
 bool shares_corner(const Triangle& s, const Triangle& t) {
   for (uint32_t u : s.v)
     if (u == t.v[0] || u == t.v[1] || u == t.v[2]) return true;
@@ -243,7 +246,7 @@ Status draw_intersections(const Topology& topo, const uint8_t* front, const Face
                           LineSink sink, IntersectionStats* stats, LineRows rows, LineParts lp) {
   IntersectionStats st;
   size_t share = 0;
-  const uint32_t n = line_workers(fg, lp, &share);
+  const uint32_t n = kRunsParts ? line_workers(fg, lp, &share) : 1;
   uint32_t index = 0;
   const Status s = n > 1
                        ? draw_in_parts(topo, front, fg, sink, st, rows, lp, n, share)

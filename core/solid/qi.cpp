@@ -505,6 +505,9 @@ struct EmitRun {
   EmitPart* parts;
   uint32_t n_parts, workers;
 };
+// A 32-bit chip runs no parts (no runner there): their code is not built into its image.
+constexpr bool kRunsParts = UINTPTR_MAX > 0xffffffffu;
+
 constexpr uint32_t kEmitPartsPerWorker = 4;  // taken in turn: pierces crowd where solids meet
 constexpr uint32_t kEmitMaxParts = 64;
 
@@ -567,7 +570,7 @@ uint32_t emit_workers(const Topology& topo, const QiState& state, const PartsBuf
 Status emit_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& cutset,
                       const Incidences& inc, const QiState& state, QiSink sink, PartsBuffer pb) {
   uint32_t cap = 0;
-  const uint32_t workers = emit_workers(topo, state, pb, &cap);
+  const uint32_t workers = kRunsParts ? emit_workers(topo, state, pb, &cap) : 1;
   EmitRun r{&topo, front, &cutset, &inc, &state, nullptr, 1, workers};
   if (workers < 2) return emit_edges(r, 0, topo.n_edges, sink);
   r.n_parts = workers * kEmitPartsPerWorker;
