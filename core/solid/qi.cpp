@@ -575,24 +575,31 @@ Status emit_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& 
   if (workers < 2) return emit_edges(r, 0, topo.n_edges, sink);
   r.n_parts = workers * kEmitPartsPerWorker;
   r.parts = static_cast<EmitPart*>(pb.buffer);
-  KeptPiece* at = reinterpret_cast<KeptPiece*>(static_cast<uint8_t*>(pb.buffer) +
-                                               carve_round(sizeof(EmitPart) * kEmitMaxParts));
-  for (uint32_t k = 0; k < r.n_parts; ++k) {
-    const uint32_t lo = uint32_t(uint64_t{topo.n_edges} * k / r.n_parts);
-    const uint32_t hi = uint32_t(uint64_t{topo.n_edges} * (k + 1) / r.n_parts);
-    r.parts[k] = EmitPart{at, cap, 0, lo, hi, hi};
-    at += cap;
-  }
-  run_parts(*pb.parts, workers, &emit_worker, &r);
-  for (uint32_t k = 0; k < r.n_parts; ++k) {
-    const EmitPart& p = r.parts[k];
-    for (uint32_t i = 0; i < p.n; ++i) {
-      const KeptPiece& x = p.kept[i];
-      const Status s = sink.emit(sink.context, QiPiece{{x.edge, x.t0, x.t1}, x.q});
+  KeptPiece* kept = reinterpret_cast<KeptPiece*>(static_cast<uint8_t*>(pb.buffer) +
+                                                 carve_round(sizeof(EmitPart) * kEmitMaxParts));
+  // Rounds of edges, the buffer used again in each: a part gets about half as many edges as
+  // its share holds pieces (an edge gives one or a few), so the pages the parts write stay
+  // those of the buffer, however many edges.
+  const uint64_t per_round = uint64_t{r.n_parts} * (cap / 2 < 1 ? 1 : cap / 2);
+  for (uint32_t a = 0; a < topo.n_edges;) {
+    const uint32_t b = topo.n_edges - a < per_round ? topo.n_edges : uint32_t(a + per_round);
+    for (uint32_t k = 0; k < r.n_parts; ++k) {
+      const uint32_t lo = a + uint32_t(uint64_t{b - a} * k / r.n_parts);
+      const uint32_t hi = a + uint32_t(uint64_t{b - a} * (k + 1) / r.n_parts);
+      r.parts[k] = EmitPart{kept + size_t{cap} * k, cap, 0, lo, hi, hi};
+    }
+    run_parts(*pb.parts, workers, &emit_worker, &r);
+    for (uint32_t k = 0; k < r.n_parts; ++k) {
+      const EmitPart& p = r.parts[k];
+      for (uint32_t i = 0; i < p.n; ++i) {
+        const KeptPiece& x = p.kept[i];
+        const Status s = sink.emit(sink.context, QiPiece{{x.edge, x.t0, x.t1}, x.q});
+        if (s != Status::kOk) return s;
+      }
+      const Status s = emit_edges(r, p.stop, p.e_hi, sink);
       if (s != Status::kOk) return s;
     }
-    const Status s = emit_edges(r, p.stop, p.e_hi, sink);
-    if (s != Status::kOk) return s;
+    a = b;
   }
   return Status::kOk;
 }

@@ -121,10 +121,11 @@ using QiSink = Sink<QiPiece>;
 // Neighbouring pieces with the same QI are merged; empty pieces are left out.
 // In parts (`parts`, memory/parts.h) where the walks stop at pierces (state.pierces: each edge
 // then asks the faces of its cells, and that walk is the emission's cost; without, the walks
-// are cheap and the sink's own work is most of it): edges in ranges, each part keeping its
-// pieces in its share of the buffer; the sink is then called from this thread in the order
-// above. A part whose share fills up stops at its edge, and that edge and the rest of its range
-// are walked here in their turn. The pieces do not depend on the parts.
+// are cheap and the sink's own work is most of it): rounds of edges, each round's edges in
+// ranges, each part keeping its pieces in its share of the buffer (used again every round);
+// the sink is then called from this thread in the order above. A part whose share fills up
+// stops at its edge, and that edge and the rest of its range are walked here in their turn.
+// The pieces do not depend on the parts.
 Status emit_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& cutset,
                       const Incidences& inc, const QiState& state, QiSink sink,
                       PartsBuffer parts = PartsBuffer{});
