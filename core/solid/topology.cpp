@@ -180,8 +180,11 @@ struct Build {
         k(build_part_count(o.parts, uint64_t{input.n_triangles} * 3 + input.n_edges)),
         drawn(d),
         t(topo) {}
-  // More than one part (never on a chip: there the steps only parts take are left out).
-  bool split() const { return kMaxBuildParts > 1 && k > 1; }
+  // The steps that store by vertex (the drawn keys, the undrawn sides, the diagonals' index),
+  // in one part as in many, where they fit: they replace the sorts of everything, about half the
+  // build's work (the 1M-triangle torus's build on one thread: some 350 -> 165 ms CPU). Never
+  // on a chip: its flash and stack keep no room for them (the sorts give the same arrays).
+  bool by_vertex() const { return kMaxBuildParts > 1; }
   template <typename F>
   void run(F f) {
     each_part(parts, k, f);
@@ -533,11 +536,12 @@ size_t topology_scratch_bytes(const SolidInput& in) {
   return scratch.total;
 }
 
-// In parts, the build takes more room than in one, never more than topology_bytes(): a copy of
-// the drawn keys (sorted in parts from the copy), a count of undrawn sides per vertex (the sides
-// then stored by vertex, needing no sort) and an index of the diagonals by vertex, each where
-// the kept arrays will be or in the gap above them, and only when it fits (otherwise the build
-// does that step as one part would: the same result).
+// By vertex (Build::by_vertex: a 64-bit host, in one part or many), the build takes more room
+// than by sorting, never more than topology_bytes(): a copy of the drawn keys (sorted by vertex
+// from the copy), a count of undrawn sides per vertex (the sides then stored by vertex, needing
+// no sort) and an index of the diagonals by vertex, each where the kept arrays will be or in
+// the gap above them, and only when it fits (otherwise the build sorts, as a chip does: the
+// same result).
 Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology* out,
                       const TopologyOptions& options) {
   const Status checked = check_input(in);
@@ -560,10 +564,10 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
   t.n_triangles = in.n_triangles;
   Build b(in, options, DrawnKeys{drawn, in.n_edges}, t);
 
-  // Drawn edges keep their input order and index; a repeat is an input error. In parts, sorted
+  // Drawn edges keep their input order and index; a repeat is an input error. By vertex, sorted
   // by vertex where their index will be (it is made on the way).
   const bool drawn_sorted =
-      b.split() && sort_drawn_by_vertex(b, lo, reinterpret_cast<uint8_t*>(drawn), drawn);
+      b.by_vertex() && sort_drawn_by_vertex(b, lo, reinterpret_cast<uint8_t*>(drawn), drawn);
   if (!drawn_sorted) {
     for (uint32_t e = 0; e < in.n_edges; ++e)
       drawn[e] = SideKey{key_of(in.edge_pairs[2 * e], in.edge_pairs[2 * e + 1]), e};
@@ -578,10 +582,10 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
   uint8_t* index_end =
       drawn_sorted ? align8(lo) + (size_t{in.n_vertices} + 1) * sizeof(uint32_t)
                    : index_drawn(lo, reinterpret_cast<uint8_t*>(drawn), in.n_vertices, &b.drawn);
-  // In parts, the sides by vertex where a count per vertex fits below the most scratch.
+  // By vertex, the sides where a count per vertex fits below the most scratch.
   const size_t most_scratch = topology_scratch_bytes(in);
   uint32_t* side_start =
-      b.split() && b.drawn.by_vertex != nullptr && size_t(hi - index_end) > most_scratch
+      b.by_vertex() && b.drawn.by_vertex != nullptr && size_t(hi - index_end) > most_scratch
           ? room_for<uint32_t>(index_end, hi - most_scratch, size_t{in.n_vertices} + 1)
           : nullptr;
   b.n_side = side_start != nullptr
@@ -613,7 +617,8 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
   t.scratch_bytes = scratch_size.total;
   number_edges(b);
   index_end = index_drawn(carve.next, hi - scratch_size.total, in.n_vertices, &b.drawn);
-  if (b.split()) {  // the diagonals' own index, so the parts' lookups stay near one vertex's keys
+  if (b.by_vertex()) {  // the diagonals' own index, so the parts' lookups stay near one vertex's
+                        // keys
     const SolidEdge* diagonals = t.edges + t.n_drawn;
     b.diagonal_by_vertex =
         index_by_vertex(index_end, hi - scratch_size.total, in.n_vertices, n_diagonals,
