@@ -211,6 +211,51 @@ size_t topology_build_bytes(const SolidInput& in, bool band) {
   return bound < all ? bound : all;
 }
 
+// The marks (mark_crossing_edges) of words [w0, w1): edges 32 w0 to 32 w1.
+void mark_words(const Topology& topo, uint32_t* marked, uint32_t w0, uint32_t w1) {
+  const uint32_t end = w1 * 32 < topo.n_edges ? w1 * 32 : topo.n_edges;
+  for (uint32_t w = w0; w < w1; ++w) marked[w] = 0;
+  for (uint32_t e = w0 * 32; e < end; ++e) {
+    const SolidEdge& se = topo.edges[e];
+    if (!se.regular || is_fold(se.cls) || paper_jump(topo, e) != 0)
+      marked[e >> 5] |= uint32_t{1} << (e & 31);
+  }
+}
+
+// A 32-bit chip runs no parts (no runner there): their code is not built into its image.
+constexpr bool kRunsParts = UINTPTR_MAX > 0xffffffffu;
+
+// Every edge as CUT sees it, and its mark (marked: null in a band), in parts of whole mark
+// words: most of the time is the kernel's first touch of the edges' fresh pages (36 MB on the
+// 1M-triangle torus), which threads share.
+struct EdgeFill {
+  const Topology* topo;
+  Edge3* edges;
+  uint32_t* marked;
+  uint32_t words, n_parts;
+};
+void fill_edge_part(void* arg, uint32_t k) {
+  const EdgeFill& f = *static_cast<const EdgeFill*>(arg);
+  const uint32_t w0 = uint32_t(uint64_t{f.words} * k / f.n_parts);
+  const uint32_t w1 = uint32_t(uint64_t{f.words} * (k + 1) / f.n_parts);
+  const uint32_t n = f.topo->n_edges, e1 = w1 * 32 < n ? w1 * 32 : n;
+  for (uint32_t e = w0 * 32; e < e1; ++e) f.edges[e] = f.topo->edge3(e);
+  if (f.marked != nullptr) mark_words(*f.topo, f.marked, w0, w1);
+}
+void fill_edges(const Topology& topo, Edge3* edges, uint32_t* marked, const Parts* parts) {
+  constexpr uint32_t kMostParts = 16;
+  EdgeFill f{&topo, edges, marked, (topo.n_edges + 31) / 32, 1};
+  if (kRunsParts && parts != nullptr) {
+    // An edge costs about as much as a pair test's fraction: parts of min_work edges at least.
+    const uint64_t worth = parts->min_work == 0 ? f.words : topo.n_edges / parts->min_work;
+    f.n_parts = parts->split() < kMostParts ? parts->split() : kMostParts;
+    if (worth < f.n_parts) f.n_parts = worth < 1 ? 1 : uint32_t(worth);
+    if (f.n_parts > f.words) f.n_parts = f.words < 1 ? 1 : f.words;
+  }
+  if (f.n_parts == 1) return fill_edge_part(&f, 0);
+  run_parts(*parts, f.n_parts, &fill_edge_part, &f);
+}
+
 // One run's state, shared by its steps: the arena, the report so far, and what each step built
 // for the next. Every step that fails writes the report before it returns.
 struct HiddenRun {
@@ -226,6 +271,7 @@ struct HiddenRun {
   CutSet cutset;
   Incidences inc;
   FaceGrid crossing_grid;
+  PartsBuffer end_parts;  // the QI pieces' and the intersection lines' parts, one after another
   Adapter adapter;  // holds the run's sink (one copy: this frame is on a chip's deepest stack)
 
   HiddenRun(const SolidInput& input, const HiddenParams& p, void* buffer, size_t bytes,
@@ -242,6 +288,7 @@ struct HiddenRun {
   Status build_edges();
   Status cut_and_touches();
   Status add_stars();
+  void carve_end_parts(bool pierces);
   Status lines(const uint8_t* hiding_front);
   Status qi_method(bool* gave_up);
   Status fallback_method(bool manifold);
@@ -289,9 +336,8 @@ Status HiddenRun::build_edges() {
     marked = reinterpret_cast<uint32_t*>(arena.take((size_t{topo.n_edges} + 31) / 32 * 4));
     edges = reinterpret_cast<Edge3*>(arena.take(edge_bytes));
     if (marked == nullptr || edges == nullptr) return out_of_room();
-    mark_crossing_edges(topo, marked);
   }
-  for (uint32_t e = 0; e < topo.n_edges; ++e) edges[e] = topo.edge3(e);
+  fill_edges(topo, edges, marked, params.cut.parts);
   adapter.edges = edges;
   adapter.topo = &topo;
   return Status::kOk;
@@ -331,13 +377,38 @@ Status HiddenRun::add_stars() {
   return Status::kOk;
 }
 
+// The end of the stage in parts keeps its pieces in the arena (the QI's emission where the
+// walks stop at pierces, solid/qi.h, then the intersection lines, solid/intersection_lines.h,
+// in the same buffer), carved before the sink is given the tail, and only when the caller asks
+// (HiddenParams::end_parts_bytes, the host tool: a controller's tail stays as it was) with a
+// runner that splits. Its room is what lies below the high-water mark the run has reached
+// (CUT's scratch, written once already, so the run's peak stays), at least kLeast (a fresh
+// high-water mark by at most that), at most params.end_parts_bytes; a part that fills its
+// share leaves the rest of its work to the calling thread, so the size costs time, never a
+// piece.
+void HiddenRun::carve_end_parts(bool pierces) {
+  const Parts* parts = params.cut.parts;
+  if (!kRunsParts || !(params.intersections || pierces) || parts == nullptr || parts->split() < 2 ||
+      params.band || params.end_parts_bytes == 0)
+    return;
+  constexpr size_t kLeast = size_t{64} << 10;
+  size_t bytes = arena.high - arena.used;
+  if (bytes < kLeast) bytes = kLeast;
+  if (bytes > params.end_parts_bytes) bytes = params.end_parts_bytes;
+  if (bytes > arena.size - arena.used) bytes = arena.size - arena.used;
+  bytes &= ~size_t{7};
+  uint8_t* mem = arena.take(bytes);
+  if (mem != nullptr) end_parts = PartsBuffer{parts, mem, bytes};
+}
+
 // The lines on the faces, after the edges: intersection lines, then hatching.
 Status HiddenRun::lines(const uint8_t* hiding_front) {
   const LineRows rows{params.band, params.band_y0, params.band_y1};
   Status ls = Status::kOk;
   if (params.intersections)
     ls = draw_intersections(topo, hiding_front, crossing_grid,
-                            LineSink{&intersection_piece, &adapter}, &r.intersections, rows);
+                            LineSink{&intersection_piece, &adapter}, &r.intersections, rows,
+                            end_parts);
   if (ls == Status::kOk && params.hatch)
     ls = draw_hatch_lines(topo, hiding_front, crossing_grid, params.hatch_params,
                           uint32_t(r.intersections.segments), LineSink{&hatch_piece, &adapter},
@@ -391,11 +462,12 @@ Status HiddenRun::qi_method(bool* gave_up) {
     if (outline_mem == nullptr) return out_of_room();
   }
   crossing_grid = state.grid;  // the lines ask the QI's grid of every face
+  carve_end_parts(state.pierces);
   if (adapter.sink.begin != nullptr)
     adapter.sink.begin(adapter.sink.context, arena.base + arena.used, arena.size - arena.used,
                        edges);
   r.used_qi = true;
-  s = emit_qi_pieces(topo, front, cutset, inc, state, QiSink{&qi_piece, &adapter});
+  s = emit_qi_pieces(topo, front, cutset, inc, state, QiSink{&qi_piece, &adapter}, end_parts);
   if (s == Status::kOk) s = lines(state.two_sided ? nullptr : front);
   if (s == Status::kOk && params.outline)
     s = find_outlines(topo, front, cutset, inc, state, outline_mem, r.bytes_outline,
@@ -425,6 +497,7 @@ Status HiddenRun::fallback_method(bool manifold) {
   uint8_t* fb_mem = arena.take(r.bytes_fallback);
   if (fb_mem == nullptr || !carve_shared_grid(topo, params, &arena, &crossing_grid, &r))
     return out_of_room();
+  carve_end_parts(false);
   if (adapter.sink.begin != nullptr)
     adapter.sink.begin(adapter.sink.context, arena.base + arena.used, arena.size - arena.used,
                        edges);
@@ -441,12 +514,7 @@ Status HiddenRun::fallback_method(bool manifold) {
 }  // namespace
 
 void mark_crossing_edges(const Topology& topo, uint32_t* marked) {
-  for (uint32_t w = 0; w < (topo.n_edges + 31) / 32; ++w) marked[w] = 0;
-  for (uint32_t e = 0; e < topo.n_edges; ++e) {
-    const SolidEdge& se = topo.edges[e];
-    if (!se.regular || is_fold(se.cls) || paper_jump(topo, e) != 0)
-      marked[e >> 5] |= uint32_t{1} << (e & 31);
-  }
+  mark_words(topo, marked, 0, (topo.n_edges + 31) / 32);
 }
 
 Status hidden_lines(const SolidInput& in, const HiddenParams& params, void* buffer, size_t bytes,

@@ -483,12 +483,123 @@ Status emit_edge_qi_pieces(const Topology& topo, const uint8_t* front, const Cut
   return status;
 }
 
-Status emit_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& cutset,
-                      const Incidences& inc, const QiState& state, QiSink sink) {
-  for (uint32_t e = 0; e < topo.n_edges; ++e) {
-    if (e >= topo.n_drawn && !qi_contour_diagonal(topo, state, e)) continue;
-    const Status s = emit_edge_qi_pieces(topo, front, cutset, inc, state, e, sink);
+namespace {
+
+// The emission's parts (emit_qi_pieces): part k walks edges [e_lo, e_hi) into its share of
+// the buffer, kept[0, n); stop: the first edge it could not keep (e_hi when it kept them all).
+struct KeptPiece {
+  int64_t t0, t1;
+  uint32_t edge;
+  int32_t q;
+};
+struct EmitPart {
+  KeptPiece* kept;
+  uint32_t cap, n, e_lo, e_hi, stop;
+};
+struct EmitRun {
+  const Topology* topo;
+  const uint8_t* front;
+  const CutSet* cs;
+  const Incidences* inc;
+  const QiState* state;
+  EmitPart* parts;
+  uint32_t n_parts, workers;
+};
+// A 32-bit chip runs no parts (no runner there): their code is not built into its image.
+constexpr bool kRunsParts = UINTPTR_MAX > 0xffffffffu;
+
+constexpr uint32_t kEmitPartsPerWorker = 4;  // taken in turn: pierces crowd where solids meet
+constexpr uint32_t kEmitMaxParts = 64;
+
+bool emitted(const Topology& topo, const QiState& state, uint32_t e) {
+  return e < topo.n_drawn || qi_contour_diagonal(topo, state, e);
+}
+
+Status emit_edges(const EmitRun& r, uint32_t lo, uint32_t hi, QiSink sink) {
+  for (uint32_t e = lo; e < hi; ++e) {
+    if (!emitted(*r.topo, *r.state, e)) continue;
+    const Status s = emit_edge_qi_pieces(*r.topo, r.front, *r.cs, *r.inc, *r.state, e, sink);
     if (s != Status::kOk) return s;
+  }
+  return Status::kOk;
+}
+
+Status keep_qi_piece(void* context, const QiPiece& p) {
+  EmitPart* part = static_cast<EmitPart*>(context);
+  if (part->n == part->cap) return Status::kWorkspaceTooSmall;
+  part->kept[part->n++] = KeptPiece{p.t0, p.t1, p.edge, p.q};
+  return Status::kOk;
+}
+
+void emit_worker(void* arg, uint32_t w) {
+  const EmitRun& r = *static_cast<const EmitRun*>(arg);
+  for (uint32_t k = w; k < r.n_parts; k += r.workers) {
+    EmitPart& p = r.parts[k];
+    for (uint32_t e = p.e_lo; e < p.e_hi; ++e) {
+      if (!emitted(*r.topo, *r.state, e)) continue;
+      const uint32_t n = p.n;
+      if (emit_edge_qi_pieces(*r.topo, r.front, *r.cs, *r.inc, *r.state, e,
+                              QiSink{&keep_qi_piece, &p}) != Status::kOk) {
+        p.n = n;  // full: this edge on, on the calling thread
+        p.stop = e;
+        break;
+      }
+    }
+  }
+}
+
+// The workers: the runner's count (at most kEmitMaxParts / kEmitPartsPerWorker), fewer where
+// one would get fewer edges than Parts::min_work; one without pierces (see qi.h), a runner, or
+// a buffer that gives each part a share of a few pieces.
+uint32_t emit_workers(const Topology& topo, const QiState& state, const PartsBuffer& pb,
+                      uint32_t* cap) {
+  if (!state.pierces || pb.parts == nullptr || pb.buffer == nullptr) return 1;
+  uint32_t n = pb.parts->split();
+  if (n > kEmitMaxParts / kEmitPartsPerWorker) n = kEmitMaxParts / kEmitPartsPerWorker;
+  const uint64_t worth = pb.parts->min_work == 0 ? n : topo.n_edges / pb.parts->min_work;
+  if (worth < n) n = worth < 1 ? 1 : uint32_t(worth);
+  const size_t books = carve_round(sizeof(EmitPart) * kEmitMaxParts);
+  if (n < 2 || pb.bytes < books) return 1;
+  const size_t share = (pb.bytes - books) / (n * kEmitPartsPerWorker) / sizeof(KeptPiece);
+  *cap = share > 0xffffffffu ? 0xffffffffu : uint32_t(share);
+  return *cap < 4 ? 1 : n;
+}
+
+}  // namespace
+
+Status emit_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& cutset,
+                      const Incidences& inc, const QiState& state, QiSink sink, PartsBuffer pb) {
+  uint32_t cap = 0;
+  const uint32_t workers = kRunsParts ? emit_workers(topo, state, pb, &cap) : 1;
+  EmitRun r{&topo, front, &cutset, &inc, &state, nullptr, 1, workers};
+  if (workers < 2) return emit_edges(r, 0, topo.n_edges, sink);
+  r.n_parts = workers * kEmitPartsPerWorker;
+  r.parts = static_cast<EmitPart*>(pb.buffer);
+  KeptPiece* kept = reinterpret_cast<KeptPiece*>(static_cast<uint8_t*>(pb.buffer) +
+                                                 carve_round(sizeof(EmitPart) * kEmitMaxParts));
+  // Rounds of edges, the buffer used again in each: a part gets about half as many edges as
+  // its share holds pieces (an edge gives one or a few), so the pages the parts write stay
+  // those of the buffer, however many edges.
+  const uint64_t per_round = uint64_t{r.n_parts} * (cap / 2 < 1 ? 1 : cap / 2);
+  for (uint32_t a = 0; a < topo.n_edges;) {
+    const uint32_t b = topo.n_edges - a < per_round ? topo.n_edges : uint32_t(a + per_round);
+    for (uint32_t k = 0; k < r.n_parts; ++k) {
+      const uint32_t lo = a + uint32_t(uint64_t{b - a} * k / r.n_parts);
+      const uint32_t hi = a + uint32_t(uint64_t{b - a} * (k + 1) / r.n_parts);
+      r.parts[k] = EmitPart{kept + size_t{cap} * k, cap, 0, lo, hi, hi};
+    }
+    run_parts(*pb.parts, workers, &emit_worker, &r);
+    for (uint32_t k = 0; k < r.n_parts; ++k) {
+      const EmitPart& p = r.parts[k];
+      for (uint32_t i = 0; i < p.n; ++i) {
+        const KeptPiece& x = p.kept[i];
+        const Status s = sink.emit(sink.context, QiPiece{{x.edge, x.t0, x.t1}, x.q});
+        if (s != Status::kOk) return s;
+      }
+      const Status s = emit_edges(r, p.stop, p.e_hi, sink);
+      if (s != Status::kOk) return s;
+    }
+    a = b;
   }
   return Status::kOk;
 }

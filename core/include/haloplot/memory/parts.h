@@ -4,6 +4,7 @@
 // a runner a stage makes one part and runs it in place, as it always did; with one, the
 // stage's result does not depend on how many parts there were or in which order they ran.
 #pragma once
+#include <stddef.h>
 #include <stdint.h>
 
 namespace haloplot {
@@ -23,6 +24,14 @@ struct Parts {
 
   // The parts to split into: one without a runner.
   uint32_t split() const { return run == nullptr || count < 1 ? 1 : count; }
+};
+
+// A stage's parts with a buffer they keep their results in until the caller takes them in
+// order (8-byte aligned). Null runner or buffer: one part, in place.
+struct PartsBuffer {
+  const Parts* parts = nullptr;
+  void* buffer = nullptr;
+  size_t bytes = 0;
 };
 
 // work(arg, i) for i < n: by the runner when there is one and more than one part, otherwise in

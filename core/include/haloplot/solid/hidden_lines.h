@@ -62,6 +62,12 @@ struct HiddenParams {
   uint32_t incidence_capacity = 0;  // vertex-on-edge incidences
   // The QI propagation's parts (solid/qi.h's QiSplit), run by cut.parts' runner when given.
   uint32_t qi_part_vertices = kQiPartVertices;
+  // The most bytes of the buffer the end of the stage in parts (the QI's emission where its
+  // walks stop at pierces, the intersection lines) may keep its pieces in, with cut.parts'
+  // runner, outside a band: taken before the sink is given the tail, so only a caller that
+  // keeps no strokes in the tail asks for it (the host tool). 0: the end on one thread. Tests
+  // make it small so parts fill up (what does not fit is done on the calling thread, in turn).
+  size_t end_parts_bytes = 0;
   // A band of a solid plotted in bands (band/conductor.h): the input holds the faces and edges
   // meeting rows [band_y0, band_y1) and only those rows are drawn (the fallback's window, no
   // V.C. table: a vertex outside the rows may miss faces of its star). `closed` is the whole

@@ -119,8 +119,16 @@ using QiSink = Sink<QiPiece>;
 // polygon that is not flat, or edges left out as smooth (a crease angle), show the silhouette
 // along a diagonal, and a hidden-line drawing needs that line.
 // Neighbouring pieces with the same QI are merged; empty pieces are left out.
+// In parts (`parts`, memory/parts.h) where the walks stop at pierces (state.pierces: each edge
+// then asks the faces of its cells, and that walk is the emission's cost; without, the walks
+// are cheap and the sink's own work is most of it): rounds of edges, each round's edges in
+// ranges, each part keeping its pieces in its share of the buffer (used again every round);
+// the sink is then called from this thread in the order above. A part whose share fills up
+// stops at its edge, and that edge and the rest of its range are walked here in their turn.
+// The pieces do not depend on the parts.
 Status emit_qi_pieces(const Topology& topo, const uint8_t* front, const CutSet& cutset,
-                      const Incidences& inc, const QiState& state, QiSink sink);
+                      const Incidences& inc, const QiState& state, QiSink sink,
+                      PartsBuffer parts = PartsBuffer{});
 
 // A diagonal (not drawn) that is a contour: H3 on a closed solid; two-sided, any edge whose
 // faces lie on one side on paper (classify.h's paper_contour).
