@@ -82,8 +82,11 @@ void print_solid_stats(const SolidRun& r, const TriangulateStats& tri) {
                r.bytes_outline, r.bytes_intersections, r.ms_total, r.cpu_ms_total);
 }
 
-// Everything of a run but its counts.
-void drop_pieces(SolidRun* run) {
+// Everything of a run but its counts (--stats prints them), and the scene's arrays, once the
+// drawing holds all the files need: the pen path's planning, whose own memory came on top of
+// them, was the 1M-triangle torus plot's peak (some 90 MB of them).
+void drop_pieces(SolidRun* run, SolidScene* scene) {
+  *scene = SolidScene{};
   run->pieces = {};
   run->contour_diagonals = {};
   run->intersections = {};
@@ -190,11 +193,7 @@ int cmd_plot_solid(const Options& o) {
   const int32_t units = scene.substep_bits;
   ModeDrawing d = make_mode_drawing(run, mode_in_units(so.spec, units));
   drawing_to_steps(&d, units);
-  // The drawing holds all the files need: the run's pieces and geometry and the scene's arrays
-  // go before the pen path is planned, whose own memory came on top of them (the 1M-triangle
-  // torus: some 90 MB, the whole plot's peak); the run's counts stay for --stats.
-  drop_pieces(&run);
-  scene = SolidScene{};
+  drop_pieces(&run, &scene);  // the drawing holds all the files need
   PlotSvgStyle style;
   if (!parse_plot_svg_style(o, true, so.steps_per_mm, &style, &error)) return fail(error);
   const std::vector<StrokeLayer> layers = mode_layers(d);
