@@ -320,7 +320,8 @@ Status HiddenRun::qi_method(bool* gave_up) {
     r.projected_facing = true;
     r.classes = classify(&topo, front, nullptr);
     r.qi = QiStats{};
-    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi, false, split);
+    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi, false, split,
+                     QiGrid::kKeep);  // the grid reads no facing
     if (s != Status::kOk) return fail(s);
   }
   // Conflicts left: does the mesh pierce itself? Once more, stopping where edges pass through
@@ -328,7 +329,8 @@ Status HiddenRun::qi_method(bool* gave_up) {
   if (r.qi.conflicts > 0 && params.method != HiddenMethod::kQiPaperOnly) {
     const uint32_t first = r.qi.conflicts;
     r.qi = QiStats{};
-    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi, true, split);
+    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi, true, split,
+                     QiGrid::kKeep);
     if (s != Status::kOk) return fail(s);
     r.qi.first_conflicts = first;
   }
