@@ -264,7 +264,7 @@ Status HiddenRun::cut_and_touches() {
   uint8_t* inc_mem = arena.take(r.bytes_incidence);
   if (inc_mem == nullptr) return out_of_room();
   s = find_incidences(topo, params.incidence_capacity, inc_mem, r.bytes_incidence, &inc,
-                      &r.incidences_needed, by_vertex);
+                      &r.incidences_needed, by_vertex, params.cut.parts);  // CUT's runner
   if (s != Status::kOk) return fail(s);
   // The search's scratch ends the block, and its 8 bytes of alignment slack: both free again;
   // so is the records' capacity beyond the ones found.
