@@ -98,9 +98,8 @@ struct GridParts {
 
 // Out of line: its bookkeeping takes stack only where a runner splits the build.
 __attribute__((noinline)) uint64_t count_pairs_in_parts(const Topology& topo, const Grid& g,
-                                                        const Parts* parts) {
-  GridParts gp{&topo, g, part_count(parts, topo.n_triangles), nullptr, nullptr, nullptr};
-  if (gp.n == 1) return count_pairs(topo, g, 0, topo.n_triangles);
+                                                        uint32_t n, const Parts* parts) {
+  GridParts gp{&topo, g, n, nullptr, nullptr, nullptr};
   run_parts(*parts, gp.n, &GridParts::count_pairs_of, &gp);
   uint64_t sum = 0;
   for (uint32_t k = 0; k < gp.n; ++k) sum += gp.pairs[k];
@@ -157,7 +156,9 @@ size_t face_grid_part_bytes(const Topology& topo, uint32_t coarsen) {
 Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGrid* out,
                        uint32_t coarsen, const Parts* parts) {
   const Grid g = choose_grid(topo, coarsen);
-  const uint64_t pairs = count_pairs_in_parts(topo, g, parts);
+  uint32_t n = part_count(parts, topo.n_triangles);
+  const uint64_t pairs =
+      n > 1 ? count_pairs_in_parts(topo, g, n, parts) : count_pairs(topo, g, 0, topo.n_triangles);
   if (pairs > 0xffffffffu) return Status::kCellPairOverflow;
   Carver carve(buffer, bytes);
   uint32_t* first = carve.take<uint32_t>(size_t{g.cells()} + 1);
@@ -165,7 +166,6 @@ Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGri
   if (carve.short_) return Status::kWorkspaceTooSmall;
   // As many parts as the bytes left hold the cursors of (one needs none).
   const size_t part_bytes = size_t{g.cells()} * 4;
-  uint32_t n = part_count(parts, topo.n_triangles);
   if (n > 1 && carve.left / part_bytes + 1 < n) n = uint32_t(carve.left / part_bytes + 1);
   if (n > 1) {
     fill_in_parts(topo, g, n, parts, first, reinterpret_cast<uint32_t*>(carve.next), faces);
