@@ -27,7 +27,7 @@ template <typename C>
 void count_scratch(C& c, const Topology& topo) {
   const uint32_t side = grid_side_cells(topo.n_vertices);
   c.template take<uint32_t>(size_t{side} * side + 1);  // cell_first (grid scratch)
-  c.template take<uint32_t>(topo.n_vertices);          // cell_vertices / sort order
+  c.template take<uint32_t>(topo.n_vertices);          // the cells' vertex lists
 }
 
 // Vertices at the same point, in cells [c0, c1) of the vertex grid (two such vertices share a
