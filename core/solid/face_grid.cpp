@@ -45,13 +45,17 @@ void fill_cells(const Topology& topo, const Grid& g, uint32_t t0, uint32_t t1, u
                   [&](uint32_t c) { faces[cursor[c]++] = t; });
 }
 
+// Parts only on a 64-bit host (the controllers have no threads to run them): their image
+// leaves the parts' code out.
+constexpr bool kHost = UINTPTR_MAX > 0xffffffffu;
+
 // The most parts a build splits into, whatever the caller's count (as CUT's).
 constexpr uint32_t kMaxParts = 16;
 
 // The parts for n faces: the caller's count, fewer where a part would get less than
 // Parts::min_work (a face's box and its few cells cost about a CUT pair test each, some 8).
 uint32_t part_count(const Parts* parts, uint32_t n_faces) {
-  if (parts == nullptr) return 1;
+  if (!kHost || parts == nullptr) return 1;
   uint32_t n = parts->split();
   if (n > kMaxParts) n = kMaxParts;
   const uint64_t worth = parts->min_work == 0 ? n : uint64_t{n_faces} * 8 / parts->min_work;

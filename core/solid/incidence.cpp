@@ -123,13 +123,17 @@ uint32_t test_edges(const VertexGrid& vg, uint32_t e0, uint32_t e1, Incidence* o
   return n;
 }
 
+// Parts only on a 64-bit host (the controllers have no threads to run them): their image
+// leaves the parts' code out.
+constexpr bool kHost = UINTPTR_MAX > 0xffffffffu;
+
 // The most parts the search splits into, whatever the caller's count (as CUT's).
 constexpr uint32_t kMaxParts = 16;
 
 // The caller's count, fewer where a part would get less than Parts::min_work (an edge's walk
 // over the vertex grid costs about as much as a few CUT pair tests, some 8).
 uint32_t part_count(const Parts* parts, uint32_t n_edges) {
-  if (parts == nullptr) return 1;
+  if (!kHost || parts == nullptr) return 1;
   uint32_t n = parts->split();
   if (n > kMaxParts) n = kMaxParts;
   const uint64_t worth = parts->min_work == 0 ? n : uint64_t{n_edges} * 8 / parts->min_work;
