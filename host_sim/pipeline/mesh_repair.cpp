@@ -111,6 +111,43 @@ std::vector<uint32_t> weld_map(const std::vector<Point3>& v, double tolerance) {
   return to;
 }
 
+// A face's corners after welding, read as a closed walk, reduced to the walk's outline: a
+// corner the same as the one before it adds nothing, and a corner between two of one vertex
+// (a, b, a) is a spike of no area, the walk out to b and straight back. Welding a small quad's
+// opposite corners leaves a, b, a, c: no area at all, and a face running sides a-b and a-c
+// both ways, which the orientation would take for a side on three or more faces and call the
+// whole shell one that cannot be oriented (the hidden lines, which drop faces of no area, found
+// it a closed solid). Corners keep their order; the first kept one comes first. Returns the
+// corners left (c is cut to them).
+size_t reduce_corners(std::vector<uint32_t>* corners) {
+  std::vector<uint32_t>& c = *corners;
+  size_t n = 0;  // a stack: each corner written at or before where it was read
+  for (size_t i = 0; i < c.size(); ++i) {
+    const uint32_t v = c[i];
+    if (n > 0 && c[n - 1] == v) continue;
+    if (n > 1 && c[n - 2] == v) {  // the top was a spike
+      --n;
+      continue;
+    }
+    c[n++] = v;
+  }
+  size_t s = 0;  // where the end meets the start
+  for (bool changed = true; changed && n - s >= 2;) {
+    changed = true;
+    if (c[n - 1] == c[s])
+      --n;  // the last repeats the first
+    else if (n - s >= 3 && c[n - 2] == c[s])
+      --n;  // the last is a spike
+    else if (n - s >= 3 && c[n - 1] == c[s + 1])
+      ++s;  // the first is a spike
+    else
+      changed = false;
+  }
+  c.erase(c.begin() + std::ptrdiff_t(n), c.end());
+  c.erase(c.begin(), c.begin() + std::ptrdiff_t(s));
+  return c.size();
+}
+
 }  // namespace
 
 void weld_vertices(ObjModel* model, double tolerance, RepairReport* report) {
@@ -127,17 +164,14 @@ void weld_vertices(ObjModel* model, double tolerance, RepairReport* report) {
     }
   }
   model->vertices.resize(kept);
-  // Faces renumbered in place; those left with fewer than three corners dropped (the rest
-  // move down, with their lines).
+  // Faces renumbered in place and reduced; those left with fewer than three corners dropped
+  // (the rest move down, with their lines).
   size_t out = 0, out_lines = 0;
   const size_t n_lines = model->face_lines.size();  // the first faces' lines (all, or none)
   for (size_t f = 0; f < model->faces.size(); ++f) {
     std::vector<uint32_t>& c = model->faces[f];
-    size_t n = 0;
-    for (uint32_t v : c)
-      if (n == 0 || c[n - 1] != index[v]) c[n++] = index[v];
-    while (n > 1 && c[n - 1] == c[0]) --n;
-    c.resize(n);
+    for (uint32_t& v : c) v = index[v];
+    const size_t n = reduce_corners(&c);
     if (n < 3) {
       ++report->dropped_faces;
       continue;

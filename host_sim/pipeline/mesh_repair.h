@@ -6,7 +6,9 @@
 // unit is 1/524288 of the model's size, below any plotter's resolution), or with a tolerance
 // within that distance of a vertex kept before it (in file order). By default the distance is
 // weld_distance below: corners that could be one point of the exporter's, each stored within
-// the file's rounding of it.
+// the file's rounding of it. A face's corners are then reduced as a closed walk: repeats and
+// spikes (a, b, a: out and straight back, no area) go, and a face left with fewer than three
+// corners is dropped.
 //
 // Orientation: each shell (faces connected through shared sides) is made consistent: its
 // faces are turned so every side shared by two faces is traversed once each way (breadth

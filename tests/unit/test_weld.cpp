@@ -44,6 +44,34 @@ std::vector<uint32_t> reference_weld(const std::vector<Point3>& v, double tolera
   return to;
 }
 
+// A face's corners as a closed walk, reduced until nothing changes: anywhere round the
+// cycle, a corner the same as the next goes, and a corner whose two neighbours are the same
+// vertex (a spike, out and straight back) goes. The order of removals may leave another
+// rotation of the same cycle than weld_vertices' one pass, so faces are compared as cycles.
+void reduce_walk(std::vector<uint32_t>* c) {
+  for (bool changed = true; changed && c->size() >= 2;) {
+    changed = false;
+    const size_t n = c->size();
+    for (size_t i = 0; i < n && !changed; ++i) {
+      const uint32_t before = (*c)[(i + n - 1) % n], here = (*c)[i], after = (*c)[(i + 1) % n];
+      if (here == after || (n >= 3 && before == after)) {
+        c->erase(c->begin() + std::ptrdiff_t(i));
+        changed = true;
+      }
+    }
+  }
+}
+
+bool same_cycle(const std::vector<uint32_t>& a, const std::vector<uint32_t>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t r = 0; r < a.size(); ++r) {
+    bool same = true;
+    for (size_t i = 0; i < a.size() && same; ++i) same = a[(i + r) % a.size()] == b[i];
+    if (same) return true;
+  }
+  return a.empty();
+}
+
 // Points in a few clusters around the origin (both signs: cells there are wider), each
 // vertex a small random step from a cluster centre, in shuffled order; quads over them.
 ObjModel cloud(std::mt19937& rng, uint32_t n, int32_t spread, int32_t jitter) {
@@ -81,9 +109,8 @@ void check_case(std::mt19937& rng, uint32_t n, int32_t spread, int32_t jitter, d
   std::vector<uint32_t> lines;
   for (size_t f = 0; f < given.faces.size(); ++f) {
     std::vector<uint32_t> c;
-    for (uint32_t v : given.faces[f])
-      if (c.empty() || c.back() != index[v]) c.push_back(index[v]);
-    while (c.size() > 1 && c.back() == c.front()) c.pop_back();
+    for (uint32_t v : given.faces[f]) c.push_back(index[v]);
+    reduce_walk(&c);
     if (c.size() < 3) continue;
     faces.push_back(c);
     lines.push_back(given.face_lines[f]);
@@ -108,7 +135,10 @@ void check_case(std::mt19937& rng, uint32_t n, int32_t spread, int32_t jitter, d
     same_vertices = m.vertices[i].x == kept[i].x && m.vertices[i].y == kept[i].y &&
                     m.vertices[i].z == kept[i].z;
   CHECK(same_vertices);
-  CHECK(m.faces == faces);
+  bool same_faces = m.faces.size() == faces.size();
+  for (size_t f = 0; same_faces && f < faces.size(); ++f)
+    same_faces = same_cycle(m.faces[f], faces[f]);
+  CHECK(same_faces);
   CHECK(m.face_lines == lines);
   CHECK(m.edge_pairs == edges);
   // Something to decide: the clouds must weld some vertices and keep others.
