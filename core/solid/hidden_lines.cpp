@@ -214,7 +214,8 @@ struct HiddenRun {
 // arena and keeps its first kept_bytes.
 Status HiddenRun::build_edges() {
   TopologyOptions to;
-  to.stars = false;   // built after CUT (add_stars), which does not read them
+  to.stars = false;  // built after CUT (add_stars), which does not read them
+  to.parts = params.band ? nullptr : params.cut.parts;  // a band's build stays one part
   if (params.band) {  // the band's fallback reads no stars, and no side beyond its rows
     to.rows = true;
     to.row_lo = params.band_y0;
@@ -279,7 +280,7 @@ Status HiddenRun::add_stars() {
   const size_t bytes = topology_star_bytes(topo);
   uint8_t* mem = arena.take(bytes);
   if (mem == nullptr) return out_of_room();
-  const Status s = build_topology_stars(&topo, mem, bytes);
+  const Status s = build_topology_stars(&topo, mem, bytes, params.cut.parts);
   if (s != Status::kOk) return fail(s);
   r.bytes_topology += bytes;
   return Status::kOk;

@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "haloplot/memory/parts.h"
 #include "haloplot/solid/mesh.h"
 #include "haloplot/status/status.h"
 
@@ -60,6 +61,10 @@ struct TopologyOptions {
   // , since nothing in the band's rows can cross them.
   bool rows = false;
   int32_t row_lo = 0, row_hi = 0;
+  // A runner for the build's parts (memory/parts.h), or null: one part. The topology is the
+  // same, array for array, whatever the parts; in parts the build takes no more than
+  // topology_bytes() either (it uses the spare room there when it has it).
+  const Parts* parts = nullptr;
 };
 Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology* out,
                       const TopologyOptions& options = TopologyOptions{});
@@ -67,9 +72,11 @@ Status build_topology(const SolidInput& in, void* buffer, size_t bytes, Topology
 // The stars of a topology built without them (TopologyOptions::stars false), carved from
 // `buffer` (topology_star_bytes() bytes at most; kWorkspaceTooSmall when shorter): the same
 // arrays the build would have made. hidden_lines() adds them after CUT, on pages CUT's scratch
-// used, so they are not held through CUT (on a 1M-triangle mesh, 28 of its peak's MB).
+// used, so they are not held through CUT (on a 1M-triangle mesh, 28 of its peak's MB). In
+// parts when `parts` has a runner: the same stars.
 size_t topology_star_bytes(const Topology& topo);
-Status build_topology_stars(Topology* topo, void* buffer, size_t bytes);
+Status build_topology_stars(Topology* topo, void* buffer, size_t bytes,
+                            const Parts* parts = nullptr);
 
 // A band's run (solid/hidden_lines.h, HiddenParams::band) draws no diagonal and reads no star:
 // a diagonal matters there only as an edge that drawn edges pass behind. One whose two faces lie
