@@ -20,16 +20,118 @@ Edge3 face_box(const Topology& topo, uint32_t t) {
   return box;
 }
 
-// The cells for_each_cell() visits for each face's box (kBoundingBox, no reach): the box's
-// columns times its rows, counted without the walk. The box is ordered (a <= b) and inside
-// the grid, which spans every vertex, so no clamping or swap changes the range.
-uint64_t count_pairs(const Topology& topo, const Grid& g) {
+// The cells for_each_cell() visits for faces [t0, t1)'s boxes (kBoundingBox, no reach): each
+// box's columns times its rows, counted without the walk. The box is ordered (a <= b) and
+// inside the grid, which spans every vertex, so no clamping or swap changes the range.
+uint64_t count_pairs(const Topology& topo, const Grid& g, uint32_t t0, uint32_t t1) {
   uint64_t n = 0;
-  for (uint32_t t = 0; t < topo.n_triangles; ++t) {
+  for (uint32_t t = t0; t < t1; ++t) {
     const Edge3 box = face_box(topo, t);
     n += uint64_t{g.col(box.b.x) - g.col(box.a.x) + 1} * (g.row(box.b.y) - g.row(box.a.y) + 1);
   }
   return n;
+}
+
+// Faces [t0, t1) counted into count[cell], then each dropped at cursor[cell], moving it on.
+void count_cells(const Topology& topo, const Grid& g, uint32_t t0, uint32_t t1, uint32_t* count) {
+  for (uint32_t t = t0; t < t1; ++t)
+    for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0,
+                  [&](uint32_t c) { ++count[c]; });
+}
+void fill_cells(const Topology& topo, const Grid& g, uint32_t t0, uint32_t t1, uint32_t* cursor,
+                uint32_t* faces) {
+  for (uint32_t t = t0; t < t1; ++t)
+    for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0,
+                  [&](uint32_t c) { faces[cursor[c]++] = t; });
+}
+
+// Parts only on a 64-bit host (the controllers have no threads to run them): their image
+// leaves the parts' code out.
+constexpr bool kHost = UINTPTR_MAX > 0xffffffffu;
+
+// The most parts a build splits into, whatever the caller's count (as CUT's).
+constexpr uint32_t kMaxParts = 16;
+
+// The parts for n faces: the caller's count, fewer where a part would get less than
+// Parts::min_work (a face's box and its few cells cost about a CUT pair test each, some 8).
+uint32_t part_count(const Parts* parts, uint32_t n_faces) {
+  if (!kHost || parts == nullptr) return 1;
+  uint32_t n = parts->split();
+  if (n > kMaxParts) n = kMaxParts;
+  const uint64_t worth = parts->min_work == 0 ? n : uint64_t{n_faces} * 8 / parts->min_work;
+  if (worth < n) n = worth < 1 ? 1 : uint32_t(worth);
+  return n;
+}
+
+// The counting sort in parts of the faces, each with its own cursor into every cell: part k
+// counts its faces per cell, one pass over the counts gives each part its place in every cell's
+// list (after the parts before it), and part k drops its faces there in ascending order. Every
+// cell's list comes out as one part makes it, face for face. The last part's cursors are the
+// index itself (as one part's are); the others' lie in the scratch, cells words each.
+struct GridParts {
+  const Topology* topo;
+  Grid g;
+  uint32_t n;
+  uint32_t* first;
+  uint32_t* scratch;
+  uint32_t* faces;
+  uint64_t pairs[kMaxParts] = {};
+
+  uint32_t first_face(uint32_t k) const { return uint32_t(uint64_t{topo->n_triangles} * k / n); }
+  uint32_t* cursor(uint32_t k) const {
+    return k + 1 == n ? first : scratch + size_t{k} * g.cells();
+  }
+  static void count_pairs_of(void* arg, uint32_t k) {
+    GridParts* self = static_cast<GridParts*>(arg);
+    self->pairs[k] =
+        count_pairs(*self->topo, self->g, self->first_face(k), self->first_face(k + 1));
+  }
+  // The last part counts into first[c + 1], as one part does.
+  static void count(void* arg, uint32_t k) {
+    const GridParts* self = static_cast<const GridParts*>(arg);
+    uint32_t* mine = k + 1 == self->n ? self->first + 1 : self->cursor(k);
+    for (uint32_t c = 0; c < self->g.cells(); ++c) mine[c] = 0;
+    count_cells(*self->topo, self->g, self->first_face(k), self->first_face(k + 1), mine);
+  }
+  static void fill(void* arg, uint32_t k) {
+    const GridParts* self = static_cast<const GridParts*>(arg);
+    fill_cells(*self->topo, self->g, self->first_face(k), self->first_face(k + 1), self->cursor(k),
+               self->faces);
+  }
+};
+
+// Out of line: its bookkeeping takes stack only where a runner splits the build.
+__attribute__((noinline)) uint64_t count_pairs_in_parts(const Topology& topo, const Grid& g,
+                                                        uint32_t n, const Parts* parts) {
+  GridParts gp{&topo, g, n, nullptr, nullptr, nullptr};
+  run_parts(*parts, gp.n, &GridParts::count_pairs_of, &gp);
+  uint64_t sum = 0;
+  for (uint32_t k = 0; k < gp.n; ++k) sum += gp.pairs[k];
+  return sum;
+}
+
+// first[c] ends as cell c's end, as one part leaves it.
+__attribute__((noinline)) void fill_in_parts(const Topology& topo, const Grid& g, uint32_t n,
+                                             const Parts* parts, uint32_t* first, uint32_t* scratch,
+                                             uint32_t* faces) {
+  GridParts gp{&topo, g, n, first, scratch, faces};
+  const uint32_t cells = g.cells();
+  run_parts(*parts, n, &GridParts::count, &gp);
+  // Each part's start in every cell: the last part's in first[c] (its count, in first[c + 1],
+  // read before it is overwritten one cell on).
+  uint32_t at = 0;
+  for (uint32_t c = 0; c < cells; ++c) {
+    for (uint32_t k = 0; k + 1 < n; ++k) {
+      uint32_t& x = scratch[size_t{k} * cells + c];
+      const uint32_t count = x;
+      x = at;
+      at += count;
+    }
+    const uint32_t last = first[c + 1];
+    first[c] = at;
+    at += last;
+  }
+  run_parts(*parts, n, &GridParts::fill, &gp);
 }
 
 }  // namespace
@@ -39,28 +141,44 @@ size_t face_grid_bytes(const Topology& topo, uint32_t coarsen) {
   ByteCounter c;
   c.take<uint32_t>(size_t{g.cells()} + 1);
   // More pairs than 32 bits count is refused by the build; size it as if none.
-  const uint64_t pairs = count_pairs(topo, g);
+  const uint64_t pairs = count_pairs(topo, g, 0, topo.n_triangles);
   c.take<uint32_t>(pairs > 0xffffffffu ? 0 : static_cast<size_t>(pairs));
   return c.total + 8;
 }
 
+size_t face_grid_bytes(const FaceGrid& fg) {
+  ByteCounter c;
+  c.take<uint32_t>(size_t{fg.grid.cells()} + 1);
+  c.take<uint32_t>(fg.pairs);
+  return c.total + 8;
+}
+
+size_t face_grid_part_bytes(const Topology& topo, uint32_t coarsen) {
+  return size_t{choose_grid(topo, coarsen).cells()} * 4;
+}
+
 Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGrid* out,
-                       uint32_t coarsen) {
+                       uint32_t coarsen, const Parts* parts) {
   const Grid g = choose_grid(topo, coarsen);
-  const uint64_t pairs = count_pairs(topo, g);
+  uint32_t n = part_count(parts, topo.n_triangles);
+  const uint64_t pairs =
+      n > 1 ? count_pairs_in_parts(topo, g, n, parts) : count_pairs(topo, g, 0, topo.n_triangles);
   if (pairs > 0xffffffffu) return Status::kCellPairOverflow;
   Carver carve(buffer, bytes);
   uint32_t* first = carve.take<uint32_t>(size_t{g.cells()} + 1);
   uint32_t* faces = carve.take<uint32_t>(static_cast<size_t>(pairs));
   if (carve.short_) return Status::kWorkspaceTooSmall;
-  for (uint32_t c = 0; c <= g.cells(); ++c) first[c] = 0;
-  for (uint32_t t = 0; t < topo.n_triangles; ++t)
-    for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0,
-                  [&](uint32_t c) { ++first[c + 1]; });
-  for (uint32_t c = 0; c < g.cells(); ++c) first[c + 1] += first[c];
-  for (uint32_t t = 0; t < topo.n_triangles; ++t)
-    for_each_cell(g, face_box(topo, t), CellCover::kBoundingBox, 0,
-                  [&](uint32_t c) { faces[first[c]++] = t; });
+  // As many parts as the bytes left hold the cursors of (one needs none).
+  const size_t part_bytes = size_t{g.cells()} * 4;
+  if (n > 1 && carve.left / part_bytes + 1 < n) n = uint32_t(carve.left / part_bytes + 1);
+  if (n > 1) {
+    fill_in_parts(topo, g, n, parts, first, reinterpret_cast<uint32_t*>(carve.next), faces);
+  } else {
+    for (uint32_t c = 0; c <= g.cells(); ++c) first[c] = 0;
+    count_cells(topo, g, 0, topo.n_triangles, first + 1);
+    for (uint32_t c = 0; c < g.cells(); ++c) first[c + 1] += first[c];
+    fill_cells(topo, g, 0, topo.n_triangles, first, faces);
+  }
   for (uint32_t c = g.cells(); c > 0; --c) first[c] = first[c - 1];
   first[0] = 0;
   out->grid = g;

@@ -356,7 +356,7 @@ Status HiddenRun::cut_and_touches() {
   uint8_t* inc_mem = arena.take(r.bytes_incidence);
   if (inc_mem == nullptr) return out_of_room();
   s = find_incidences(topo, params.incidence_capacity, inc_mem, r.bytes_incidence, &inc,
-                      &r.incidences_needed, by_vertex);
+                      &r.incidences_needed, by_vertex, params.cut.parts);  // CUT's runner
   if (s != Status::kOk) return fail(s);
   // The search's scratch ends the block, and its 8 bytes of alignment slack: both free again;
   // so is the records' capacity beyond the ones found.
@@ -437,7 +437,8 @@ Status HiddenRun::qi_method(bool* gave_up) {
     r.projected_facing = true;
     r.classes = classify(&topo, front, nullptr);
     r.qi = QiStats{};
-    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi, false, split);
+    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi, false, split,
+                     QiGrid::kKeep);  // the grid reads no facing
     if (s != Status::kOk) return fail(s);
   }
   // Conflicts left: does the mesh pierce itself? Once more, stopping where edges pass through
@@ -445,7 +446,8 @@ Status HiddenRun::qi_method(bool* gave_up) {
   if (r.qi.conflicts > 0 && params.method != HiddenMethod::kQiPaperOnly) {
     const uint32_t first = r.qi.conflicts;
     r.qi = QiStats{};
-    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi, true, split);
+    s = propagate_qi(topo, front, cutset, inc, qi_mem, r.bytes_qi, &state, &r.qi, true, split,
+                     QiGrid::kKeep);
     if (s != Status::kOk) return fail(s);
     r.qi.first_conflicts = first;
   }

@@ -385,13 +385,22 @@ void run_worker(void* arg, uint32_t w) {
 
 Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cutset,
                     const Incidences& inc, void* buffer, size_t bytes, QiState* out, QiStats* stats,
-                    bool find_pierces, QiSplit split) {
+                    bool find_pierces, QiSplit split, QiGrid grid) {
   if (cutset.n_edges != topo.n_edges) return Status::kBadParameter;
   const Split sp = split_of(topo, split.part_vertices);
   Carver carve(buffer, bytes);
-  const size_t grid_bytes = face_grid_bytes(topo);
-  uint8_t* grid_buffer = carve.take<uint8_t>(grid_bytes);
   QiState s;
+  if (grid == QiGrid::kKeep) {
+    if (out->grid.first != reinterpret_cast<const uint32_t*>(carve.next))
+      return Status::kBadParameter;
+    s.grid = out->grid;
+  } else {
+    // The arrays carved after the grid are written only once it is built: until then they are
+    // its parts' scratch.
+    const Status gs = build_face_grid(topo, buffer, bytes, &s.grid, 1, split.parts);
+    if (gs != Status::kOk) return gs;
+  }
+  carve.take<uint8_t>(face_grid_bytes(s.grid));
   s.base = carve.take<int32_t>(topo.n_vertices);
   s.q_at_v0 = carve.take<int32_t>(topo.n_edges);
   uint32_t* queue = carve.take<uint32_t>(topo.n_vertices);
@@ -402,8 +411,6 @@ Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cu
     r.stats = carve.take<QiStats>(sp.n_parts);
   }
   if (carve.short_) return Status::kWorkspaceTooSmall;
-  const Status gs = build_face_grid(topo, grid_buffer, grid_bytes, &s.grid);
-  if (gs != Status::kOk) return gs;
   s.two_sided = qi_two_sided(topo);
   Ctx c{topo, front, cutset, inc, s.two_sided};
   if (find_pierces) {

@@ -6,6 +6,7 @@
 #include <stdint.h>
 
 #include "haloplot/cut/grid.h"
+#include "haloplot/memory/parts.h"
 #include "haloplot/solid/topology.h"
 #include "haloplot/status/status.h"
 
@@ -35,7 +36,15 @@ inline Topology faces_only(const SolidInput& in) {
 // `coarsen` > 1: cells that many times wider (and taller) than one face per cell gives, for
 // fewer (cell, face) pairs at more faces a cell asks (solid/hidden_lines.cpp: a band's grid).
 size_t face_grid_bytes(const Topology& topo, uint32_t coarsen = 1);  // counts (no walk)
+// The same for a grid already built (no count).
+size_t face_grid_bytes(const FaceGrid& fg);
+
+// `parts` (memory/parts.h): the counting sort in parts of the faces, each with its own cursor
+// into every cell, face_grid_part_bytes() each beyond the first part's, taken from the bytes
+// after face_grid_bytes() (scratch, free again on return); fewer parts where fewer fit. The
+// grid is the same, cell for cell and face for face, however many parts built it.
+size_t face_grid_part_bytes(const Topology& topo, uint32_t coarsen = 1);
 Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGrid* out,
-                       uint32_t coarsen = 1);
+                       uint32_t coarsen = 1, const Parts* parts = nullptr);
 
 }  // namespace haloplot

@@ -10,6 +10,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "haloplot/memory/parts.h"
 #include "haloplot/solid/topology.h"
 #include "haloplot/status/status.h"
 
@@ -40,7 +41,11 @@ size_t incidence_bytes(const Topology& topo, uint32_t capacity, bool by_vertex =
 size_t incidence_scratch_bytes(const Topology& topo);
 
 // kIncidenceCapacity when more than `capacity` incidences exist (`*needed` says how many).
+// `parts` (memory/parts.h): the search in parts of the vertex grid's cells and of the edges,
+// which threads may run at once, in the same bytes; the arrays are the same, element for
+// element, however many parts there were.
 Status find_incidences(const Topology& topo, uint32_t capacity, void* buffer, size_t bytes,
-                       Incidences* out, uint32_t* needed, bool by_vertex = true);
+                       Incidences* out, uint32_t* needed, bool by_vertex = true,
+                       const Parts* parts = nullptr);
 
 }  // namespace haloplot

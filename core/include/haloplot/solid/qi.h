@@ -99,13 +99,21 @@ struct QiSplit {
 
 size_t qi_bytes(const Topology& topo, uint32_t part_vertices = kQiPartVertices);
 
+// The QI's face grid (QiState::grid) lies at the front of propagate_qi()'s buffer. kBuild builds
+// it there (in the split's parts, with the buffer's unwritten arrays after it as the parts'
+// scratch); kKeep takes the one an earlier propagate_qi() built in this same buffer for this
+// same topology (`*out` as that call left it): the grid reads no facing, so the runs after the
+// first (solid/hidden_lines.cpp: the projected facing, then the pierces) need not build it again.
+enum class QiGrid : uint8_t { kBuild, kKeep };
+
 // `cutset` must be CUT's result over topo's edges in topo's order (reach 0); `front` is from
 // classify(). Any mesh: two-sided when it is not a closed oriented manifold.
 // `find_pierces`: the walks also stop where edges pass through faces (a mesh that pierces
-// itself; the caller asks for it once a propagation without has met conflicts).
+// itself; the caller asks for it once a propagation without has met conflicts). kKeep with a
+// grid not at the buffer's front: kBadParameter.
 Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cutset,
                     const Incidences& inc, void* buffer, size_t bytes, QiState* out, QiStats* stats,
-                    bool find_pierces = false, QiSplit split = {});
+                    bool find_pierces = false, QiSplit split = {}, QiGrid grid = QiGrid::kBuild);
 
 // A piece of an edge with one QI: positions in Q0.32 along the edge from v0 (t1 <= 2^32).
 struct QiPiece : EdgePiece {
