@@ -225,20 +225,16 @@ int main(int argc, char** argv) {
   staged.marked = qin.marked.data();
   staged.compact_cells = false;
   const bench::CutTiming phases = bench::time_cut(edges, staged, runs);
-  // Amdahl's bound for the stage: CUT's pairs (the sorting left out here) and the QI's walks
-  // split; the rest runs on one thread.
+  // The shares of the stage's two largest steps; every step of the stage but the pieces' hand
+  // over to the host's sink (and classify, a few ms) now runs in parts (bench_threads.sh says
+  // which), so no bound from these two alone is stated.
   const double cut_share = cut_one.cpu / one.cpu, qi_share = qi_one.cpu / one.cpu;
-  const double split =
-      (cut_one.cpu * phases.t2 / phases.total + std::max(0.0, qi_one.cpu - grid_ms)) / one.cpu;
-  std::fprintf(
-      stderr,
-      "Shares of the stage, 1 thread (CPU): CUT %.0f %%, the QI propagation %.0f %%. CUT's "
-      "phases (wall, median of %d): plan and cell lists %.0f ms, pairs %.0f ms, grouping and "
-      "sorting %.0f ms; the QI's face grid %.0f ms before its walks. So the part of the stage "
-      "that runs in parts (CUT's pairs, the QI's walks) is about %.0f %%, and %u threads can "
-      "make the stage at most %.2f times as fast",
-      100 * cut_share, 100 * qi_share, runs, phases.t1, phases.t2, phases.group, grid_ms,
-      100 * split, threads, 1 / (1 - split + split / threads));
+  std::fprintf(stderr,
+               "Shares of the stage, 1 thread (CPU): CUT %.0f %%, the QI propagation %.0f %%. "
+               "CUT's phases (wall, median of %d): plan and cell lists %.0f ms, pairs %.0f ms, "
+               "grouping and sorting %.0f ms; the QI's face grid %.0f ms (one thread) before "
+               "its walks",
+               100 * cut_share, 100 * qi_share, runs, phases.t1, phases.t2, phases.group, grid_ms);
   const std::vector<Edge3> random = paper_random(50000, 10000, 1);
   HostCut haloed[2];
   Time h_one, h_many;
