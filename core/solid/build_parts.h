@@ -1,5 +1,6 @@
-// Work in parts (memory/parts.h) for the topology's build: how many parts, their ranges, and
-// running them.
+// Work in parts (memory/parts.h) for the solid stages (the topology's build and stars, the
+// face grid, the incidences, the edges' fill, the QI's emission): whether a build runs parts
+// at all, how many, their ranges, and running them.
 #pragma once
 #include <stddef.h>
 #include <stdint.h>
@@ -8,15 +9,18 @@
 
 namespace haloplot {
 
-// The most parts the build splits into, whatever the runner's count: enough for a host's
-// cores, few enough that the parts' bookkeeping (a few counts each) fits a stack. One on a
-// 32-bit chip, which runs no parts: its stack keeps no room for theirs.
-constexpr uint32_t kMaxBuildParts = UINTPTR_MAX > 0xffffffffu ? 16 : 1;
+// A 64-bit host runs parts; a 32-bit chip has no runner, so its image leaves their code out.
+constexpr bool kRunsParts = UINTPTR_MAX > 0xffffffffu;
+
+// The most parts a stage splits into, whatever the runner's count: enough for a host's cores,
+// few enough that the parts' bookkeeping (a few counts each) fits a stack. One on a chip: its
+// stack keeps no room for theirs.
+constexpr uint32_t kMaxBuildParts = kRunsParts ? 16 : 1;
 
 // Parts for `work` items (about one lookup each): fewer where each would get less than
 // Parts::min_work, one without a runner.
 inline uint32_t build_part_count(const Parts* p, uint64_t work) {
-  if (p == nullptr) return 1;
+  if (!kRunsParts || p == nullptr) return 1;  // a constant on a chip: no parts code there
   uint32_t n = p->split();
   if (n > kMaxBuildParts) n = kMaxBuildParts;
   const uint64_t worth = p->min_work == 0 ? n : work / p->min_work;

@@ -2,6 +2,7 @@
 
 #include "haloplot/geometry/wide.h"
 #include "memory/carve.h"
+#include "solid/build_parts.h"
 
 namespace haloplot {
 namespace {
@@ -45,22 +46,9 @@ void fill_cells(const Topology& topo, const Grid& g, uint32_t t0, uint32_t t1, u
                   [&](uint32_t c) { faces[cursor[c]++] = t; });
 }
 
-// Parts only on a 64-bit host (the controllers have no threads to run them): their image
-// leaves the parts' code out.
-constexpr bool kHost = UINTPTR_MAX > 0xffffffffu;
-
-// The most parts a build splits into, whatever the caller's count (as CUT's).
-constexpr uint32_t kMaxParts = 16;
-
-// The parts for n faces: the caller's count, fewer where a part would get less than
-// Parts::min_work (a face's box and its few cells cost about a CUT pair test each, some 8).
+// A face's box and its few cells cost about a CUT pair test each, some 8 (Parts::min_work).
 uint32_t part_count(const Parts* parts, uint32_t n_faces) {
-  if (!kHost || parts == nullptr) return 1;
-  uint32_t n = parts->split();
-  if (n > kMaxParts) n = kMaxParts;
-  const uint64_t worth = parts->min_work == 0 ? n : uint64_t{n_faces} * 8 / parts->min_work;
-  if (worth < n) n = worth < 1 ? 1 : uint32_t(worth);
-  return n;
+  return build_part_count(parts, uint64_t{n_faces} * 8);
 }
 
 // The counting sort in parts of the faces, each with its own cursor into every cell: part k
@@ -75,7 +63,7 @@ struct GridParts {
   uint32_t* first;
   uint32_t* scratch;
   uint32_t* faces;
-  uint64_t pairs[kMaxParts] = {};
+  uint64_t pairs[kMaxBuildParts] = {};
 
   uint32_t first_face(uint32_t k) const { return uint32_t(uint64_t{topo->n_triangles} * k / n); }
   uint32_t* cursor(uint32_t k) const {

@@ -2,6 +2,7 @@
 
 #include "haloplot/solid/incidence.h"
 #include "memory/carve.h"
+#include "solid/build_parts.h"
 
 namespace haloplot {
 namespace {
@@ -222,9 +223,6 @@ void mark_words(const Topology& topo, uint32_t* marked, uint32_t w0, uint32_t w1
   }
 }
 
-// A 32-bit chip runs no parts (no runner there): their code is not built into its image.
-constexpr bool kRunsParts = UINTPTR_MAX > 0xffffffffu;
-
 // Every edge as CUT sees it, and its mark (marked: null in a band), in parts of whole mark
 // words: most of the time is the kernel's first touch of the edges' fresh pages (36 MB on the
 // 1M-triangle torus), which threads share.
@@ -243,15 +241,11 @@ void fill_edge_part(void* arg, uint32_t k) {
   if (f.marked != nullptr) mark_words(*f.topo, f.marked, w0, w1);
 }
 void fill_edges(const Topology& topo, Edge3* edges, uint32_t* marked, const Parts* parts) {
-  constexpr uint32_t kMostParts = 16;
   EdgeFill f{&topo, edges, marked, (topo.n_edges + 31) / 32, 1};
-  if (kRunsParts && parts != nullptr) {
-    // An edge costs about as much as a pair test's fraction: parts of min_work edges at least.
-    const uint64_t worth = parts->min_work == 0 ? f.words : topo.n_edges / parts->min_work;
-    f.n_parts = parts->split() < kMostParts ? parts->split() : kMostParts;
-    if (worth < f.n_parts) f.n_parts = worth < 1 ? 1 : uint32_t(worth);
-    if (f.n_parts > f.words) f.n_parts = f.words < 1 ? 1 : f.words;
-  }
+  // An edge costs about as much as a pair test's fraction: parts of min_work edges at least,
+  // each of whole mark words.
+  f.n_parts = build_part_count(parts, topo.n_edges);
+  if (f.n_parts > f.words) f.n_parts = f.words < 1 ? 1 : f.words;
   if (f.n_parts == 1) return fill_edge_part(&f, 0);
   run_parts(*parts, f.n_parts, &fill_edge_part, &f);
 }

@@ -4,6 +4,7 @@
 #include "haloplot/geometry/wide.h"
 #include "haloplot/memory/parts.h"
 #include "memory/carve.h"
+#include "solid/build_parts.h"
 #include "sort/in_place_sort.h"
 
 namespace haloplot {
@@ -123,22 +124,10 @@ uint32_t test_edges(const VertexGrid& vg, uint32_t e0, uint32_t e1, Incidence* o
   return n;
 }
 
-// Parts only on a 64-bit host (the controllers have no threads to run them): their image
-// leaves the parts' code out.
-constexpr bool kHost = UINTPTR_MAX > 0xffffffffu;
-
-// The most parts the search splits into, whatever the caller's count (as CUT's).
-constexpr uint32_t kMaxParts = 16;
-
-// The caller's count, fewer where a part would get less than Parts::min_work (an edge's walk
-// over the vertex grid costs about as much as a few CUT pair tests, some 8).
+// An edge's walk over the vertex grid costs about as much as a few CUT pair tests, some 8
+// (Parts::min_work).
 uint32_t part_count(const Parts* parts, uint32_t n_edges) {
-  if (!kHost || parts == nullptr) return 1;
-  uint32_t n = parts->split();
-  if (n > kMaxParts) n = kMaxParts;
-  const uint64_t worth = parts->min_work == 0 ? n : uint64_t{n_edges} * 8 / parts->min_work;
-  if (worth < n) n = worth < 1 ? 1 : uint32_t(worth);
-  return n;
+  return build_part_count(parts, uint64_t{n_edges} * 8);
 }
 
 // The search in parts: the coincident vertices over parts of the cells (about equal vertices
@@ -152,10 +141,10 @@ struct SearchParts {
   uint32_t capacity;
   uint32_t n;
   uint32_t* order;  // written by the coincident vertices' parts
-  uint32_t cell_begin[kMaxParts + 1] = {};
-  uint32_t found[kMaxParts] = {};   // each part's records, stored or not
-  uint32_t placed[kMaxParts] = {};  // where they start in the joined records
-  uint32_t coincident[kMaxParts] = {};
+  uint32_t cell_begin[kMaxBuildParts + 1] = {};
+  uint32_t found[kMaxBuildParts] = {};   // each part's records, stored or not
+  uint32_t placed[kMaxBuildParts] = {};  // where they start in the joined records
+  uint32_t coincident[kMaxBuildParts] = {};
 
   uint32_t first_edge(uint32_t j) const { return uint32_t(uint64_t{vg.topo->n_edges} * j / n); }
   uint32_t slice(uint32_t j) const { return uint32_t(uint64_t{capacity} * j / n); }

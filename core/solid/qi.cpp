@@ -3,6 +3,7 @@
 #include "haloplot/solid/classify.h"
 #include "haloplot/solid/face_grid.h"
 #include "memory/carve.h"
+#include "solid/build_parts.h"
 #include "solid/cover.h"
 #include "solid/pierce.h"
 
@@ -512,8 +513,6 @@ struct EmitRun {
   EmitPart* parts;
   uint32_t n_parts, workers;
 };
-// A 32-bit chip runs no parts (no runner there): their code is not built into its image.
-constexpr bool kRunsParts = UINTPTR_MAX > 0xffffffffu;
 
 constexpr uint32_t kEmitPartsPerWorker = 4;  // taken in turn: pierces crowd where solids meet
 constexpr uint32_t kEmitMaxParts = 64;
