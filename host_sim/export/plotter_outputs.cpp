@@ -115,13 +115,19 @@ std::string written_summary(const JobSpec& spec, const std::vector<PathPoint>& p
   const double seconds = written_plot_seconds(spec, points, style);
   const WrittenFigures f = written_figures(points, style);
   const long whole = long(seconds + 0.5);
-  char time[96];
-  std::snprintf(time, sizeof time,
-                "plot time about %ld min %02ld s (%.1f s by the motion planner's model)",
-                whole / 60, whole % 60, seconds);
+  char time[112];
+  if (whole >= 3600)  // hours, not "151 min"
+    std::snprintf(time, sizeof time,
+                  "plot time about %ld h %02ld min %02ld s (%.1f s by the motion planner's model)",
+                  whole / 3600, whole / 60 % 60, whole % 60, seconds);
+  else
+    std::snprintf(time, sizeof time,
+                  "plot time about %ld min %02ld s (%.1f s by the motion planner's model)",
+                  whole / 60, whole % 60, seconds);
   return "haloplot: " + std::string(time) + "; " + std::to_string(f.strokes) +
-         " strokes, pen down " + mm_text(std::llround(f.pen_down), style.steps_per_mm) +
-         " mm, pen up " + mm_text(std::llround(f.pen_up), style.steps_per_mm) + " mm";
+         (f.strokes == 1 ? " stroke" : " strokes") + ", pen down " +
+         mm_text(std::llround(f.pen_down), style.steps_per_mm) + " mm, pen up " +
+         mm_text(std::llround(f.pen_up), style.steps_per_mm) + " mm";
 }
 
 void centre_on_page(const Page& page, bool finish_home, std::vector<PathPoint>* points,

@@ -63,8 +63,9 @@ double written_plot_seconds(const JobSpec& spec, const std::vector<PathPoint>& p
                             const ExportStyle& style);
 
 // The line stderr gives for the files: "haloplot: plot time about M min SS s (S s by the
-// motion planner's model); N strokes, pen down D mm, pen up U mm", from written_figures and
-// written_plot_seconds, so `plot` and `sim` (whole or in bands) say what their files draw.
+// motion planner's model); N strokes, pen down D mm, pen up U mm" (from an hour on, "H h MM
+// min SS s"; "1 stroke"), from written_figures and written_plot_seconds, so `plot` and `sim`
+// (whole or in bands) say what their files draw.
 std::string written_summary(const JobSpec& spec, const std::vector<PathPoint>& points,
                             const ExportStyle& style);
 

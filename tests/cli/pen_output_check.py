@@ -139,7 +139,7 @@ def gcode_figures(path):
 def check_summary(gcode, stderr):
     with open(stderr) as f:
         text = f.read()
-    m = re.search(r"(\d+) strokes, pen down ([\d.]+) mm, pen up ([\d.]+) mm", text)
+    m = re.search(r"(\d+) strokes?, pen down ([\d.]+) mm, pen up ([\d.]+) mm", text)
     if not m:
         fail("no summary in stderr: " + text[-300:])
     strokes, up = int(m.group(1)), float(m.group(3))

@@ -30,7 +30,7 @@ same() {
     "$name: plot writes G-code and HPGL: $(tail -3 "$name.plot.txt")"
   expect 'cmp -s $name.p.gcode $name.s.gcode' "$name: plot --gcode equals sim --gcode"
   expect 'cmp -s $name.p.hpgl $name.s.hpgl' "$name: plot --hpgl equals sim --hpgl"
-  expect 'grep -q "^haloplot: plot time about [0-9]* min [0-9]* s" $name.plot.txt' \
+  expect 'grep -q "^haloplot: plot time about \([0-9]* h \)\?[0-9]* min [0-9]* s" $name.plot.txt' \
     "$name: the estimate is on stderr: $(cat "$name.plot.txt")"
   local est sim_s
   est=$(sed -n 's/^estimate_s=//p' "$name.plot.txt")
