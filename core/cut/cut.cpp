@@ -343,11 +343,12 @@ struct FillParts {
   }
 };
 
-// Out of line, as test_in_parts.
+// Out of line, as test_in_parts. Returns the cell loop's work (cell_work summed), counted in
+// the pass that places the parts, so no pass of its own stands alone before the loop.
 template <typename Entry>
-__attribute__((noinline)) void fill_in_parts(const CutPlan& plan, const Edge3* edges,
-                                             uint32_t n_parts, uint32_t* cell_start,
-                                             uint8_t* fill_at, Entry* list) {
+__attribute__((noinline)) uint64_t fill_in_parts(const CutPlan& plan, const Edge3* edges,
+                                                 uint32_t n_parts, uint32_t* cell_start,
+                                                 uint8_t* fill_at, Entry* list) {
   const uint32_t cells = plan.grid.cells();
   uint32_t* cursor = reinterpret_cast<uint32_t*>(fill_at);
   Visit* logs = plan.params.compact_cells
@@ -357,6 +358,7 @@ __attribute__((noinline)) void fill_in_parts(const CutPlan& plan, const Edge3* e
                       list,  n_parts};
   run_parts(*plan.params.parts, n_parts, &FillParts<Entry>::count, &fp);
   uint32_t at = 0;
+  uint64_t work = 0;
   for (uint32_t c = 0; c < cells; ++c) {
     cell_start[c] = at;
     for (uint32_t j = 0; j < n_parts; ++j) {
@@ -365,9 +367,12 @@ __attribute__((noinline)) void fill_in_parts(const CutPlan& plan, const Edge3* e
       k = at;
       at += count;
     }
+    const uint64_t k = at - cell_start[c];  // cell_work's count
+    work += k * (k - 1) / 2 + k + 1;
   }
   cell_start[cells] = at;
   run_parts(*plan.params.parts, n_parts, &FillParts<Entry>::fill, &fp);
+  return work;
 }
 
 // Where a 64-bit multiply is one instruction (64-bit targets), deciding a pair outright is
@@ -560,16 +565,17 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
   uint8_t* fill_at = static_cast<uint8_t*>(scratch) + carve_round((size_t{cells} + 1) * 4);
   Entry* list = reinterpret_cast<Entry*>(
       fill_at + fill_bytes(plan.params, cells, plan.cell_pairs, fill_parts));
-  if (kHost && fill_parts > 1)
-    fill_in_parts(plan, edges, fill_parts, cell_start, fill_at, list);
+  uint64_t work = 0;
+  const bool counted = kHost && fill_parts > 1;
+  if (counted)
+    work = fill_in_parts(plan, edges, fill_parts, cell_start, fill_at, list);
   else if (kHost && plan.params.compact_cells)
     fill_cells_logged(plan, edges, cell_start, reinterpret_cast<Visit*>(fill_at), list);
   else
     fill_cells(plan, edges, cell_start, list);
   st.cell_pairs = cell_start[cells];  // the exact count (the plan's is an upper bound)
   if (plan.params.phase) plan.params.phase(plan.params.phase_context, CutPhase::kCellsFilled);
-  uint64_t work = 0;
-  if (plan.params.parts != nullptr && plan.params.parts->split() > 1)
+  if (!counted && plan.params.parts != nullptr && plan.params.parts->split() > 1)
     for (uint32_t c = 0; c < cells; ++c) work += cell_work(cell_start, c);
   const uint32_t n_parts = part_count(plan.params, work);
   if (n_parts == 1)
