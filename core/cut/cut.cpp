@@ -343,11 +343,12 @@ struct FillParts {
   }
 };
 
-// Out of line, as test_in_parts.
+// Out of line, as test_in_parts. Returns the cell loop's work (cell_work summed), counted in
+// the pass that places the parts, so no pass of its own stands alone before the loop.
 template <typename Entry>
-__attribute__((noinline)) void fill_in_parts(const CutPlan& plan, const Edge3* edges,
-                                             uint32_t n_parts, uint32_t* cell_start,
-                                             uint8_t* fill_at, Entry* list) {
+__attribute__((noinline)) uint64_t fill_in_parts(const CutPlan& plan, const Edge3* edges,
+                                                 uint32_t n_parts, uint32_t* cell_start,
+                                                 uint8_t* fill_at, Entry* list) {
   const uint32_t cells = plan.grid.cells();
   uint32_t* cursor = reinterpret_cast<uint32_t*>(fill_at);
   Visit* logs = plan.params.compact_cells
@@ -357,6 +358,7 @@ __attribute__((noinline)) void fill_in_parts(const CutPlan& plan, const Edge3* e
                       list,  n_parts};
   run_parts(*plan.params.parts, n_parts, &FillParts<Entry>::count, &fp);
   uint32_t at = 0;
+  uint64_t work = 0;
   for (uint32_t c = 0; c < cells; ++c) {
     cell_start[c] = at;
     for (uint32_t j = 0; j < n_parts; ++j) {
@@ -365,9 +367,12 @@ __attribute__((noinline)) void fill_in_parts(const CutPlan& plan, const Edge3* e
       k = at;
       at += count;
     }
+    const uint64_t k = at - cell_start[c];  // cell_work's count
+    work += k * (k - 1) / 2 + k + 1;
   }
   cell_start[cells] = at;
   run_parts(*plan.params.parts, n_parts, &FillParts<Entry>::fill, &fp);
+  return work;
 }
 
 // Where a 64-bit multiply is one instruction (64-bit targets), deciding a pair outright is
@@ -560,16 +565,17 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
   uint8_t* fill_at = static_cast<uint8_t*>(scratch) + carve_round((size_t{cells} + 1) * 4);
   Entry* list = reinterpret_cast<Entry*>(
       fill_at + fill_bytes(plan.params, cells, plan.cell_pairs, fill_parts));
-  if (kHost && fill_parts > 1)
-    fill_in_parts(plan, edges, fill_parts, cell_start, fill_at, list);
+  uint64_t work = 0;
+  const bool counted = kHost && fill_parts > 1;
+  if (counted)
+    work = fill_in_parts(plan, edges, fill_parts, cell_start, fill_at, list);
   else if (kHost && plan.params.compact_cells)
     fill_cells_logged(plan, edges, cell_start, reinterpret_cast<Visit*>(fill_at), list);
   else
     fill_cells(plan, edges, cell_start, list);
   st.cell_pairs = cell_start[cells];  // the exact count (the plan's is an upper bound)
   if (plan.params.phase) plan.params.phase(plan.params.phase_context, CutPhase::kCellsFilled);
-  uint64_t work = 0;
-  if (plan.params.parts != nullptr && plan.params.parts->split() > 1)
+  if (!counted && plan.params.parts != nullptr && plan.params.parts->split() > 1)
     for (uint32_t c = 0; c < cells; ++c) work += cell_work(cell_start, c);
   const uint32_t n_parts = part_count(plan.params, work);
   if (n_parts == 1)
@@ -664,31 +670,113 @@ void group_records(Crossing* records, uint32_t stored, uint32_t n, const uint32_
 
 }  // namespace
 
-Status plan_cut(const Edge3* edges, uint32_t n, const CutParams& params, CutPlan* plan) {
-  if (n > kMaxEdges) return Status::kTooManyEdges;
-  if (params.reach < 0 || params.reach > kCoordMax || params.grid.lambda_q8 == 0)
-    return Status::kBadParameter;
-  for (uint32_t i = 0; i < n; ++i)
-    if (!in_range(edges[i])) return Status::kCoordinateOutOfRange;
-  CutPlan p;
-  p.params = params;
-  p.n_edges = n;
-  p.grid = choose_grid(edges, n, params.grid);
-  // An upper bound on the (cell, edge) pairs from each edge's (dilated) bounding box: pure
-  // arithmetic, no walk. The exact cover visits a subset of these cells, so the scratch sized
-  // from the bound always suffices; run_cut() reports the exact count in its stats.
-  uint64_t pairs = 0;
-  const Grid& g = p.grid;
+namespace {
+
+// The plan's bound on the (cell, edge) pairs of edges [e0, e1), from each edge's (dilated)
+// bounding box: pure arithmetic, no walk.
+uint64_t pair_bound(const Grid& g, const Edge3* edges, uint32_t e0, uint32_t e1, int32_t r) {
   const int32_t xmax = g.ox + static_cast<int32_t>(g.nx) * g.cell - 1;
   const int32_t ymax = g.oy + static_cast<int32_t>(g.ny) * g.cell - 1;
-  const int32_t r = params.reach;
-  for (uint32_t i = 0; i < n; ++i) {
+  uint64_t pairs = 0;
+  for (uint32_t i = e0; i < e1; ++i) {
     const Edge3& e = edges[i];
     const uint32_t c0 = g.col(max_i32(min_i32(e.a.x, e.b.x) - r, g.ox));
     const uint32_t c1 = g.col(min_i32(max_i32(e.a.x, e.b.x) + r, xmax));
     const uint32_t r0 = g.row(max_i32(min_i32(e.a.y, e.b.y) - r, g.oy));
     const uint32_t r1 = g.row(min_i32(max_i32(e.a.y, e.b.y) + r, ymax));
     pairs += mul_u32x32(c1 - c0 + 1, r1 - r0 + 1);
+  }
+  return pairs;
+}
+
+// The plan's passes over the edges in parts of the edges (a host's, on a big scene, where they
+// would otherwise run alone before the fill): the range check with the extent and the sampled
+// lengths, then, on the grid chosen from those, the bound. Extremes and integer sums: the same
+// plan as one part's, whatever the split.
+struct PlanParts {
+  const Edge3* edges = nullptr;
+  uint32_t n = 0, parts = 1;
+  const CutPlan* plan = nullptr;  // its grid, once chosen, for the bound
+  bool ranged[kMaxParts] = {};
+  Extent extent[kMaxParts];
+  uint64_t length_sum[kMaxParts] = {}, lengths[kMaxParts] = {}, pairs[kMaxParts] = {};
+
+  uint32_t first_edge(uint32_t j) const { return uint32_t(uint64_t{n} * j / parts); }
+  static void scan(void* arg, uint32_t j) {
+    PlanParts* self = static_cast<PlanParts*>(arg);
+    const uint32_t e0 = self->first_edge(j), e1 = self->first_edge(j + 1);
+    bool all = true;
+    Extent x;
+    for (uint32_t i = e0; i < e1; ++i) {
+      all = all && in_range(self->edges[i]);
+      x.add(self->edges[i]);
+    }
+    self->ranged[j] = all;
+    self->extent[j] = x;
+    // average_length's sample: every stride-th edge from edge 0.
+    const uint32_t stride = length_stride(self->n);
+    for (uint32_t i = (e0 + stride - 1) / stride * stride; i < e1; i += stride) {
+      self->length_sum[j] += projected_length(self->edges[i]);
+      ++self->lengths[j];
+    }
+  }
+  static void bound(void* arg, uint32_t j) {
+    PlanParts* self = static_cast<PlanParts*>(arg);
+    self->pairs[j] = pair_bound(self->plan->grid, self->edges, self->first_edge(j),
+                                self->first_edge(j + 1), self->plan->params.reach);
+  }
+};
+
+// Out of line, as test_in_parts. Fills p's grid; returns the bound, or kCoordinateOutOfRange.
+__attribute__((noinline)) Status plan_in_parts(const Edge3* edges, uint32_t n, uint32_t parts,
+                                               CutPlan* p, uint64_t* pairs) {
+  PlanParts pp;
+  pp.edges = edges;
+  pp.n = n;
+  pp.parts = parts;
+  pp.plan = p;
+  run_parts(*p->params.parts, parts, &PlanParts::scan, &pp);
+  Extent x;
+  uint64_t sum = 0, count = 0;
+  for (uint32_t j = 0; j < parts; ++j) {
+    if (!pp.ranged[j]) return Status::kCoordinateOutOfRange;
+    x.xmin = min_i32(x.xmin, pp.extent[j].xmin);
+    x.xmax = max_i32(x.xmax, pp.extent[j].xmax);
+    x.ymin = min_i32(x.ymin, pp.extent[j].ymin);
+    x.ymax = max_i32(x.ymax, pp.extent[j].ymax);
+    sum += pp.length_sum[j];
+    count += pp.lengths[j];
+  }
+  p->grid = grid_for(x, n, static_cast<uint32_t>(sum / count), p->params.grid);
+  run_parts(*p->params.parts, parts, &PlanParts::bound, &pp);
+  *pairs = 0;
+  for (uint32_t j = 0; j < parts; ++j) *pairs += pp.pairs[j];
+  return Status::kOk;
+}
+
+}  // namespace
+
+Status plan_cut(const Edge3* edges, uint32_t n, const CutParams& params, CutPlan* plan) {
+  if (n > kMaxEdges) return Status::kTooManyEdges;
+  if (params.reach < 0 || params.reach > kCoordMax || params.grid.lambda_q8 == 0)
+    return Status::kBadParameter;
+  CutPlan p;
+  p.params = params;
+  p.n_edges = n;
+  // An upper bound on the (cell, edge) pairs from each edge's (dilated) bounding box. The
+  // exact cover visits a subset of these cells, so the scratch sized from the bound always
+  // suffices; run_cut() reports the exact count in its stats. A pass over an edge costs about
+  // as much as a few pair tests.
+  uint64_t pairs = 0;
+  const uint32_t parts = kHost && n > 0 ? part_count(params, uint64_t{n} * 4) : 1;
+  if (parts > 1) {
+    const Status s = plan_in_parts(edges, n, parts, &p, &pairs);
+    if (s != Status::kOk) return s;
+  } else {
+    for (uint32_t i = 0; i < n; ++i)
+      if (!in_range(edges[i])) return Status::kCoordinateOutOfRange;
+    p.grid = choose_grid(edges, n, params.grid);
+    pairs = pair_bound(p.grid, edges, 0, n, params.reach);
   }
   if (pairs > 0xffffffffu) return Status::kCellPairOverflow;
   p.cell_pairs = static_cast<uint32_t>(pairs);

@@ -5,15 +5,17 @@
 
 namespace haloplot {
 
+uint32_t projected_length(const Edge3& e) {
+  const int32_t dx = e.b.x - e.a.x, dy = e.b.y - e.a.y;
+  return isqrt_u64(static_cast<uint64_t>(mul_narrow<kDiffBits, kDiffBits>(dx, dx) +
+                                         mul_narrow<kDiffBits, kDiffBits>(dy, dy)));
+}
+
 uint32_t average_length(const Edge3* edges, uint32_t n) {
   if (n == 0) return 0;
-  const uint32_t stride = n > kLengthSample ? n / kLengthSample : 1;
+  const uint32_t stride = length_stride(n);
   uint64_t sum = 0, count = 0;  // at most 2^32 lengths below 2^21: fits in 53 bits
-  for (uint32_t i = 0; i < n; i += stride, ++count) {
-    const int32_t dx = edges[i].b.x - edges[i].a.x, dy = edges[i].b.y - edges[i].a.y;
-    sum += isqrt_u64(static_cast<uint64_t>(mul_narrow<kDiffBits, kDiffBits>(dx, dx) +
-                                           mul_narrow<kDiffBits, kDiffBits>(dy, dy)));
-  }
+  for (uint32_t i = 0; i < n; i += stride, ++count) sum += projected_length(edges[i]);
   return static_cast<uint32_t>(sum / count);
 }
 
@@ -29,22 +31,20 @@ uint32_t cells_for(int32_t width, int32_t height, int32_t cell) {
 }  // namespace
 
 Grid choose_grid(const Edge3* edges, uint32_t n, const GridParams& params) {
+  if (n == 0) return Grid{};
+  Extent x;
+  for (uint32_t i = 0; i < n; ++i) x.add(edges[i]);
+  return grid_for(x, n, params.cell <= 0 ? average_length(edges, n) : 0, params);
+}
+
+Grid grid_for(const Extent& x, uint32_t n, uint32_t average, const GridParams& params) {
   Grid g;
-  if (n == 0) return g;
-  int32_t xmin = kCoordMax, ymin = kCoordMax, xmax = 0, ymax = 0;
-  for (uint32_t i = 0; i < n; ++i) {
-    const Edge3& e = edges[i];
-    xmin = min_i32(xmin, min_i32(e.a.x, e.b.x));
-    xmax = max_i32(xmax, max_i32(e.a.x, e.b.x));
-    ymin = min_i32(ymin, min_i32(e.a.y, e.b.y));
-    ymax = max_i32(ymax, max_i32(e.a.y, e.b.y));
-  }
-  const int32_t width = xmax - xmin + 1, height = ymax - ymin + 1;
+  const int32_t xmin = x.xmin, ymin = x.ymin;
+  const int32_t width = x.xmax - xmin + 1, height = x.ymax - ymin + 1;
   int32_t cell = params.cell;
   if (cell <= 0) {
     // Paper C2: G = lambda * L. lambda is Q8.8; the product fits easily in 64 bits.
-    const uint64_t l = average_length(edges, n);
-    const uint64_t side = (l * params.lambda_q8) >> 8;
+    const uint64_t side = (uint64_t{average} * params.lambda_q8) >> 8;
     cell = side < 1 ? 1
                     : (side > static_cast<uint64_t>(kCoordLimit) ? kCoordLimit
                                                                  : static_cast<int32_t>(side));

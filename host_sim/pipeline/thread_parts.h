@@ -1,6 +1,6 @@
-// The host's runner for the core's parts (memory/parts.h): each part on a thread of its own,
-// the calling thread running the first. The core splits a stage into as many parts as it is
-// told threads; it never starts one itself.
+// The host's runner for the core's parts (memory/parts.h): the calling thread and threads kept
+// asleep between runs take the parts between them. The core splits a stage into as many parts
+// as it is told threads; it never starts one itself.
 #pragma once
 #include <cstdint>
 

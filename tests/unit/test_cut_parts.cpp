@@ -3,7 +3,7 @@
 // bounding-box cover, and with a record capacity so tight that parts outgrow their slices
 // (they run again into what the others left) or that the whole does not fit (the count a
 // retry needs, as one part says it); and with edges so uneven that the first parts' cell
-// visits outgrow their share of the fill's logs.
+// visits outgrow their share of the fill's logs. The plan made in parts is the one-part plan.
 #include <cstring>
 #include <vector>
 
@@ -56,7 +56,37 @@ bool same(const Result& a, const Result& b) {
          x.max_per_edge == y.max_per_edge;
 }
 
+// The plan made in parts (a host's range check, extent, sampled lengths and bound) has the grid
+// and bound one part's has (its scratch differs: the fill's own parts need their cursors), and an
+// edge out of range in any part is refused as one part refuses it.
+void check_plan(const char* name, std::vector<Edge3> edges, CutParams params) {
+  CutPlan one;
+  CHECK(plan_cut(edges.data(), uint32_t(edges.size()), params, &one) == Status::kOk);
+  for (uint32_t n : {2u, 3u, 16u}) {
+    Parts parts;
+    parts.run = &backwards;
+    parts.count = n;
+    parts.min_work = 0;
+    CutParams p = params;
+    p.parts = &parts;
+    CutPlan split;
+    const std::string what = std::string(name) + ", plan in " + std::to_string(n) + " parts";
+    CHECK_MSG(plan_cut(edges.data(), uint32_t(edges.size()), p, &split) == Status::kOk, what);
+    const Grid &a = one.grid, &b = split.grid;
+    CHECK_MSG(a.ox == b.ox && a.oy == b.oy && a.cell == b.cell && a.nx == b.nx && a.ny == b.ny &&
+                  one.cell_pairs == split.cell_pairs,
+              what);
+    if (edges.empty()) continue;
+    std::vector<Edge3> bad = edges;
+    bad.back().b.y = -1;
+    CHECK_MSG(
+        plan_cut(bad.data(), uint32_t(bad.size()), p, &split) == Status::kCoordinateOutOfRange,
+        what + ", an edge out of range");
+  }
+}
+
 void check_scene(const char* name, const std::vector<Edge3>& edges, CutParams params) {
+  check_plan(name, edges, params);
   const Result one = cut(edges, params, 4 * uint32_t(edges.size()) + 64);
   CHECK_MSG(one.status == Status::kOk && !one.records.empty(), std::string(name) + ": no cut");
   const uint32_t exact = uint32_t(one.records.size());
@@ -110,5 +140,9 @@ int main() {
   std::vector<Edge3> uneven = scenes::paper_random(600, 150000, 11);
   for (const Edge3& e : scenes::paper_random(3400, 5000, 12)) uneven.push_back(e);
   check_scene("uneven lengths", uneven, CutParams{});
+  // More edges than average_length samples, so the parts' samples start mid-stride; and
+  // fewer edges than parts.
+  for (uint32_t n : {0u, 1u, 2u, 5u, 17u, 20003u})
+    check_plan("a few edges", scenes::paper_random(n, 30000, 13), CutParams{});
   return check::finish("cut_parts");
 }

@@ -169,4 +169,20 @@ Grid choose_grid(const Edge3* edges, uint32_t n, const GridParams& params);
 inline constexpr uint32_t kLengthSample = 4096;
 uint32_t average_length(const Edge3* edges, uint32_t n);
 
+// choose_grid's halves, so a caller may gather the scene's extent and the sampled lengths in
+// parts (CUT's plan on a host): the extent grows edge by edge, the lengths are exact, and
+// grid_for gives the grid choose_grid gives for the same extent and average (n > 0).
+struct Extent {
+  int32_t xmin = kCoordMax, ymin = kCoordMax, xmax = 0, ymax = 0;
+  void add(const Edge3& e) {
+    xmin = min_i32(xmin, min_i32(e.a.x, e.b.x));
+    xmax = max_i32(xmax, max_i32(e.a.x, e.b.x));
+    ymin = min_i32(ymin, min_i32(e.a.y, e.b.y));
+    ymax = max_i32(ymax, max_i32(e.a.y, e.b.y));
+  }
+};
+inline uint32_t length_stride(uint32_t n) { return n > kLengthSample ? n / kLengthSample : 1; }
+uint32_t projected_length(const Edge3& e);  // floor of the exact root
+Grid grid_for(const Extent& x, uint32_t n, uint32_t average, const GridParams& params);
+
 }  // namespace haloplot
