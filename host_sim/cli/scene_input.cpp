@@ -559,6 +559,17 @@ std::string shells_note(const std::string& path, const RepairReport& r, bool wel
          kinds + "; every face hides from both sides" + hint;
 }
 
+// A dense smooth model plotted without --crease draws every facet, a blot where the surface is
+// fine: say so when nearly every drawn edge bends gently (at least 10,000 of them, nine in ten).
+std::string crease_hint(const std::string& path, const RepairReport& r) {
+  if (r.gentle_edges < 10000 || uint64_t{r.gentle_edges} * 10 < uint64_t{r.kept_edges} * 9)
+    return "";
+  return path + ": " + std::to_string(r.gentle_edges) + " of the " + std::to_string(r.kept_edges) +
+         " edges drawn join faces less than " + std::to_string(int(kGentleDegrees)) +
+         " degrees apart, the facets of a smooth surface: --crease 40 draws its contours and "
+         "the creases sharper than 40 degrees instead";
+}
+
 bool load_solid_scene(const Options& o, const std::string& path, SolidScene* scene,
                       TriangulateStats* stats, std::string* error) {
   if (!is_mesh_path(path)) {
@@ -570,6 +581,9 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
   RepairReport repair;
   if (!project_obj(o, path, &model, &scene->vertices, &view, error, &repair)) return false;
   scene->repair_note = shells_note(path, repair, o.get("--weld").empty());
+  const std::string crease = crease_hint(path, repair);
+  if (!crease.empty())
+    scene->repair_note += (scene->repair_note.empty() ? "" : "\nhaloplot: ") + crease;
   scene->substep_bits = view.substep_bits;
   scene->edge_pairs = model.edge_pairs;
   TriangulateStats ts;

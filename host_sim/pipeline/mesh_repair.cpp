@@ -455,15 +455,30 @@ bool runs(const std::vector<uint32_t>& c, uint32_t a, uint32_t b) {
   return false;
 }
 
+// Face g's normal as seen from face f across side a -> b: turned over where the two are wound
+// the same way along it (a shell that cannot be oriented, like a Moebius strip's seam).
+Normal normal_across(const ObjModel& m, const std::vector<FaceShape>& shape, uint32_t f, uint32_t g,
+                     uint32_t a, uint32_t b) {
+  const Normal& given = shape[g].n;
+  const bool turned = runs(m.faces[f], a, b) == runs(m.faces[g], a, b);
+  return turned ? Normal{-given[0], -given[1], -given[2]} : given;
+}
+
+// Do faces f and g, on the side a -> b, bend less than kGentleDegrees?
+bool gentle_between(const ObjModel& m, const std::vector<FaceShape>& shape, uint32_t f, uint32_t g,
+                    uint32_t a, uint32_t b) {
+  const Normal& nf = shape[f].n;
+  const Normal ng = normal_across(m, shape, f, g, a, b);
+  return !is_zero(nf) && !is_zero(ng) && within_angle(nf, ng, kGentleDegrees);
+}
+
 // Do faces f and g, on the side a -> b, count as one flat surface? Two faces wound the same way
 // along their side (a shell that cannot be oriented, like a Moebius strip's seam) are compared
 // as if one were turned over: how a surface bends does not depend on how its faces are wound.
 bool flat_between(const ObjModel& m, const std::vector<FaceShape>& shape, uint32_t f, uint32_t g,
                   uint32_t a, uint32_t b, const CreaseRule& rule) {
   const Normal& nf = shape[f].n;
-  const bool turned = runs(m.faces[f], a, b) == runs(m.faces[g], a, b);
-  const Normal& given = shape[g].n;
-  const Normal ng = turned ? Normal{-given[0], -given[1], -given[2]} : given;
+  const Normal ng = normal_across(m, shape, f, g, a, b);
   if (is_zero(nf) || is_zero(ng)) return false;
   if (rule.deg > 0 && within_angle(nf, ng, rule.deg)) return true;  // as wide as asked
   // Each normal component is below 2^62 (vertices within 2^20), so the products fit.
@@ -497,13 +512,17 @@ void drop_flat_edges(ObjModel* model, const CreaseRule& rule, RepairReport* repo
   for (size_t e = 0; e + 1 < model->edge_pairs.size(); e += 2) {
     const uint32_t a = model->edge_pairs[e], b = model->edge_pairs[e + 1];
     uint32_t face[2] = {0, 0};
-    if (sides.faces(a, b, face) == 2 && flat_between(*model, shape, face[0], face[1], a, b, rule)) {
+    const bool two = sides.faces(a, b, face) == 2;
+    if (two && flat_between(*model, shape, face[0], face[1], a, b, rule)) {
       ++report->flat_edges;
       continue;
     }
+    if (two && rule.deg == 0 && gentle_between(*model, shape, face[0], face[1], a, b))
+      ++report->gentle_edges;
     kept.insert(kept.end(), {a, b});
   }
   model->edge_pairs = kept;
+  report->kept_edges = uint32_t(kept.size() / 2);
 }
 
 void find_regions(ObjModel* model) {

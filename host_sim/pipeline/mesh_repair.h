@@ -32,6 +32,9 @@ struct RepairReport {
   uint32_t turned_shells = 0;        // closed shells turned outward (inside out before)
   uint32_t unorientable_shells = 0;  // left as given: non-manifold sides or a twist
   uint32_t flat_edges = 0;           // drawn edges between faces within the crease angle
+  // Without a crease angle: drawn edges kept between faces less than kGentleDegrees apart (a
+  // smooth surface's facets, which --crease would leave out), of kept_edges drawn in all.
+  uint32_t gentle_edges = 0, kept_edges = 0;
 };
 
 // How far a vertex may lie from where the exporter meant it, per coordinate, in world units:
@@ -78,6 +81,8 @@ struct CreaseRule {
 //   rounding that lies along a real crease leaves it out too (its corners are on both planes).
 // Run it after orient_shells (the normals of faces wound different ways point apart).
 void drop_flat_edges(ObjModel* model, const CreaseRule& rule, RepairReport* report);
+// What counts as a gentle bend for RepairReport::gentle_edges (the plot's hint to use --crease).
+inline constexpr double kGentleDegrees = 10;
 
 // Regions: faces joined through sides on exactly two faces that are not drawn edges (left out
 // by drop_flat_edges: flat but for the rounding, or within --crease) make one region, a surface

@@ -5,7 +5,8 @@
 # draws something, and every point it draws is a point of the same view's drawing with every
 # edge kept (--crease off: the contours are mesh edges, at the same fit on the page), with
 # fewer points (in the visible layer; hidden-dashed also dashes the hidden contours). `--mode
-# all` works out no contours: it refuses, naming --crease.
+# all` works out no contours: it refuses, naming --crease. Without --crease, a dense smooth
+# model's plot suggests it.
 # Usage: plot_crease.sh HALOPLOT
 set -u
 tool="$1"
@@ -75,6 +76,28 @@ elif grep -q -- "--crease 40" err.txt && [ ! -e x.svg ]; then
 else
   bad "--mode all: $(cat err.txt)"
 fi
+
+# Without --crease a dense smooth model draws every facet: the plot says so and names --crease.
+# A torus of 200 x 60 facets (1.8 to 6 degrees apart: 24,000 edges, every one gentle) gets the
+# hint; the same with --crease 40, and a torus of 24 x 12 facets (15 and 30 degrees apart), not.
+torus_obj 1.5 0.6 200 60 > dense.obj
+hint="join faces less than 10 degrees apart"
+if ! "$tool" plot dense.obj --view 30,25 --mode hidden-removed -o d.svg 2> err.txt; then
+  bad "the dense torus failed: $(cat err.txt)"
+elif grep -q "$hint" err.txt && grep -q -- "--crease 40" err.txt; then
+  ok "the dense torus without --crease: $(grep "$hint" err.txt)"
+else
+  bad "the dense torus without --crease gave no hint: $(cat err.txt)"
+fi
+for given in "dense.obj --crease 40" "torus.obj"; do
+  # shellcheck disable=SC2086
+  if "$tool" plot $given --view 30,25 --mode hidden-removed -o d.svg 2> err.txt &&
+     ! grep -q "$hint" err.txt; then
+    ok "no hint for $given"
+  else
+    bad "$given: $(cat err.txt)"
+  fi
+done
 
 echo "plot_crease: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
