@@ -66,6 +66,20 @@ inline Grid grid_over(const Point3* p, uint32_t n, uint32_t per_axis) {
   return g;
 }
 
+// The columns [c0, c1] and rows [r0, r1] of a segment's bounding box from x0 <= x1, dilated by
+// `reach` and clamped to the grid: where for_each_cell() and cells_in_block() both start.
+struct CellSpan {
+  uint32_t c0, c1, r0, r1;
+};
+inline CellSpan cell_span(const Grid& g, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
+                          int32_t reach) {
+  const int32_t xmax_scene = g.ox + static_cast<int32_t>(g.nx) * g.cell - 1;
+  const int32_t ymax_scene = g.oy + static_cast<int32_t>(g.ny) * g.cell - 1;
+  return CellSpan{g.col(max_i32(x0 - reach, g.ox)), g.col(min_i32(x1 + reach, xmax_scene)),
+                  g.row(max_i32(min_i32(y0, y1) - reach, g.oy)),
+                  g.row(min_i32(max_i32(y0, y1) + reach, ymax_scene))};
+}
+
 // Visit every cell the projection of `e` may touch, calling visit(cell_index). `reach` > 0
 // dilates the bounding box by that many steps (used when CUT also records near misses) and
 // implies the bounding-box cover. Every point of the segment lies in a visited cell; a few
@@ -81,12 +95,8 @@ void for_each_cell(const Grid& g, const Edge3& e, CellCover cover, int32_t reach
     y0 = y1;
     y1 = t;
   }
-  const int32_t xmax_scene = g.ox + static_cast<int32_t>(g.nx) * g.cell - 1;
-  const int32_t ymax_scene = g.oy + static_cast<int32_t>(g.ny) * g.cell - 1;
-  const uint32_t c0 = g.col(max_i32(x0 - reach, g.ox));
-  const uint32_t c1 = g.col(min_i32(x1 + reach, xmax_scene));
-  const uint32_t r0 = g.row(max_i32(min_i32(y0, y1) - reach, g.oy));
-  const uint32_t r1 = g.row(min_i32(max_i32(y0, y1) + reach, ymax_scene));
+  const CellSpan span = cell_span(g, x0, y0, x1, y1, reach);
+  const uint32_t c0 = span.c0, c1 = span.c1, r0 = span.r0, r1 = span.r1;
   // One column or one row: the bounding box is exact, and no division is needed.
   if (cover == CellCover::kBoundingBox || reach > 0 || c0 == c1 || r0 == r1) {
     for (uint32_t r = r0; r <= r1; ++r)
@@ -128,12 +138,8 @@ inline bool cells_in_block(const Grid& g, const Edge3& e, CellCover cover, int32
   const bool swap = e.a.x > e.b.x;  // read left to right, as for_each_cell() does
   const int32_t x0 = swap ? e.b.x : e.a.x, y0 = swap ? e.b.y : e.a.y;
   const int32_t x1 = swap ? e.a.x : e.b.x, y1 = swap ? e.a.y : e.b.y;
-  const int32_t xmax_scene = g.ox + static_cast<int32_t>(g.nx) * g.cell - 1;
-  const int32_t ymax_scene = g.oy + static_cast<int32_t>(g.ny) * g.cell - 1;
-  const uint32_t c0 = g.col(max_i32(x0 - reach, g.ox));
-  const uint32_t c1 = g.col(min_i32(x1 + reach, xmax_scene));
-  const uint32_t r0 = g.row(max_i32(min_i32(y0, y1) - reach, g.oy));
-  const uint32_t r1 = g.row(min_i32(max_i32(y0, y1) + reach, ymax_scene));
+  const CellSpan span = cell_span(g, x0, y0, x1, y1, reach);
+  const uint32_t c0 = span.c0, c1 = span.c1, r0 = span.r0, r1 = span.r1;
   if (c1 - c0 > 1 || r1 - r0 > 1) return false;
   const uint32_t two_cols = c1 - c0, two_rows = r1 - r0;
   // The exact walk's row at the border x = X between the columns: r1 (k) or r0.
