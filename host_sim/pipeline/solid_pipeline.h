@@ -26,6 +26,7 @@ struct SolidScene {
   // "FILE: M shells: K closed solids, N open surfaces, ...; hidden lines by QI with both sides
   // of every face hiding" when a shell is not a closed solid (pipeline/mesh_repair.h).
   std::string repair_note;
+  std::string repair_stats;  // what the note rests on, key=value lines for --stats
 };
 
 // The core's view of a scene (pointers into it: the scene must outlive the input).
