@@ -43,9 +43,12 @@ std::string open_words(const std::string& path, const RepairReport& r, uint32_t 
   const std::string eps = number(h.eps), weld = "--weld " + eps;
   if (h.suggest)
     return head + ": " + weld + " would close " +
-           std::to_string(h.before.open_sides - h.after.open_sides) + " of their " +
-           std::to_string(h.before.open_sides) + " open sides (" + std::to_string(h.within) +
-           " open corners lie within " + eps + " of another open side's)";
+           (h.after.open_sides == 0
+                ? "all " + std::to_string(h.before.open_sides)
+                : std::to_string(h.before.open_sides - h.after.open_sides) + " of their " +
+                      std::to_string(h.before.open_sides)) +
+           " open sides (" + std::to_string(h.within) + " open corners lie within " + eps +
+           " of another open side's)";
   if (h.gaps)
     return head + ": " + std::to_string(h.within) + " open corners lie within " + eps +
            " of another open side's, but " + weld + " would " + trial_harm(h) + "; left as made, " +

@@ -316,7 +316,6 @@ bool runs(const std::vector<uint32_t>& c, uint32_t a, uint32_t b) {
 struct Shell {
   std::vector<uint32_t> faces;
   bool closed = true, orientable = true;
-  uint32_t twist[2] = {0, 0};  // the first two faces found wound the same way along a side
 };
 
 // Breadth first from `seed`: the shell's faces and each one's flip (relative to the seed).
@@ -338,7 +337,6 @@ Shell grow_shell(const Adjacency& adj, uint32_t seed, std::vector<uint8_t>* seen
         (*flip)[n] = want;
         s.faces.push_back(n);
       } else if (c != 2 && (*flip)[n] != want) {
-        if (s.orientable) s.twist[0] = f, s.twist[1] = n;
         s.orientable = false;  // a twist: the two ways round disagree
       }
     }
@@ -365,24 +363,27 @@ ShellProblem problem_at(const ObjModel& m, uint32_t f, size_t i, uint32_t faces_
 }
 
 // Where shell s cannot be oriented: its first face (in the search's order) on a side on three
-// or more faces, that side; else the side its twist was found on.
+// or more faces, that side; else the first side its two faces run the same way as the file
+// gives them. A shell whose every side is run both ways could be oriented as given, so a twist
+// leaves at least one such side; where the file is wound consistently but for a seam, it is
+// the seam (where the search's two ways round met is anywhere on the strip).
 ShellProblem shell_problem(const ObjModel& m, const Adjacency& adj, const Shell& s) {
   SidesByVertex sides(m);
-  for (uint32_t f : s.faces) {
-    if (!adj.on_nonmanifold[f]) continue;
-    const std::vector<uint32_t>& c = m.faces[f];
-    for (size_t i = 0; i < c.size(); ++i) {
-      uint32_t face[2];
-      const uint32_t n = sides.faces(c[i], c[(i + 1) % c.size()], face);
-      if (n > 2) return problem_at(m, f, i, n);
+  sides.sort_each();
+  for (int pass = 0; pass < 2; ++pass)
+    for (uint32_t f : s.faces) {
+      if (pass == 0 && !adj.on_nonmanifold[f]) continue;
+      const std::vector<uint32_t>& c = m.faces[f];
+      for (size_t i = 0; i < c.size(); ++i) {
+        const uint32_t a = c[i], b = c[(i + 1) % c.size()];
+        uint32_t face[2] = {0, 0};
+        const uint32_t n = sides.faces(a, b, face);
+        if (pass == 0 && n > 2) return problem_at(m, f, i, n);
+        if (pass == 1 && n == 2 && runs(m.faces[face[0]], a, b) == runs(m.faces[face[1]], a, b))
+          return problem_at(m, f, i, 2);
+      }
     }
-  }
-  const std::vector<uint32_t>& c = m.faces[s.twist[0]];
-  const std::vector<uint32_t>& d = m.faces[s.twist[1]];
-  for (size_t i = 0; i < c.size(); ++i)
-    if (runs(d, c[i], c[(i + 1) % c.size()]) || runs(d, c[(i + 1) % c.size()], c[i]))
-      return problem_at(m, s.twist[0], i, 2);
-  return problem_at(m, s.twist[0], 0, 2);
+  return problem_at(m, s.faces[0], 0, 2);  // not reached (see above)
 }
 
 }  // namespace

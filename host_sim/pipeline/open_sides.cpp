@@ -166,13 +166,19 @@ WeldHint weld_hint(const ObjModel& model, const OpenSides& open) {
   }
   h.gaps = !jumps.empty();
   std::sort(jumps.begin(), jumps.end(), [](const auto& a, const auto& b) { return a > b; });
+  // At a jump, twice its gap first: copies of one point strung out in a row (a, b, c) are
+  // each nearest the next, but c joins a only within twice that.
   std::vector<double> tries;
-  for (size_t k = 0; k < jumps.size() && k < 3; ++k) tries.push_back(g[jumps[k].second]);
+  for (size_t k = 0; k < jumps.size() && k < 2; ++k) {
+    const size_t i = jumps[k].second;
+    if (jumps[k].first >= 2 * kGapJump) tries.push_back(2 * g[i]);
+    tries.push_back(g[i]);
+  }
   tries.push_back(g[h.near / 2]);
   h.before = try_weld(model, 0);
   for (double gap : tries) {
     const double eps = round_eps(gap, model.scale);
-    if (h.tried && eps == h.eps) continue;
+    if (h.tried && eps == h.eps) continue;  // the same weld again
     const WeldTrial after = try_weld(model, eps * model.scale);
     const bool better = after.open_sides < h.before.open_sides &&
                         after.nonmanifold_sides <= h.before.nonmanifold_sides &&

@@ -55,9 +55,10 @@ struct WeldHint {
   WeldTrial before, after;           // the model as welded, and welded further at eps
 };
 
-// The measurement read: EPS at the widest jumps in the near gaps (up to three), then their
-// median; each tried on a copy; the first that closes open sides without harm is suggested,
-// else the first tried is reported.
+// The measurement read: EPS at the two widest jumps in the near gaps (twice the gap below the
+// jump where the jump leaves room, then the gap itself), then their median gap; each rounded
+// up to one significant digit and tried on a copy; the first that closes open sides without
+// harm is suggested, else the first tried is reported.
 WeldHint weld_hint(const ObjModel& model, const OpenSides& open);
 
 }  // namespace haloplot::host
