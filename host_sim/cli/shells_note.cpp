@@ -43,10 +43,9 @@ std::string open_words(const std::string& path, const RepairReport& r, uint32_t 
   const std::string eps = number(h.eps), weld = "--weld " + eps;
   if (h.suggest)
     return head + ": " + weld + " would close " +
-           (h.after.open_sides == 0
-                ? "all " + std::to_string(h.before.open_sides)
-                : std::to_string(h.before.open_sides - h.after.open_sides) + " of their " +
-                      std::to_string(h.before.open_sides)) +
+           (h.after.open_sides == 0 ? "all " + std::to_string(h.before.open_sides)
+                                    : std::to_string(h.before.open_sides - h.after.open_sides) +
+                                          " of their " + std::to_string(h.before.open_sides)) +
            " open sides (" + std::to_string(h.within) + " open corners lie within " + eps +
            " of another open side's)";
   if (h.gaps)
@@ -56,14 +55,14 @@ std::string open_words(const std::string& path, const RepairReport& r, uint32_t 
   const std::string made = path + ": " + of_shells(open, r.shells, "open as made");
   if (h.near == 0)
     return made + ": no other open side's corner lies within 1/" +
-           std::to_string(int(kGapBelowSide)) + " of a side's length, so no weld closes it; " +
-           kRight;
-  return made + ": their open corners' gaps (" + number(h.nearest) + " to " + number(h.farthest) +
-         ") share no scale, and " + weld + " would " + trial_harm(h) + "; " + kRight;
+           std::to_string(int(kGapBelowSide)) + " of a side's length, so no weld closes " +
+           (open == 1 ? "it; " : "them; ") + kRight;
+  return made + " (no common gap: " + weld + " would " + trial_harm(h) + "); " + kRight;
 }
 
 // Where the first shell that cannot be oriented shows it.
-std::string unorientable_words(const std::string& path, const RepairReport& r) {
+// `said`: the open shells' line said already that faces hide from both sides.
+std::string unorientable_words(const std::string& path, const RepairReport& r, bool said) {
   const ShellProblem& p = r.problem;
   const uint32_t n = r.unorientable_shells;
   const std::string s =
@@ -92,8 +91,8 @@ std::string unorientable_words(const std::string& path, const RepairReport& r) {
     return t;
   };
   return s + ": " + what + " from " + point(p.from) + " to " + point(p.to) +
-         (p.line > 0 ? ", of the face at " + path + ":" + std::to_string(p.line) : "") +
-         "; faces hide from both sides";
+         (p.line > 0 ? ", of the face on line " + std::to_string(p.line) : "") +
+         (said ? "" : "; faces hide from both sides");
 }
 
 }  // namespace
@@ -103,7 +102,7 @@ std::string shells_note(const std::string& path, const RepairReport& r) {
   std::string note;
   if (open > 0) note = open_words(path, r, open);
   if (r.unorientable_shells > 0)
-    note += (note.empty() ? "" : "\nhaloplot: ") + unorientable_words(path, r);
+    note += (note.empty() ? "" : "\nhaloplot: ") + unorientable_words(path, r, !note.empty());
   return note;
 }
 

@@ -90,11 +90,11 @@ EOF
 fin_lines=$(awk '$1 == "f" { has1 = has2 = 0; for (i = 2; i <= NF; i++) { has1 += $i == 1; has2 += $i == 2 }
   if (has1 && has2) print NR }' fin.obj | tr '\n' ' ')
 "$tool" plot fin.obj --mode hidden-removed -o fin.svg 2> err.txt
-line=$(grep -o 'cannot be oriented: a side on 3 faces from ([^)]*) to ([^)]*), of the face at fin.obj:[0-9]*' err.txt | sed 's/.*fin.obj://')
+line=$(grep -o 'fin.obj: its shell cannot be oriented: a side on 3 faces from ([^)]*) to ([^)]*), of the face on line [0-9]*' err.txt | sed 's/.* //')
 ends=$(grep -o 'a side on 3 faces from ([^)]*) to ([^)]*)' err.txt | sed 's/.*from //')
 if [ -n "$line" ] && [[ " $fin_lines" == *" $line "* ]] &&
    { [ "$ends" = "(0, 0, 0) to (1, 0, 0)" ] || [ "$ends" = "(1, 0, 0) to (0, 0, 0)" ]; }; then
-  ok "the fin: the side on three faces, $ends, named at fin.obj:$line (its faces are on lines $fin_lines)"
+  ok "the fin: the side on three faces, $ends, named on line $line (its faces are on lines $fin_lines)"
 else
   bad "the fin: not the side from (0, 0, 0) to (1, 0, 0) at one of lines $fin_lines: $(cat err.txt)"
 fi
