@@ -26,8 +26,9 @@
 namespace haloplot::host {
 
 // One place where the first shell that cannot be oriented shows why, for the message: a side
-// on three or more faces, or else a side whose two faces are wound the same way along it where
-// the shell's orientation, carried both ways round, meets itself (a Moebius strip's seam).
+// on three or more faces, or else a side its two faces run the same way as the file gives them
+// (a shell that cannot be oriented has one: else the file's own winding would orient it; where
+// the file is wound consistently but for a seam, a Moebius strip's, it is on the seam).
 struct ShellProblem {
   uint32_t faces_on_side = 0;  // 0: no such shell; 2: a twist; 3 or more: that many faces
   uint32_t line = 0;           // the model-file line of a face on the side (0: not known)
