@@ -148,8 +148,18 @@ bool read_model(const Options& given, const std::string& path, ObjModel* model,
   }
   RepairReport report;
   weld_tolerance(o, *model, &tolerance, error);  // checked above: now in this model's units
+  // A weld asked for: the file as read, kept to compare with the default weld if a shell is
+  // left not closed (the message says when the weld asked for did worse).
+  ObjModel as_read;
+  const bool asked = repair != nullptr && tolerance >= 0 && !o.get("--weld").empty();
+  if (asked) as_read = *model;
   if (tolerance >= 0) weld_vertices(model, tolerance, &report);
   orient_shells(model, &report);
+  if (asked && report.shells > report.closed_shells) {
+    report.compared = true;
+    report.with_given = try_weld(as_read, tolerance);
+    report.with_default = try_weld(std::move(as_read), weld_distance(*model));
+  }
   // Open shells after the default weld: are they gaps a larger weld closes, or open as made?
   // (Measured only for the message, where a caller asks for the report.)
   if (repair != nullptr && o.get("--weld").empty() &&
@@ -560,7 +570,7 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
   View view;
   RepairReport repair;
   if (!project_obj(o, path, &model, &scene->vertices, &view, error, &repair)) return false;
-  scene->repair_note = shells_note(path, repair);
+  scene->repair_note = shells_note(path, repair, o.get("--weld"));
   scene->repair_stats = shells_stats(repair, model.scale);
   const std::string crease = crease_hint(path, repair);
   if (!crease.empty())

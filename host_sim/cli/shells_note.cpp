@@ -21,15 +21,21 @@ std::string of_shells(uint32_t n, uint32_t shells, const std::string& what) {
          (n == 1 ? "is " : "are ") + what;
 }
 
+// "1 side", "3 sides".
+std::string count(uint32_t n, const std::string& one, const std::string& more) {
+  return std::to_string(n) + " " + (n == 1 ? one : more);
+}
+
 // What welding at the hint's EPS would do instead of closing the gaps.
 std::string trial_harm(const WeldHint& h) {
   const WeldTrial &b = h.before, &a = h.after;
   if (a.nonmanifold_sides > b.nonmanifold_sides)
-    return "put " + std::to_string(a.nonmanifold_sides - b.nonmanifold_sides) +
-           " more sides on 3+ faces";
+    return "put " + count(a.nonmanifold_sides - b.nonmanifold_sides, "more side", "more sides") +
+           " on 3+ faces";
   if (a.unorientable_shells > b.unorientable_shells)
-    return "leave " + std::to_string(a.unorientable_shells - b.unorientable_shells) +
-           " more shells that cannot be oriented";
+    return "leave " +
+           count(a.unorientable_shells - b.unorientable_shells, "more shell", "more shells") +
+           " that cannot be oriented";
   return "close no open side";
 }
 
@@ -41,16 +47,21 @@ std::string open_words(const std::string& path, const RepairReport& r, uint32_t 
   if (!r.measured) return head + "; faces hide from both sides";
   const WeldHint& h = r.weld;
   const std::string eps = number(h.eps), weld = "--weld " + eps;
+  const std::string near = count(h.within, "open corner lies", "open corners lie") + " within " +
+                           eps + " of another open side's";
+  const uint32_t dropped =
+      h.after.dropped_faces - std::min(h.after.dropped_faces, h.before.dropped_faces);
   if (h.suggest)
     return head + ": " + weld + " would close " +
            (h.after.open_sides == 0 ? "all " + std::to_string(h.before.open_sides)
                                     : std::to_string(h.before.open_sides - h.after.open_sides) +
                                           " of their " + std::to_string(h.before.open_sides)) +
-           " open sides (" + std::to_string(h.within) + " open corners lie within " + eps +
-           " of another open side's)";
+           " open sides (" + near +
+           (dropped > 0 ? "; it drops " + count(dropped, "face", "faces") + " narrower than that"
+                        : "") +
+           ")";
   if (h.gaps)
-    return head + ": " + std::to_string(h.within) + " open corners lie within " + eps +
-           " of another open side's, but " + weld + " would " + trial_harm(h) + "; left as made, " +
+    return head + ": " + near + ", but " + weld + " would " + trial_harm(h) + "; left as made, " +
            kRight;
   const std::string made = path + ": " + of_shells(open, r.shells, "open as made");
   if (h.near == 0)
@@ -95,14 +106,35 @@ std::string unorientable_words(const std::string& path, const RepairReport& r, b
          (said ? "" : "; faces hide from both sides");
 }
 
+// With --weld EPS given: what it did worse than the default weld, if anything.
+std::string weld_words(const std::string& path, const RepairReport& r, const std::string& weld) {
+  const WeldTrial &g = r.with_given, &d = r.with_default;
+  std::string worse;
+  auto add = [&](uint32_t given, uint32_t by_default, const std::string& one,
+                 const std::string& more) {
+    if (given <= by_default) return;
+    worse += (worse.empty() ? "" : ", ") + count(given, one, more) +
+             " (the default: " + std::to_string(by_default) + ")";
+  };
+  add(g.nonmanifold_sides, d.nonmanifold_sides, "side on 3+ faces", "sides on 3+ faces");
+  add(g.unorientable_shells, d.unorientable_shells, "shell that cannot be oriented",
+      "shells that cannot be oriented");
+  add(g.open_sides, d.open_sides, "open side", "open sides");
+  if (!r.compared || worse.empty()) return "";
+  return path + ": --weld " + weld +
+         " leaves more to mend than the default weld (no --weld): " + worse;
+}
+
 }  // namespace
 
-std::string shells_note(const std::string& path, const RepairReport& r) {
+std::string shells_note(const std::string& path, const RepairReport& r, const std::string& weld) {
   const uint32_t open = r.shells - r.closed_shells - r.unorientable_shells;
   std::string note;
   if (open > 0) note = open_words(path, r, open);
   if (r.unorientable_shells > 0)
     note += (note.empty() ? "" : "\nhaloplot: ") + unorientable_words(path, r, !note.empty());
+  const std::string worse = weld_words(path, r, weld);
+  if (!worse.empty()) note += (note.empty() ? "" : "\nhaloplot: ") + worse;
   return note;
 }
 

@@ -12,8 +12,10 @@ namespace haloplot::host {
 // sides it closes, or that they are open as made (no corner of another open side near: no
 // weld closes them, and the hidden lines are right, every face hiding from both sides). A
 // shell that cannot be oriented: one place it shows (FILE:LINE, or the coordinates), on its
-// own line when there are open shells too.
-std::string shells_note(const std::string& path, const RepairReport& r);
+// own line when there are open shells too. With --weld `weld` given (RepairReport::compared),
+// a line more if it leaves more to mend than the default weld: more sides on three or more
+// faces, more shells that cannot be oriented or more open sides.
+std::string shells_note(const std::string& path, const RepairReport& r, const std::string& weld);
 
 // The measurements as key=value lines (--stats): open_sides=..., weld_hint=... Empty when
 // nothing was measured.

@@ -53,6 +53,10 @@ struct RepairReport {
   bool measured = false;
   OpenSides open;
   WeldHint weld;
+  // With --weld EPS given and a shell not closed: the file welded at EPS and at the default
+  // weld_distance, compared (a weld too wide makes sides on three faces of a model's fins).
+  bool compared = false;
+  WeldTrial with_given, with_default;
 };
 
 // How far a vertex may lie from where the exporter meant it, per coordinate, in world units:

@@ -8,7 +8,10 @@
 #   closed solid (no message, no boundary edge);
 # - an open hemisphere (a rim and no other open side): "open as made", no --weld named;
 # - a tetrahedron with a fin on one edge (a side on three faces): the message names the line
-#   of one of the three faces on that side, and that side's two ends.
+#   of one of the three faces on that side, and that side's two ends;
+# - a book of three open pages whose spines are 0.001 apart: the --weld named does no harm
+#   (joining all three would put the spine on three faces), and --weld 0.01, which does, is
+#   told so.
 # Usage: plot_weld_hint.sh HALOPLOT
 set -u
 tool="$1"
@@ -97,6 +100,31 @@ if [ -n "$line" ] && [[ " $fin_lines" == *" $line "* ]] &&
   ok "the fin: the side on three faces, $ends, named on line $line (its faces are on lines $fin_lines)"
 else
   bad "the fin: not the side from (0, 0, 0) to (1, 0, 0) at one of lines $fin_lines: $(cat err.txt)"
+fi
+
+# A book of three open pages on one spine, each page's spine 0.001 farther along x: a weld
+# that joins all three spines puts the spine on three faces. What the message names must not:
+# fewer open sides (of 12), no side on three faces, no shell that cannot be oriented. A weld
+# asked for that does (0.01) is told it leaves more to mend than the default weld.
+awk 'BEGIN { pi = 3.14159265358979
+  for (k = 0; k < 3; k++) { a = 2 * pi * k / 3; d = k * 0.001
+    printf "v %.6f 0 0\nv %.6f 0 1\nv %.6f %.6f 1\nv %.6f %.6f 0\n", d, d, cos(a), sin(a), cos(a), sin(a)
+    printf "f %d %d %d %d\n", 4 * k + 1, 4 * k + 2, 4 * k + 3, 4 * k + 4 } }' > book.obj
+"$tool" plot book.obj --mode hidden-removed -o book.svg 2> err.txt
+book_eps=$(grep -o -- '--weld [0-9.e-]* would close' err.txt | awk '{ print $2 }')
+if [ -n "$book_eps" ] &&
+   "$tool" plot book.obj --mode hidden-removed --weld "$book_eps" -o book.svg --stats 2> err2.txt &&
+   awk -F= '$1 == "boundary_edges" { b = $2 } $1 == "nonmanifold_edges" { n = $2 }
+     END { exit !(b != "" && b < 12 && n == 0) }' err2.txt && ! grep -q "cannot be oriented" err2.txt; then
+  ok "the book: --weld $book_eps closes open sides and puts no side on three faces"
+else
+  bad "the book: the weld named ('$book_eps') does harm or nothing: $(cat err.txt err2.txt 2> /dev/null)"
+fi
+"$tool" plot book.obj --mode hidden-removed --weld 0.01 -o book.svg 2> err.txt
+if grep -q "book.obj: --weld 0.01 leaves more to mend than the default weld (no --weld): 1 side on 3+ faces (the default: 0)" err.txt; then
+  ok "the book: --weld 0.01 is told it leaves more to mend than the default weld"
+else
+  bad "the book: --weld 0.01 is not told it did worse: $(cat err.txt)"
 fi
 
 echo "plot_weld_hint: $pass passed, $fail failed"
