@@ -148,17 +148,17 @@ bool read_model(const Options& given, const std::string& path, ObjModel* model,
   }
   RepairReport report;
   weld_tolerance(o, *model, &tolerance, error);  // checked above: now in this model's units
-  // A weld asked for: the file as read, kept to compare with the default weld if a shell is
-  // left not closed (the message says when the weld asked for did worse).
-  ObjModel as_read;
-  const bool asked = repair != nullptr && tolerance >= 0 && !o.get("--weld").empty();
-  if (asked) as_read = *model;
   if (tolerance >= 0) weld_vertices(model, tolerance, &report);
   orient_shells(model, &report);
-  if (asked && report.shells > report.closed_shells) {
+  // A weld asked for that leaves a shell not closed: the file read again (not kept: a closed
+  // model's plot pays nothing) and welded at EPS and at the default, for the message to say
+  // when the weld asked for did worse.
+  ObjModel again;
+  if (repair != nullptr && tolerance >= 0 && !o.get("--weld").empty() &&
+      report.shells > report.closed_shells && !read_mesh_file(path, &again).failed()) {
     report.compared = true;
-    report.with_given = try_weld(as_read, tolerance);
-    report.with_default = try_weld(std::move(as_read), weld_distance(*model));
+    report.with_given = try_weld(again, tolerance);
+    report.with_default = try_weld(std::move(again), weld_distance(*model));
   }
   // Open shells after the default weld: are they gaps a larger weld closes, or open as made?
   // (Measured only for the message, where a caller asks for the report.)
