@@ -175,6 +175,7 @@ bool read_model(const Options& given, const std::string& path, ObjModel* model,
     report.measured = true;
     report.open = measure_open_sides(*model);
     report.weld = weld_hint(*model, report.open);
+    give_back_freed_memory();  // the measure's (see above)
   }
   if (!exact) crease.rounding = vertex_rounding(*model);
   drop_flat_edges(model, crease, &report);
