@@ -80,19 +80,6 @@ Wide mul_wide_i64(Wide a, int64_t b) {
   return neg ? -r : r;
 }
 
-CoverPoint vertex_toward(const Point3& p, const Point3& to) {
-  CoverPoint c;
-  c.x = p.x;
-  c.y = p.y;
-  c.d = 1;
-  c.zn = Wide::from_i64(p.z);
-  c.zd = 1;
-  c.dir_x = to.x - p.x;
-  c.dir_y = to.y - p.y;
-  c.dir_z = to.z - p.z;
-  return c;
-}
-
 CoverPoint edge_point(const Edge3& e, int64_t m) {
   constexpr int64_t kOne = int64_t{1} << 32;
   const int64_t dx = e.b.x - e.a.x, dy = e.b.y - e.a.y, dz = e.b.z - e.a.z;

@@ -19,7 +19,45 @@ struct Ctx {
   // Where edges pass through faces (the mesh pierces itself: qi.h), the faces to ask; null
   // when the mesh needs none.
   const FaceGrid* pierce_grid = nullptr;
+  // Per vertex, what its star's cover is without asking its faces (plain_star); null: ask.
+  const uint8_t* plain = nullptr;
 };
+
+// Vertex v's star seen from v's own point, which the walk asks about each edge of v: plain when
+// star_cover is 0 there whatever it asks. Only for a mesh whose faces hide from the front alone
+// (closed and consistently oriented: each side of a face has exactly two faces, one traversing
+// it each way, so v's star is closed fans), in two cases:
+// - kNoFrontFace: no face of the star faces the viewer; none counts.
+// - kOneFan: every face faces it (doubled area > 0) and the fans wind once around v in all.
+//   Their corners at v then split the turn into sectors between distinct rays, one to each
+//   neighbour, and a nudge along one of those rays (along a side of a face) lies strictly
+//   outside every face but the two along it, which hold it in their plane (star_cover).
+// The winding: how many faces' half-open sectors (side out of v, side into v] hold the ray of
+// one side, r; each fan holds it as many times as it winds round, and there is at least one fan.
+constexpr uint8_t kAskFaces = 0, kNoFrontFace = 1, kOneFan = 2;
+
+uint8_t plain_star(const Topology& topo, const uint8_t* front, uint32_t v) {
+  const uint32_t k0 = topo.vertex_face_first[v], k1 = topo.vertex_face_first[v + 1];
+  uint32_t fronts = 0;
+  for (uint32_t k = k0; k < k1; ++k) fronts += front[topo.vertex_faces[k]] != 0;
+  if (fronts == 0) return kNoFrontFace;
+  if (fronts != k1 - k0) return kAskFaces;  // a contour passes through v
+  const Point3 a = topo.vertices[v];
+  int64_t rx = 0, ry = 0;
+  uint32_t winding = 0;
+  for (uint32_t k = k0; k < k1; ++k) {
+    const uint32_t* tv = topo.triangles[topo.vertex_faces[k]].v;
+    const uint32_t i1 = tv[0] == v ? tv[1] : (tv[1] == v ? tv[2] : tv[0]);
+    const uint32_t i2 = tv[0] == v ? tv[2] : (tv[1] == v ? tv[0] : tv[1]);
+    // 21-bit differences: the products stay below 2^43 (corner_cover_halves' budget).
+    const int64_t ux = topo.vertices[i1].x - a.x, uy = topo.vertices[i1].y - a.y;
+    const int64_t wx = topo.vertices[i2].x - a.x, wy = topo.vertices[i2].y - a.y;
+    if (ux * wy - uy * wx <= 0) return kAskFaces;
+    if (k == k0) rx = ux, ry = uy;
+    winding += ux * ry - uy * rx > 0 && rx * wy - ry * wx >= 0;
+  }
+  return winding == 1 ? kOneFan : kAskFaces;
+}
 
 int face_cover(const Ctx& c, uint32_t t, const CoverPoint& p) {
   const uint32_t* v = c.topo.triangles[t].v;
@@ -33,6 +71,32 @@ int faces_of_vertex(const Ctx& c, uint32_t v, const CoverPoint& p) {
   int sum = 0;
   for (uint32_t k = c.topo.vertex_face_first[v]; k < c.topo.vertex_face_first[v + 1]; ++k)
     sum += face_cover(c, c.topo.vertex_faces[k], p);
+  return sum;
+}
+
+// faces_of_vertex(c, v, p) where p is v's own point at v's depth nudged toward vertex `to`
+// (vertex_toward(v, to)): each face asked with v as its first corner, by corner_cover_halves.
+// A face with `to` as a corner holds the nudge in its plane: level and rising as steeply, it
+// never covers (its rise times the area is dir_z times the area, exactly), so it is not asked.
+// along_face: the edge from v to `to` is a side of a face.
+int star_cover(const Ctx& c, uint32_t v, uint32_t to, bool along_face, const CoverPoint& p) {
+  if (c.plain != nullptr && (c.plain[v] == kNoFrontFace || (c.plain[v] == kOneFan && along_face)))
+    return 0;
+  const Point3& a = c.topo.vertices[v];
+  int sum = 0;
+  for (uint32_t k = c.topo.vertex_face_first[v]; k < c.topo.vertex_face_first[v + 1]; ++k) {
+    const uint32_t t = c.topo.vertex_faces[k];
+    if (!c.two_sided && !c.front[t]) continue;
+    const uint32_t* tv = c.topo.triangles[t].v;
+    // The other two corners in the triangle's turn, v first (a turn keeps the doubled area).
+    const uint32_t i1 = tv[0] == v ? tv[1] : (tv[1] == v ? tv[2] : tv[0]);
+    const uint32_t i2 = tv[0] == v ? tv[2] : (tv[1] == v ? tv[0] : tv[1]);
+    if (i1 == to || i2 == to) continue;
+    const Point3 &b = c.topo.vertices[i1], &d = c.topo.vertices[i2];
+    // A face seen from behind covers as the same face wound the other way round (face_cover).
+    const bool flip = c.two_sided && projected_area2(a, b, d) < 0;
+    sum += flip ? corner_cover_halves(a, d, b, p) : corner_cover_halves(a, b, d, p);
+  }
   return sum;
 }
 
@@ -60,9 +124,11 @@ struct Local {
   int total() const { return star + same + through; }
 };
 
-Local local_cover(const Ctx& c, uint32_t v, const CoverPoint& p) {
+// The local cover at vertex v's own point, nudged toward vertex `to`: p is
+// vertex_toward(v, to), as every caller asks.
+Local local_cover(const Ctx& c, uint32_t v, uint32_t to, bool along_face, const CoverPoint& p) {
   Local l;
-  l.star = faces_of_vertex(c, v, p);
+  l.star = star_cover(c, v, to, along_face, p);
   for (uint32_t u = c.inc.same_next[v]; u != v; u = c.inc.same_next[u])
     l.same += faces_of_vertex(c, u, p);
   for (uint32_t k = c.inc.vertex_first[v]; k < c.inc.vertex_first[v + 1]; ++k)
@@ -202,7 +268,7 @@ int32_t cast_base(const Ctx& c, const FaceGrid& fg, uint32_t v, uint32_t to) {
   int32_t q = 0;
   for (const uint32_t* t = fg.begin(pv.x, pv.y); t != fg.end(pv.x, pv.y); ++t)
     q += face_cover(c, *t, p);
-  return q - local_cover(c, v, p).total();
+  return q - local_cover(c, v, to, false, p).total();
 }
 
 }  // namespace
@@ -253,6 +319,7 @@ size_t qi_bytes(const Topology& topo, uint32_t part_vertices) {
   c.take<int32_t>(topo.n_vertices);
   c.take<int32_t>(topo.n_edges);
   c.take<uint32_t>(topo.n_vertices);
+  c.take<uint8_t>(topo.n_vertices);  // plain
   if (sp.n_parts > 1) {
     c.take<uint32_t>(2 * size_t{sp.n_parts} + 1);
     c.take<CrossRecord>(crossing_edges(topo, sp));
@@ -290,13 +357,14 @@ void spread(const Ctx& c, QiState& s, const Own& own, uint32_t* queue, uint32_t 
         s.q_at_v0[e] = s.base[v];  // a point: nothing is drawn from it
       } else {
         const Point3 pv = topo.vertices[v], px = topo.vertices[x];
-        const Local start = local_cover(c, v, vertex_toward(pv, px));
+        const bool along_face = se.face[0] != kNoFace || se.face[1] != kNoFace;
+        const Local start = local_cover(c, v, x, along_face, vertex_toward(pv, px));
         count_local(start, &st);
         const int32_t q0 = s.base[v] + start.total();
         if ((q0 & 1) != 0) ++st.occluded;
         const bool forward = se.v0 == v;
         const int32_t q1 = walk(c, e, forward, q0, &st, [](int64_t, int64_t, int32_t) {});
-        const Local end = local_cover(c, x, vertex_toward(px, pv));
+        const Local end = local_cover(c, x, v, along_face, vertex_toward(px, pv));
         count_local(end, &st);
         arrive_base = q1 - end.total();
         s.q_at_v0[e] = forward ? q0 : q1;
@@ -382,6 +450,27 @@ void run_worker(void* arg, uint32_t w) {
   for (uint32_t k = w; k < r.sp.n_parts; k += r.workers) run_part(r, k);
 }
 
+// The plain stars of vertices [lo, hi), into plain (written by no other part).
+void fill_plain(const Ctx& c, uint8_t* plain, uint32_t lo, uint32_t hi) {
+  for (uint32_t v = lo; v < hi; ++v) plain[v] = plain_star(c.topo, c.front, v);
+}
+
+struct PlainRun {
+  const Ctx* c;
+  uint8_t* plain;
+  Split sp;
+  uint32_t workers;
+};
+
+void plain_worker(void* arg, uint32_t w) {
+  const PlainRun& r = *static_cast<const PlainRun*>(arg);
+  const uint32_t n = r.c->topo.n_vertices;
+  for (uint32_t k = w; k < r.sp.n_parts; k += r.workers) {
+    const uint32_t lo = k * r.sp.part_vertices;
+    fill_plain(*r.c, r.plain, lo, n - lo < r.sp.part_vertices ? n : lo + r.sp.part_vertices);
+  }
+}
+
 }  // namespace
 
 Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cutset,
@@ -405,6 +494,7 @@ Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cu
   s.base = carve.take<int32_t>(topo.n_vertices);
   s.q_at_v0 = carve.take<int32_t>(topo.n_edges);
   uint32_t* queue = carve.take<uint32_t>(topo.n_vertices);
+  uint8_t* plain = carve.take<uint8_t>(topo.n_vertices);
   PartRun r{};
   if (sp.n_parts > 1) {
     r.cross_first = carve.take<uint32_t>(2 * size_t{sp.n_parts} + 1);
@@ -420,6 +510,18 @@ Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cu
   }
   for (uint32_t v = 0; v < topo.n_vertices; ++v) s.base[v] = kQiUnknown;
   for (uint32_t e = 0; e < topo.n_edges; ++e) s.q_at_v0[e] = kQiUnknown;
+  const Parts runner = split.parts != nullptr ? *split.parts : Parts{};
+  if (!s.two_sided) {
+    // Before any walk: a part's walks ask the stars of other parts' vertices where they end.
+    if (sp.n_parts == 1) {
+      fill_plain(c, plain, 0, topo.n_vertices);
+    } else {
+      const uint32_t want = runner.split();
+      PlainRun pr{&c, plain, sp, want < sp.n_parts ? want : sp.n_parts};
+      run_parts(runner, pr.workers, &plain_worker, &pr);
+    }
+    c.plain = plain;
+  }
   QiStats st;
   uint32_t none = 0;
   if (sp.n_parts == 1) {
@@ -439,7 +541,6 @@ Status propagate_qi(const Topology& topo, const uint8_t* front, const CutSet& cu
     r.s = &s;
     r.sp = sp;
     r.queue = queue;
-    const Parts runner = split.parts != nullptr ? *split.parts : Parts{};
     const uint32_t want = runner.split();
     r.workers = want < sp.n_parts ? want : sp.n_parts;
     run_parts(runner, r.workers, &run_worker, &r);

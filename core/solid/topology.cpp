@@ -15,6 +15,11 @@ struct SideKey {
   uint32_t ref;  // drawn edge index
 };
 
+// Side j of a triangle runs from its corner j to the next. The loops over sides take each
+// triangle's three in turn (side s = 3 t + j, in the same order as s counting up) rather than
+// dividing s by 3 twice over for each.
+uint32_t next_corner(uint32_t j) { return j == 2 ? 0 : j + 1; }
+
 uint64_t key_of(uint32_t a, uint32_t b) {
   return a < b ? (uint64_t{a} << 32) | b : (uint64_t{b} << 32) | a;
 }
@@ -142,13 +147,15 @@ bool side_in_rows(const SolidInput& in, const TopologyOptions& options, uint32_t
 uint32_t undrawn_sides(const SolidInput& in, const TopologyOptions& options, const DrawnKeys& drawn,
                        uint32_t t0, uint32_t t1, uint64_t* side) {
   uint32_t n_side = 0;
-  for (uint32_t s = 3 * t0; s < 3 * t1; ++s) {
-    const Triangle& tri = in.triangles[s / 3];
-    const uint32_t a = tri.v[s % 3], b = tri.v[(s % 3 + 1) % 3];
-    const uint64_t k = key_of(a, b);
-    if (drawn.find(k) != in.n_edges || !side_in_rows(in, options, a, b)) continue;
-    if (side != nullptr) side[n_side] = k;
-    ++n_side;
+  for (uint32_t t = t0; t < t1; ++t) {
+    const Triangle& tri = in.triangles[t];
+    for (uint32_t j = 0; j < 3; ++j) {
+      const uint32_t a = tri.v[j], b = tri.v[next_corner(j)];
+      const uint64_t k = key_of(a, b);
+      if (drawn.find(k) != in.n_edges || !side_in_rows(in, options, a, b)) continue;
+      if (side != nullptr) side[n_side] = k;
+      ++n_side;
+    }
   }
   return n_side;
 }
@@ -229,14 +236,15 @@ void sort_sides(Build& b) {
 // side order.
 template <typename F>
 void undrawn_by_vertex(const Build& b, uint32_t v_lo, uint32_t v_hi, F f) {
-  const uint32_t sides = b.in.n_triangles * 3;
-  for (uint32_t s = 0; s < sides; ++s) {
-    const Triangle& tri = b.in.triangles[s / 3];
-    const uint32_t a = tri.v[s % 3], c = tri.v[(s % 3 + 1) % 3];
-    const uint32_t lesser = a < c ? a : c;
-    if (lesser < v_lo || lesser >= v_hi) continue;
-    const uint64_t key = key_of(a, c);
-    if (b.drawn.find(key) == b.in.n_edges && side_in_rows(b.in, b.options, a, c)) f(key);
+  for (uint32_t t = 0; t < b.in.n_triangles; ++t) {
+    const Triangle& tri = b.in.triangles[t];
+    for (uint32_t j = 0; j < 3; ++j) {
+      const uint32_t a = tri.v[j], c = tri.v[next_corner(j)];
+      const uint32_t lesser = a < c ? a : c;
+      if (lesser < v_lo || lesser >= v_hi) continue;
+      const uint64_t key = key_of(a, c);
+      if (b.drawn.find(key) == b.in.n_edges && side_in_rows(b.in, b.options, a, c)) f(key);
+    }
   }
 }
 
@@ -354,28 +362,29 @@ void number_edges(Build& b) {
 // side running v0 -> v1 takes slot 0, v1 -> v0 slot 1 (the other when taken).
 void attach_range(Build& b, uint32_t v_lo, uint32_t v_hi) {
   const SolidInput& in = b.in;
-  const uint32_t sides = in.n_triangles * 3;
-  for (uint32_t s = 0; s < sides; ++s) {
-    const Triangle& tri = in.triangles[s / 3];
-    const uint32_t a = tri.v[s % 3], b_ = tri.v[(s % 3 + 1) % 3];
-    const uint32_t lesser = a < b_ ? a : b_;
-    if (lesser < v_lo || lesser >= v_hi) continue;
-    const uint64_t key = key_of(a, b_);
-    const uint32_t d = b.drawn.find(key);
-    uint32_t edge;
-    if (d < in.n_edges)
-      edge = b.drawn[d].ref;
-    else if (side_in_rows(in, b.options, a, b_))
-      edge = b.find_diagonal(key);
-    else
-      continue;  // a band's side beyond its rows
-    SolidEdge& e = b.t.edges[edge];
-    const int slot = a == e.v0 ? 0 : 1;
-    if (b.nfaces[edge] < 255) ++b.nfaces[edge];
-    if (e.face[slot] == kNoFace)
-      e.face[slot] = s / 3;
-    else if (e.face[1 - slot] == kNoFace)
-      e.face[1 - slot] = s / 3;  // kept so the edge still has two faces; counted below
+  for (uint32_t t = 0; t < in.n_triangles; ++t) {
+    const Triangle& tri = in.triangles[t];
+    for (uint32_t j = 0; j < 3; ++j) {
+      const uint32_t a = tri.v[j], b_ = tri.v[next_corner(j)];
+      const uint32_t lesser = a < b_ ? a : b_;
+      if (lesser < v_lo || lesser >= v_hi) continue;
+      const uint64_t key = key_of(a, b_);
+      const uint32_t d = b.drawn.find(key);
+      uint32_t edge;
+      if (d < in.n_edges)
+        edge = b.drawn[d].ref;
+      else if (side_in_rows(in, b.options, a, b_))
+        edge = b.find_diagonal(key);
+      else
+        continue;  // a band's side beyond its rows
+      SolidEdge& e = b.t.edges[edge];
+      const int slot = a == e.v0 ? 0 : 1;
+      if (b.nfaces[edge] < 255) ++b.nfaces[edge];
+      if (e.face[slot] == kNoFace)
+        e.face[slot] = t;
+      else if (e.face[1 - slot] == kNoFace)
+        e.face[1 - slot] = t;  // kept so the edge still has two faces; counted below
+    }
   }
 }
 
@@ -438,10 +447,9 @@ void build_stars(const SolidInput& in, Topology& t, const Parts* parts) {
       if (v0 >= lo && v0 < hi) ++edge_next[v0];
       if (v1 >= lo && v1 < hi) ++edge_next[v1];
     }
-    for (uint32_t s = 0; s < sides; ++s) {
-      const uint32_t v = in.triangles[s / 3].v[s % 3];
-      if (v >= lo && v < hi) ++face_next[v];
-    }
+    for (uint32_t f = 0; f < in.n_triangles; ++f)
+      for (const uint32_t v : in.triangles[f].v)
+        if (v >= lo && v < hi) ++face_next[v];
   };
   each_part(parts, k, count);
   // The starts, each vertex's at first[v]; the next slot of v is first[v + 1] while filling.
@@ -461,10 +469,9 @@ void build_stars(const SolidInput& in, Topology& t, const Parts* parts) {
       if (v0 >= lo && v0 < hi) t.vertex_edges[edge_next[v0]++] = e;
       if (v1 >= lo && v1 < hi) t.vertex_edges[edge_next[v1]++] = e;
     }
-    for (uint32_t s = 0; s < sides; ++s) {
-      const uint32_t v = in.triangles[s / 3].v[s % 3];
-      if (v >= lo && v < hi) t.vertex_faces[face_next[v]++] = s / 3;
-    }
+    for (uint32_t f = 0; f < in.n_triangles; ++f)
+      for (const uint32_t v : in.triangles[f].v)
+        if (v >= lo && v < hi) t.vertex_faces[face_next[v]++] = f;
   };
   each_part(parts, k, fill);
   // Each next slot ends where the vertex's star ends: first[v + 1], as it should be.
