@@ -172,34 +172,41 @@ inline uint32_t crossing_position(int64_t num, int64_t den) {
   return frac_q32_small(num, den);
 }
 
+// C6.3-C6.5 for a pair whose projections cross at x (test_crossing()'s result).
+template <typename Entry>
+void record_crossing(const Grid&, const CellBox& cb, const Edge3* edges, const Entry& ei,
+                     const Entry& ej, const CrossingTest& x, Recorder& rec, CutStats& st) {
+  const auto& p = ei.segment(edges);
+  const uint32_t ep = ei.edge, eq = ej.edge;
+  // C6.3: report the crossing only in the cell that holds it, decided exactly.
+  if (!owns(cb, p.a.x, p.b.x - p.a.x, p.a.y, p.b.y - p.a.y, x.tn, x.den)) {
+    ++st.rejected;
+    return;
+  }
+  const int depth = compare_depth_at_crossing(ei.depths(edges), ej.depths(edges), x);  // C6.4
+  if (depth == 0) {
+    ++st.equal_depth;
+    return;
+  }
+  const uint32_t behind = depth < 0 ? ep : eq, front = depth < 0 ? eq : ep;
+  const uint32_t t = crossing_position(depth < 0 ? x.tn : x.un, x.den);
+  if (rec.rows && !position_in_rows(edges[behind], t, rec.row_lo, rec.row_hi)) {
+    ++st.outside_rows;
+    return;
+  }
+  ++st.crossings;
+  rec.add(behind, front, t);
+}
+
 // C6.2-C6.5 for one pair inside a cell whose boxes overlap (or that crosses, by
 // crossing_mask); edge ei < edge ej. Near misses go back to the full edges.
 template <typename Entry>
 void test_pair(const Grid& g, const CellBox& cb, const Edge3* edges, const Entry& ei,
                const Entry& ej, int32_t reach, Recorder& rec, CutStats& st) {
-  const auto& p = ei.segment(edges);
-  const auto& q = ej.segment(edges);
   const uint32_t ep = ei.edge, eq = ej.edge;
-  const CrossingTest x = test_crossing(p, q);
+  const CrossingTest x = test_crossing(ei.segment(edges), ej.segment(edges));
   if (x.crosses) {
-    // C6.3: report the crossing only in the cell that holds it, decided exactly.
-    if (!owns(cb, p.a.x, p.b.x - p.a.x, p.a.y, p.b.y - p.a.y, x.tn, x.den)) {
-      ++st.rejected;
-      return;
-    }
-    const int depth = compare_depth_at_crossing(ei.depths(edges), ej.depths(edges), x);  // C6.4
-    if (depth == 0) {
-      ++st.equal_depth;
-      return;
-    }
-    const uint32_t behind = depth < 0 ? ep : eq, front = depth < 0 ? eq : ep;
-    const uint32_t t = crossing_position(depth < 0 ? x.tn : x.un, x.den);
-    if (rec.rows && !position_in_rows(edges[behind], t, rec.row_lo, rec.row_hi)) {
-      ++st.outside_rows;
-      return;
-    }
-    ++st.crossings;
-    rec.add(behind, front, t);
+    record_crossing(g, cb, edges, ei, ej, x, rec, st);
     return;
   }
   if (reach <= 0) return;
@@ -385,25 +392,51 @@ constexpr bool kDecideEveryPair = kHost;
 
 // Bit (j - j0) set for every j in [j0, j1) (at most 64) whose segment properly crosses P:
 // test_crossing()'s strict sign rule, on the side values it computes, relative to P's start.
-static_assert(kCrossBits + 2 <= 63, "side values, and s4 = s3 + s1 - s2, must fit int64_t");
+// Q's ends relative to P's start are differences of in-range coordinates (|.| < 2^kDiffBits,
+// int32_t), so every side value is a difference of two 32 x 32 -> 64 products.
+static_assert(kCrossBits + 2 <= 62, "side values, and s4 = s3 + s1 - s2, must fit int64_t");
+// The four side values of a pair: s1, s2 (Q's ends against P's line) and s3, s4 (P's ends
+// against Q's line), all relative to P's start; s3 and s4 as test_crossing() has them.
+struct Sides {
+  int64_t s1, s2, s3, s4;
+};
+template <typename Segment>
+inline Sides sides(const Segment& q, int32_t pax, int32_t pay, int32_t pdx, int32_t pdy) {
+  const int32_t qax = q.a.x - pax, qay = q.a.y - pay, qbx = q.b.x - pax, qby = q.b.y - pay;
+  const int64_t s1 = mul_32x32(pdx, qay) - mul_32x32(pdy, qax);
+  const int64_t s2 = mul_32x32(pdx, qby) - mul_32x32(pdy, qbx);
+  // cross(dq, P.a - Q.a) = (qby - qay) qax - (qbx - qax) qay: the qax qay terms cancel.
+  const int64_t s3 = mul_32x32(qax, qby) - mul_32x32(qay, qbx);
+  // P's end: s4 = s3 + cross(dq, dp), and cross(dp, dq) = s2 - s1 (all below 2^44).
+  return Sides{s1, s2, s3, s3 + s1 - s2};
+}
+// Sign bit set exactly when a and b are nonzero with opposite signs (|a|, |b| < 2^62): then
+// one of a & -b, -a & b has both operands negative; if either is 0, or both share a sign, no
+// operand pair is negative together.
+inline int64_t strictly_apart(int64_t a, int64_t b) { return (a & -b) | (-a & b); }
+
 template <typename Entry>
-uint64_t crossing_mask(const Entry* list, const Edge3* edges, int64_t pax, int64_t pay, int64_t pdx,
-                       int64_t pdy, uint32_t j0, uint32_t j1) {
-  auto crosses = [&](uint32_t j) {
-    const auto& q = list[j].segment(edges);
-    const int64_t qax = q.a.x - pax, qay = q.a.y - pay, qbx = q.b.x - pax, qby = q.b.y - pay;
-    const int64_t s1 = pdx * qay - pdy * qax, s2 = pdx * qby - pdy * qbx;  // Q's ends, P's line
-    const int64_t s3 = (qby - qay) * qax - (qbx - qax) * qay;  // P's start against Q's line
-    // P's end: s4 = s3 + cross(dq, dp), and cross(dp, dq) = s2 - s1 (all below 2^43).
-    const int64_t s4 = s3 + s1 - s2;
-    // Strictly apart: signs differ and neither is zero (an end on the other's line).
-    const bool apart12 = ((s1 ^ s2) < 0) & (s1 != 0) & (s2 != 0);
-    const bool apart34 = ((s3 ^ s4) < 0) & (s3 != 0) & (s4 != 0);
-    return apart12 & apart34;
-  };
+uint64_t crossing_mask(const Entry* list, const Edge3* edges, int32_t pax, int32_t pay, int32_t pdx,
+                       int32_t pdy, uint32_t j0, uint32_t j1) {
   uint64_t mask = 0;
-  for (uint32_t j = j0; j < j1; ++j) mask |= uint64_t(crosses(j)) << (j - j0);
+  for (uint32_t j = j1; j-- > j0;) {  // downwards, so j0's bit is shifted last, into bit 0
+    const Sides s = sides(list[j].segment(edges), pax, pay, pdx, pdy);
+    const int64_t both = strictly_apart(s.s1, s.s2) & strictly_apart(s.s3, s.s4);
+    mask = (mask << 1) | (uint64_t(both) >> 63);
+  }
   return mask;
+}
+
+// test_crossing()'s result for a pair the mask found crossing, from the same side values
+// (its tn, un and den, each made positive the same way), without testing the signs again.
+inline CrossingTest crossing_from(const Sides& s) {
+  CrossingTest r;
+  r.crosses = true;
+  r.den = s.s3 - s.s4;
+  r.tn = r.den < 0 ? -s.s3 : s.s3;
+  r.den = r.den < 0 ? -r.den : r.den;
+  r.un = s.s1 - s.s2 < 0 ? -s.s1 : s.s1;
+  return r;
 }
 
 // C6: every pair inside cells [c_begin, c_end). The part that reports progress maps its own
@@ -430,12 +463,15 @@ void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_st
       // each Q's mark first, a branch that seldom goes the other way, and decides no more.
       if (kDecideEveryPair && r == 0 && p_marked) {
         const auto& p = list[i].segment(edges);
-        const int64_t pdx = p.b.x - p.a.x, pdy = p.b.y - p.a.y;
+        const int32_t pdx = p.b.x - p.a.x, pdy = p.b.y - p.a.y;
         for (uint32_t j0 = i + 1; j0 < end; j0 += 64) {
           const uint32_t j1 = end - j0 > 64 ? j0 + 64 : end;
           for (uint64_t m = crossing_mask(list, edges, p.a.x, p.a.y, pdx, pdy, j0, j1); m != 0;
-               m &= m - 1)
-            test_pair(g, cb, edges, list[i], list[j0 + uint32_t(__builtin_ctzll(m))], r, rec, st);
+               m &= m - 1) {
+            const Entry& q = list[j0 + uint32_t(__builtin_ctzll(m))];
+            const Sides sv = sides(q.segment(edges), p.a.x, p.a.y, pdx, pdy);
+            record_crossing(g, cb, edges, list[i], q, crossing_from(sv), rec, st);
+          }
         }
         continue;
       }
