@@ -252,9 +252,14 @@ uint32_t count_and_log(const CutPlan& plan, const Edge3* edges, uint32_t e0, uin
                        uint32_t* count, Visit* log, uint32_t slots) {
   uint32_t logged = 0;
   bool fits = log != nullptr;
+  // Copies: the counts and the log are uint32_t stores, which the compiler must otherwise
+  // assume may change the plan's grid, and so reload it and redo its sums for every edge.
+  const Grid g = plan.grid;
+  const CellCover cover = plan.params.cover;
+  const int32_t reach = plan.params.reach;
   for (uint32_t i = e0; i < e1; ++i) {
     CellBlock b;
-    if (cells_in_block(plan.grid, edges[i], plan.params.cover, plan.params.reach, &b)) {
+    if (cells_in_block(g, edges[i], cover, reach, &b)) {
       fits = fits && logged + kLogSpare <= slots;
       // Weighted, so no branch per cell: a cell of weight 0 is written to the log's next slot
       // (overwritten by the next visit, or a spare slot) and counted 0 times.
@@ -267,7 +272,7 @@ uint32_t count_and_log(const CutPlan& plan, const Edge3* edges, uint32_t e0, uin
       }
       continue;
     }
-    for_each_cell(plan.grid, edges[i], plan.params.cover, plan.params.reach, [&](uint32_t c) {
+    for_each_cell(g, edges[i], cover, reach, [&](uint32_t c) {
       ++count[c];
       fits = fits && logged < slots;
       if (fits) log[logged++] = Visit{c, i};
