@@ -281,15 +281,38 @@ uint32_t count_and_log(const CutPlan& plan, const Edge3* edges, uint32_t e0, uin
   return fits ? logged : slots + 1;
 }
 
-// Drops the logged visits' entries into the lists at cursor[cell], moving each cursor on.
+// With the log, the lists are filled in two passes: the visits drop their edges' indices
+// (4 bytes) where the entries go, then the entries (a copy of each edge, 28 bytes) are written
+// in list order, reading the edges those indices name. Dropping the entries themselves would
+// scatter 28-byte writes over lists far larger than a cache; the indices' scatter spans a
+// seventh of that, and the copy reads where the one before scattered writes (reads overlap;
+// a write waits for its line).
+//
+// The indices of lists with `total` entries can lie in the last 4 * total bytes of the lists
+// themselves: entry k ends at byte s (k + 1) (s = sizeof(Entry) >= 4), index k + 1 starts at
+// (s - 4) total + 4 (k + 1), not before it while k + 1 <= total. So copying in ascending order
+// overwrites only indices already read (but parts copying at once would not: see FillParts).
 template <typename Entry>
-void fill_from_log(const Edge3* edges, const Visit* log, uint32_t logged, uint32_t* cursor,
-                   Entry* list) {
-  // The writes scatter over every cell's list: ask for each one's line a few visits ahead.
+uint32_t* index_after_lists(Entry* list, uint32_t total) {
+  return reinterpret_cast<uint32_t*>(reinterpret_cast<uint8_t*>(list) +
+                                     size_t{total} * (sizeof(Entry) - sizeof(uint32_t)));
+}
+
+// Drops the logged visits' edge indices at cursor[cell], moving each cursor on.
+void place_from_log(const Visit* log, uint32_t logged, uint32_t* cursor, uint32_t* index) {
+  for (uint32_t v = 0; v < logged; ++v) index[cursor[log[v].cell]++] = log[v].edge;
+}
+
+// list[k] = the entry of edge index[k], for k in [k0, k1), in ascending order.
+template <typename Entry>
+void copy_entries(const Edge3* edges, const uint32_t* index, uint32_t k0, uint32_t k1,
+                  Entry* list) {
+  // The reads jump over the edges: ask for each one's line a few entries ahead.
   constexpr uint32_t kAhead = 16;
-  for (uint32_t v = 0; v < logged; ++v) {
-    if (v + kAhead < logged) __builtin_prefetch(&list[cursor[log[v + kAhead].cell]], 1);
-    list[cursor[log[v].cell]++] = Entry::make(edges[log[v].edge], log[v].edge);
+  for (uint32_t k = k0; k < k1; ++k) {
+    if (k + kAhead < k1) __builtin_prefetch(&edges[index[k + kAhead]]);
+    const uint32_t e = index[k];
+    list[k] = Entry::make(edges[e], e);
   }
 }
 
@@ -309,7 +332,9 @@ void fill_cells_logged(const CutPlan& plan, const Edge3* edges, uint32_t* cell_s
     cell_start[c + 1] = at;
     at += count;
   }
-  fill_from_log(edges, log, logged, cell_start + 1, list);
+  uint32_t* index = index_after_lists(list, at);
+  place_from_log(log, logged, cell_start + 1, index);
+  copy_entries(edges, index, 0, at, list);
 }
 
 // The same counting sort in parts of the edges, each with its own cursor into every cell (and
@@ -317,6 +342,8 @@ void fill_cells_logged(const CutPlan& plan, const Edge3* edges, uint32_t* cell_s
 // counts gives each part its place in every cell's list (after the parts before it), and part
 // j drops its edges there in ascending order, from its log if that holds all its visits, else
 // walking again. Every cell's list comes out as the one-part fill makes it, entry for entry.
+// With logs, part j drops indices after the lists, moves its share of them into the logs'
+// bytes (read by then), and copies its share of the entries from there.
 template <typename Entry>
 struct FillParts {
   const CutPlan* plan;
@@ -326,9 +353,13 @@ struct FillParts {
   uint32_t slots;
   Entry* list;
   uint32_t n;
+  uint32_t total = 0;               // entries in all lists
+  uint32_t* index = nullptr;        // after the lists (index_after_lists)
+  uint32_t* index_moved = nullptr;  // the same in the logs' bytes
   uint32_t logged[kMaxParts] = {};
 
   uint32_t first_edge(uint32_t j) const { return uint32_t(uint64_t{plan->n_edges} * j / n); }
+  uint32_t first_entry(uint32_t j) const { return uint32_t(uint64_t{total} * j / n); }
   static void count(void* arg, uint32_t j) {
     FillParts* self = static_cast<FillParts*>(arg);
     const uint32_t cells = self->plan->grid.cells();
@@ -342,9 +373,14 @@ struct FillParts {
     const FillParts* self = static_cast<const FillParts*>(arg);
     const CutPlan& plan = *self->plan;
     uint32_t* mine = self->cursor + size_t{j} * plan.grid.cells();
-    if (self->logs != nullptr && self->logged[j] <= self->slots) {
-      fill_from_log(self->edges, self->logs + size_t{j} * self->slots, self->logged[j], mine,
-                    self->list);
+    if (self->logs != nullptr) {  // indices, from the log or from a second walk
+      if (self->logged[j] <= self->slots) {
+        place_from_log(self->logs + size_t{j} * self->slots, self->logged[j], mine, self->index);
+        return;
+      }
+      for (uint32_t i = self->first_edge(j); i < self->first_edge(j + 1); ++i)
+        for_each_cell(plan.grid, self->edges[i], plan.params.cover, plan.params.reach,
+                      [&](uint32_t c) { self->index[mine[c]++] = i; });
       return;
     }
     for (uint32_t i = self->first_edge(j); i < self->first_edge(j + 1); ++i) {
@@ -352,6 +388,17 @@ struct FillParts {
       for_each_cell(plan.grid, self->edges[i], plan.params.cover, plan.params.reach,
                     [&](uint32_t c) { self->list[mine[c]++] = e; });
     }
+  }
+  // Every part has placed its indices (and read its log) before any part runs these.
+  static void move_index(void* arg, uint32_t j) {
+    const FillParts* self = static_cast<const FillParts*>(arg);
+    for (uint32_t k = self->first_entry(j); k < self->first_entry(j + 1); ++k)
+      self->index_moved[k] = self->index[k];
+  }
+  static void copy(void* arg, uint32_t j) {
+    const FillParts* self = static_cast<const FillParts*>(arg);
+    copy_entries(self->edges, self->index_moved, self->first_entry(j), self->first_entry(j + 1),
+                 self->list);
   }
 };
 
@@ -383,7 +430,17 @@ __attribute__((noinline)) uint64_t fill_in_parts(const CutPlan& plan, const Edge
     work += k * (k - 1) / 2 + k + 1;
   }
   cell_start[cells] = at;
+  fp.total = at;
+  if (logs != nullptr) {
+    // The logs hold at least cell_pairs >= at visits of 8 bytes: room for `at` indices.
+    fp.index = index_after_lists(list, at);
+    fp.index_moved = reinterpret_cast<uint32_t*>(logs);
+  }
   run_parts(*plan.params.parts, n_parts, &FillParts<Entry>::fill, &fp);
+  if (logs != nullptr) {
+    run_parts(*plan.params.parts, n_parts, &FillParts<Entry>::move_index, &fp);
+    run_parts(*plan.params.parts, n_parts, &FillParts<Entry>::copy, &fp);
+  }
   return work;
 }
 
