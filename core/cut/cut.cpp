@@ -870,10 +870,16 @@ Status plan_cut(const Edge3* edges, uint32_t n, const CutParams& params, CutPlan
   if (parts > 1) {
     const Status s = plan_in_parts(edges, n, parts, &p, &pairs);
     if (s != Status::kOk) return s;
-  } else {
-    for (uint32_t i = 0; i < n; ++i)
-      if (!in_range(edges[i])) return Status::kCoordinateOutOfRange;
-    p.grid = choose_grid(edges, n, params.grid);
+  } else if (n > 0) {
+    // The range check and the extent in one pass (choose_grid's, less a pass of its own).
+    bool all = true;
+    Extent x;
+    for (uint32_t i = 0; i < n; ++i) {
+      all = all && in_range(edges[i]);
+      x.add(edges[i]);
+    }
+    if (!all) return Status::kCoordinateOutOfRange;
+    p.grid = grid_for(x, n, params.grid.cell <= 0 ? average_length(edges, n) : 0, params.grid);
     pairs = pair_bound(p.grid, edges, 0, n, params.reach);
   }
   if (pairs > 0xffffffffu) return Status::kCellPairOverflow;
