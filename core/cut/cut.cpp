@@ -766,6 +766,85 @@ void group_records(Crossing* records, uint32_t stored, uint32_t n, const uint32_
   }
 }
 
+// The grouping's counting sort in parts of the records (a host's, where it would otherwise
+// run alone between the parted cell loop and the parted sorting): part j copies its records
+// into the scratch and counts them per behind edge in counts of its own; then, in parts of the
+// edges, each edge's group start and each part's place in it (after the parts before it); then
+// part j drops its copies there in order. Each group holds its records in the order one part
+// drops them. Returns false, touching nothing, where the scratch lacks room for the counts and
+// the copy (the caller then groups in one part).
+struct GroupParts {
+  Crossing* records;
+  Crossing* copy;
+  uint32_t stored, n, parts;
+  uint32_t* count;  // part j's are count[j * n .. (j + 1) * n)
+  uint32_t* first;
+  uint64_t sum[kMaxParts] = {};  // the records behind part j's edges, then their start
+
+  uint32_t first_record(uint32_t j) const { return uint32_t(uint64_t{stored} * j / parts); }
+  uint32_t first_edge(uint32_t j) const { return uint32_t(uint64_t{n} * j / parts); }
+  static void count_records(void* arg, uint32_t j) {
+    GroupParts* self = static_cast<GroupParts*>(arg);
+    uint32_t* mine = self->count + size_t{j} * self->n;
+    for (uint32_t e = 0; e < self->n; ++e) mine[e] = 0;
+    for (uint32_t i = self->first_record(j); i < self->first_record(j + 1); ++i) {
+      self->copy[i] = self->records[i];
+      ++mine[self->copy[i].behind];
+    }
+  }
+  static void sum_edges(void* arg, uint32_t j) {
+    GroupParts* self = static_cast<GroupParts*>(arg);
+    uint64_t s = 0;
+    for (uint32_t e = self->first_edge(j); e < self->first_edge(j + 1); ++e)
+      for (uint32_t k = 0; k < self->parts; ++k) s += self->count[size_t{k} * self->n + e];
+    self->sum[j] = s;
+  }
+  static void place_edges(void* arg, uint32_t j) {
+    GroupParts* self = static_cast<GroupParts*>(arg);
+    uint32_t at = uint32_t(self->sum[j]);
+    for (uint32_t e = self->first_edge(j); e < self->first_edge(j + 1); ++e) {
+      self->first[e] = at;
+      for (uint32_t k = 0; k < self->parts; ++k) {
+        uint32_t& c = self->count[size_t{k} * self->n + e];
+        const uint32_t here = c;
+        c = at;
+        at += here;
+      }
+    }
+  }
+  static void drop_records(void* arg, uint32_t j) {
+    GroupParts* self = static_cast<GroupParts*>(arg);
+    uint32_t* mine = self->count + size_t{j} * self->n;
+    for (uint32_t i = self->first_record(j); i < self->first_record(j + 1); ++i)
+      self->records[mine[self->copy[i].behind]++] = self->copy[i];
+  }
+};
+
+// Out of line, as test_in_parts.
+__attribute__((noinline)) bool group_in_parts(const Parts& parts, uint32_t n_parts,
+                                              Crossing* records, uint32_t stored, uint32_t n,
+                                              uint32_t* first, void* scratch,
+                                              size_t scratch_bytes) {
+  const size_t copy_at = carve_round(size_t{n_parts} * n * sizeof(uint32_t));
+  if (scratch_bytes < copy_at + size_t{stored} * sizeof(Crossing)) return false;
+  GroupParts gp{records, reinterpret_cast<Crossing*>(static_cast<uint8_t*>(scratch) + copy_at),
+                stored,  n,
+                n_parts, static_cast<uint32_t*>(scratch),
+                first};
+  run_parts(parts, n_parts, &GroupParts::count_records, &gp);
+  run_parts(parts, n_parts, &GroupParts::sum_edges, &gp);
+  uint64_t at = 0;
+  for (uint32_t j = 0; j < n_parts; ++j) {
+    const uint64_t here = gp.sum[j];
+    gp.sum[j] = at;
+    at += here;
+  }
+  run_parts(parts, n_parts, &GroupParts::place_edges, &gp);
+  first[n] = stored;
+  run_parts(parts, n_parts, &GroupParts::drop_records, &gp);
+  return true;
+}
+
 }  // namespace
 
 namespace {
@@ -918,12 +997,17 @@ Status run_cut(const CutPlan& plan, const Edge3* edges, void* scratch, size_t sc
 
   // C7-C9: group by behind edge with a counting sort. `next` reuses the scratch: the cell
   // lists are no longer needed.
-  uint32_t* next = static_cast<uint32_t*>(scratch);
-  for (uint32_t e = 0; e <= n; ++e) first[e] = 0;
-  for (uint32_t i = 0; i < rec.stored; ++i) ++first[records[i].behind + 1];
-  for (uint32_t e = 0; e < n; ++e) first[e + 1] += first[e];
-  for (uint32_t e = 0; e < n; ++e) next[e] = first[e];
-  group_records(records, rec.stored, n, first, next, scratch, scratch_bytes);
+  // On a host, in parts where the scratch holds each part's counts and a copy of the records.
+  const uint32_t group_parts = kHost ? part_count(plan.params, uint64_t{rec.stored} * 4 + n) : 1;
+  if (group_parts == 1 || !group_in_parts(*plan.params.parts, group_parts, records, rec.stored, n,
+                                          first, scratch, scratch_bytes)) {
+    uint32_t* next = static_cast<uint32_t*>(scratch);
+    for (uint32_t e = 0; e <= n; ++e) first[e] = 0;
+    for (uint32_t i = 0; i < rec.stored; ++i) ++first[records[i].behind + 1];
+    for (uint32_t e = 0; e < n; ++e) first[e + 1] += first[e];
+    for (uint32_t e = 0; e < n; ++e) next[e] = first[e];
+    group_records(records, rec.stored, n, first, next, scratch, scratch_bytes);
+  }
   // Sorting k records costs about k log k: as work, 16 a record.
   const uint32_t sort_parts = part_count(plan.params, uint64_t{rec.stored} * 16);
   st.max_per_edge = sort_parts == 1
