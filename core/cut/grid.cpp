@@ -5,12 +5,13 @@
 
 namespace haloplot {
 
+#if UINTPTR_MAX > 0xffffffffu
 namespace {
 
 // floor(sqrt(v)) for v < 2^62 by the bit-pair method, as isqrt_u64, but each step decided
 // without a branch: the steps go either way about equally often, so a branch per step would
 // mispredict about half of them. A 64-bit target's (where 64-bit operations are one
-// instruction); tests/unit/test_cut_grid checks it against isqrt_u64.
+// instruction); tests/unit/test_cut_grid checks it by the root's definition.
 static_assert(2 * kDiffBits + 1 <= 62, "a squared length must fit the root's 62 bits");
 uint32_t root_without_branches(uint64_t v) {
   uint64_t root = 0, rem = 0;
@@ -25,6 +26,7 @@ uint32_t root_without_branches(uint64_t v) {
 }
 
 }  // namespace
+#endif
 
 uint32_t projected_length(const Edge3& e) {
   const int32_t dx = e.b.x - e.a.x, dy = e.b.y - e.a.y;
