@@ -193,6 +193,7 @@ int cmd_plot_solid(const Options& o) {
   const int32_t units = scene.substep_bits;
   ModeDrawing d = make_mode_drawing(run, mode_in_units(so.spec, units));
   drawing_to_steps(&d, units);
+  const std::string repair_stats = scene.repair_stats;
   drop_pieces(&run, &scene);  // the drawing holds all the files need
   PlotSvgStyle style;
   if (!parse_plot_svg_style(o, true, so.steps_per_mm, &style, &error)) return fail(error);
@@ -229,6 +230,7 @@ int cmd_plot_solid(const Options& o) {
     if (!error.empty()) return fail(error);
   }
   if (o.has("--stats")) {
+    std::fputs(repair_stats.c_str(), stderr);
     print_solid_stats(run, tri);
     // With --gcode or --hpgl the job's own plan reports its clean-up (write_planned_outputs).
     if (!wants_plotter_outputs(o)) print_clean_stats(style.path_stats, so.steps_per_mm);

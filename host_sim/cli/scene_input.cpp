@@ -8,6 +8,7 @@
 
 #include "cli/job_file.h"
 #include "cli/page_options.h"
+#include "cli/shells_note.h"
 #include "cli/solid_options.h"
 #include "export/page.h"
 #include "haloplot/view/facing.h"
@@ -149,6 +150,24 @@ bool read_model(const Options& given, const std::string& path, ObjModel* model,
   weld_tolerance(o, *model, &tolerance, error);  // checked above: now in this model's units
   if (tolerance >= 0) weld_vertices(model, tolerance, &report);
   orient_shells(model, &report);
+  // A weld asked for that leaves a shell not closed: the file read again (not kept: a closed
+  // model's plot pays nothing) and welded at EPS and at the default, for the message to say
+  // when the weld asked for did worse.
+  ObjModel again;
+  if (repair != nullptr && tolerance >= 0 && !o.get("--weld").empty() &&
+      report.shells > report.closed_shells && !read_mesh_file(path, &again).failed()) {
+    report.compared = true;
+    report.with_given = try_weld(again, tolerance);
+    report.with_default = try_weld(std::move(again), weld_distance(*model));
+  }
+  // Open shells after the default weld: are they gaps a larger weld closes, or open as made?
+  // (Measured only for the message, where a caller asks for the report.)
+  if (repair != nullptr && o.get("--weld").empty() &&
+      report.shells > report.closed_shells + report.unorientable_shells) {
+    report.measured = true;
+    report.open = measure_open_sides(*model);
+    report.weld = weld_hint(*model, report.open);
+  }
   if (!exact) crease.rounding = vertex_rounding(*model);
   drop_flat_edges(model, crease, &report);
   find_regions(model);
@@ -530,35 +549,6 @@ std::string not_simple_message(const std::string& path, const ObjModel& model,
          " in the model); split it into simple polygons";
 }
 
-// What the hidden lines decided per shell, when a shell is not a closed solid: such a shell
-// shows both sides of its faces, so every face hides from both sides
-// (core/include/haloplot/solid/qi.h). `weld_hint`: the weld was the default one, which joins
-// corners within the file's rounding; an open shell may have corners its exporter put farther
-// apart: say how to join those.
-std::string shells_note(const std::string& path, const RepairReport& r, bool weld_hint) {
-  const uint32_t open = r.shells - r.closed_shells - r.unorientable_shells;
-  if (open == 0 && r.unorientable_shells == 0) return "";
-  std::string kinds;
-  auto add = [&](uint32_t n, const std::string& what) {
-    if (n == 0) return;
-    if (!kinds.empty()) kinds += ", ";
-    kinds += std::to_string(n) + " " + what;
-  };
-  add(r.closed_shells, r.closed_shells == 1 ? "closed solid" : "closed solids");
-  add(open, open == 1 ? "open surface" : "open surfaces");
-  add(r.unorientable_shells, r.unorientable_shells == 1
-                                 ? "shell that cannot be oriented (sides on three or more "
-                                   "faces, or a twist like a Moebius strip's)"
-                                 : "shells that cannot be oriented (sides on three or more "
-                                   "faces, or a twist like a Moebius strip's)");
-  const std::string hint = weld_hint && open > 0
-                               ? " (not meant to be open? --weld EPS joins corners within EPS "
-                                 "model units)"
-                               : "";
-  return path + ": " + std::to_string(r.shells) + (r.shells == 1 ? " shell: " : " shells: ") +
-         kinds + "; every face hides from both sides" + hint;
-}
-
 // A dense smooth model plotted without --crease draws every facet, a blot where the surface is
 // fine: say so when nearly every drawn edge bends gently (at least 10,000 of them, nine in ten).
 std::string crease_hint(const std::string& path, const RepairReport& r) {
@@ -580,7 +570,8 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
   View view;
   RepairReport repair;
   if (!project_obj(o, path, &model, &scene->vertices, &view, error, &repair)) return false;
-  scene->repair_note = shells_note(path, repair, o.get("--weld").empty());
+  scene->repair_note = shells_note(path, repair, o.get("--weld"));
+  scene->repair_stats = shells_stats(repair, model.scale);
   const std::string crease = crease_hint(path, repair);
   if (!crease.empty())
     scene->repair_note += (scene->repair_note.empty() ? "" : "\nhaloplot: ") + crease;

@@ -112,7 +112,8 @@ std::string not_simple_message(const std::string& path, const ObjModel& model,
 bool load_solid_scene(const Options& o, const std::string& path, SolidScene* scene,
                       TriangulateStats* stats, std::string* error);
 
-// scene.repair_note, if any, as one line on stderr: what the hidden lines decided per shell.
+// scene.repair_note, if any, on stderr (a line or two, each "haloplot: FILE: ..."): the
+// shells that are not closed solids (cli/shells_note.h), the --crease hint.
 void say_repair_note(const SolidScene& scene);
 
 }  // namespace haloplot::host

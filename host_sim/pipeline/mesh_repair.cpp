@@ -306,6 +306,13 @@ __int128 volume6(const ObjModel& m, const std::vector<uint32_t>& faces,
   return sum;
 }
 
+// Does face c run from corner a straight to corner b?
+bool runs(const std::vector<uint32_t>& c, uint32_t a, uint32_t b) {
+  for (size_t i = 0; i < c.size(); ++i)
+    if (c[i] == a && c[(i + 1) % c.size()] == b) return true;
+  return false;
+}
+
 struct Shell {
   std::vector<uint32_t> faces;
   bool closed = true, orientable = true;
@@ -337,6 +344,48 @@ Shell grow_shell(const Adjacency& adj, uint32_t seed, std::vector<uint8_t>* seen
   return s;
 }
 
+// The side a -> b of face f (its i-th) in the problem's terms: file coordinates and f's line.
+ShellProblem problem_at(const ObjModel& m, uint32_t f, size_t i, uint32_t faces_on_side) {
+  ShellProblem p;
+  p.faces_on_side = faces_on_side;
+  p.line = f < m.face_lines.size() ? m.face_lines[f] : 0;
+  p.unit = 1 / m.scale;
+  const std::vector<uint32_t>& c = m.faces[f];
+  const Point3& a = m.vertices[c[i]];
+  const Point3& b = m.vertices[c[(i + 1) % c.size()]];
+  const double wa[3] = {double(a.x), double(a.y), double(a.z)};
+  const double wb[3] = {double(b.x), double(b.y), double(b.z)};
+  for (int k = 0; k < 3; ++k) {
+    p.from[k] = wa[k] / m.scale + m.centre[k];
+    p.to[k] = wb[k] / m.scale + m.centre[k];
+  }
+  return p;
+}
+
+// Where shell s cannot be oriented: its first face (in the search's order) on a side on three
+// or more faces, that side; else the first side its two faces run the same way as the file
+// gives them. A shell whose every side is run both ways could be oriented as given, so a twist
+// leaves at least one such side; where the file is wound consistently but for a seam, it is
+// the seam (where the search's two ways round met is anywhere on the strip).
+ShellProblem shell_problem(const ObjModel& m, const Adjacency& adj, const Shell& s) {
+  SidesByVertex sides(m);
+  sides.sort_each();
+  for (int pass = 0; pass < 2; ++pass)
+    for (uint32_t f : s.faces) {
+      if (pass == 0 && !adj.on_nonmanifold[f]) continue;
+      const std::vector<uint32_t>& c = m.faces[f];
+      for (size_t i = 0; i < c.size(); ++i) {
+        const uint32_t a = c[i], b = c[(i + 1) % c.size()];
+        uint32_t face[2] = {0, 0};
+        const uint32_t n = sides.faces(a, b, face);
+        if (pass == 0 && n > 2) return problem_at(m, f, i, n);
+        if (pass == 1 && n == 2 && runs(m.faces[face[0]], a, b) == runs(m.faces[face[1]], a, b))
+          return problem_at(m, f, i, 2);
+      }
+    }
+  return problem_at(m, s.faces[0], 0, 2);  // not reached (see above)
+}
+
 }  // namespace
 
 void orient_shells(ObjModel* model, RepairReport* report) {
@@ -347,6 +396,7 @@ void orient_shells(ObjModel* model, RepairReport* report) {
     Shell s = grow_shell(adj, seed, &seen, &flip);
     ++report->shells;
     if (!s.orientable) {
+      if (report->problem.faces_on_side == 0) report->problem = shell_problem(*model, adj, s);
       ++report->unorientable_shells;
       for (uint32_t f : s.faces) flip[f] = 0;  // left as given
       continue;
@@ -446,13 +496,6 @@ bool within_angle(const Normal& a, const Normal& b, double deg) {
   const double dot =
       double(a[0]) * double(b[0]) + double(a[1]) * double(b[1]) + double(a[2]) * double(b[2]);
   return dot > std::cos(deg * 3.14159265358979323846 / 180) * length(a) * length(b);
-}
-
-// Does face c run from corner a straight to corner b?
-bool runs(const std::vector<uint32_t>& c, uint32_t a, uint32_t b) {
-  for (size_t i = 0; i < c.size(); ++i)
-    if (c[i] == a && c[(i + 1) % c.size()] == b) return true;
-  return false;
 }
 
 // Face g's normal as seen from face f across side a -> b: turned over where the two are wound

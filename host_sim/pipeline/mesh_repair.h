@@ -21,8 +21,20 @@
 #include <cstdint>
 
 #include "io/obj_file.h"
+#include "pipeline/open_sides.h"
 
 namespace haloplot::host {
+
+// One place where the first shell that cannot be oriented shows why, for the message: a side
+// on three or more faces, or else a side its two faces run the same way as the file gives them
+// (a shell that cannot be oriented has one: else the file's own winding would orient it; where
+// the file is wound consistently but for a seam, a Moebius strip's, it is on the seam).
+struct ShellProblem {
+  uint32_t faces_on_side = 0;  // 0: no such shell; 2: a twist; 3 or more: that many faces
+  uint32_t line = 0;           // the model-file line of a face on the side (0: not known)
+  double from[3] = {0, 0, 0}, to[3] = {0, 0, 0};  // the side's ends (file coordinates)
+  double unit = 0;  // one world unit in the file's units: how near from and to are to the file's
+};
 
 struct RepairReport {
   uint32_t merged_vertices = 0;  // vertices welded into another
@@ -35,6 +47,16 @@ struct RepairReport {
   // Without a crease angle: drawn edges kept between faces less than kGentleDegrees apart (a
   // smooth surface's facets, which --crease would leave out), of kept_edges drawn in all.
   uint32_t gentle_edges = 0, kept_edges = 0;
+  ShellProblem problem;  // where the first shell that cannot be oriented shows it
+  // Filled in by the reader where asked (scene_input.h, read_model): the open sides measured
+  // and the weld they suggest (open_sides.h).
+  bool measured = false;
+  OpenSides open;
+  WeldHint weld;
+  // With --weld EPS given and a shell not closed: the file welded at EPS and at the default
+  // weld_distance, compared (a weld too wide makes sides on three faces of a model's fins).
+  bool compared = false;
+  WeldTrial with_given, with_default;
 };
 
 // How far a vertex may lie from where the exporter meant it, per coordinate, in world units:

@@ -23,9 +23,10 @@ struct SolidScene {
   std::vector<Triangle> triangles;
   int32_t substep_bits = 0;     // the vertices' units: 2^-S steps (View::substep_bits)
   std::vector<uint8_t> facing;  // per triangle from the model (empty: the projected area)
-  // "FILE: M shells: K closed solids, N open surfaces, ...; hidden lines by QI with both sides
-  // of every face hiding" when a shell is not a closed solid (pipeline/mesh_repair.h).
+  // What plot says when a shell is not a closed solid (cli/shells_note.h): the open shells
+  // (the --weld that closes their gaps, or open as made) and where a shell cannot be oriented.
   std::string repair_note;
+  std::string repair_stats;  // what the note rests on, key=value lines for --stats
 };
 
 // The core's view of a scene (pointers into it: the scene must outlive the input).
