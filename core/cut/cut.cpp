@@ -291,7 +291,9 @@ uint32_t count_and_log(const CutPlan& plan, const Edge3* edges, uint32_t e0, uin
 // The indices of lists with `total` entries can lie in the last 4 * total bytes of the lists
 // themselves: entry k ends at byte s (k + 1) (s = sizeof(Entry) >= 4), index k + 1 starts at
 // (s - 4) total + 4 (k + 1), not before it while k + 1 <= total. So copying in ascending order
-// overwrites only indices already read (but parts copying at once would not: see FillParts).
+// overwrites only indices already read. Parts drop their entries directly (FillParts):
+// copying at once, they would overwrite indices another part has yet to read, and moving the
+// indices out of the way first cost more on two threads than the scatter it saves.
 template <typename Entry>
 uint32_t* index_after_lists(Entry* list, uint32_t total) {
   return reinterpret_cast<uint32_t*>(reinterpret_cast<uint8_t*>(list) +
@@ -313,6 +315,18 @@ void copy_entries(const Edge3* edges, const uint32_t* index, uint32_t k0, uint32
     if (k + kAhead < k1) __builtin_prefetch(&edges[index[k + kAhead]]);
     const uint32_t e = index[k];
     list[k] = Entry::make(edges[e], e);
+  }
+}
+
+// Drops the logged visits' entries into the lists at cursor[cell], moving each cursor on.
+template <typename Entry>
+void fill_from_log(const Edge3* edges, const Visit* log, uint32_t logged, uint32_t* cursor,
+                   Entry* list) {
+  // The writes scatter over every cell's list: ask for each one's line a few visits ahead.
+  constexpr uint32_t kAhead = 16;
+  for (uint32_t v = 0; v < logged; ++v) {
+    if (v + kAhead < logged) __builtin_prefetch(&list[cursor[log[v + kAhead].cell]], 1);
+    list[cursor[log[v].cell]++] = Entry::make(edges[log[v].edge], log[v].edge);
   }
 }
 
@@ -342,8 +356,6 @@ void fill_cells_logged(const CutPlan& plan, const Edge3* edges, uint32_t* cell_s
 // counts gives each part its place in every cell's list (after the parts before it), and part
 // j drops its edges there in ascending order, from its log if that holds all its visits, else
 // walking again. Every cell's list comes out as the one-part fill makes it, entry for entry.
-// With logs, part j drops indices after the lists, moves its share of them into the logs'
-// bytes (read by then), and copies its share of the entries from there.
 template <typename Entry>
 struct FillParts {
   const CutPlan* plan;
@@ -353,13 +365,9 @@ struct FillParts {
   uint32_t slots;
   Entry* list;
   uint32_t n;
-  uint32_t total = 0;               // entries in all lists
-  uint32_t* index = nullptr;        // after the lists (index_after_lists)
-  uint32_t* index_moved = nullptr;  // the same in the logs' bytes
   uint32_t logged[kMaxParts] = {};
 
   uint32_t first_edge(uint32_t j) const { return uint32_t(uint64_t{plan->n_edges} * j / n); }
-  uint32_t first_entry(uint32_t j) const { return uint32_t(uint64_t{total} * j / n); }
   static void count(void* arg, uint32_t j) {
     FillParts* self = static_cast<FillParts*>(arg);
     const uint32_t cells = self->plan->grid.cells();
@@ -373,14 +381,9 @@ struct FillParts {
     const FillParts* self = static_cast<const FillParts*>(arg);
     const CutPlan& plan = *self->plan;
     uint32_t* mine = self->cursor + size_t{j} * plan.grid.cells();
-    if (self->logs != nullptr) {  // indices, from the log or from a second walk
-      if (self->logged[j] <= self->slots) {
-        place_from_log(self->logs + size_t{j} * self->slots, self->logged[j], mine, self->index);
-        return;
-      }
-      for (uint32_t i = self->first_edge(j); i < self->first_edge(j + 1); ++i)
-        for_each_cell(plan.grid, self->edges[i], plan.params.cover, plan.params.reach,
-                      [&](uint32_t c) { self->index[mine[c]++] = i; });
+    if (self->logs != nullptr && self->logged[j] <= self->slots) {
+      fill_from_log(self->edges, self->logs + size_t{j} * self->slots, self->logged[j], mine,
+                    self->list);
       return;
     }
     for (uint32_t i = self->first_edge(j); i < self->first_edge(j + 1); ++i) {
@@ -388,17 +391,6 @@ struct FillParts {
       for_each_cell(plan.grid, self->edges[i], plan.params.cover, plan.params.reach,
                     [&](uint32_t c) { self->list[mine[c]++] = e; });
     }
-  }
-  // Every part has placed its indices (and read its log) before any part runs these.
-  static void move_index(void* arg, uint32_t j) {
-    const FillParts* self = static_cast<const FillParts*>(arg);
-    for (uint32_t k = self->first_entry(j); k < self->first_entry(j + 1); ++k)
-      self->index_moved[k] = self->index[k];
-  }
-  static void copy(void* arg, uint32_t j) {
-    const FillParts* self = static_cast<const FillParts*>(arg);
-    copy_entries(self->edges, self->index_moved, self->first_entry(j), self->first_entry(j + 1),
-                 self->list);
   }
 };
 
@@ -430,17 +422,7 @@ __attribute__((noinline)) uint64_t fill_in_parts(const CutPlan& plan, const Edge
     work += k * (k - 1) / 2 + k + 1;
   }
   cell_start[cells] = at;
-  fp.total = at;
-  if (logs != nullptr) {
-    // The logs hold at least cell_pairs >= at visits of 8 bytes: room for `at` indices.
-    fp.index = index_after_lists(list, at);
-    fp.index_moved = reinterpret_cast<uint32_t*>(logs);
-  }
   run_parts(*plan.params.parts, n_parts, &FillParts<Entry>::fill, &fp);
-  if (logs != nullptr) {
-    run_parts(*plan.params.parts, n_parts, &FillParts<Entry>::move_index, &fp);
-    run_parts(*plan.params.parts, n_parts, &FillParts<Entry>::copy, &fp);
-  }
   return work;
 }
 
@@ -766,85 +748,6 @@ void group_records(Crossing* records, uint32_t stored, uint32_t n, const uint32_
   }
 }
 
-// The grouping's counting sort in parts of the records (a host's, where it would otherwise
-// run alone between the parted cell loop and the parted sorting): part j copies its records
-// into the scratch and counts them per behind edge in counts of its own; then, in parts of the
-// edges, each edge's group start and each part's place in it (after the parts before it); then
-// part j drops its copies there in order. Each group holds its records in the order one part
-// drops them. Returns false, touching nothing, where the scratch lacks room for the counts and
-// the copy (the caller then groups in one part).
-struct GroupParts {
-  Crossing* records;
-  Crossing* copy;
-  uint32_t stored, n, parts;
-  uint32_t* count;  // part j's are count[j * n .. (j + 1) * n)
-  uint32_t* first;
-  uint64_t sum[kMaxParts] = {};  // the records behind part j's edges, then their start
-
-  uint32_t first_record(uint32_t j) const { return uint32_t(uint64_t{stored} * j / parts); }
-  uint32_t first_edge(uint32_t j) const { return uint32_t(uint64_t{n} * j / parts); }
-  static void count_records(void* arg, uint32_t j) {
-    GroupParts* self = static_cast<GroupParts*>(arg);
-    uint32_t* mine = self->count + size_t{j} * self->n;
-    for (uint32_t e = 0; e < self->n; ++e) mine[e] = 0;
-    for (uint32_t i = self->first_record(j); i < self->first_record(j + 1); ++i) {
-      self->copy[i] = self->records[i];
-      ++mine[self->copy[i].behind];
-    }
-  }
-  static void sum_edges(void* arg, uint32_t j) {
-    GroupParts* self = static_cast<GroupParts*>(arg);
-    uint64_t s = 0;
-    for (uint32_t e = self->first_edge(j); e < self->first_edge(j + 1); ++e)
-      for (uint32_t k = 0; k < self->parts; ++k) s += self->count[size_t{k} * self->n + e];
-    self->sum[j] = s;
-  }
-  static void place_edges(void* arg, uint32_t j) {
-    GroupParts* self = static_cast<GroupParts*>(arg);
-    uint32_t at = uint32_t(self->sum[j]);
-    for (uint32_t e = self->first_edge(j); e < self->first_edge(j + 1); ++e) {
-      self->first[e] = at;
-      for (uint32_t k = 0; k < self->parts; ++k) {
-        uint32_t& c = self->count[size_t{k} * self->n + e];
-        const uint32_t here = c;
-        c = at;
-        at += here;
-      }
-    }
-  }
-  static void drop_records(void* arg, uint32_t j) {
-    GroupParts* self = static_cast<GroupParts*>(arg);
-    uint32_t* mine = self->count + size_t{j} * self->n;
-    for (uint32_t i = self->first_record(j); i < self->first_record(j + 1); ++i)
-      self->records[mine[self->copy[i].behind]++] = self->copy[i];
-  }
-};
-
-// Out of line, as test_in_parts.
-__attribute__((noinline)) bool group_in_parts(const Parts& parts, uint32_t n_parts,
-                                              Crossing* records, uint32_t stored, uint32_t n,
-                                              uint32_t* first, void* scratch,
-                                              size_t scratch_bytes) {
-  const size_t copy_at = carve_round(size_t{n_parts} * n * sizeof(uint32_t));
-  if (scratch_bytes < copy_at + size_t{stored} * sizeof(Crossing)) return false;
-  GroupParts gp{records, reinterpret_cast<Crossing*>(static_cast<uint8_t*>(scratch) + copy_at),
-                stored,  n,
-                n_parts, static_cast<uint32_t*>(scratch),
-                first};
-  run_parts(parts, n_parts, &GroupParts::count_records, &gp);
-  run_parts(parts, n_parts, &GroupParts::sum_edges, &gp);
-  uint64_t at = 0;
-  for (uint32_t j = 0; j < n_parts; ++j) {
-    const uint64_t here = gp.sum[j];
-    gp.sum[j] = at;
-    at += here;
-  }
-  run_parts(parts, n_parts, &GroupParts::place_edges, &gp);
-  first[n] = stored;
-  run_parts(parts, n_parts, &GroupParts::drop_records, &gp);
-  return true;
-}
-
 }  // namespace
 
 namespace {
@@ -997,17 +900,12 @@ Status run_cut(const CutPlan& plan, const Edge3* edges, void* scratch, size_t sc
 
   // C7-C9: group by behind edge with a counting sort. `next` reuses the scratch: the cell
   // lists are no longer needed.
-  // On a host, in parts where the scratch holds each part's counts and a copy of the records.
-  const uint32_t group_parts = kHost ? part_count(plan.params, uint64_t{rec.stored} * 4 + n) : 1;
-  if (group_parts == 1 || !group_in_parts(*plan.params.parts, group_parts, records, rec.stored, n,
-                                          first, scratch, scratch_bytes)) {
-    uint32_t* next = static_cast<uint32_t*>(scratch);
-    for (uint32_t e = 0; e <= n; ++e) first[e] = 0;
-    for (uint32_t i = 0; i < rec.stored; ++i) ++first[records[i].behind + 1];
-    for (uint32_t e = 0; e < n; ++e) first[e + 1] += first[e];
-    for (uint32_t e = 0; e < n; ++e) next[e] = first[e];
-    group_records(records, rec.stored, n, first, next, scratch, scratch_bytes);
-  }
+  uint32_t* next = static_cast<uint32_t*>(scratch);
+  for (uint32_t e = 0; e <= n; ++e) first[e] = 0;
+  for (uint32_t i = 0; i < rec.stored; ++i) ++first[records[i].behind + 1];
+  for (uint32_t e = 0; e < n; ++e) first[e + 1] += first[e];
+  for (uint32_t e = 0; e < n; ++e) next[e] = first[e];
+  group_records(records, rec.stored, n, first, next, scratch, scratch_bytes);
   // Sorting k records costs about k log k: as work, 16 a record.
   const uint32_t sort_parts = part_count(plan.params, uint64_t{rec.stored} * 16);
   st.max_per_edge = sort_parts == 1
