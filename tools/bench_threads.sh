@@ -73,9 +73,9 @@ section() {
   echo
   echo "What runs in parts (each part's results joined in part order, so the bytes are the same"
   echo "at any count): the topology's build by ranges of vertices and its stars, the edges' fill"
-  echo "and marks, CUT's plan, cell lists, pairs, grouping and sorting (and the clearing of its"
-  echo "buffer on the host: host_sim/pipeline/parted_memory.h), the incidences' tests and"
-  echo "coincident vertices, the"
+  echo "and marks, CUT's plan, cell lists, pairs and sorting (and the clearing of its buffer on"
+  echo "the host: host_sim/pipeline/parted_memory.h), the incidences' tests and coincident"
+  echo "vertices, the"
   echo "QI's face grid (built once a run) and its walks, the intersection lines, and the pieces"
   echo "where the walks stop at pierces. What stays on one thread: handing the pieces to the"
   echo "host's sink (its vectors' first touches), classify, the prefix sums between the parts."

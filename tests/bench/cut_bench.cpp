@@ -318,8 +318,8 @@ int main(int argc, char** argv) {
        << " take the branches after it: which cell owns the crossing, depth, position), grouping "
        << fmt(cut.group, 2) << " ms. On " << all_label << ": T1 " << fmt(cut_all.t1, 2)
        << " ms, T2 " << fmt(cut_all.t2, 2) << " ms, grouping " << fmt(cut_all.group, 2)
-       << " ms (the plan, the fill, the pairs, the grouping and the sorting each run in parts; "
-          "the sums between them on one thread). CGAL's own time varies "
+       << " ms (the plan, the fill, the pairs and the sorting each run in parts; the grouping's "
+          "counting sort and the sums between the parts on one thread). CGAL's own time varies "
           "by about 1.7x between runs on these machines, so read its ratio with that margin.\n\n";
   }
 
