@@ -1,9 +1,8 @@
 // CUT's StageMemory on the host's threads: like HostMemory (host_memory.h), a buffer that grows
-// to what a sized run asks for, zero each time; but with a runner of several parts it is
-// cleared in parts (memory/parts.h), each thread a slice, so the clearing and the page faults
-// of fresh pages are shared by the threads that then run CUT's parts, instead of one thread
-// clearing all of it first (calloc's pass) while the others wait. One part: HostMemory's
-// allocation exactly.
+// to what a sized run asks for, zero each time; but with a runner of several parts, a buffer
+// that calloc would clear on one thread (from the heap, ZeroedAllocator's middle sizes) is
+// cleared in parts (memory/parts.h), each thread a slice, instead of one thread clearing all
+// of it while the others wait. Otherwise (one part, or fresh pages): HostMemory's allocation.
 #pragma once
 #include <cstdint>
 #include <cstdlib>
@@ -22,7 +21,9 @@ class PartedWords {
   PartedWords() = default;
   PartedWords(size_t words, const Parts* parts) : size_(words) {
     const uint32_t n = parts == nullptr ? 1 : parts->split();
-    if (n == 1) {
+    // Fresh pages (ZeroedAllocator::fresh) are zero already, and fault in where a part first
+    // writes them: clearing them would touch pages a run never uses.
+    if (n == 1 || ZeroedAllocator<uint64_t>::fresh(words * sizeof(uint64_t))) {
       data_ = ZeroedAllocator<uint64_t>().allocate(words);
       return;
     }
