@@ -2,8 +2,10 @@
 # The host's threads, one run: `--threads 1` against `--threads N` (default 2) side by side.
 # tests/bench/threads_bench times the hidden-line stage of a 1M-triangle torus, its CUT alone
 # and the haloed random scene's CUT (N = 50,000, L = 0.01) in one process, the thread counts
-# alternating; then the whole `plot --mode hidden-removed` of the same torus as an OBJ file,
-# with its peak resident memory (/usr/bin/time -v), and the files' bytes compared. Writes the
+# alternating; then the whole `plot --mode hidden-removed` of the same torus as an OBJ file and
+# of three tori that pierce one another (tests/support/model_files.sh's pierced_tori_obj, about
+# as many triangles), with its peak resident memory (/usr/bin/time), and the files' bytes
+# compared. Writes the
 # section "11. Threads" of docs/reports/performance.md in place (or prints it with --print).
 # Usage: tools/bench_threads.sh [--print] [THREADS [RUNS]]
 set -euo pipefail
@@ -19,29 +21,65 @@ trap 'rm -rf "$work"' EXIT
 # shellcheck source=../tests/support/model_files.sh
 source tests/support/model_files.sh
 torus_obj 1.5 0.6 1000 500 > "$work/torus.obj"
+pierced_tori_obj 600 280 > "$work/pierced.obj"
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 build/host/tests/bench/threads_bench 1000 500 "$runs" "$threads" > "$work/table.md" 2> "$work/notes.txt"
 # The whole plot: wall, CPU (user + system) and peak resident memory, the counts alternating.
-plot() {  # THREADS ROUND
-  /usr/bin/time -f "%e %U %S %M" -o "$work/time.$1.$2" "$tool" plot "$work/torus.obj" \
-    --mode hidden-removed --view 30,25 -o "$work/p$1.svg" --spans "$work/p$1.spans" \
-    --gcode "$work/p$1.gcode" --threads "$1" --stats 2> "$work/stats.$1.$2"
+# The plots: NAME, then the file and its options. The pierced tori are plotted as the torus is
+# (every edge drawn) and as the tool's hint for a smooth model says (--crease 40).
+plots=(torus pierced pierced-crease)
+args_of() {
+  case $1 in
+    torus) echo "$work/torus.obj" ;;
+    pierced) echo "$work/pierced.obj" ;;
+    pierced-crease) echo "$work/pierced.obj --crease 40" ;;
+  esac
 }
-for r in $(seq "$runs"); do plot 1 "$r"; plot "$threads" "$r"; done
+plot() {  # NAME THREADS ROUND
+  # shellcheck disable=SC2046 # the options split on purpose
+  /usr/bin/time -f "%e %U %S %M" -o "$work/time.$1.$2.$3" "$tool" plot $(args_of "$1") \
+    --mode hidden-removed --view 30,25 -o "$work/$1.$2.svg" --spans "$work/$1.$2.spans" \
+    --gcode "$work/$1.$2.gcode" --threads "$2" --stats 2> "$work/stats.$1.$2.$3"
+}
+for name in "${plots[@]}"; do
+  for r in $(seq "$runs"); do plot "$name" 1 "$r"; plot "$name" "$threads" "$r"; done
+done
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
-best() {  # THREADS: the round with the least CPU time: "wall cpu rss hidden_ms"
+best() {  # NAME THREADS: the round with the least CPU time: "wall cpu rss hidden_ms"
   for r in $(seq "$runs"); do
-    read -r w u s m < "$work/time.$1.$r"
-    h=$(sed -n 's/^hidden_ms=//p' "$work/stats.$1.$r")
+    read -r w u s m < "$work/time.$1.$2.$r"
+    h=$(sed -n 's/^hidden_ms=//p' "$work/stats.$1.$2.$r")
     echo "$w $(echo "$u + $s" | bc) $m $h"
   done | sort -k2 -g | head -1
 }
-read -r w1 c1 m1 h1 <<< "$(best 1)"
-read -r wn cn mn hn <<< "$(best "$threads")"
-tris=$(grep -c '^f ' "$work/torus.obj")
-tris=$((tris * 2))
-same=yes
-for f in svg spans gcode; do cmp -s "$work/p1.$f" "$work/p$threads.$f" || same=NO; done
+triangles() { echo $(($(grep -c '^f ' "$1") * 2)); }  # quads, two triangles each
+torus_tris=$(triangles "$work/torus.obj")
+pierced_tris=$(triangles "$work/pierced.obj")
+same_files() {  # NAME: yes when every file is the same at 1 and N threads
+  local f
+  for f in svg spans gcode; do cmp -s "$work/$1.1.$f" "$work/$1.$threads.$f" || { echo NO; return; }; done
+  echo yes
+}
+rows() {  # the plot table's rows, each model at 1 and N threads
+  local name t w c m h tris
+  for name in "${plots[@]}"; do
+    tris=$torus_tris
+    [ "$name" = torus ] || tris=$pierced_tris
+    for t in 1 "$threads"; do
+      read -r w c m h <<< "$(best "$name" "$t")"
+      echo "| $name | $t | $w | $c | $h | $m | $((m * 1024 / tris)) | $(same_files "$name") |"
+    done
+  done
+}
+ratios() {  # per model: wall 1 / N of the plot and of the stage, peak memory N / 1
+  local name w1 m1 h1 wn mn hn
+  for name in "${plots[@]}"; do
+    read -r w1 _ m1 h1 <<< "$(best "$name" 1)"
+    read -r wn _ mn hn <<< "$(best "$name" "$threads")"
+    echo "- $name: wall 1 / $threads: plot $(ratio "$w1" "$wn"), hidden-line stage $(ratio "$h1" "$hn");"
+    echo "  peak memory $threads / 1: $(ratio "$mn" "$m1")."
+  done
+}
 ratio() { echo "scale=2; $1 / $2" | bc; }
 section() {
   echo "## 11. Threads"
@@ -59,17 +97,20 @@ section() {
   echo
   echo "$(cat "$work/notes.txt")."
   echo
-  echo "The whole \`plot torus.obj --mode hidden-removed --view 30,25 -o OUT.svg --spans OUT.spans"
-  echo "--gcode OUT.gcode\` of the same torus ($tris triangles, read from OBJ), the round with the"
-  echo "least CPU time of $runs:"
+  echo "The whole \`plot MODEL.obj --mode hidden-removed --view 30,25 -o OUT.svg --spans OUT.spans"
+  echo "--gcode OUT.gcode\` (read from OBJ), the round with the least CPU time of $runs: *torus* the"
+  echo "same torus ($torus_tris triangles); *pierced* three tori through one another"
+  echo "(\`pierced_tori_obj 600 280\` of tests/support/model_files.sh, $pierced_tris triangles: a"
+  echo "closed mesh that pierces itself, so the QI walks stop where edges pass through faces and the"
+  echo "intersection lines are drawn), plotted as the torus is, every edge drawn; *pierced-crease*"
+  echo "the same with \`--crease 40\`, as the tool's hint for a smooth model says. Bytes a triangle:"
+  echo "peak resident memory (KB x 1024) over the triangles; the issue's line is 200."
   echo
-  echo "| threads | wall s | CPU s | hidden_ms (wall) | peak RSS KB | bytes a triangle |"
-  echo "|---:|---:|---:|---:|---:|---:|"
-  echo "| 1 | $w1 | $c1 | $h1 | $m1 | $((m1 * 1024 / tris)) |"
-  echo "| $threads | $wn | $cn | $hn | $mn | $((mn * 1024 / tris)) |"
+  echo "| model | threads | wall s | CPU s | hidden_ms (wall) | peak RSS KB | bytes a triangle | files byte-identical at 1 and $threads |"
+  echo "|---|---:|---:|---:|---:|---:|---:|---|"
+  rows
   echo
-  echo "Wall 1 / $threads: plot $(ratio "$w1" "$wn"), hidden-line stage $(ratio "$h1" "$hn");"
-  echo "peak memory $threads / 1: $(ratio "$mn" "$m1"). SVG, spans and G-code byte-identical: **$same**."
+  ratios
   echo
   echo "What runs in parts (each part's results joined in part order, so the bytes are the same"
   echo "at any count): the topology's build by ranges of vertices and its stars, the edges' fill"

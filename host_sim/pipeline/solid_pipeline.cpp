@@ -59,21 +59,26 @@ struct Collect {
   }
 };
 
+SolidPiece solid_piece(const HiddenPiece& p) {
+  SolidPiece s{p.edge, p.q, p.t0, 0, p.hidden};
+  s.t1 = p.t1 & 0x3fffffffffffffff;  // t1 <= 2^32: the mask (the field's width) drops nothing
+  return s;
+}
+
 Status collect_piece(void* context, const HiddenPiece& p) {
   Collect* c = static_cast<Collect*>(context);
   c->keep(p);
   if (p.hatch) {
-    c->run->hatch.push_back(SolidPiece{p, p.q, p.hidden});
+    c->run->hatch.push_back(solid_piece(p));
     c->run->hatch_faces.push_back(p.face[0]);
     return Status::kOk;
   }
   if (p.face[0] != kNoFace) {
-    c->run->intersections.push_back(SolidPiece{p, p.q, p.hidden});
+    c->run->intersections.push_back(solid_piece(p));
     c->run->intersection_faces.push_back({p.face[0], p.face[1]});
     return Status::kOk;
   }
-  (p.edge < c->run->n_drawn ? c->run->pieces : c->run->contour_diagonals)
-      .push_back(SolidPiece{p, p.q, p.hidden});
+  (p.edge < c->run->n_drawn ? c->run->pieces : c->run->contour_diagonals).push_back(solid_piece(p));
   return Status::kOk;
 }
 

@@ -144,6 +144,20 @@ refused "begins with 'solid' but holds a NUL byte" s.svg plot short.stl --mode h
 head -c 50 /dev/zero > zeros.stl
 refused "does not begin with 'solid'" s.svg plot zeros.stl --mode hidden-removed -o s.svg
 
+# An OBJ file longer than the 64 KB head that says what it is is parsed from the file, never
+# held whole (io/mesh_file.cpp): the same drawing as its text read whole (a head of blanks
+# decides nothing, so that copy is), and content that is not OBJ is still refused by name.
+"$tool" demo-scene --cubes 40 -o big.obj
+{ head -c 70000 /dev/zero | tr '\0' '\n'; cat big.obj; } > blank_head.obj
+"$tool" plot big.obj --mode hidden-removed -o big.svg --spans big.spans
+"$tool" plot blank_head.obj --mode hidden-removed -o blank.svg --spans blank.spans
+expect 'cmp -s big.spans blank.spans && [ -s big.spans ]' "a long OBJ streamed draws as read whole"
+{ printf 'ply\nformat ascii 1.0\n'; head -c 70000 /dev/zero | tr '\0' ' '; } > ply.obj
+refused "not a Wavefront OBJ file: it is a PLY file" p.svg plot ply.obj --mode hidden-removed -o p.svg
+{ head -c 80 /dev/zero; printf '\x78\x05\x00\x00'; head -c 70000 /dev/zero; } > stl.obj
+refused "not a Wavefront OBJ file: it is a binary STL file" p.svg plot stl.obj --mode hidden-removed \
+  -o p.svg
+
 # An output that cannot be written is said before any work: one line, naming the path and why,
 # whichever output it is and in whichever command, and nothing else is written.
 refused "nodir/x.svg: cannot write there (no folder 'nodir/')" fine2.svg \

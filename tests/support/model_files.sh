@@ -4,6 +4,9 @@
 #        torus_sphere_obj            the 10 x 5 torus (R 1.5, r 0.5) with a 6 x 5 sphere through it
 #        uv_sphere_obj R NS NT       a UV sphere around the y axis, NS segments, NT rings:
 #                                    2 NS (NT - 1) triangles
+#        pierced_tori_obj NU NV      three tori (R 1.5, r 0.5) around the y, z and x axes through
+#                                    one another, each NU x NV quads: 6 NU NV triangles, a
+#                                    closed mesh that pierces itself (600 280: 1,008,000)
 torus_obj() {
   awk -v R="$1" -v r="$2" -v nu="$3" -v nv="$4" 'BEGIN {
     pi = 3.14159265358979
@@ -72,4 +75,28 @@ box() {  # x0 x1 y0 y1 z0 z1 first-vertex: 8 vertices and 6 faces, counter-clock
   echo "f $((b + 2)) $((b + 6)) $((b + 7)) $((b + 3))"
   echo "f $b $((b + 4)) $((b + 6)) $((b + 2))"
   echo "f $((b + 1)) $((b + 3)) $((b + 7)) $((b + 5))"
+}
+
+# Three tori whose surfaces pass through one another (a mesh that pierces itself, as an
+# assembly of overlapping parts does): torus k is torus_obj's turned by k cyclic shifts of the
+# axes (a rotation, so each stays wound outward) and moved by (0.21 k, -0.13 k, 0.17 k), so no
+# two share a plane of symmetry.
+pierced_tori_obj() {
+  awk -v nu="$1" -v nv="$2" 'BEGIN {
+    pi = 3.14159265358979; R = 1.5; r = 0.5
+    for (k = 0; k < 3; k++) {
+      for (i = 0; i < nu; i++) for (j = 0; j < nv; j++) {
+        u = 2 * pi * i / nu; v = 2 * pi * j / nv
+        p[0] = (R + r * cos(v)) * cos(u); p[1] = r * sin(v); p[2] = (R + r * cos(v)) * sin(u)
+        printf "v %.6f %.6f %.6f\n", p[(3 - k) % 3] + 0.21 * k, p[(4 - k) % 3] - 0.13 * k,
+          p[(5 - k) % 3] + 0.17 * k
+      }
+      base = k * nu * nv
+      for (i = 0; i < nu; i++) for (j = 0; j < nv; j++) {
+        a = base + i * nv + j + 1; b = base + ((i + 1) % nu) * nv + j + 1
+        c = base + ((i + 1) % nu) * nv + (j + 1) % nv + 1; d = base + i * nv + (j + 1) % nv + 1
+        printf "f %d %d %d %d\n", a, d, c, b
+      }
+    }
+  }'
 }
