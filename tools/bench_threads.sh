@@ -114,7 +114,9 @@ section() {
   echo
   echo "What runs in parts (each part's results joined in part order, so the bytes are the same"
   echo "at any count): the topology's build by ranges of vertices and its stars, the edges' fill"
-  echo "and marks, CUT's cell lists and pairs, the incidences' tests and coincident vertices, the"
+  echo "and marks, CUT's plan, cell lists, pairs and sorting (and the clearing of its buffer on"
+  echo "the host: host_sim/pipeline/parted_memory.h), the incidences' tests and coincident"
+  echo "vertices, the"
   echo "QI's face grid (built once a run) and its walks, the intersection lines, and the pieces"
   echo "where the walks stop at pierces. What stays on one thread: handing the pieces to the"
   echo "host's sink (its vectors' first touches), classify, the prefix sums between the parts."
@@ -124,7 +126,8 @@ section() {
   echo "are fixed by the mesh (2^15 vertices each), not by the threads, so one thread runs the same"
   echo "parts and every count above is the same. Outside the stage, reading, welding and orienting"
   echo "the model, the pen path and the files cost about as much again. The paper's random scene's"
-  echo "CUT is a few milliseconds, so its ratio moves with the shared machine's load."
+  echo "CUT is a few milliseconds, so its ratio moves with the shared machine's load. The CUT rows"
+  echo "hand host_cut a copy of the edges made before the clock starts, as plot moves its edges in."
 }
 if [ "$print" = 1 ]; then section; exit 0; fi
 section > "$work/section.md"

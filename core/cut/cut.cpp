@@ -172,34 +172,41 @@ inline uint32_t crossing_position(int64_t num, int64_t den) {
   return frac_q32_small(num, den);
 }
 
+// C6.3-C6.5 for a pair whose projections cross at x (test_crossing()'s result).
+template <typename Entry>
+void record_crossing(const Grid&, const CellBox& cb, const Edge3* edges, const Entry& ei,
+                     const Entry& ej, const CrossingTest& x, Recorder& rec, CutStats& st) {
+  const auto& p = ei.segment(edges);
+  const uint32_t ep = ei.edge, eq = ej.edge;
+  // C6.3: report the crossing only in the cell that holds it, decided exactly.
+  if (!owns(cb, p.a.x, p.b.x - p.a.x, p.a.y, p.b.y - p.a.y, x.tn, x.den)) {
+    ++st.rejected;
+    return;
+  }
+  const int depth = compare_depth_at_crossing(ei.depths(edges), ej.depths(edges), x);  // C6.4
+  if (depth == 0) {
+    ++st.equal_depth;
+    return;
+  }
+  const uint32_t behind = depth < 0 ? ep : eq, front = depth < 0 ? eq : ep;
+  const uint32_t t = crossing_position(depth < 0 ? x.tn : x.un, x.den);
+  if (rec.rows && !position_in_rows(edges[behind], t, rec.row_lo, rec.row_hi)) {
+    ++st.outside_rows;
+    return;
+  }
+  ++st.crossings;
+  rec.add(behind, front, t);
+}
+
 // C6.2-C6.5 for one pair inside a cell whose boxes overlap (or that crosses, by
 // crossing_mask); edge ei < edge ej. Near misses go back to the full edges.
 template <typename Entry>
 void test_pair(const Grid& g, const CellBox& cb, const Edge3* edges, const Entry& ei,
                const Entry& ej, int32_t reach, Recorder& rec, CutStats& st) {
-  const auto& p = ei.segment(edges);
-  const auto& q = ej.segment(edges);
   const uint32_t ep = ei.edge, eq = ej.edge;
-  const CrossingTest x = test_crossing(p, q);
+  const CrossingTest x = test_crossing(ei.segment(edges), ej.segment(edges));
   if (x.crosses) {
-    // C6.3: report the crossing only in the cell that holds it, decided exactly.
-    if (!owns(cb, p.a.x, p.b.x - p.a.x, p.a.y, p.b.y - p.a.y, x.tn, x.den)) {
-      ++st.rejected;
-      return;
-    }
-    const int depth = compare_depth_at_crossing(ei.depths(edges), ej.depths(edges), x);  // C6.4
-    if (depth == 0) {
-      ++st.equal_depth;
-      return;
-    }
-    const uint32_t behind = depth < 0 ? ep : eq, front = depth < 0 ? eq : ep;
-    const uint32_t t = crossing_position(depth < 0 ? x.tn : x.un, x.den);
-    if (rec.rows && !position_in_rows(edges[behind], t, rec.row_lo, rec.row_hi)) {
-      ++st.outside_rows;
-      return;
-    }
-    ++st.crossings;
-    rec.add(behind, front, t);
+    record_crossing(g, cb, edges, ei, ej, x, rec, st);
     return;
   }
   if (reach <= 0) return;
@@ -245,9 +252,14 @@ uint32_t count_and_log(const CutPlan& plan, const Edge3* edges, uint32_t e0, uin
                        uint32_t* count, Visit* log, uint32_t slots) {
   uint32_t logged = 0;
   bool fits = log != nullptr;
+  // Copies: the counts and the log are uint32_t stores, which the compiler must otherwise
+  // assume may change the plan's grid, and so reload it and redo its sums for every edge.
+  const Grid g = plan.grid;
+  const CellCover cover = plan.params.cover;
+  const int32_t reach = plan.params.reach;
   for (uint32_t i = e0; i < e1; ++i) {
     CellBlock b;
-    if (cells_in_block(plan.grid, edges[i], plan.params.cover, plan.params.reach, &b)) {
+    if (cells_in_block(g, edges[i], cover, reach, &b)) {
       fits = fits && logged + kLogSpare <= slots;
       // Weighted, so no branch per cell: a cell of weight 0 is written to the log's next slot
       // (overwritten by the next visit, or a spare slot) and counted 0 times.
@@ -260,13 +272,50 @@ uint32_t count_and_log(const CutPlan& plan, const Edge3* edges, uint32_t e0, uin
       }
       continue;
     }
-    for_each_cell(plan.grid, edges[i], plan.params.cover, plan.params.reach, [&](uint32_t c) {
+    for_each_cell(g, edges[i], cover, reach, [&](uint32_t c) {
       ++count[c];
       fits = fits && logged < slots;
       if (fits) log[logged++] = Visit{c, i};
     });
   }
   return fits ? logged : slots + 1;
+}
+
+// With the log, the lists are filled in two passes: the visits drop their edges' indices
+// (4 bytes) where the entries go, then the entries (a copy of each edge, 28 bytes) are written
+// in list order, reading the edges those indices name. Dropping the entries themselves would
+// scatter 28-byte writes over lists far larger than a cache; the indices' scatter spans a
+// seventh of that, and the copy reads where the one before scattered writes (reads overlap;
+// a write waits for its line).
+//
+// The indices of lists with `total` entries can lie in the last 4 * total bytes of the lists
+// themselves: entry k ends at byte s (k + 1) (s = sizeof(Entry) >= 4), index k + 1 starts at
+// (s - 4) total + 4 (k + 1), not before it while k + 1 <= total. So copying in ascending order
+// overwrites only indices already read. Parts drop their entries directly (FillParts):
+// copying at once, they would overwrite indices another part has yet to read, and moving the
+// indices out of the way first cost more on two threads than the scatter it saves.
+template <typename Entry>
+uint32_t* index_after_lists(Entry* list, uint32_t total) {
+  return reinterpret_cast<uint32_t*>(reinterpret_cast<uint8_t*>(list) +
+                                     size_t{total} * (sizeof(Entry) - sizeof(uint32_t)));
+}
+
+// Drops the logged visits' edge indices at cursor[cell], moving each cursor on.
+void place_from_log(const Visit* log, uint32_t logged, uint32_t* cursor, uint32_t* index) {
+  for (uint32_t v = 0; v < logged; ++v) index[cursor[log[v].cell]++] = log[v].edge;
+}
+
+// list[k] = the entry of edge index[k], for k in [k0, k1), in ascending order.
+template <typename Entry>
+void copy_entries(const Edge3* edges, const uint32_t* index, uint32_t k0, uint32_t k1,
+                  Entry* list) {
+  // The reads jump over the edges: ask for each one's line a few entries ahead.
+  constexpr uint32_t kAhead = 16;
+  for (uint32_t k = k0; k < k1; ++k) {
+    if (k + kAhead < k1) __builtin_prefetch(&edges[index[k + kAhead]]);
+    const uint32_t e = index[k];
+    list[k] = Entry::make(edges[e], e);
+  }
 }
 
 // Drops the logged visits' entries into the lists at cursor[cell], moving each cursor on.
@@ -297,7 +346,9 @@ void fill_cells_logged(const CutPlan& plan, const Edge3* edges, uint32_t* cell_s
     cell_start[c + 1] = at;
     at += count;
   }
-  fill_from_log(edges, log, logged, cell_start + 1, list);
+  uint32_t* index = index_after_lists(list, at);
+  place_from_log(log, logged, cell_start + 1, index);
+  copy_entries(edges, index, 0, at, list);
 }
 
 // The same counting sort in parts of the edges, each with its own cursor into every cell (and
@@ -385,25 +436,51 @@ constexpr bool kDecideEveryPair = kHost;
 
 // Bit (j - j0) set for every j in [j0, j1) (at most 64) whose segment properly crosses P:
 // test_crossing()'s strict sign rule, on the side values it computes, relative to P's start.
-static_assert(kCrossBits + 2 <= 63, "side values, and s4 = s3 + s1 - s2, must fit int64_t");
+// Q's ends relative to P's start are differences of in-range coordinates (|.| < 2^kDiffBits,
+// int32_t), so every side value is a difference of two 32 x 32 -> 64 products.
+static_assert(kCrossBits + 2 <= 62, "side values, and s4 = s3 + s1 - s2, must fit int64_t");
+// The four side values of a pair: s1, s2 (Q's ends against P's line) and s3, s4 (P's ends
+// against Q's line), all relative to P's start; s3 and s4 as test_crossing() has them.
+struct Sides {
+  int64_t s1, s2, s3, s4;
+};
+template <typename Segment>
+inline Sides sides(const Segment& q, int32_t pax, int32_t pay, int32_t pdx, int32_t pdy) {
+  const int32_t qax = q.a.x - pax, qay = q.a.y - pay, qbx = q.b.x - pax, qby = q.b.y - pay;
+  const int64_t s1 = mul_32x32(pdx, qay) - mul_32x32(pdy, qax);
+  const int64_t s2 = mul_32x32(pdx, qby) - mul_32x32(pdy, qbx);
+  // cross(dq, P.a - Q.a) = (qby - qay) qax - (qbx - qax) qay: the qax qay terms cancel.
+  const int64_t s3 = mul_32x32(qax, qby) - mul_32x32(qay, qbx);
+  // P's end: s4 = s3 + cross(dq, dp), and cross(dp, dq) = s2 - s1 (all below 2^44).
+  return Sides{s1, s2, s3, s3 + s1 - s2};
+}
+// Sign bit set exactly when a and b are nonzero with opposite signs (|a|, |b| < 2^62): then
+// one of a & -b, -a & b has both operands negative; if either is 0, or both share a sign, no
+// operand pair is negative together.
+inline int64_t strictly_apart(int64_t a, int64_t b) { return (a & -b) | (-a & b); }
+
 template <typename Entry>
-uint64_t crossing_mask(const Entry* list, const Edge3* edges, int64_t pax, int64_t pay, int64_t pdx,
-                       int64_t pdy, uint32_t j0, uint32_t j1) {
-  auto crosses = [&](uint32_t j) {
-    const auto& q = list[j].segment(edges);
-    const int64_t qax = q.a.x - pax, qay = q.a.y - pay, qbx = q.b.x - pax, qby = q.b.y - pay;
-    const int64_t s1 = pdx * qay - pdy * qax, s2 = pdx * qby - pdy * qbx;  // Q's ends, P's line
-    const int64_t s3 = (qby - qay) * qax - (qbx - qax) * qay;  // P's start against Q's line
-    // P's end: s4 = s3 + cross(dq, dp), and cross(dp, dq) = s2 - s1 (all below 2^43).
-    const int64_t s4 = s3 + s1 - s2;
-    // Strictly apart: signs differ and neither is zero (an end on the other's line).
-    const bool apart12 = ((s1 ^ s2) < 0) & (s1 != 0) & (s2 != 0);
-    const bool apart34 = ((s3 ^ s4) < 0) & (s3 != 0) & (s4 != 0);
-    return apart12 & apart34;
-  };
+uint64_t crossing_mask(const Entry* list, const Edge3* edges, int32_t pax, int32_t pay, int32_t pdx,
+                       int32_t pdy, uint32_t j0, uint32_t j1) {
   uint64_t mask = 0;
-  for (uint32_t j = j0; j < j1; ++j) mask |= uint64_t(crosses(j)) << (j - j0);
+  for (uint32_t j = j1; j-- > j0;) {  // downwards, so j0's bit is shifted last, into bit 0
+    const Sides s = sides(list[j].segment(edges), pax, pay, pdx, pdy);
+    const int64_t both = strictly_apart(s.s1, s.s2) & strictly_apart(s.s3, s.s4);
+    mask = (mask << 1) | (uint64_t(both) >> 63);
+  }
   return mask;
+}
+
+// test_crossing()'s result for a pair the mask found crossing, from the same side values
+// (its tn, un and den, each made positive the same way), without testing the signs again.
+inline CrossingTest crossing_from(const Sides& s) {
+  CrossingTest r;
+  r.crosses = true;
+  r.den = s.s3 - s.s4;
+  r.tn = r.den < 0 ? -s.s3 : s.s3;
+  r.den = r.den < 0 ? -r.den : r.den;
+  r.un = s.s1 - s.s2 < 0 ? -s.s1 : s.s1;
+  return r;
 }
 
 // C6: every pair inside cells [c_begin, c_end). The part that reports progress maps its own
@@ -430,12 +507,15 @@ void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_st
       // each Q's mark first, a branch that seldom goes the other way, and decides no more.
       if (kDecideEveryPair && r == 0 && p_marked) {
         const auto& p = list[i].segment(edges);
-        const int64_t pdx = p.b.x - p.a.x, pdy = p.b.y - p.a.y;
+        const int32_t pdx = p.b.x - p.a.x, pdy = p.b.y - p.a.y;
         for (uint32_t j0 = i + 1; j0 < end; j0 += 64) {
           const uint32_t j1 = end - j0 > 64 ? j0 + 64 : end;
           for (uint64_t m = crossing_mask(list, edges, p.a.x, p.a.y, pdx, pdy, j0, j1); m != 0;
-               m &= m - 1)
-            test_pair(g, cb, edges, list[i], list[j0 + uint32_t(__builtin_ctzll(m))], r, rec, st);
+               m &= m - 1) {
+            const Entry& q = list[j0 + uint32_t(__builtin_ctzll(m))];
+            const Sides sv = sides(q.segment(edges), p.a.x, p.a.y, pdx, pdy);
+            record_crossing(g, cb, edges, list[i], q, crossing_from(sv), rec, st);
+          }
         }
         continue;
       }
@@ -772,10 +852,16 @@ Status plan_cut(const Edge3* edges, uint32_t n, const CutParams& params, CutPlan
   if (parts > 1) {
     const Status s = plan_in_parts(edges, n, parts, &p, &pairs);
     if (s != Status::kOk) return s;
-  } else {
-    for (uint32_t i = 0; i < n; ++i)
-      if (!in_range(edges[i])) return Status::kCoordinateOutOfRange;
-    p.grid = choose_grid(edges, n, params.grid);
+  } else if (n > 0) {
+    // The range check and the extent in one pass (choose_grid's, less a pass of its own).
+    bool all = true;
+    Extent x;
+    for (uint32_t i = 0; i < n; ++i) {
+      all = all && in_range(edges[i]);
+      x.add(edges[i]);
+    }
+    if (!all) return Status::kCoordinateOutOfRange;
+    p.grid = grid_for(x, n, params.grid.cell <= 0 ? average_length(edges, n) : 0, params.grid);
     pairs = pair_bound(p.grid, edges, 0, n, params.reach);
   }
   if (pairs > 0xffffffffu) return Status::kCellPairOverflow;

@@ -5,10 +5,38 @@
 
 namespace haloplot {
 
+#if UINTPTR_MAX > 0xffffffffu
+namespace {
+
+// floor(sqrt(v)) for v < 2^62 by the bit-pair method, as isqrt_u64, but each step decided
+// without a branch: the steps go either way about equally often, so a branch per step would
+// mispredict about half of them. A 64-bit target's (where 64-bit operations are one
+// instruction); tests/unit/test_cut_grid checks it by the root's definition.
+static_assert(2 * kDiffBits + 1 <= 62, "a squared length must fit the root's 62 bits");
+uint32_t root_without_branches(uint64_t v) {
+  uint64_t root = 0, rem = 0;
+  for (int shift = v == 0 ? -2 : (63 - __builtin_clzll(v)) & ~1; shift >= 0; shift -= 2) {
+    rem = (rem << 2) | ((v >> shift) & 3u);
+    const uint64_t trial = (root << 2) | 1u;
+    const uint64_t take = uint64_t(rem >= trial);
+    rem -= trial & (0 - take);
+    root = (root << 1) | take;
+  }
+  return static_cast<uint32_t>(root);
+}
+
+}  // namespace
+#endif
+
 uint32_t projected_length(const Edge3& e) {
   const int32_t dx = e.b.x - e.a.x, dy = e.b.y - e.a.y;
-  return isqrt_u64(static_cast<uint64_t>(mul_narrow<kDiffBits, kDiffBits>(dx, dx) +
-                                         mul_narrow<kDiffBits, kDiffBits>(dy, dy)));
+  const uint64_t squared = static_cast<uint64_t>(mul_narrow<kDiffBits, kDiffBits>(dx, dx) +
+                                                 mul_narrow<kDiffBits, kDiffBits>(dy, dy));
+#if UINTPTR_MAX > 0xffffffffu
+  return root_without_branches(squared);
+#else
+  return isqrt_u64(squared);
+#endif
 }
 
 uint32_t average_length(const Edge3* edges, uint32_t n) {

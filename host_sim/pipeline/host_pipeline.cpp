@@ -30,7 +30,7 @@ Status host_cut(std::vector<Edge3> edges, const CutParams& params, HostCut* out)
   StageNeeds needs;
   needs.crossings = 4 * n + 1024;
   CutStage stage{&out->plan, out->edges.data(), &out->set, &out->stats};
-  HostMemory memory;
+  PartedMemory memory{params.parts, {}};  // cleared in CUT's parts on threads
   int rounds = 0;
   s = run_sized(stage, memory.memory(), &needs, &rounds);
   out->storage = std::move(memory.words);  // the CUTSET lives at its start

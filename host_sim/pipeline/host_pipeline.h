@@ -7,12 +7,13 @@
 #include "haloplot/band/conductor.h"
 #include "haloplot/haloplot.h"
 #include "pipeline/host_memory.h"
+#include "pipeline/parted_memory.h"
 
 namespace haloplot::host {
 
 struct HostCut {
   std::vector<Edge3> edges;  // owned copy: the CUTSET points into it
-  ZeroedWords storage;       // the CUTSET at its start (8-byte aligned), then CUT's scratch
+  PartedWords storage;       // the CUTSET at its start (8-byte aligned), then CUT's scratch
   CutPlan plan;
   CutSet set;
   CutStats stats;

@@ -306,9 +306,11 @@ int main(int argc, char** argv) {
           "load makes this figure, and the ratio against it, the less steady one. Where "
           "CUT's time goes on one thread (phase clock, wall, its fastest round): T1 "
        << fmt(cut.t1, 2)
-       << " ms (the plan: range check, grid choice and the bound on (cell, edge) pairs; then one "
-          "walk per edge that counts its cells and logs them, and a fill that reads the log and "
-          "drops a copy of each edge, 28 bytes, into its cells' lists), T2 "
+       << " ms (the plan: the range check with the scene's extent in one pass, the grid chosen "
+          "from sampled lengths, and the bound on (cell, edge) pairs; then one walk per edge that "
+          "counts its cells and logs them; then the fill: each logged visit drops its edge's "
+          "index, 4 bytes, where its entry goes, and the entries, a copy of each edge of 28 "
+          "bytes, are written in list order from those indices), T2 "
        << fmt(cut.t2, 2) << " ms (" << cut.stats.pairs_tested
        << " pairs sharing a cell, every one decided by its four side values without a branch "
           "into a mask of the pairs that cross; only those "
@@ -316,7 +318,8 @@ int main(int argc, char** argv) {
        << " take the branches after it: which cell owns the crossing, depth, position), grouping "
        << fmt(cut.group, 2) << " ms. On " << all_label << ": T1 " << fmt(cut_all.t1, 2)
        << " ms, T2 " << fmt(cut_all.t2, 2) << " ms, grouping " << fmt(cut_all.group, 2)
-       << " ms (the plan and the grouping's counting run on one thread). CGAL's own time varies "
+       << " ms (the plan, the fill, the pairs and the sorting each run in parts; the grouping's "
+          "counting sort and the sums between the parts on one thread). CGAL's own time varies "
           "by about 1.7x between runs on these machines, so read its ratio with that margin.\n\n";
   }
 

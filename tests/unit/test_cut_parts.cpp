@@ -4,6 +4,8 @@
 // (they run again into what the others left) or that the whole does not fit (the count a
 // retry needs, as one part says it); and with edges so uneven that the first parts' cell
 // visits outgrow their share of the fill's logs. The plan made in parts is the one-part plan.
+// The parts cover each split stage: the plan, the fill (each part's entries dropped from its
+// log, or by a walk again), the pairs and the sorting.
 #include <cstring>
 #include <vector>
 
