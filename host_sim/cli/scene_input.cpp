@@ -170,7 +170,7 @@ bool read_model(const Options& given, const std::string& path, ObjModel* model,
   }
   // Open shells after the default weld: are they gaps a larger weld closes, or open as made?
   // (Measured only for the message, where a caller asks for the report.)
-  if (repair != nullptr && o.get("--weld").empty() &&
+  if (repair != nullptr && repair->measure_open && o.get("--weld").empty() &&
       report.shells > report.closed_shells + report.unorientable_shells) {
     report.measured = true;
     report.open = measure_open_sides(*model);
@@ -481,6 +481,17 @@ std::string no_edges_left(const Options& o, const std::string& path) {
          "draw it with --mode hidden-removed or hidden-dashed (contours kept)";
 }
 
+// The edges-only drawings (haloed, --mode all) have no hidden-line stage to find contours:
+// where --crease left out a smooth surface's bends, its outline went with them, silently.
+std::string no_contours_note(const Options& o, const std::string& path, const RepairReport& r,
+                             const char* drawing) {
+  if (r.bent_edges == 0) return "";
+  return path + ": --crease " + o.get("--crease") + " left out " + std::to_string(r.bent_edges) +
+         " edges where the surface bends, and " + drawing +
+         " draws edges only, with no contours in their place, so the outline goes with them: "
+         "--mode hidden-removed or hidden-dashed draws the contours (or lower --crease)";
+}
+
 bool something_to_draw(const std::string& path, const std::vector<Edge3>& edges,
                        std::string* error) {
   if (edges.empty()) {
@@ -528,7 +539,9 @@ bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* e
   ObjModel model;
   std::vector<Point3> screen;
   View view;
-  if (!project_obj(o, path, &model, &screen, &view, error)) return false;
+  RepairReport repair;
+  repair.measure_open = false;  // no shells message here: only the bent edges are counted
+  if (!project_obj(o, path, &model, &screen, &view, error, &repair)) return false;
   units = view.substep_bits;
   if (substep_bits != nullptr) *substep_bits = units;
   Status s = Status::kOk;
@@ -543,6 +556,12 @@ bool load_scene(const Options& o, const std::string& path, std::vector<Edge3>* e
   if (edges->empty() && !model.faces.empty()) {  // every side within the crease angle
     *error = no_edges_left(o, path);
     return false;
+  }
+  // Said once: a haloed plot reads the model here once; --mode all's pen outputs read it again
+  // (cmd_plot_solid.cpp), after load_solid_scene said it.
+  if (!o.get("--halo").empty()) {
+    const std::string note = no_contours_note(o, path, repair, "a haloed drawing");
+    if (!note.empty()) std::cerr << "haloplot: " << note << "\n";
   }
   return something_to_draw(path, *edges, error) && dump_edges(o, path, *edges, units, error);
 }
@@ -581,7 +600,10 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
   if (!project_obj(o, path, &model, &scene->vertices, &view, error, &repair)) return false;
   scene->repair_note = shells_note(path, repair, o.get("--weld"));
   scene->repair_stats = shells_stats(repair, model.scale);
-  const std::string crease = crease_hint(path, repair);
+  // The hint leads to --crease, which only the hidden-line modes answer with contours.
+  const bool all = o.get("--mode") == "all";
+  const std::string crease =
+      all ? no_contours_note(o, path, repair, "--mode all") : crease_hint(path, repair);
   if (!crease.empty())
     scene->repair_note += (scene->repair_note.empty() ? "" : "\nhaloplot: ") + crease;
   scene->substep_bits = view.substep_bits;

@@ -561,6 +561,10 @@ void drop_flat_edges(ObjModel* model, const CreaseRule& rule, RepairReport* repo
     const bool two = sides.faces(a, b, face) == 2;
     if (two && flat_between(*model, shape, face[0], face[1], a, b, rule)) {
       ++report->flat_edges;
+      CreaseRule flat_only = rule;
+      flat_only.deg = 0;
+      if (rule.deg > 0 && !flat_between(*model, shape, face[0], face[1], a, b, flat_only))
+        ++report->bent_edges;
       continue;
     }
     if (two && rule.deg == 0 && gentle_between(*model, shape, face[0], face[1], a, b))

@@ -44,6 +44,9 @@ struct RepairReport {
   uint32_t turned_shells = 0;        // closed shells turned outward (inside out before)
   uint32_t unorientable_shells = 0;  // left as given: non-manifold sides or a twist
   uint32_t flat_edges = 0;           // drawn edges between faces within the crease angle
+  // Of those, the ones only --crease DEG left out (not flat but for the rounding): a bend of a
+  // smooth surface, whose contours only the hidden-line modes draw in their place.
+  uint32_t bent_edges = 0;
   // Without a crease angle: drawn edges kept between faces less than kGentleDegrees apart (a
   // smooth surface's facets, which --crease would leave out), of kept_edges drawn in all.
   uint32_t gentle_edges = 0, kept_edges = 0;
@@ -51,6 +54,7 @@ struct RepairReport {
   // Filled in by the reader where asked (scene_input.h, read_model): the open sides measured
   // and the weld they suggest (open_sides.h).
   bool measured = false;
+  bool measure_open = true;  // asked by the caller: false where no shells message is said
   OpenSides open;
   WeldHint weld;
   // With --weld EPS given and a shell not closed: the file welded at EPS and at the default

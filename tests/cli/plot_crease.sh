@@ -5,8 +5,8 @@
 # draws something, and every point it draws is a point of the same view's drawing with every
 # edge kept (--crease off: the contours are mesh edges, at the same fit on the page), with
 # fewer points (in the visible layer; hidden-dashed also dashes the hidden contours). `--mode
-# all` works out no contours: it refuses, naming --crease. Without --crease, a dense smooth
-# model's plot suggests it.
+# all` works out no contours: it refuses, naming --crease, and says where --crease left bends
+# out. Without --crease, a dense smooth model's hidden-line plot suggests it.
 # Usage: plot_crease.sh HALOPLOT
 set -u
 tool="$1"
@@ -94,6 +94,37 @@ for given in "dense.obj --crease 40" "torus.obj"; do
   if "$tool" plot $given --view 30,25 --mode hidden-removed -o d.svg 2> err.txt &&
      ! grep -q "$hint" err.txt; then
     ok "no hint for $given"
+  else
+    bad "$given: $(cat err.txt)"
+  fi
+done
+
+# The edges-only drawings (--mode all, haloed) work out no contours, so the hint, which leads
+# to --crease, is not given there (following it lost the fresh user's outline silently), and a
+# --crease that left out bends says the outline went with them. Flat diagonals alone (a box of
+# triangles) are no bend: no word.
+if "$tool" plot dense.obj --view 30,25 --mode all -o d.svg 2> err.txt && ! grep -q "$hint" err.txt; then
+  ok "no hint for --mode all"
+else
+  bad "--mode all on the dense torus: $(cat err.txt)"
+fi
+note="no contours in their place"
+for drawing in "--mode all" "--halo 40"; do
+  # shellcheck disable=SC2086
+  if "$tool" plot torus.obj --view 30,25 $drawing --crease 10 -o d.svg 2> err.txt &&
+     [ "$(grep -c "$note" err.txt)" -eq 1 ] && grep -q -- "--crease 10 left out 96 edges" err.txt &&
+     grep -q -- "--mode hidden-removed" err.txt; then
+    ok "$drawing --crease 10 says the outline goes: $(grep "$note" err.txt)"
+  else
+    bad "$drawing --crease 10: $(cat err.txt)"
+  fi
+done
+box 0 1 0 1 1 0 1 | awk '$1 == "f" { print "f", $2, $3, $4; print "f", $2, $4, $5; next } 1' > tri_box.obj
+for given in "torus.obj --mode hidden-removed --crease 10" "tri_box.obj --halo 40 --crease 40" \
+             "tri_box.obj --mode all --crease 40"; do
+  # shellcheck disable=SC2086
+  if "$tool" plot $given --view 30,25 -o d.svg 2> err.txt && ! grep -q "$note" err.txt; then
+    ok "no contours note for $given"
   else
     bad "$given: $(cat err.txt)"
   fi
