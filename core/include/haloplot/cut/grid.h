@@ -71,8 +71,8 @@ inline Grid grid_over(const Point3* p, uint32_t n, uint32_t per_axis) {
 struct CellSpan {
   uint32_t c0, c1, r0, r1;
 };
-inline CellSpan cell_span(const Grid& g, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
-                          int32_t reach) {
+__attribute__((always_inline)) inline CellSpan cell_span(const Grid& g, int32_t x0, int32_t y0,
+                                                         int32_t x1, int32_t y1, int32_t reach) {
   const int32_t xmax_scene = g.ox + static_cast<int32_t>(g.nx) * g.cell - 1;
   const int32_t ymax_scene = g.oy + static_cast<int32_t>(g.ny) * g.cell - 1;
   return CellSpan{g.col(max_i32(x0 - reach, g.ox)), g.col(min_i32(x1 + reach, xmax_scene)),
