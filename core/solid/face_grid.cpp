@@ -122,6 +122,17 @@ __attribute__((noinline)) void fill_in_parts(const Topology& topo, const Grid& g
   run_parts(*parts, n, &GridParts::fill, &gp);
 }
 
+// After either fill, first[c] is cell c's end, which is c + 1's start: shifted into place.
+Status finish(const Grid& g, uint32_t* first, uint32_t* faces, uint64_t pairs, FaceGrid* out) {
+  for (uint32_t c = g.cells(); c > 0; --c) first[c] = first[c - 1];
+  first[0] = 0;
+  out->grid = g;
+  out->first = first;
+  out->faces = faces;
+  out->pairs = static_cast<uint32_t>(pairs);
+  return Status::kOk;
+}
+
 // One part: the cells' counts, taken where the index goes, give the number of pairs, so the
 // faces' boxes are walked twice (count, fill), not three times (count_pairs first).
 Status build_in_one(const Topology& topo, const Grid& g, void* buffer, size_t bytes,
@@ -138,13 +149,7 @@ Status build_in_one(const Topology& topo, const Grid& g, void* buffer, size_t by
   if (carve.short_) return Status::kWorkspaceTooSmall;
   for (uint32_t c = 0; c < g.cells(); ++c) first[c + 1] += first[c];
   fill_cells(topo, g, 0, topo.n_triangles, first, faces);
-  for (uint32_t c = g.cells(); c > 0; --c) first[c] = first[c - 1];
-  first[0] = 0;
-  out->grid = g;
-  out->first = first;
-  out->faces = faces;
-  out->pairs = static_cast<uint32_t>(pairs);
-  return Status::kOk;
+  return finish(g, first, faces, pairs, out);
 }
 
 }  // namespace
@@ -175,8 +180,7 @@ Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGri
   const Grid g = choose_grid(topo, coarsen);
   uint32_t n = part_count(parts, topo.n_triangles);
   if (n <= 1) return build_in_one(topo, g, buffer, bytes, out);
-  const uint64_t pairs =
-      n > 1 ? count_pairs_in_parts(topo, g, n, parts) : count_pairs(topo, g, 0, topo.n_triangles);
+  const uint64_t pairs = count_pairs_in_parts(topo, g, n, parts);
   if (pairs > 0xffffffffu) return Status::kCellPairOverflow;
   Carver carve(buffer, bytes);
   uint32_t* first = carve.take<uint32_t>(size_t{g.cells()} + 1);
@@ -184,22 +188,10 @@ Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGri
   if (carve.short_) return Status::kWorkspaceTooSmall;
   // As many parts as the bytes left hold the cursors of (one needs none).
   const size_t part_bytes = size_t{g.cells()} * 4;
-  if (n > 1 && carve.left / part_bytes + 1 < n) n = uint32_t(carve.left / part_bytes + 1);
-  if (n > 1) {
-    fill_in_parts(topo, g, n, parts, first, reinterpret_cast<uint32_t*>(carve.next), faces);
-  } else {
-    for (uint32_t c = 0; c <= g.cells(); ++c) first[c] = 0;
-    count_cells(topo, g, 0, topo.n_triangles, first + 1);
-    for (uint32_t c = 0; c < g.cells(); ++c) first[c + 1] += first[c];
-    fill_cells(topo, g, 0, topo.n_triangles, first, faces);
-  }
-  for (uint32_t c = g.cells(); c > 0; --c) first[c] = first[c - 1];
-  first[0] = 0;
-  out->grid = g;
-  out->first = first;
-  out->faces = faces;
-  out->pairs = static_cast<uint32_t>(pairs);
-  return Status::kOk;
+  if (carve.left / part_bytes + 1 < n) n = uint32_t(carve.left / part_bytes + 1);
+  if (n <= 1) return build_in_one(topo, g, buffer, bytes, out);
+  fill_in_parts(topo, g, n, parts, first, reinterpret_cast<uint32_t*>(carve.next), faces);
+  return finish(g, first, faces, pairs, out);
 }
 
 }  // namespace haloplot
