@@ -596,12 +596,16 @@ bool load_solid_scene(const Options& o, const std::string& path, SolidScene* sce
   }
   ObjModel model;
   View view;
+  // --mode all hides nothing: an open shell, or one that cannot be oriented, changes nothing
+  // it draws, so it is not measured and not said (the fresh user read "so the hidden lines
+  // are right" under a drawing with no hidden lines).
+  const bool all = o.get("--mode") == "all";
   RepairReport repair;
+  repair.measure_open = !all;
   if (!project_obj(o, path, &model, &scene->vertices, &view, error, &repair)) return false;
-  scene->repair_note = shells_note(path, repair, o.get("--weld"));
+  scene->repair_note = all ? "" : shells_note(path, repair, o.get("--weld"));
   scene->repair_stats = shells_stats(repair, model.scale);
   // The hint leads to --crease, which only the hidden-line modes answer with contours.
-  const bool all = o.get("--mode") == "all";
   const std::string crease =
       all ? no_contours_note(o, path, repair, "--mode all") : crease_hint(path, repair);
   if (!crease.empty())

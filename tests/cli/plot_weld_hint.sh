@@ -73,6 +73,12 @@ if grep -q "hemisphere.obj: its shell is open as made: no other open side's corn
 else
   bad "the hemisphere: $(cat err.txt)"
 fi
+# --mode all hides nothing: the open shell changes nothing it draws, and is not said.
+if "$tool" plot hemisphere.obj --mode all -o hemisphere_all.svg 2> err.txt && [ ! -s err.txt ]; then
+  ok "--mode all says nothing of the hemisphere's open shell"
+else
+  bad "--mode all on the hemisphere: $(cat err.txt)"
+fi
 
 # The fin: a tetrahedron and a triangle on its edge from vertex 1 to vertex 2; comment lines
 # put the faces on known lines.
