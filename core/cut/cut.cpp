@@ -559,6 +559,25 @@ void add_stats(const CutStats& a, CutStats* sum) {
   sum->outside_rows += a.outside_rows;
 }
 
+// The grouping in parts (group_in_parts) splits the behind edges into buckets of 2^shift
+// edges, at most kMaxParts of them: a bucket's records are grouped and sorted by one part.
+uint32_t bucket_shift(uint32_t n_edges) {
+  uint32_t shift = 0;
+  while (n_edges > 0 && ((n_edges - 1) >> shift) + 1 > kMaxParts) ++shift;
+  return shift;
+}
+
+// The cell loop's records as its parts left them, each part's in its slice of the records
+// (part order), with each part's count of them per bucket: grouped from there in parts
+// (group_in_parts) without first being joined.
+struct RecordPieces {
+  uint32_t n = 0;  // 0: the records lie joined in [0, stored)
+  uint32_t shift = 0;
+  const Crossing* at[kMaxParts] = {};
+  uint32_t count[kMaxParts] = {};
+  uint32_t in_bucket[kMaxParts][kMaxParts] = {};  // [part][bucket]
+};
+
 // C6 split into parts of the cells, each cut at cells of about equal pair work and recording
 // into its own equal slice of the records. The records are then joined in part order; a part
 // that outgrew its slice runs again here into what the others left, so a run stores every
@@ -571,6 +590,7 @@ struct CellParts {
   const uint32_t* cell_start;
   const Entry* list;
   uint32_t n = 1;
+  RecordPieces* pieces = nullptr;  // counted into per bucket (a host's), or null
   uint32_t begin[kMaxParts + 1] = {};
   Recorder rec[kMaxParts] = {};
   CutStats st[kMaxParts] = {};
@@ -578,9 +598,15 @@ struct CellParts {
   void test(uint32_t j, Recorder& r, CutStats& s) const {
     test_cells(*plan, edges, cell_start, list, begin[j], begin[j + 1], j == 0, r, s);
   }
+  // Each part counts its records per bucket as it ends, while they are in its cache.
   static void run_one(void* arg, uint32_t j) {
     CellParts* self = static_cast<CellParts*>(arg);
     self->test(j, self->rec[j], self->st[j]);
+    if (!kHost || self->pieces == nullptr || self->rec[j].overflow) return;
+    uint32_t* in_bucket = self->pieces->in_bucket[j];
+    const uint32_t shift = self->pieces->shift;
+    for (uint32_t i = 0; i < self->rec[j].stored; ++i)
+      ++in_bucket[self->rec[j].out[i].behind >> shift];
   }
   // Cuts [0, cells) where the running sum of each cell's pair work reaches j / n of `total`.
   void split(uint32_t cells, uint64_t total) {
@@ -595,13 +621,14 @@ struct CellParts {
 };
 
 // Out of line: its bookkeeping takes stack only where a runner splits the loop (never on the
-// controller).
+// controller). With `pieces` (a host's), records that all fit their slices stay there.
 template <typename Entry>
 __attribute__((noinline)) void test_in_parts(const CutPlan& plan, const Edge3* edges,
                                              const uint32_t* cell_start, const Entry* list,
                                              uint32_t n_parts, uint64_t work, Recorder& rec,
-                                             CutStats& st) {
-  CellParts<Entry> cp{&plan, edges, cell_start, list, n_parts};
+                                             CutStats& st, RecordPieces* pieces) {
+  CellParts<Entry> cp{&plan, edges, cell_start, list, n_parts, pieces};
+  if (kHost && pieces != nullptr) pieces->shift = bucket_shift(plan.n_edges);
   cp.split(plan.grid.cells(), work);
   for (uint32_t j = 0; j < n_parts; ++j) {
     const uint32_t lo = uint32_t(uint64_t{rec.capacity} * j / n_parts);
@@ -616,6 +643,17 @@ __attribute__((noinline)) void test_in_parts(const CutPlan& plan, const Edge3* e
   }
   if (need > rec.capacity) {
     rec.overflow = true;
+    return;
+  }
+  bool all_fit = true;
+  for (uint32_t j = 0; j < n_parts; ++j) all_fit = all_fit && !cp.rec[j].overflow;
+  if (kHost && pieces != nullptr && all_fit) {
+    pieces->n = n_parts;
+    for (uint32_t j = 0; j < n_parts; ++j) {
+      pieces->at[j] = cp.rec[j].out;
+      pieces->count[j] = cp.rec[j].stored;
+    }
+    rec.stored = uint32_t(need);
     return;
   }
   // Slices lie in part order, so each part's records move down (or stay): copied forward.
@@ -638,7 +676,7 @@ __attribute__((noinline)) void test_in_parts(const CutPlan& plan, const Edge3* e
 // C3-C6 for one kind of cell entry.
 template <typename Entry>
 void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recorder& rec,
-                   CutStats& st) {
+                   CutStats& st, RecordPieces* pieces) {
   const uint32_t cells = plan.grid.cells();
   const uint32_t fill_parts = fill_part_count(plan.params, plan.n_edges);
   uint32_t* cell_start = static_cast<uint32_t*>(scratch);
@@ -661,7 +699,7 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
   if (n_parts == 1)
     test_cells(plan, edges, cell_start, list, 0, cells, true, rec, st);
   else
-    test_in_parts(plan, edges, cell_start, list, n_parts, work, rec, st);
+    test_in_parts(plan, edges, cell_start, list, n_parts, work, rec, st, pieces);
 }
 
 // C9's order inside each group of edges [e0, e1); returns the largest group. Ties (several
@@ -746,6 +784,105 @@ void group_records(Crossing* records, uint32_t stored, uint32_t n, const uint32_
       records[next[e]++] = x;
     }
   }
+}
+
+// The records of RecordPieces joined in [0, stored), as test_in_parts joins them: each piece
+// lies at or after the joined ones' end, so they move down (or stay), copied forward. Out of
+// line: seldom run (the scratch has no room for group_in_parts).
+__attribute__((noinline)) void join_pieces(RecordPieces* pieces, Crossing* records) {
+  uint32_t at = 0;
+  for (uint32_t j = 0; j < pieces->n; ++j) {
+    for (uint32_t i = 0; i < pieces->count[j]; ++i) records[at + i] = pieces->at[j][i];
+    at += pieces->count[j];
+  }
+  pieces->n = 0;
+}
+
+// C7-C9 in parts. First one part per piece of the cell loop's records moves them into the
+// scratch by bucket (bucket by bucket, each in part order), then one part per bucket groups
+// its records by behind edge with a counting sort into their place in the records (the
+// buckets' records lie in bucket order, as the groups do) and sorts its groups. The order a
+// group's records arrive in does not matter: C9's order is a total one on the records (two
+// that compare equal are equal).
+struct GroupParts {
+  const RecordPieces* pieces;
+  uint32_t n_edges, buckets;
+  uint32_t* next;  // next[n_edges]: the counting sort's cursors, each bucket its edges'
+  Crossing* copy;  // the records, bucket by bucket
+  Crossing* records;
+  uint32_t* first;
+  uint32_t bucket_at[kMaxParts + 1] = {};  // where each bucket's records start
+  uint32_t to[kMaxParts][kMaxParts] = {};  // [part][bucket]: the part's next slot there
+  uint32_t largest[kMaxParts] = {};
+
+  static void move(void* arg, uint32_t j) {
+    GroupParts* self = static_cast<GroupParts*>(arg);
+    uint32_t* to = self->to[j];
+    const uint32_t shift = self->pieces->shift;
+    const Crossing* from = self->pieces->at[j];
+    for (uint32_t i = 0, k = self->pieces->count[j]; i < k; ++i)
+      self->copy[to[from[i].behind >> shift]++] = from[i];
+  }
+  static void group(void* arg, uint32_t b) {
+    GroupParts* self = static_cast<GroupParts*>(arg);
+    const uint32_t shift = self->pieces->shift;
+    const uint32_t e0 = b << shift;
+    const uint32_t e1 = b + 1 == self->buckets ? self->n_edges : (b + 1) << shift;
+    uint32_t* next = self->next;
+    for (uint32_t e = e0; e < e1; ++e) next[e] = 0;
+    const Crossing* from = self->copy + self->bucket_at[b];
+    const uint32_t k = self->bucket_at[b + 1] - self->bucket_at[b];
+    for (uint32_t i = 0; i < k; ++i) ++next[from[i].behind];
+    // first[e0] and first[e1] are the buckets' starts, set before the parts run.
+    uint32_t at = self->bucket_at[b];
+    for (uint32_t e = e0; e < e1; ++e) {
+      if (e > e0) self->first[e] = at;
+      const uint32_t count = next[e];
+      next[e] = at;
+      at += count;
+    }
+    for (uint32_t i = 0; i < k; ++i) self->records[next[from[i].behind]++] = from[i];
+    self->largest[b] = sort_range(self->records, self->first, e0, e1);
+  }
+};
+
+// Whether the scratch holds group_in_parts' cursors and copy.
+bool groups_in_parts_fit(const RecordPieces& pieces, uint32_t n, uint32_t stored,
+                         size_t scratch_bytes) {
+  return pieces.n > 1 && scratch_bytes >= carve_round(size_t{n} * sizeof(uint32_t)) +
+                                              size_t{stored} * sizeof(Crossing);
+}
+
+// Out of line, as test_in_parts. Fills first[0 .. n] and the groups; returns the largest.
+__attribute__((noinline)) uint32_t group_in_parts(const Parts& parts, const RecordPieces& pieces,
+                                                  Crossing* records, uint32_t* first, uint32_t n,
+                                                  void* scratch) {
+  uint8_t* base = static_cast<uint8_t*>(scratch);
+  const uint32_t buckets = n == 0 ? 0 : ((n - 1) >> pieces.shift) + 1;
+  GroupParts gp{&pieces,
+                n,
+                buckets,
+                reinterpret_cast<uint32_t*>(base),
+                reinterpret_cast<Crossing*>(base + carve_round(size_t{n} * sizeof(uint32_t))),
+                records,
+                first};
+  uint32_t at = 0;
+  for (uint32_t b = 0; b < buckets; ++b) {
+    gp.bucket_at[b] = at;
+    first[b << pieces.shift] = at;
+    for (uint32_t j = 0; j < pieces.n; ++j) {
+      gp.to[j][b] = at;
+      at += pieces.in_bucket[j][b];
+    }
+  }
+  gp.bucket_at[buckets] = at;
+  first[n] = at;
+  run_parts(parts, pieces.n, &GroupParts::move, &gp);
+  run_parts(parts, buckets, &GroupParts::group, &gp);
+  uint32_t most = 0;
+  for (uint32_t b = 0; b < buckets; ++b)
+    if (gp.largest[b] > most) most = gp.largest[b];
+  return most;
 }
 
 }  // namespace
@@ -885,10 +1022,12 @@ Status run_cut(const CutPlan& plan, const Edge3* edges, void* scratch, size_t sc
   Crossing* records = reinterpret_cast<Crossing*>(first + n + 1);
   Recorder rec{records, cutset_capacity(n, cutset_storage_bytes), plan.params.rows,
                plan.params.row_lo, plan.params.row_hi};
+  RecordPieces pieces;
+  RecordPieces* in_place = kHost ? &pieces : nullptr;
   if (plan.params.compact_cells)
-    fill_and_test<CompactEntry>(plan, edges, scratch, rec, st);
+    fill_and_test<CompactEntry>(plan, edges, scratch, rec, st, in_place);
   else
-    fill_and_test<IndexEntry>(plan, edges, scratch, rec, st);
+    fill_and_test<IndexEntry>(plan, edges, scratch, rec, st, in_place);
   if (plan.params.progress) plan.params.progress(plan.params.progress_context, cells, cells);
   if (plan.params.phase) plan.params.phase(plan.params.phase_context, CutPhase::kPairsTested);
 
@@ -898,19 +1037,24 @@ Status run_cut(const CutPlan& plan, const Edge3* edges, void* scratch, size_t sc
     return Status::kCrossingCapacity;
   }
 
-  // C7-C9: group by behind edge with a counting sort. `next` reuses the scratch: the cell
-  // lists are no longer needed.
-  uint32_t* next = static_cast<uint32_t*>(scratch);
-  for (uint32_t e = 0; e <= n; ++e) first[e] = 0;
-  for (uint32_t i = 0; i < rec.stored; ++i) ++first[records[i].behind + 1];
-  for (uint32_t e = 0; e < n; ++e) first[e + 1] += first[e];
-  for (uint32_t e = 0; e < n; ++e) next[e] = first[e];
-  group_records(records, rec.stored, n, first, next, scratch, scratch_bytes);
-  // Sorting k records costs about k log k: as work, 16 a record.
-  const uint32_t sort_parts = part_count(plan.params, uint64_t{rec.stored} * 16);
-  st.max_per_edge = sort_parts == 1
-                        ? sort_range(records, first, 0, n)
-                        : sort_in_parts(*plan.params.parts, sort_parts, records, first, n);
+  // C7-C9: group by behind edge with a counting sort, in the scratch: the cell lists are no
+  // longer needed.
+  if (kHost && groups_in_parts_fit(pieces, n, rec.stored, scratch_bytes)) {
+    st.max_per_edge = group_in_parts(*plan.params.parts, pieces, records, first, n, scratch);
+  } else {
+    if (kHost && pieces.n > 0) join_pieces(&pieces, records);
+    uint32_t* next = static_cast<uint32_t*>(scratch);
+    for (uint32_t e = 0; e <= n; ++e) first[e] = 0;
+    for (uint32_t i = 0; i < rec.stored; ++i) ++first[records[i].behind + 1];
+    for (uint32_t e = 0; e < n; ++e) first[e + 1] += first[e];
+    for (uint32_t e = 0; e < n; ++e) next[e] = first[e];
+    group_records(records, rec.stored, n, first, next, scratch, scratch_bytes);
+    // Sorting k records costs about k log k: as work, 16 a record.
+    const uint32_t sort_parts = part_count(plan.params, uint64_t{rec.stored} * 16);
+    st.max_per_edge = sort_parts == 1
+                          ? sort_range(records, first, 0, n)
+                          : sort_in_parts(*plan.params.parts, sort_parts, records, first, n);
+  }
 
   out->edges = edges;
   out->n_edges = n;

@@ -11,22 +11,24 @@
 namespace haloplot::host {
 namespace {
 
-// Each part on a thread started for it, the calling thread running the first: the runner when
-// the pool below is busy (a part that itself runs parts).
-void run_on_new_threads(uint32_t n, PartFn work, void* arg) {
+// The parts on `threads` threads (the calling one and threads started for this run), which take
+// them by a shared counter: the runner when the pool below is busy (a part that itself runs
+// parts). Where the system refuses a thread, the others take its parts.
+void run_on_new_threads(uint32_t n, uint32_t threads, PartFn work, void* arg) {
+  std::atomic<uint32_t> next{0};
+  const auto take = [&] {
+    for (uint32_t i; (i = next.fetch_add(1)) < n;) work(arg, i);
+  };
   std::vector<std::thread> others;
-  others.reserve(n);
-  uint32_t here_from = n;  // the parts no thread could be started for run here
-  for (uint32_t i = 1; i < n; ++i) {
+  others.reserve(threads);
+  for (uint32_t t = 1; t < threads && t < n; ++t) {
     try {
-      others.emplace_back(work, arg, i);
+      others.emplace_back(take);
     } catch (const std::system_error&) {
-      here_from = i;
       break;
     }
   }
-  work(arg, 0);
-  for (uint32_t i = here_from; i < n; ++i) work(arg, i);
+  take();
   for (std::thread& t : others) t.join();
 }
 
@@ -59,13 +61,18 @@ bool spin_until(Done done) {
 // costs about 20 us, and a stage calls the runner several times (CUT six times, in a few ms on
 // 50,000 edges). The caller and the woken workers take the parts by a shared counter, so a
 // worker that wakes late leaves its parts to the others rather than keeping them waiting.
+// A stage may split into more parts than there are threads (so that a thread that starts late,
+// or is slowed by another program, leaves its share to the others): the workers are as many as
+// the caller's threads, less the caller (workers started for a run with more threads stay
+// out of it).
 class Pool {
  public:
   // One run at a time: false when another is under way.
-  bool run(uint32_t n, PartFn work, void* arg) {
+  bool run(uint32_t n, uint32_t threads, PartFn work, void* arg) {
     std::unique_lock<std::mutex> mine(busy_, std::try_to_lock);
     if (!mine.owns_lock()) return false;
-    grow(n - 1);
+    const uint32_t helpers = (n < threads ? n : threads) - 1;
+    grow(helpers);
     {
       std::unique_lock<std::mutex> lock(m_);
       // A worker that took the last run late may still be about to claim from its counter.
@@ -73,6 +80,7 @@ class Pool {
       work_ = work;
       arg_ = arg;
       n_ = n;
+      helpers_ = helpers;
       next_.store(0);
       done_.store(0);
       job_.fetch_add(1);
@@ -101,20 +109,21 @@ class Pool {
   void grow(uint32_t count) {
     while (workers_.size() < count) {
       try {
-        workers_.emplace_back(&Pool::serve, this);
+        workers_.emplace_back(&Pool::serve, this, uint32_t(workers_.size()));
       } catch (const std::system_error&) {
         return;
       }
     }
   }
 
-  [[noreturn]] void serve() {
+  [[noreturn]] void serve(uint32_t index) {
     uint64_t seen = 0;
     for (;;) {
       spin_until([&] { return job_.load() != seen; });
       std::unique_lock<std::mutex> lock(m_);
       wake_.wait(lock, [&] { return job_.load() != seen; });
       seen = job_.load();
+      if (index >= helpers_) continue;
       const PartFn work = work_;
       void* const arg = arg_;
       const uint32_t n = n_;
@@ -137,15 +146,17 @@ class Pool {
   std::atomic<uint64_t> job_{0};
   PartFn work_ = nullptr;
   void* arg_ = nullptr;
-  uint32_t n_ = 0, taking_ = 0;
+  uint32_t n_ = 0, helpers_ = 0, taking_ = 0;
   std::atomic<uint32_t> done_{0}, next_{0};
 };
 
-void run_on_threads(void*, uint32_t n, PartFn work, void* arg) {
+// The context is the thread count (thread_parts).
+void run_on_threads(void* context, uint32_t n, PartFn work, void* arg) {
+  const uint32_t threads = uint32_t(reinterpret_cast<uintptr_t>(context));
   // Never destroyed: its workers sleep until the process ends, and a static destroyed after it
   // may still run parts.
   static Pool* const pool = new Pool;
-  if (!pool->run(n, work, arg)) run_on_new_threads(n, work, arg);
+  if (!pool->run(n, threads, work, arg)) run_on_new_threads(n, threads, work, arg);
 }
 
 }  // namespace
@@ -160,6 +171,7 @@ const Parts* thread_parts(uint32_t threads) {
     std::vector<Parts> all(kMaxThreads + 1);
     for (uint32_t n = 0; n <= kMaxThreads; ++n) {
       all[n].run = &run_on_threads;
+      all[n].context = reinterpret_cast<void*>(uintptr_t{n});
       all[n].count = n;
     }
     return all;

@@ -3,7 +3,8 @@
 // bounding-box cover, and with a record capacity so tight that parts outgrow their slices
 // (they run again into what the others left) or that the whole does not fit (the count a
 // retry needs, as one part says it); and with edges so uneven that the first parts' cell
-// visits outgrow their share of the fill's logs. The plan made in parts is the one-part plan.
+// visits outgrow their share of the fill's logs; and with more records than the scratch has room
+// for to group them in parts. The plan made in parts is the one-part plan.
 // The parts cover each split stage: the plan, the fill (each part's entries dropped from its
 // log, or by a walk again), the pairs and the sorting.
 #include <cstring>
@@ -142,6 +143,26 @@ int main() {
   std::vector<Edge3> uneven = scenes::paper_random(600, 150000, 11);
   for (const Edge3& e : scenes::paper_random(3400, 5000, 12)) uneven.push_back(e);
   check_scene("uneven lengths", uneven, CutParams{});
+  // A lattice of long lines, each crossing every line of the other direction: far more
+  // records than cell entries, so the scratch has no room to group the parts' records in parts
+  // and they are joined first (and grouped as one part groups them).
+  std::vector<Edge3> lattice;
+  for (int32_t i = 0; i < 150; ++i) {
+    const int32_t at = 20000 + i * 6000 + (i % 7) * 311;
+    lattice.push_back(scenes::edge(10000, at, 5000 + i, 990000, at + 17 * i, 9000 - i));
+    lattice.push_back(scenes::edge(at, 10000, 7000 + i, at + 13 * i, 990000, 3000 + 2 * i));
+  }
+  const Result lattice_one = cut(lattice, CutParams{}, 200000);
+  CHECK(lattice_one.status == Status::kOk && lattice_one.records.size() == 150 * 150);
+  for (uint32_t n : {2u, 3u, 7u}) {
+    Parts parts;
+    parts.run = &backwards;
+    parts.count = n;
+    parts.min_work = 0;
+    CutParams p;
+    p.parts = &parts;
+    CHECK_MSG(same(cut(lattice, p, 200000), lattice_one), "lattice, " + std::to_string(n) + " parts");
+  }
   // More edges than average_length samples, so the parts' samples start mid-stride; and
   // fewer edges than parts.
   for (uint32_t n : {0u, 1u, 2u, 5u, 17u, 20003u})
