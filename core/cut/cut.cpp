@@ -74,13 +74,16 @@ size_t entry_bytes(const CutParams& p) {
 constexpr uint32_t kMaxParts = 16;
 
 // Fewer parts where each would get less than Parts::min_work (pair tests in the cell loop, 16
-// a record in the sorting).
-uint32_t part_count(const CutParams& p, uint64_t work) {
+// a record in the sorting); `per_thread` parts for each of the caller's threads.
+// More parts than threads are a multiple of the threads where they can be, so that parts of
+// equal work end together.
+uint32_t part_count(const CutParams& p, uint64_t work, uint32_t per_thread = 1) {
   if (p.parts == nullptr) return 1;
-  uint32_t n = p.parts->split();
-  if (n > kMaxParts) n = kMaxParts;
+  const uint32_t threads = p.parts->split();
+  uint32_t n = threads > kMaxParts / per_thread ? kMaxParts : threads * per_thread;
   const uint64_t worth = p.parts->min_work == 0 ? n : work / p.parts->min_work;
   if (worth < n) n = worth < 1 ? 1 : uint32_t(worth);
+  if (n > threads) n -= n % threads;
   return n;
 }
 
@@ -484,11 +487,12 @@ inline CrossingTest crossing_from(const Sides& s) {
 }
 
 // C6: every pair inside cells [c_begin, c_end). The part that reports progress maps its own
-// cells onto the whole grid's count.
+// cells onto `progress` of the whole grid's cells (its share of the wall time: all of them for
+// one part); 0: it does not report.
 template <typename Entry>
 void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_start,
-                const Entry* list, uint32_t c_begin, uint32_t c_end, bool progress, Recorder& rec,
-                CutStats& st) {
+                const Entry* list, uint32_t c_begin, uint32_t c_end, uint32_t progress,
+                Recorder& rec, CutStats& st) {
   const Grid& g = plan.grid;
   const uint32_t cells = g.cells();
   const int32_t r = plan.params.reach;
@@ -536,13 +540,18 @@ void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_st
     }
     if (progress && plan.params.progress && (c & 0x3ffu) == 0)
       plan.params.progress(plan.params.progress_context,
-                           uint32_t(uint64_t{c - c_begin} * cells / (c_end - c_begin)), cells);
+                           uint32_t(uint64_t{c - c_begin} * progress / (c_end - c_begin)), cells);
     if (++col == g.nx) {
       col = 0;
       ++row;
     }
   }
 }
+
+// The cell loop's parts for each thread on a host: the runner hands them out as threads come
+// free, so a thread that starts late, or that another program slows, leaves parts to the
+// others rather than keeping them all waiting for its one share.
+constexpr uint32_t kCellPartsPerThread = kHost ? 4 : 1;
 
 // The cell loop's work: the pairs each cell tests, and the cell itself.
 uint64_t cell_work(const uint32_t* cell_start, uint32_t c) {
@@ -595,8 +604,11 @@ struct CellParts {
   Recorder rec[kMaxParts] = {};
   CutStats st[kMaxParts] = {};
 
+  // The first part reports progress: while it runs, the threads run its share of the parts.
   void test(uint32_t j, Recorder& r, CutStats& s) const {
-    test_cells(*plan, edges, cell_start, list, begin[j], begin[j + 1], j == 0, r, s);
+    const uint32_t threads = plan->params.parts->split();
+    const uint32_t share = uint32_t(uint64_t{plan->grid.cells()} * (threads < n ? threads : n) / n);
+    test_cells(*plan, edges, cell_start, list, begin[j], begin[j + 1], j == 0 ? share : 0, r, s);
   }
   // Each part counts its records per bucket as it ends, while they are in its cache.
   static void run_one(void* arg, uint32_t j) {
@@ -611,9 +623,9 @@ struct CellParts {
   // Cuts [0, cells) where the running sum of each cell's pair work reaches j / n of `total`.
   void split(uint32_t cells, uint64_t total) {
     uint32_t j = 1;
-    uint64_t acc = 0;
+    uint64_t acc = 0, at = total / n;  // at: where part j starts
     for (uint32_t c = 0; c < cells && j < n; ++c) {
-      while (j < n && acc >= total / n * j) begin[j++] = c;
+      for (; j < n && acc >= at; at = total / n * j) begin[j++] = c;
       acc += cell_work(cell_start, c);
     }
     while (j <= n) begin[j++] = cells;
@@ -695,9 +707,9 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
   if (plan.params.phase) plan.params.phase(plan.params.phase_context, CutPhase::kCellsFilled);
   if (!counted && plan.params.parts != nullptr && plan.params.parts->split() > 1)
     for (uint32_t c = 0; c < cells; ++c) work += cell_work(cell_start, c);
-  const uint32_t n_parts = part_count(plan.params, work);
+  const uint32_t n_parts = part_count(plan.params, work, kCellPartsPerThread);
   if (n_parts == 1)
-    test_cells(plan, edges, cell_start, list, 0, cells, true, rec, st);
+    test_cells(plan, edges, cell_start, list, 0, cells, cells, rec, st);
   else
     test_in_parts(plan, edges, cell_start, list, n_parts, work, rec, st, pieces);
 }
