@@ -83,7 +83,7 @@ uint32_t part_count(const CutParams& p, uint64_t work, uint32_t per_thread = 1) 
   uint32_t n = threads > kMaxParts / per_thread ? kMaxParts : threads * per_thread;
   const uint64_t worth = p.parts->min_work == 0 ? n : work / p.parts->min_work;
   if (worth < n) n = worth < 1 ? 1 : uint32_t(worth);
-  if (n > threads) n -= n % threads;
+  if (per_thread > 1 && n > threads) n -= n % threads;
   return n;
 }
 
@@ -604,10 +604,13 @@ struct CellParts {
   Recorder rec[kMaxParts] = {};
   CutStats st[kMaxParts] = {};
 
-  // The first part reports progress: while it runs, the threads run its share of the parts.
+  // The first part reports progress: while it runs, the threads run its share of the parts
+  // (all of them where there are as many parts as threads, as on a controller).
   void test(uint32_t j, Recorder& r, CutStats& s) const {
     const uint32_t threads = plan->params.parts->split();
-    const uint32_t share = uint32_t(uint64_t{plan->grid.cells()} * (threads < n ? threads : n) / n);
+    const uint32_t share = kCellPartsPerThread == 1 || threads >= n
+                               ? plan->grid.cells()
+                               : uint32_t(uint64_t{plan->grid.cells()} * threads / n);
     test_cells(*plan, edges, cell_start, list, begin[j], begin[j + 1], j == 0 ? share : 0, r, s);
   }
   // Each part counts its records per bucket as it ends, while they are in its cache.
