@@ -588,9 +588,10 @@ struct RecordPieces {
 };
 
 // C6 split into parts of the cells, each cut at cells of about equal pair work and recording
-// into its own equal slice of the records. The records are then joined in part order; a part
-// that outgrew its slice runs again here into what the others left, so a run stores every
-// record exactly when one part would have (the total fits), and the CUTSET, grouped and
+// into its own equal slice of the records. The records are then joined in part order (on a
+// host they stay in their slices when all fit, and are grouped from there: RecordPieces); a
+// part that outgrew its slice runs again here into what the others left, so a run stores
+// every record exactly when one part would have (the total fits), and the CUTSET, grouped and
 // sorted by (behind, t, front), is the same whatever the split.
 template <typename Entry>
 struct CellParts {
