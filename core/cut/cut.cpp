@@ -93,6 +93,38 @@ uint32_t fill_part_count(const CutParams& p, uint32_t n_edges) {
   return kHost ? part_count(p, uint64_t{n_edges} * 8) : 1;
 }
 
+// The cell loop's work: the pairs each cell tests, and the cell itself.
+uint64_t cell_work(const uint32_t* cell_start, uint32_t c) {
+  const uint64_t k = cell_start[c + 1] - cell_start[c];
+  return k * (k - 1) / 2 + k + 1;
+}
+
+// The cell loop's running work at every stride-th cell, noted (on a host) as the work is
+// summed, so that the split finds each part's first cell by scanning one stride from the mark
+// below it rather than every cell again.
+constexpr uint32_t kWorkMarks = kHost ? 64 : 1;
+struct WorkMarks {
+  uint32_t stride = 0, count = 0;    // count 0: none noted
+  uint64_t at[kWorkMarks + 1] = {};  // at[m]: the work of cells [0, m * stride)
+};
+
+// The cell loop's work in all, its marks noted (a host's) as it sums.
+uint64_t sum_cell_work(const uint32_t* cell_start, uint32_t cells, WorkMarks* marks) {
+  uint64_t work = 0;
+  if (!kHost) {
+    for (uint32_t c = 0; c < cells; ++c) work += cell_work(cell_start, c);
+    return work;
+  }
+  marks->stride = cells / kWorkMarks + 1;
+  marks->count = 0;
+  for (uint32_t c0 = 0; c0 < cells; c0 += marks->stride) {
+    marks->at[marks->count++] = work;
+    const uint32_t c1 = cells - c0 > marks->stride ? c0 + marks->stride : cells;
+    for (uint32_t c = c0; c < c1; ++c) work += cell_work(cell_start, c);
+  }
+  return work;
+}
+
 // One cell a walk visited, and for which edge.
 struct Visit {
   uint32_t cell, edge;
@@ -397,12 +429,44 @@ struct FillParts {
   }
 };
 
-// Out of line, as test_in_parts. Returns the cell loop's work (cell_work summed), counted in
-// the pass that places the parts, so no pass of its own stands alone before the loop.
+// The pass that gives each part its place in every cell's list (after the parts before it)
+// and cell_start, from the parts' counts in their cursors; kParts: the parts' count where the
+// compiler is to know it (the common two threads), 0 where it is n_parts. Returns the cell
+// loop's work (cell_work summed) and notes its marks, so no pass of their own stands alone
+// before the loop.
+template <uint32_t kParts>
+uint64_t place_parts(uint32_t* cursor, uint32_t cells, uint32_t n_parts, uint32_t* cell_start,
+                     WorkMarks* marks) {
+  const uint32_t parts = kParts != 0 ? kParts : n_parts;
+  uint32_t at = 0;
+  uint64_t work = 0;
+  marks->stride = cells / kWorkMarks + 1;
+  marks->count = 0;
+  for (uint32_t c0 = 0; c0 < cells; c0 += marks->stride) {
+    marks->at[marks->count++] = work;
+    const uint32_t c1 = cells - c0 > marks->stride ? c0 + marks->stride : cells;
+    for (uint32_t c = c0; c < c1; ++c) {
+      const uint32_t start = at;
+      cell_start[c] = start;
+      for (uint32_t j = 0; j < parts; ++j) {
+        uint32_t& k = cursor[size_t{j} * cells + c];
+        const uint32_t count = k;
+        k = at;
+        at += count;
+      }
+      const uint64_t k = at - start;  // cell_work's count
+      work += k * (k - 1) / 2 + k + 1;
+    }
+  }
+  cell_start[cells] = at;
+  return work;
+}
+
+// Out of line, as test_in_parts. Returns the cell loop's work, with its marks.
 template <typename Entry>
 __attribute__((noinline)) uint64_t fill_in_parts(const CutPlan& plan, const Edge3* edges,
                                                  uint32_t n_parts, uint32_t* cell_start,
-                                                 uint8_t* fill_at, Entry* list) {
+                                                 uint8_t* fill_at, Entry* list, WorkMarks* marks) {
   const uint32_t cells = plan.grid.cells();
   uint32_t* cursor = reinterpret_cast<uint32_t*>(fill_at);
   Visit* logs = plan.params.compact_cells
@@ -411,20 +475,8 @@ __attribute__((noinline)) uint64_t fill_in_parts(const CutPlan& plan, const Edge
   FillParts<Entry> fp{&plan, edges,  cursor, logs, log_slots(plan.cell_pairs, n_parts),
                       list,  n_parts};
   run_parts(*plan.params.parts, n_parts, &FillParts<Entry>::count, &fp);
-  uint32_t at = 0;
-  uint64_t work = 0;
-  for (uint32_t c = 0; c < cells; ++c) {
-    cell_start[c] = at;
-    for (uint32_t j = 0; j < n_parts; ++j) {
-      uint32_t& k = cursor[size_t{j} * cells + c];
-      const uint32_t count = k;
-      k = at;
-      at += count;
-    }
-    const uint64_t k = at - cell_start[c];  // cell_work's count
-    work += k * (k - 1) / 2 + k + 1;
-  }
-  cell_start[cells] = at;
+  const uint64_t work = n_parts == 2 ? place_parts<2>(cursor, cells, n_parts, cell_start, marks)
+                                     : place_parts<0>(cursor, cells, n_parts, cell_start, marks);
   run_parts(*plan.params.parts, n_parts, &FillParts<Entry>::fill, &fp);
   return work;
 }
@@ -553,12 +605,6 @@ void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_st
 // others rather than keeping them all waiting for its one share.
 constexpr uint32_t kCellPartsPerThread = kHost ? 4 : 1;
 
-// The cell loop's work: the pairs each cell tests, and the cell itself.
-uint64_t cell_work(const uint32_t* cell_start, uint32_t c) {
-  const uint64_t k = cell_start[c + 1] - cell_start[c];
-  return k * (k - 1) / 2 + k + 1;
-}
-
 void add_stats(const CutStats& a, CutStats* sum) {
   sum->pairs_tested += a.pairs_tested;
   sum->crossings += a.crossings;
@@ -624,12 +670,26 @@ struct CellParts {
     for (uint32_t i = 0; i < self->rec[j].stored; ++i)
       ++in_bucket[self->rec[j].out[i].behind >> shift];
   }
-  // Cuts [0, cells) where the running sum of each cell's pair work reaches j / n of `total`.
-  void split(uint32_t cells, uint64_t total) {
+  // Cuts [0, cells) where the running sum of each cell's pair work reaches j / n of `total`:
+  // from the marks where there are some, else in one pass over the cells.
+  void split(uint32_t cells, uint64_t total, const WorkMarks& marks) {
+    if (kHost && marks.count > 0) {
+      for (uint32_t j = 1; j < n; ++j) {
+        const uint64_t at = total / n * j;
+        uint32_t m = 0;
+        while (m + 1 < marks.count && marks.at[m + 1] < at) ++m;
+        uint32_t c = m * marks.stride;
+        for (uint64_t acc = marks.at[m]; c < cells && acc < at; ++c)
+          acc += cell_work(cell_start, c);
+        begin[j] = c;
+      }
+      begin[n] = cells;
+      return;
+    }
     uint32_t j = 1;
-    uint64_t acc = 0, at = total / n;  // at: where part j starts
+    uint64_t acc = 0;
     for (uint32_t c = 0; c < cells && j < n; ++c) {
-      for (; j < n && acc >= at; at = total / n * j) begin[j++] = c;
+      while (j < n && acc >= total / n * j) begin[j++] = c;
       acc += cell_work(cell_start, c);
     }
     while (j <= n) begin[j++] = cells;
@@ -641,11 +701,12 @@ struct CellParts {
 template <typename Entry>
 __attribute__((noinline)) void test_in_parts(const CutPlan& plan, const Edge3* edges,
                                              const uint32_t* cell_start, const Entry* list,
-                                             uint32_t n_parts, uint64_t work, Recorder& rec,
-                                             CutStats& st, RecordPieces* pieces) {
+                                             uint32_t n_parts, uint64_t work,
+                                             const WorkMarks& marks, Recorder& rec, CutStats& st,
+                                             RecordPieces* pieces) {
   CellParts<Entry> cp{&plan, edges, cell_start, list, n_parts, pieces};
   if (kHost && pieces != nullptr) pieces->shift = bucket_shift(plan.n_edges);
-  cp.split(plan.grid.cells(), work);
+  cp.split(plan.grid.cells(), work, marks);
   for (uint32_t j = 0; j < n_parts; ++j) {
     const uint32_t lo = uint32_t(uint64_t{rec.capacity} * j / n_parts);
     const uint32_t hi = uint32_t(uint64_t{rec.capacity} * (j + 1) / n_parts);
@@ -700,9 +761,10 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
   Entry* list = reinterpret_cast<Entry*>(
       fill_at + fill_bytes(plan.params, cells, plan.cell_pairs, fill_parts));
   uint64_t work = 0;
+  WorkMarks marks;
   const bool counted = kHost && fill_parts > 1;
   if (counted)
-    work = fill_in_parts(plan, edges, fill_parts, cell_start, fill_at, list);
+    work = fill_in_parts(plan, edges, fill_parts, cell_start, fill_at, list, &marks);
   else if (kHost && plan.params.compact_cells)
     fill_cells_logged(plan, edges, cell_start, reinterpret_cast<Visit*>(fill_at), list);
   else
@@ -710,12 +772,12 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
   st.cell_pairs = cell_start[cells];  // the exact count (the plan's is an upper bound)
   if (plan.params.phase) plan.params.phase(plan.params.phase_context, CutPhase::kCellsFilled);
   if (!counted && plan.params.parts != nullptr && plan.params.parts->split() > 1)
-    for (uint32_t c = 0; c < cells; ++c) work += cell_work(cell_start, c);
+    work = sum_cell_work(cell_start, cells, &marks);
   const uint32_t n_parts = part_count(plan.params, work, kCellPartsPerThread);
   if (n_parts == 1)
     test_cells(plan, edges, cell_start, list, 0, cells, cells, rec, st);
   else
-    test_in_parts(plan, edges, cell_start, list, n_parts, work, rec, st, pieces);
+    test_in_parts(plan, edges, cell_start, list, n_parts, work, marks, rec, st, pieces);
 }
 
 // C9's order inside each group of edges [e0, e1); returns the largest group. Ties (several
