@@ -672,14 +672,14 @@ struct CellParts {
   }
   // Cuts [0, cells) where the running sum of each cell's pair work reaches j / n of `total`:
   // from the marks where there are some, else in one pass over the cells.
-  void split(uint32_t cells, uint64_t total, const WorkMarks& marks) {
-    if (kHost && marks.count > 0) {
+  void split(uint32_t cells, uint64_t total, const WorkMarks* marks) {
+    if (kHost && marks != nullptr && marks->count > 0) {
       for (uint32_t j = 1; j < n; ++j) {
         const uint64_t at = total / n * j;
         uint32_t m = 0;
-        while (m + 1 < marks.count && marks.at[m + 1] < at) ++m;
-        uint32_t c = m * marks.stride;
-        for (uint64_t acc = marks.at[m]; c < cells && acc < at; ++c)
+        while (m + 1 < marks->count && marks->at[m + 1] < at) ++m;
+        uint32_t c = m * marks->stride;
+        for (uint64_t acc = marks->at[m]; c < cells && acc < at; ++c)
           acc += cell_work(cell_start, c);
         begin[j] = c;
       }
@@ -702,7 +702,7 @@ template <typename Entry>
 __attribute__((noinline)) void test_in_parts(const CutPlan& plan, const Edge3* edges,
                                              const uint32_t* cell_start, const Entry* list,
                                              uint32_t n_parts, uint64_t work,
-                                             const WorkMarks& marks, Recorder& rec, CutStats& st,
+                                             const WorkMarks* marks, Recorder& rec, CutStats& st,
                                              RecordPieces* pieces) {
   CellParts<Entry> cp{&plan, edges, cell_start, list, n_parts, pieces};
   if (kHost && pieces != nullptr) pieces->shift = bucket_shift(plan.n_edges);
@@ -777,7 +777,8 @@ void fill_and_test(const CutPlan& plan, const Edge3* edges, void* scratch, Recor
   if (n_parts == 1)
     test_cells(plan, edges, cell_start, list, 0, cells, cells, rec, st);
   else
-    test_in_parts(plan, edges, cell_start, list, n_parts, work, marks, rec, st, pieces);
+    test_in_parts(plan, edges, cell_start, list, n_parts, work, kHost ? &marks : nullptr, rec, st,
+                  pieces);
 }
 
 // C9's order inside each group of edges [e0, e1); returns the largest group. Ties (several
