@@ -660,15 +660,22 @@ struct CellParts {
                                : uint32_t(uint64_t{plan->grid.cells()} * threads / n);
     test_cells(*plan, edges, cell_start, list, begin[j], begin[j + 1], j == 0 ? share : 0, r, s);
   }
-  // Each part counts its records per bucket as it ends, while they are in its cache.
+  // Each part counts its records per bucket as it ends, while they are in its cache. A part
+  // records and counts into its own copies, stored once it ends: the parts' recorders, stats
+  // and counts lie side by side, and parts running at once on two cores would otherwise pass
+  // their shared cache lines to and fro at every record.
   static void run_one(void* arg, uint32_t j) {
     CellParts* self = static_cast<CellParts*>(arg);
-    self->test(j, self->rec[j], self->st[j]);
-    if (!kHost || self->pieces == nullptr || self->rec[j].overflow) return;
-    uint32_t* in_bucket = self->pieces->in_bucket[j];
+    Recorder rec = self->rec[j];
+    CutStats st;
+    self->test(j, rec, st);
+    self->rec[j] = rec;
+    self->st[j] = st;
+    if (!kHost || self->pieces == nullptr || rec.overflow) return;
+    uint32_t in_bucket[kMaxParts] = {};
     const uint32_t shift = self->pieces->shift;
-    for (uint32_t i = 0; i < self->rec[j].stored; ++i)
-      ++in_bucket[self->rec[j].out[i].behind >> shift];
+    for (uint32_t i = 0; i < rec.stored; ++i) ++in_bucket[rec.out[i].behind >> shift];
+    for (uint32_t b = 0; b < kMaxParts; ++b) self->pieces->in_bucket[j][b] = in_bucket[b];
   }
   // Cuts [0, cells) where the running sum of each cell's pair work reaches j / n of `total`:
   // from the marks where there are some, else in one pass over the cells.
@@ -896,7 +903,8 @@ struct GroupParts {
 
   static void move(void* arg, uint32_t j) {
     GroupParts* self = static_cast<GroupParts*>(arg);
-    uint32_t* to = self->to[j];
+    uint32_t to[kMaxParts];  // a copy of the part's cursors (see CellParts::run_one)
+    for (uint32_t b = 0; b < kMaxParts; ++b) to[b] = self->to[j][b];
     const uint32_t shift = self->pieces->shift;
     const Crossing* from = self->pieces->at[j];
     for (uint32_t i = 0, k = self->pieces->count[j]; i < k; ++i)
@@ -1010,11 +1018,16 @@ struct PlanParts {
     self->ranged[j] = all;
     self->extent[j] = x;
     // average_length's sample: every stride-th edge from edge 0.
+    // Summed here and stored once: the parts' sums share cache lines, which parts running at
+    // once on two cores would pass to and fro at every edge.
     const uint32_t stride = length_stride(self->n);
+    uint64_t sum = 0, count = 0;
     for (uint32_t i = (e0 + stride - 1) / stride * stride; i < e1; i += stride) {
-      self->length_sum[j] += projected_length(self->edges[i]);
-      ++self->lengths[j];
+      sum += projected_length(self->edges[i]);
+      ++count;
     }
+    self->length_sum[j] = sum;
+    self->lengths[j] = count;
   }
   static void bound(void* arg, uint32_t j) {
     PlanParts* self = static_cast<PlanParts*>(arg);
