@@ -16,8 +16,6 @@
 #include <stdint.h>
 
 #include "haloplot/draw/draw.h"
-#include "haloplot/geometry/fraction.h"
-#include "haloplot/geometry/quarter_turn.h"
 #include "haloplot/status/status.h"
 
 namespace haloplot {
@@ -107,38 +105,20 @@ Status diagonal_dashes(const Edge3& e, uint32_t edge, int64_t t0, int64_t t1, in
 // runs along an axis or at 45 degrees). Where the longer axis changes between two sides the
 // pattern jumps once. It depends on the point alone, not on the edge's number, direction or
 // band, so every band draws the whole-model plot's dashes.
+// The dashes page_dashes() draws: at most kPageDashes ranges of t in [t0, t1), ascending (the
+// edge is no longer than one period on its longer axis, so it meets at most three windows).
+// Out of line: every sink that strokes pieces shares one copy on the chip.
+constexpr int kPageDashes = 3;
+int page_dash_ranges(const Edge3& e, int64_t t0, int64_t t1, const StrokeStyle& style,
+                     int64_t ranges[kPageDashes][2]);
+
 template <typename Emit>
 Status page_dashes(const Edge3& e, uint32_t edge, int64_t t0, int64_t t1, const StrokeStyle& style,
                    Emit emit) {
-  // (v - ca) 2^32 for page coordinates below 2^kCoordBits: one int64.
-  static_assert(kCoordBits + 1 + 32 < 63, "a page coordinate's parameter fits in int64");
-  const Edge3 p = style.turned ? unturn_edge(e) : e;
-  const int64_t dx = int64_t{p.b.x} - p.a.x, dy = int64_t{p.b.y} - p.a.y;
-  const bool along_x = (dx < 0 ? -dx : dx) >= (dy < 0 ? -dy : dy);
-  const int64_t ca = along_x ? p.a.x : p.a.y, cb = along_x ? p.b.x : p.b.y;
-  if (ca == cb) return Status::kOk;  // a point on paper
-  const int64_t period = int64_t{style.dash} + style.gap;
-  constexpr int64_t kOneT = int64_t{1} << 32;  // t = 1 in Q0.32
-  const int64_t lo = ca < cb ? ca : cb, hi = ca < cb ? cb : ca;
-  const int64_t k0 = floor_div(lo, period), k1 = floor_div(hi, period);
-  // Windows in the order t runs: c ascending when the edge runs up its axis.
-  for (int64_t i = 0; i <= k1 - k0; ++i) {
-    const int64_t k = ca < cb ? k0 + i : k1 - i;
-    int64_t w0 = k * period, w1 = w0 + style.dash;
-    w0 = w0 < lo ? lo : w0;
-    w1 = w1 > hi ? hi : w1;
-    if (w1 <= w0) continue;
-    // * 2^32, not << 32: w - ca is negative on an edge running down its axis.
-    int64_t a = (w0 - ca) * kOneT / (cb - ca), b = (w1 - ca) * kOneT / (cb - ca);
-    if (b < a) {
-      const int64_t u = a;
-      a = b;
-      b = u;
-    }
-    a = a < t0 ? t0 : a;
-    b = b > t1 ? t1 : b;
-    if (b <= a) continue;
-    const Status s = emit(make_stroke(e, edge, a, b));
+  int64_t r[kPageDashes][2];
+  const int n = page_dash_ranges(e, t0, t1, style, r);
+  for (int i = 0; i < n; ++i) {
+    const Status s = emit(make_stroke(e, edge, r[i][0], r[i][1]));
     if (s != Status::kOk) return s;
   }
   return Status::kOk;
