@@ -103,9 +103,10 @@ std::string reason_text(const HiddenReport& r) {
     case FallbackReason::kBand:
       return "a band of a banded plot (the topology-free method is local to the band)";
     case FallbackReason::kConflicts:
-      return "parts that pass through each other where faces touch or overlap exactly (" +
+      return "parts meet where faces touch or overlap exactly, and there the quick method "
+             "(walking visibility from vertex to vertex) got two answers at " +
              std::to_string(r.qi.conflicts) +
-             " vertices the QI reached two ways), drawn as exactly";
+             " vertices; the drawing is as exact, made the slower way";
   }
   return "";
 }
