@@ -112,17 +112,22 @@ struct Chosen {
   Grid g;
   uint64_t pairs;
 };
+uint32_t first_per_axis(const Topology& topo, uint32_t coarsen) {
+  const uint32_t per_axis = static_cast<uint32_t>(isqrt_u64(topo.n_triangles) + 1);
+  return per_axis / (coarsen > 1 ? coarsen : 1);
+}
+bool keeps(const Topology& topo, const Grid& g, uint64_t pairs) {
+  return pairs <= uint64_t{kPairsPerFace} * topo.n_triangles || g.cells() == 1;
+}
 Chosen choose_grid(const Topology& topo, uint32_t coarsen, const Parts* parts) {
-  uint32_t per_axis = static_cast<uint32_t>(isqrt_u64(topo.n_triangles) + 1);
-  per_axis /= coarsen > 1 ? coarsen : 1;
-  const uint64_t n = topo.n_triangles > 0 ? topo.n_triangles : 1;
+  uint32_t per_axis = first_per_axis(topo, coarsen);
   for (;;) {
     const Grid g = grid_over(topo.vertices, topo.n_vertices, per_axis);
     const uint64_t pairs = pairs_of(topo, g, parts);
-    if (pairs <= kPairsPerFace * n || g.cells() == 1) return Chosen{g, pairs};
+    if (keeps(topo, g, pairs)) return Chosen{g, pairs};
     // 256 root(pairs / n), with pairs below 2^47 (more than that gives one cell anyway).
     const uint64_t p = pairs < (uint64_t{1} << 47) ? pairs : (uint64_t{1} << 47);
-    const uint64_t root_p = isqrt_u64((p << 16) / n),
+    const uint64_t root_p = isqrt_u64((p << 16) / topo.n_triangles),
                    root_t = isqrt_u64(uint64_t{kPairsPerFace} << 16);
     uint64_t next = uint64_t{per_axis} * (root_t - 256) / (root_p - 256);
     if (next >= per_axis - per_axis / 16) next = per_axis - per_axis / 16 - 1;  // at least a step
@@ -165,12 +170,39 @@ Status finish(const Grid& g, uint32_t* first, uint32_t* faces, uint64_t pairs, F
   return Status::kOk;
 }
 
-// One part: each cell's count where its start goes, then the faces dropped at the starts.
-void fill_in_one(const Topology& topo, const Grid& g, uint32_t* first, uint32_t* faces) {
+// One part: each cell's count in first[c + 1], then its start in first[c], where the faces
+// are dropped.
+void count_in_one(const Topology& topo, const Grid& g, uint32_t* first) {
   for (uint32_t c = 0; c <= g.cells(); ++c) first[c] = 0;
   count_cells(topo, g, 0, topo.n_triangles, first + 1);
+}
+void fill_in_one(const Topology& topo, const Grid& g, uint32_t* first, uint32_t* faces) {
   for (uint32_t c = 0; c < g.cells(); ++c) first[c + 1] += first[c];
   fill_cells(topo, g, 0, topo.n_triangles, first, faces);
+}
+
+// One part on the first grid (about one face per cell), most scenes' own: its cells' counts,
+// taken where the index goes, give its pairs, so the faces' boxes are walked twice (count,
+// fill), not three times (choose_grid's count first). False, nothing built, where that grid
+// grows (or its index does not fit: then it is not the grid the bytes were sized for).
+bool build_on_first_grid(const Topology& topo, uint32_t coarsen, void* buffer, size_t bytes,
+                         FaceGrid* out, Status* status) {
+  const Grid g = grid_over(topo.vertices, topo.n_vertices, first_per_axis(topo, coarsen));
+  Carver carve(buffer, bytes);
+  uint32_t* first = carve.take<uint32_t>(size_t{g.cells()} + 1);
+  if (carve.short_) return false;
+  count_in_one(topo, g, first);
+  uint64_t pairs = 0;  // a cell counts fewer than 2^32 faces; their sum may not
+  for (uint32_t c = 0; c < g.cells(); ++c) pairs += first[c + 1];
+  if (!keeps(topo, g, pairs)) return false;
+  *status = Status::kCellPairOverflow;
+  if (pairs > 0xffffffffu) return true;
+  uint32_t* faces = carve.take<uint32_t>(static_cast<size_t>(pairs));
+  *status = Status::kWorkspaceTooSmall;
+  if (carve.short_) return true;
+  fill_in_one(topo, g, first, faces);
+  *status = finish(g, first, faces, pairs, out);
+  return true;
 }
 
 }  // namespace
@@ -195,10 +227,14 @@ size_t face_grid_part_bytes(const Topology& topo, uint32_t coarsen) {
   return size_t{choose_grid(topo, coarsen, nullptr).g.cells()} * 4;
 }
 
-// The grid's pairs are counted as it is chosen (in parts where a runner splits them), so its
-// index and faces are carved first; then one part or several fill them.
+// Beyond one part on the first grid, the grid's pairs are counted as it is chosen (in parts
+// where a runner splits them), so its index and faces are carved first; then one part or
+// several fill them.
 Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGrid* out,
                        uint32_t coarsen, const Parts* parts) {
+  Status s = Status::kOk;
+  const uint32_t wanted = part_count(parts, topo.n_triangles);
+  if (wanted <= 1 && build_on_first_grid(topo, coarsen, buffer, bytes, out, &s)) return s;
   const Chosen ch = choose_grid(topo, coarsen, parts);
   const Grid& g = ch.g;
   if (ch.pairs > 0xffffffffu) return Status::kCellPairOverflow;
@@ -207,13 +243,15 @@ Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGri
   uint32_t* faces = carve.take<uint32_t>(static_cast<size_t>(ch.pairs));
   if (carve.short_) return Status::kWorkspaceTooSmall;
   // As many parts as the bytes left hold the cursors of (one needs none).
-  uint32_t n = part_count(parts, topo.n_triangles);
+  uint32_t n = wanted;
   const size_t part_bytes = size_t{g.cells()} * 4;
   if (carve.left / part_bytes + 1 < n) n = uint32_t(carve.left / part_bytes + 1);
-  if (n <= 1)
+  if (n <= 1) {
+    count_in_one(topo, g, first);
     fill_in_one(topo, g, first, faces);
-  else
+  } else {
     fill_in_parts(topo, g, n, parts, first, reinterpret_cast<uint32_t*>(carve.next), faces);
+  }
   return finish(g, first, faces, ch.pairs, out);
 }
 
