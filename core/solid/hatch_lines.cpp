@@ -110,8 +110,13 @@ constexpr uint32_t kJoined = 8;
 
 // Calls line(Edge3, face) for each hatch line of triangles [s, e) of one polygon: the lattice
 // lines n . p = k S clipped to each triangle (those lays(t) accepts, when not joined), ends
-// rounded, joined across the polygon when `joined`. Lines shorter than params.min_length on paper
-// (both axes) are not laid.
+// rounded, joined across the polygon when `joined`. Joined lines shorter than params.min_length
+// on paper (both axes) are not laid: such a line crosses only the tip of a corner of the
+// polygon. A triangle's piece of a line is laid however short: the line goes on into the
+// triangles beyond its sides (a smooth region is hatched triangle by triangle), and a short
+// piece across a corner is what joins the pieces on either side of it; left out, it left a gap
+// of a step in the line every few triangles. Where it is alone, the planner's clean-up drops it
+// (motion/path_plan.h: --min-stroke).
 template <typename Lays, typename Line>
 Status polygon_lines(const Topology& topo, uint32_t s, uint32_t e, bool joined,
                      const HatchParams& p, Lays lays, Line line) {
@@ -145,7 +150,8 @@ Status polygon_lines(const Topology& topo, uint32_t s, uint32_t e, bool joined,
       n = join_pieces(seg, n);
       for (uint32_t i = 0; i < n; ++i) {
         const int32_t dx = seg[i].b.x - seg[i].a.x, dy = seg[i].b.y - seg[i].a.y;
-        if ((dx < 0 ? -dx : dx) < p.min_length && (dy < 0 ? -dy : dy) < p.min_length) continue;
+        if (joined && (dx < 0 ? -dx : dx) < p.min_length && (dy < 0 ? -dy : dy) < p.min_length)
+          continue;
         const Status r = line(seg[i], first);
         if (r != Status::kOk) return r;
       }

@@ -28,20 +28,54 @@ bool coplanar_faces(const Topology& topo, uint32_t t, uint32_t u) {
   return true;
 }
 
+namespace {
+
+// The corner of triangle t that is not u or v.
+Point3 third_corner(const Topology& topo, uint32_t t, uint32_t u, uint32_t v) {
+  const uint32_t* c = topo.triangles[t].v;
+  return topo.vertices[c[0] != u && c[0] != v ? c[0] : c[1] != u && c[1] != v ? c[1] : c[2]];
+}
+
+// The side of the line through a and b that p lies on, on paper: -1, 0 or 1.
+int side_of(const Point3& a, const Point3& b, const Point3& p) {
+  return sign(
+      cross(int64_t{b.x} - a.x, int64_t{b.y} - a.y, int64_t{p.x} - a.x, int64_t{p.y} - a.y));
+}
+
+}  // namespace
+
 bool SegmentPass::neighbour(uint32_t k) const {
   const uint32_t* v = topo.triangles[k].v;
   for (uint32_t t = own_first; t < own_end; ++t) {
     const uint32_t* u = topo.triangles[t].v;
+    uint32_t side[3];
     int shared = 0;
-    for (int i = 0; i < 3; ++i) shared += (v[i] == u[0] || v[i] == u[1] || v[i] == u[2]) ? 1 : 0;
-    if (shared >= 2) return true;
+    for (int i = 0; i < 3; ++i)
+      if (v[i] == u[0] || v[i] == u[1] || v[i] == u[2]) side[shared++] = v[i];
+    if (shared < 2) continue;
+    if (front != nullptr) return true;
+    // Both sides hide (open meshes): a neighbour folded over the side on paper (one of the
+    // two seen from the back) can cover the segment's faces, so it is passed only where it
+    // lies strictly across the side and none of those faces reaches over the side's line.
+    const Point3 a = topo.vertices[side[0]], b = topo.vertices[side[1]];
+    const int across = side_of(a, b, third_corner(topo, k, side[0], side[1]));
+    if (across != 0 && side_of(a, b, third_corner(topo, t, side[0], side[1])) == -across &&
+        own_faces_short_of(a, b, across))
+      return true;
   }
   return false;
 }
 
+bool SegmentPass::own_faces_short_of(const Point3& a, const Point3& b, int across) const {
+  for (uint32_t t = own_first; t < own_end; ++t)
+    for (int i = 0; i < 3; ++i)
+      if (side_of(a, b, topo.vertices[topo.triangles[t].v[i]]) == across) return false;
+  return true;
+}
+
 bool SegmentPass::asks(uint32_t k) const {
   if (k == own[0] || k == own[1] || (front != nullptr && front[k] == 0)) return false;
-  if (front != nullptr && own_end > own_first && neighbour(k)) return false;
+  if (own_end > own_first && neighbour(k)) return false;
   return own_polygon == kNoFace || topo.triangles[k].polygon != own_polygon ||
          !coplanar_faces(topo, own[0], k);
 }

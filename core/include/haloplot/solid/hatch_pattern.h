@@ -14,8 +14,8 @@ struct HatchParams {
   int32_t angle_mdeg = 45000;      // the lines' angle for a face at depth 0
   int32_t mdeg_per_depth = 90000;  // added across the whole depth range (2^20): nearer, steeper
   bool front_only = true;          // hatch only faces facing the viewer (closed solids)
-  // Lines shorter than this on paper along both axes are not laid (solid/hatch_lines.h): a
-  // line across a corner's tip would be a dot. The job sets one step.
+  // Lines across a small flat polygon shorter than this on paper along both axes are not laid
+  // (solid/hatch_lines.h): a line across a corner's tip would be a dot. The job sets one step.
   int32_t min_length = 0;
   // The vertices are the page turned a quarter (geometry/quarter_turn.h; a banded plot of a
   // wide solid): the lines are the page's lattice, found in the turned frame.

@@ -73,7 +73,9 @@ struct SegmentPass {
   // own_end) are not asked either. Two front faces of a closed, consistently oriented solid that
   // share a side lie on opposite sides of it on paper, so such a neighbour covers nothing of the
   // polygon; it could only cover where a line's rounded end overhangs its polygon, and a hidden
-  // sliver there would leave a dot of ink before it.
+  // sliver there would leave a dot of ink before it. Without `front` (both sides hide: open
+  // meshes) a neighbour is passed where it lies strictly across the side it shares on paper and
+  // none of [own_first, own_end) reaches over that side's line: then it covers none of them.
   uint32_t own_first = 0, own_end = 0;
 
   // Cut, test, merge equal neighbours, emit: the whole segment, or its part in the rows.
@@ -81,6 +83,7 @@ struct SegmentPass {
 
   bool asks(uint32_t k) const;
   bool neighbour(uint32_t k) const;
+  bool own_faces_short_of(const Point3& a, const Point3& b, int across) const;
   static constexpr int kBatch = 16;
   int next_cuts(int64_t after, int64_t cuts[kBatch]) const;
   int32_t cover_at(int64_t m) const;
