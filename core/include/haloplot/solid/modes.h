@@ -4,9 +4,10 @@
 //   hidden-removed  pieces with QI 0 (and the visible parts of contour diagonals)
 //   hidden-dashed   those, plus the hidden parts cut into dashes: `dash` steps drawn, `gap`
 //                   steps skipped, measured along the edge from where its hidden run starts
-//                   (half a gap in when it starts at the first corner of an edge longer than
-//                   a dash and a gap; along a contour diagonal, from its middle:
-//                   diagonal_dashes)
+//                   (half a gap in when it starts at the first corner of the edge; along a
+//                   contour diagonal, from its middle: diagonal_dashes). An edge or diagonal
+//                   no longer than a dash and a gap is dashed by where it lies on the page
+//                   instead (page_dashes), so a curve of many short sides is dashed along it.
 // A hidden run is the hidden pieces of an edge that meet end to end: where it is cut inside (a
 // change of QI behind the front faces, a band's border) starts no new pattern, so the dashes
 // depend only on where the run starts on the edge, and a plot in bands (band/solid_band.cpp)
@@ -15,6 +16,8 @@
 #include <stdint.h>
 
 #include "haloplot/draw/draw.h"
+#include "haloplot/geometry/fraction.h"
+#include "haloplot/geometry/quarter_turn.h"
 #include "haloplot/status/status.h"
 
 namespace haloplot {
@@ -29,6 +32,9 @@ enum class PieceKind : uint8_t { kEdge = 0, kContour = 1, kLine = 2 };
 struct StrokeStyle {
   SolidMode mode = SolidMode::kHiddenRemoved;
   int32_t dash = 160, gap = 80;  // steps (2 mm and 1 mm at 80 steps per mm), both >= 1
+  // The edges given are the page turned a quarter (geometry/quarter_turn.h: a band of a wide
+  // drawing): page_dashes reads where they lie on the page itself.
+  bool turned = false;
 };
 
 // Calls emit(span) for each stroke of the piece [t0, t1) of edge e (index `edge`, of `kind`).
@@ -92,6 +98,52 @@ Status diagonal_dashes(const Edge3& e, uint32_t edge, int64_t t0, int64_t t1, in
   return Status::kOk;
 }
 
+// The hidden part [t0, t1) of a short edge or diagonal (no longer than a dash and a gap on
+// paper) as the dashes of the page's own pattern: drawn where c mod (dash + gap) < dash, c the
+// page coordinate along the edge's longer axis. A curve divided into sides shorter than a dash
+// (a dense mesh's contour or crease) would otherwise get a whole dash on every side, drawn solid;
+// this pattern goes on from one side into the next wherever they meet (the same point, the same
+// c), so the curve is dashed along it, each dash 1 to 1.42 times as long as asked (as the curve
+// runs along an axis or at 45 degrees). Where the longer axis changes between two sides the
+// pattern jumps once. It depends on the point alone, not on the edge's number, direction or
+// band, so every band draws the whole-model plot's dashes.
+template <typename Emit>
+Status page_dashes(const Edge3& e, uint32_t edge, int64_t t0, int64_t t1, const StrokeStyle& style,
+                   Emit emit) {
+  // (v - ca) 2^32 for page coordinates below 2^kCoordBits: one int64.
+  static_assert(kCoordBits + 1 + 32 < 63, "a page coordinate's parameter fits in int64");
+  const Edge3 p = style.turned ? unturn_edge(e) : e;
+  const int64_t dx = int64_t{p.b.x} - p.a.x, dy = int64_t{p.b.y} - p.a.y;
+  const bool along_x = (dx < 0 ? -dx : dx) >= (dy < 0 ? -dy : dy);
+  const int64_t ca = along_x ? p.a.x : p.a.y, cb = along_x ? p.b.x : p.b.y;
+  if (ca == cb) return Status::kOk;  // a point on paper
+  const int64_t period = int64_t{style.dash} + style.gap;
+  constexpr int64_t kOneT = int64_t{1} << 32;  // t = 1 in Q0.32
+  const int64_t lo = ca < cb ? ca : cb, hi = ca < cb ? cb : ca;
+  const int64_t k0 = floor_div(lo, period), k1 = floor_div(hi, period);
+  // Windows in the order t runs: c ascending when the edge runs up its axis.
+  for (int64_t i = 0; i <= k1 - k0; ++i) {
+    const int64_t k = ca < cb ? k0 + i : k1 - i;
+    int64_t w0 = k * period, w1 = w0 + style.dash;
+    w0 = w0 < lo ? lo : w0;
+    w1 = w1 > hi ? hi : w1;
+    if (w1 <= w0) continue;
+    // * 2^32, not << 32: w - ca is negative on an edge running down its axis.
+    int64_t a = (w0 - ca) * kOneT / (cb - ca), b = (w1 - ca) * kOneT / (cb - ca);
+    if (b < a) {
+      const int64_t u = a;
+      a = b;
+      b = u;
+    }
+    a = a < t0 ? t0 : a;
+    b = b > t1 ? t1 : b;
+    if (b <= a) continue;
+    const Status s = emit(make_stroke(e, edge, a, b));
+    if (s != Status::kOk) return s;
+  }
+  return Status::kOk;
+}
+
 template <typename Emit>
 Status piece_strokes(const Edge3& e, uint32_t edge, PieceKind kind, int64_t t0, int64_t t1,
                      bool hidden, const StrokeStyle& style, Emit emit) {
@@ -99,19 +151,17 @@ Status piece_strokes(const Edge3& e, uint32_t edge, PieceKind kind, int64_t t0, 
   if (all && kind != PieceKind::kEdge) return Status::kOk;  // not an input edge
   if (!hidden || all) return emit(make_stroke(e, edge, t0, t1));
   if (style.mode != SolidMode::kHiddenDashed || kind == PieceKind::kLine) return Status::kOk;
-  // Dashes in Q0.32 of this edge; the dash rounds up so it is never shorter than asked.
   const int64_t len = paper_length(e);
+  if (len <= int64_t{style.dash} + style.gap) return page_dashes(e, edge, t0, t1, style, emit);
+  // Dashes in Q0.32 of this edge; the dash rounds up so it is never shorter than asked.
   const int64_t dash = (int64_t{style.dash} << 32) / len + 1;
   const int64_t period = dash + (int64_t{style.gap} << 32) / len;
   if (kind == PieceKind::kContour) return diagonal_dashes(e, edge, t0, t1, dash, period, emit);
-  // A run that starts at the first corner of an edge longer than a dash and a gap begins with
-  // half a gap: the hidden edges that leave one corner would otherwise each begin with a whole
-  // dash there, drawn as one stroke twice as long. An edge shorter than that (a finely divided
-  // curve) keeps its dash from the corner, or it would be only a dot; where an edge comes out
-  // from behind a face the run begins with a dash. (Both depend on the edge alone, so a band
-  // decides as the whole plot does.)
-  const bool long_edge = len > int64_t{style.dash} + style.gap;
-  const int64_t lead = t0 == 0 && long_edge ? (period - dash) / 2 : 0;
+  // A run that starts at the first corner of the edge begins with half a gap: the hidden edges
+  // that leave one corner would otherwise each begin with a whole dash there, drawn as one
+  // stroke twice as long; where an edge comes out from behind a face the run begins with a
+  // dash. (Both depend on the edge alone, so a band decides as the whole plot does.)
+  const int64_t lead = t0 == 0 ? (period - dash) / 2 : 0;
   for (int64_t t = t0 + lead; t < t1; t += period) {
     const Status s = emit(make_stroke(e, edge, t, t + dash < t1 ? t + dash : t1));
     if (s != Status::kOk) return s;
