@@ -67,6 +67,12 @@ struct SolidSink {
   Status line_piece(const HiddenPiece& p);
   Status diagonal_piece(const HiddenPiece& p);
   Status store_line(const Edge3& g, int64_t t0, int64_t t1, bool extends);
+  // The style in this band's frame: short edges' dashes are read on the page (solid/modes.h).
+  StrokeStyle frame_style() const {
+    StrokeStyle s = *style;
+    s.turned = a->turned;
+    return s;
+  }
   const Edge3* last_line = nullptr;  // the segment whose geometry was stacked last
   // The stored piece of the last line that a piece of it starting at its end goes on (a
   // band's run emits a diagonal's pieces unmerged), or kNoPiece.
@@ -212,7 +218,7 @@ Status SolidSink::diagonal_piece(const HiddenPiece& p) {
   // Hidden: its dashes hang on the diagonal's ends (solid/modes.h), so this band's are the
   // whole-model plot's wherever the band cuts it.
   return piece_strokes(
-      *p.geometry, p.edge, PieceKind::kContour, t0, p.t1, true, *style,
+      *p.geometry, p.edge, PieceKind::kContour, t0, p.t1, true, frame_style(),
       [this, &p](const Span& d) { return store_line(*p.geometry, d.t0, d.t1, false); });
 }
 
@@ -273,7 +279,8 @@ Status SolidSink::emit(uint32_t local, bool up, const Run& r) {
   if (t1 <= t0) return Status::kOk;  // an empty run before a sliver
   const Edge3& e = a->g.edges[local];
   return piece_strokes(
-      e, local, PieceKind::kEdge, t0, t1, r.hidden, *style, [this, local, &e](const Span& s) {
+      e, local, PieceKind::kEdge, t0, t1, r.hidden, frame_style(),
+      [this, local, &e](const Span& s) {
         if (reinterpret_cast<uint8_t*>(a->pieces + a->n_pieces + 1) > raw_bottom())
           return Status::kSinkFull;
         const int32_t x_sum = a->turned ? frame_x_sum(true, e, s.t0, s.t1) : s.x0 + s.x1;

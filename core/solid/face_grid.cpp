@@ -7,11 +7,6 @@
 namespace haloplot {
 namespace {
 
-Grid choose_grid(const Topology& topo, uint32_t coarsen) {
-  const uint32_t per_axis = static_cast<uint32_t>(isqrt_u64(topo.n_triangles) + 1);
-  return grid_over(topo.vertices, topo.n_vertices, per_axis / (coarsen > 1 ? coarsen : 1));
-}
-
 Edge3 face_box(const Topology& topo, uint32_t t) {
   const uint32_t* v = topo.triangles[t].v;
   const Point3 a = topo.vertices[v[0]], b = topo.vertices[v[1]], c = topo.vertices[v[2]];
@@ -98,6 +93,48 @@ __attribute__((noinline)) uint64_t count_pairs_in_parts(const Topology& topo, co
   return sum;
 }
 
+// The (cell, face) pairs of grid g, in parts where a runner splits them.
+uint64_t pairs_of(const Topology& topo, const Grid& g, const Parts* parts) {
+  const uint32_t n = part_count(parts, topo.n_triangles);
+  if (n <= 1) return count_pairs(topo, g, 0, topo.n_triangles);
+  return count_pairs_in_parts(topo, g, n, parts);
+}
+
+// The grid (about one face per cell) and its pairs. Where the faces' boxes are large beside
+// such cells (tests/support's pierced tori of 1M triangles: 14.3 cells a face, the 1M-triangle
+// torus 6.9) the pairs, not the cells, are the grid's bytes (58 MB there, the plot's peak):
+// the cells then grow until a face lies in at most kFaceGridPairsPerFace of them on average.
+// A box of side L meets about (1 + L / s)^2 cells of side s, so the next side is guessed from
+// the pairs counted (root p - 1 to root T - 1) and counted again; a grid of one cell holds
+// each face once, so the loop ends. Scenes within the bound keep the grid they always had.
+constexpr uint32_t kPairsPerFace = kFaceGridPairsPerFace;
+struct Chosen {
+  Grid g;
+  uint64_t pairs;
+};
+uint32_t first_per_axis(const Topology& topo, uint32_t coarsen) {
+  const uint32_t per_axis = static_cast<uint32_t>(isqrt_u64(topo.n_triangles) + 1);
+  return per_axis / (coarsen > 1 ? coarsen : 1);
+}
+bool keeps(const Topology& topo, const Grid& g, uint64_t pairs) {
+  return pairs <= uint64_t{kPairsPerFace} * topo.n_triangles || g.cells() == 1;
+}
+Chosen choose_grid(const Topology& topo, uint32_t coarsen, const Parts* parts) {
+  uint32_t per_axis = first_per_axis(topo, coarsen);
+  for (;;) {
+    const Grid g = grid_over(topo.vertices, topo.n_vertices, per_axis);
+    const uint64_t pairs = pairs_of(topo, g, parts);
+    if (keeps(topo, g, pairs)) return Chosen{g, pairs};
+    // 256 root(pairs / n), with pairs below 2^47 (more than that gives one cell anyway).
+    const uint64_t p = pairs < (uint64_t{1} << 47) ? pairs : (uint64_t{1} << 47);
+    const uint64_t root_p = isqrt_u64((p << 16) / topo.n_triangles),
+                   root_t = isqrt_u64(uint64_t{kPairsPerFace} << 16);
+    uint64_t next = uint64_t{per_axis} * (root_t - 256) / (root_p - 256);
+    if (next >= per_axis - per_axis / 16) next = per_axis - per_axis / 16 - 1;  // at least a step
+    per_axis = next < 1 ? 1 : uint32_t(next);
+  }
+}
+
 // first[c] ends as cell c's end, as one part leaves it.
 __attribute__((noinline)) void fill_in_parts(const Topology& topo, const Grid& g, uint32_t n,
                                              const Parts* parts, uint32_t* first, uint32_t* scratch,
@@ -133,34 +170,49 @@ Status finish(const Grid& g, uint32_t* first, uint32_t* faces, uint64_t pairs, F
   return Status::kOk;
 }
 
-// One part: the cells' counts, taken where the index goes, give the number of pairs, so the
-// faces' boxes are walked twice (count, fill), not three times (count_pairs first).
-Status build_in_one(const Topology& topo, const Grid& g, void* buffer, size_t bytes,
-                    FaceGrid* out) {
-  Carver carve(buffer, bytes);
-  uint32_t* first = carve.take<uint32_t>(size_t{g.cells()} + 1);
-  if (carve.short_) return Status::kWorkspaceTooSmall;
+// One part: each cell's count in first[c + 1], then its start in first[c], where the faces
+// are dropped.
+void count_in_one(const Topology& topo, const Grid& g, uint32_t* first) {
   for (uint32_t c = 0; c <= g.cells(); ++c) first[c] = 0;
   count_cells(topo, g, 0, topo.n_triangles, first + 1);
-  uint64_t pairs = 0;  // a cell counts fewer than 2^32 faces; their sum may not
-  for (uint32_t c = 0; c < g.cells(); ++c) pairs += first[c + 1];
-  if (pairs > 0xffffffffu) return Status::kCellPairOverflow;
-  uint32_t* faces = carve.take<uint32_t>(static_cast<size_t>(pairs));
-  if (carve.short_) return Status::kWorkspaceTooSmall;
+}
+void fill_in_one(const Topology& topo, const Grid& g, uint32_t* first, uint32_t* faces) {
   for (uint32_t c = 0; c < g.cells(); ++c) first[c + 1] += first[c];
   fill_cells(topo, g, 0, topo.n_triangles, first, faces);
-  return finish(g, first, faces, pairs, out);
+}
+
+// One part on the first grid (about one face per cell), most scenes' own: its cells' counts,
+// taken where the index goes, give its pairs, so the faces' boxes are walked twice (count,
+// fill), not three times (choose_grid's count first). False, nothing built, where that grid
+// grows (or its index does not fit: then it is not the grid the bytes were sized for).
+bool build_on_first_grid(const Topology& topo, uint32_t coarsen, void* buffer, size_t bytes,
+                         FaceGrid* out, Status* status) {
+  const Grid g = grid_over(topo.vertices, topo.n_vertices, first_per_axis(topo, coarsen));
+  Carver carve(buffer, bytes);
+  uint32_t* first = carve.take<uint32_t>(size_t{g.cells()} + 1);
+  if (carve.short_) return false;
+  count_in_one(topo, g, first);
+  uint64_t pairs = 0;  // a cell counts fewer than 2^32 faces; their sum may not
+  for (uint32_t c = 0; c < g.cells(); ++c) pairs += first[c + 1];
+  if (!keeps(topo, g, pairs)) return false;
+  *status = Status::kCellPairOverflow;
+  if (pairs > 0xffffffffu) return true;
+  uint32_t* faces = carve.take<uint32_t>(static_cast<size_t>(pairs));
+  *status = Status::kWorkspaceTooSmall;
+  if (carve.short_) return true;
+  fill_in_one(topo, g, first, faces);
+  *status = finish(g, first, faces, pairs, out);
+  return true;
 }
 
 }  // namespace
 
 size_t face_grid_bytes(const Topology& topo, uint32_t coarsen) {
-  const Grid g = choose_grid(topo, coarsen);
+  const Chosen ch = choose_grid(topo, coarsen, nullptr);
   ByteCounter c;
-  c.take<uint32_t>(size_t{g.cells()} + 1);
+  c.take<uint32_t>(size_t{ch.g.cells()} + 1);
   // More pairs than 32 bits count is refused by the build; size it as if none.
-  const uint64_t pairs = count_pairs(topo, g, 0, topo.n_triangles);
-  c.take<uint32_t>(pairs > 0xffffffffu ? 0 : static_cast<size_t>(pairs));
+  c.take<uint32_t>(ch.pairs > 0xffffffffu ? 0 : static_cast<size_t>(ch.pairs));
   return c.total + 8;
 }
 
@@ -172,26 +224,35 @@ size_t face_grid_bytes(const FaceGrid& fg) {
 }
 
 size_t face_grid_part_bytes(const Topology& topo, uint32_t coarsen) {
-  return size_t{choose_grid(topo, coarsen).cells()} * 4;
+  return size_t{choose_grid(topo, coarsen, nullptr).g.cells()} * 4;
 }
 
+// Beyond one part on the first grid, the grid's pairs are counted as it is chosen (in parts
+// where a runner splits them), so its index and faces are carved first; then one part or
+// several fill them.
 Status build_face_grid(const Topology& topo, void* buffer, size_t bytes, FaceGrid* out,
                        uint32_t coarsen, const Parts* parts) {
-  const Grid g = choose_grid(topo, coarsen);
-  uint32_t n = part_count(parts, topo.n_triangles);
-  if (n <= 1) return build_in_one(topo, g, buffer, bytes, out);
-  const uint64_t pairs = count_pairs_in_parts(topo, g, n, parts);
-  if (pairs > 0xffffffffu) return Status::kCellPairOverflow;
+  Status s = Status::kOk;
+  const uint32_t wanted = part_count(parts, topo.n_triangles);
+  if (wanted <= 1 && build_on_first_grid(topo, coarsen, buffer, bytes, out, &s)) return s;
+  const Chosen ch = choose_grid(topo, coarsen, parts);
+  const Grid& g = ch.g;
+  if (ch.pairs > 0xffffffffu) return Status::kCellPairOverflow;
   Carver carve(buffer, bytes);
   uint32_t* first = carve.take<uint32_t>(size_t{g.cells()} + 1);
-  uint32_t* faces = carve.take<uint32_t>(static_cast<size_t>(pairs));
+  uint32_t* faces = carve.take<uint32_t>(static_cast<size_t>(ch.pairs));
   if (carve.short_) return Status::kWorkspaceTooSmall;
   // As many parts as the bytes left hold the cursors of (one needs none).
+  uint32_t n = wanted;
   const size_t part_bytes = size_t{g.cells()} * 4;
   if (carve.left / part_bytes + 1 < n) n = uint32_t(carve.left / part_bytes + 1);
-  if (n <= 1) return build_in_one(topo, g, buffer, bytes, out);
-  fill_in_parts(topo, g, n, parts, first, reinterpret_cast<uint32_t*>(carve.next), faces);
-  return finish(g, first, faces, pairs, out);
+  if (n <= 1) {
+    count_in_one(topo, g, first);
+    fill_in_one(topo, g, first, faces);
+  } else {
+    fill_in_parts(topo, g, n, parts, first, reinterpret_cast<uint32_t*>(carve.next), faces);
+  }
+  return finish(g, first, faces, ch.pairs, out);
 }
 
 }  // namespace haloplot

@@ -188,7 +188,7 @@ int cmd_plot_solid(const Options& o) {
   say_repair_note(scene);
   if (!run.fallback_reason.empty() && so.method == HiddenMethod::kAuto)
     std::cerr << "haloplot: " << o.positional[0] << ": " << run.fallback_reason
-              << " by the topology-free method, which asks every piece\n";
+              << " (--method fallback: every piece of every edge tested against the faces)\n";
   // Decided in the scene's units (dashes and hatch spacing converted), drawn in steps.
   const int32_t units = scene.substep_bits;
   ModeDrawing d = make_mode_drawing(run, mode_in_units(so.spec, units));

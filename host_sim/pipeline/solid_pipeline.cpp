@@ -6,6 +6,7 @@
 #include <ctime>
 #include <system_error>
 #include <thread>
+#include <unordered_map>
 #include <utility>
 
 #include "pipeline/host_memory.h"
@@ -94,6 +95,43 @@ Status collect_outline(void* context, const OutlinePiece& p) {
   return Status::kOk;
 }
 
+// The intersection lines in the order of their two faces, and numbered so. The core finds them
+// cell by cell of its face grid, whose cells change with the faces' sizes (solid/face_grid.h)
+// though the lines do not; two faces cross in one segment at most, so the pair names a line
+// whatever grid found it. The lines keep the numbers they had among them, and each its
+// pieces in their order.
+void order_lines_by_faces(SolidRun* out, std::vector<std::pair<uint32_t, Edge3>>* others) {
+  const size_t n = out->intersections.size();
+  std::vector<size_t> order(n);
+  for (size_t k = 0; k < n; ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(), [out](size_t a, size_t b) {
+    return out->intersection_faces[a] < out->intersection_faces[b];
+  });
+  std::vector<uint32_t> numbers;
+  for (const SolidPiece& p : out->intersections) numbers.push_back(p.edge);
+  std::sort(numbers.begin(), numbers.end());
+  numbers.erase(std::unique(numbers.begin(), numbers.end()), numbers.end());
+  std::unordered_map<uint32_t, uint32_t> renumbered;
+  std::vector<SolidPiece> pieces;
+  std::vector<std::array<uint32_t, 2>> faces;
+  pieces.reserve(n);
+  faces.reserve(n);
+  for (size_t k : order) {
+    const uint32_t found = out->intersections[k].edge;
+    auto it = renumbered.find(found);
+    if (it == renumbered.end()) it = renumbered.emplace(found, numbers[renumbered.size()]).first;
+    pieces.push_back(out->intersections[k]);
+    pieces.back().edge = it->second;
+    faces.push_back(out->intersection_faces[k]);
+  }
+  out->intersections.swap(pieces);
+  out->intersection_faces.swap(faces);
+  for (std::pair<uint32_t, Edge3>& o : *others) {
+    const auto it = renumbered.find(o.first);
+    if (it != renumbered.end()) o.first = it->second;
+  }
+}
+
 std::string reason_text(const HiddenReport& r) {
   switch (r.reason) {
     case FallbackReason::kNone:
@@ -103,9 +141,10 @@ std::string reason_text(const HiddenReport& r) {
     case FallbackReason::kBand:
       return "a band of a banded plot (the topology-free method is local to the band)";
     case FallbackReason::kConflicts:
-      return "parts that pass through each other where faces touch or overlap exactly (" +
+      return "parts meet where faces touch or overlap exactly, and there the quick method "
+             "(walking visibility from vertex to vertex) got two answers at " +
              std::to_string(r.qi.conflicts) +
-             " vertices the QI reached two ways), drawn as exactly";
+             " vertices; the drawing is as exact, made the slower way";
   }
   return "";
 }
@@ -179,6 +218,7 @@ Status run_hidden_lines(const SolidScene& scene, HiddenMethod method, FallbackPa
   const Status s = run_sized(restart, memory.memory(), &needs);
   prefault.join();
   memory.words = ZeroedWords();  // the stage's buffer back before the edges take theirs
+  order_lines_by_faces(out, &c.others);
   out->check = r.check;
   out->classes = r.classes;
   out->cut = r.cut;

@@ -28,6 +28,10 @@ torus_obj 1.5 0.6 12 6 > torus.obj
 torus_sphere_obj > torus_sphere.obj
 # A torus of 24 x 12 facets: 15 and 30 degrees apart, every side smooth at a crease angle of 40.
 torus_obj 1.5 0.6 24 12 > smooth_torus.obj
+# One of 200 x 100 facets: its contour diagonals are shorter than a dash and a gap, dashed by
+# where they lie on the page (solid/modes.h, page_dashes), in the turned frame too (read in the
+# band's own frame instead, 41 strokes of the turned plot differ).
+torus_obj 1.5 0.6 200 100 > dense_torus.obj
 
 # NAME SCENE EXTRA-KEYS ARENA...: the whole-model trace, then one banded trace per arena;
 # hidden-dashed, or DRAWING=MODE.
@@ -91,6 +95,8 @@ for drawing in hidden-removed hidden-dashed; do
   DRAWING=$drawing run "smooth_torus_$drawing" smooth_torus.obj 'crease 40\n' 8192 16384 24576
   DRAWING=$drawing run "smooth_torus_rolled_$drawing" smooth_torus.obj 'roll 90\ncrease 40\n' 8192 16384
 done
+run dense_torus dense_torus.obj 'crease 40\n' 65536 131072
+run dense_torus_rolled dense_torus.obj 'roll 90\ncrease 40\n' 65536 131072
 DRAWING=hidden-removed run torus_sphere_crease torus_sphere.obj 'crease 40\n' 8192 12288
 run torus_sphere_crease_dashed torus_sphere.obj 'crease 40\n' 8192 16384 32768
 if [ "$turned_runs" -eq 0 ] || [ "$row_runs" -eq 0 ]; then

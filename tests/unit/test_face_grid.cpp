@@ -2,7 +2,9 @@
 // exactly the cells whose square [ox + i cell, ox + (i + 1) cell) x [oy + j cell, ...) meets
 // the face's bounding box, found by testing every cell of the grid against every box (no
 // column or row arithmetic); the count the sizing query makes is the number of those
-// (cell, face) pairs, and the grid builds in exactly the bytes the query asks for.
+// (cell, face) pairs, and the grid builds in exactly the bytes the query asks for. However
+// large the faces, those pairs are at most kFaceGridPairsPerFace a face, and a scene of small
+// faces keeps the grid of about one face per cell.
 #include <algorithm>
 #include <random>
 #include <vector>
@@ -34,7 +36,8 @@ std::vector<std::vector<uint32_t>> reference_cells(const std::vector<Point3>& v,
   return cells;
 }
 
-void check_scene(const std::vector<Point3>& v, const std::vector<Triangle>& t) {
+// The grid's cells and pairs (its lists lie in a buffer freed on return).
+FaceGrid check_scene(const std::vector<Point3>& v, const std::vector<Triangle>& t) {
   Topology topo;
   topo.vertices = v.data();
   topo.n_vertices = uint32_t(v.size());
@@ -48,6 +51,7 @@ void check_scene(const std::vector<Point3>& v, const std::vector<Triangle>& t) {
   size_t pairs = 0;
   for (const std::vector<uint32_t>& c : want) pairs += c.size();
   CHECK_EQ(size_t{fg.pairs}, pairs);
+  CHECK(pairs <= size_t{kFaceGridPairsPerFace} * t.size());
   // The query asks for the index and the pairs, no more: a byte short of that is refused.
   CHECK(bytes <= (size_t{fg.grid.cells()} + 1) * 4 + pairs * 4 + 16);
   CHECK(build_face_grid(topo, buffer.data(), (size_t{fg.grid.cells()} + 1) * 4 + pairs * 4 - 1,
@@ -57,6 +61,58 @@ void check_scene(const std::vector<Point3>& v, const std::vector<Triangle>& t) {
     const std::vector<uint32_t> got(fg.faces + fg.first[c], fg.faces + fg.first[c + 1]);
     CHECK(got == want[c]);
   }
+  return fg;
+}
+
+// Pairs of the brute-force reference in the grid of about one face per cell (per axis
+// isqrt(n) + 1 along the longer side), the grid every scene had before the bound.
+size_t pairs_in_fine_grid(const std::vector<Point3>& v, const std::vector<Triangle>& t) {
+  uint32_t per_axis = 0;
+  while (uint64_t{per_axis + 1} * (per_axis + 1) <= t.size()) ++per_axis;
+  const Grid g = grid_over(v.data(), uint32_t(v.size()), per_axis + 1);
+  size_t pairs = 0;
+  for (const std::vector<uint32_t>& c : reference_cells(v, t, g)) pairs += c.size();
+  return pairs;
+}
+
+// Long slivers fanned across a square, as a model's thin faces seen edge-on do: in cells of
+// about one face each every face meets dozens of them, so the cells grow (and the grid stays
+// exact); a fine mesh of small faces, within the bound, keeps its cells of one face each.
+void large_faces() {
+  std::vector<Point3> v;
+  std::vector<Triangle> t;
+  const int32_t side = 1 << 16;
+  for (uint32_t k = 0; k < 400; ++k) {
+    const int32_t x = int32_t(k * 163 % 397) * (side / 397);
+    const int32_t y = int32_t(k * 89 % 389) * (side / 389);
+    const uint32_t a = uint32_t(v.size());
+    v.push_back(Point3{x, 0, 0});
+    v.push_back(Point3{x + 37, 0, 0});
+    v.push_back(Point3{side - x, side, 0});
+    v.push_back(Point3{0, y, 0});
+    v.push_back(Point3{side, side - y, 0});
+    v.push_back(Point3{0, y + 41, 0});
+    t.push_back(Triangle{{a, a + 1, a + 2}, 2 * k});
+    t.push_back(Triangle{{a + 3, a + 4, a + 5}, 2 * k + 1});
+  }
+  CHECK(pairs_in_fine_grid(v, t) > size_t{4 * kFaceGridPairsPerFace} * t.size());
+  check_scene(v, t);
+
+  std::vector<Point3> fine;
+  std::vector<Triangle> small;
+  const uint32_t m = 30;  // (m - 1)^2 squares, two faces each
+  for (uint32_t j = 0; j < m; ++j)
+    for (uint32_t i = 0; i < m; ++i) fine.push_back(Point3{int32_t(i * 100), int32_t(j * 100), 0});
+  for (uint32_t j = 0; j + 1 < m; ++j)
+    for (uint32_t i = 0; i + 1 < m; ++i) {
+      const uint32_t a = j * m + i;
+      small.push_back(Triangle{{a, a + 1, a + m + 1}, uint32_t(small.size())});
+      small.push_back(Triangle{{a, a + m + 1, a + m}, uint32_t(small.size())});
+    }
+  uint32_t per_axis = 0;
+  while (uint64_t{per_axis + 1} * (per_axis + 1) <= small.size()) ++per_axis;
+  const FaceGrid fg = check_scene(fine, small);
+  CHECK_EQ(fg.grid.cell, grid_over(fine.data(), uint32_t(fine.size()), per_axis + 1).cell);
 }
 
 void random_scenes() {
@@ -101,6 +157,7 @@ void by_hand() {
 
 int main() {
   random_scenes();
+  large_faces();
   by_hand();
   return check::finish("face_grid");
 }

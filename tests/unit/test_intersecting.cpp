@@ -296,6 +296,16 @@ Result compare(const Model& m, const View& v, HiddenMethod method = HiddenMethod
   SolidRun run;
   CHECK(run_hidden_lines(scene, method, FallbackParams{}, &run, false, lines != nullptr) ==
         Status::kOk);
+  // The lines come in the order of their two faces, numbered so, whatever grid's cells found
+  // them (the face grid's cells change with the faces' sizes; the lines do not).
+  size_t out_of_order = 0;
+  for (size_t i = 1; i < run.intersections.size(); ++i) {
+    const auto &f = run.intersection_faces[i - 1], &g = run.intersection_faces[i];
+    const uint32_t e = run.intersections[i - 1].edge, d = run.intersections[i].edge;
+    if (!(f < g ? e < d : f == g && e == d)) ++out_of_order;
+  }
+  CHECK_MSG(out_of_order == 0, m.name + ": " + std::to_string(out_of_order) +
+                                   " intersection pieces out of their faces' order");
   r.used_qi = run.used_qi;
   r.method = run.used_qi ? "QI" : "fallback (" + run.fallback_reason + ")";
   r.pierces = run.used_qi ? run.qi.pierces : run.fallback.pierces;

@@ -1,6 +1,8 @@
-// Faces in a uniform grid (about one face per cell, each face in every cell its bounding box
-// meets), so "which faces could cover this point" asks one cell instead of every face. The
-// fallback's midpoint tests and the QI method's ray casts both use it.
+// Faces in a uniform grid (each face in every cell its bounding box meets), so "which faces
+// could cover this point" asks one cell instead of every face. The fallback's midpoint tests
+// and the QI method's ray casts both use it. Cells are about one face each, larger where the
+// faces' boxes would then meet more than kFaceGridPairsPerFace cells on average: the (cell,
+// face) pairs, four bytes each, are at most that many a face, whatever the faces' sizes.
 #pragma once
 #include <stddef.h>
 #include <stdint.h>
@@ -11,6 +13,8 @@
 #include "haloplot/status/status.h"
 
 namespace haloplot {
+
+inline constexpr uint32_t kFaceGridPairsPerFace = 7;
 
 struct FaceGrid {
   Grid grid;

@@ -4,9 +4,10 @@
 //   hidden-removed  pieces with QI 0 (and the visible parts of contour diagonals)
 //   hidden-dashed   those, plus the hidden parts cut into dashes: `dash` steps drawn, `gap`
 //                   steps skipped, measured along the edge from where its hidden run starts
-//                   (half a gap in when it starts at the first corner of an edge longer than
-//                   a dash and a gap; along a contour diagonal, from its middle:
-//                   diagonal_dashes)
+//                   (half a gap in when it starts at the first corner of the edge; along a
+//                   contour diagonal, from its middle: diagonal_dashes). An edge or diagonal
+//                   no longer than a dash and a gap is dashed by where it lies on the page
+//                   instead (page_dashes), so a curve of many short sides is dashed along it.
 // A hidden run is the hidden pieces of an edge that meet end to end: where it is cut inside (a
 // change of QI behind the front faces, a band's border) starts no new pattern, so the dashes
 // depend only on where the run starts on the edge, and a plot in bands (band/solid_band.cpp)
@@ -29,6 +30,9 @@ enum class PieceKind : uint8_t { kEdge = 0, kContour = 1, kLine = 2 };
 struct StrokeStyle {
   SolidMode mode = SolidMode::kHiddenRemoved;
   int32_t dash = 160, gap = 80;  // steps (2 mm and 1 mm at 80 steps per mm), both >= 1
+  // The edges given are the page turned a quarter (geometry/quarter_turn.h: a band of a wide
+  // drawing): page_dashes reads where they lie on the page itself.
+  bool turned = false;
 };
 
 // Calls emit(span) for each stroke of the piece [t0, t1) of edge e (index `edge`, of `kind`).
@@ -92,6 +96,34 @@ Status diagonal_dashes(const Edge3& e, uint32_t edge, int64_t t0, int64_t t1, in
   return Status::kOk;
 }
 
+// The hidden part [t0, t1) of a short edge or diagonal (no longer than a dash and a gap on
+// paper) as the dashes of the page's own pattern: drawn where c mod (dash + gap) < dash, c the
+// page coordinate along the edge's longer axis. A curve divided into sides shorter than a dash
+// (a dense mesh's contour or crease) would otherwise get a whole dash on every side, drawn solid;
+// this pattern goes on from one side into the next wherever they meet (the same point, the same
+// c), so the curve is dashed along it, each dash 1 to 1.42 times as long as asked (as the curve
+// runs along an axis or at 45 degrees). Where the longer axis changes between two sides the
+// pattern jumps once. It depends on the point alone, not on the edge's number, direction or
+// band, so every band draws the whole-model plot's dashes.
+// The dashes page_dashes() draws: at most kPageDashes ranges of t in [t0, t1), ascending (the
+// edge is no longer than one period on its longer axis, so it meets at most three windows).
+// Out of line: every sink that strokes pieces shares one copy on the chip.
+constexpr int kPageDashes = 3;
+int page_dash_ranges(const Edge3& e, int64_t t0, int64_t t1, const StrokeStyle& style,
+                     int64_t ranges[kPageDashes][2]);
+
+template <typename Emit>
+Status page_dashes(const Edge3& e, uint32_t edge, int64_t t0, int64_t t1, const StrokeStyle& style,
+                   Emit emit) {
+  int64_t r[kPageDashes][2];
+  const int n = page_dash_ranges(e, t0, t1, style, r);
+  for (int i = 0; i < n; ++i) {
+    const Status s = emit(make_stroke(e, edge, r[i][0], r[i][1]));
+    if (s != Status::kOk) return s;
+  }
+  return Status::kOk;
+}
+
 template <typename Emit>
 Status piece_strokes(const Edge3& e, uint32_t edge, PieceKind kind, int64_t t0, int64_t t1,
                      bool hidden, const StrokeStyle& style, Emit emit) {
@@ -99,19 +131,17 @@ Status piece_strokes(const Edge3& e, uint32_t edge, PieceKind kind, int64_t t0, 
   if (all && kind != PieceKind::kEdge) return Status::kOk;  // not an input edge
   if (!hidden || all) return emit(make_stroke(e, edge, t0, t1));
   if (style.mode != SolidMode::kHiddenDashed || kind == PieceKind::kLine) return Status::kOk;
-  // Dashes in Q0.32 of this edge; the dash rounds up so it is never shorter than asked.
   const int64_t len = paper_length(e);
+  if (len <= int64_t{style.dash} + style.gap) return page_dashes(e, edge, t0, t1, style, emit);
+  // Dashes in Q0.32 of this edge; the dash rounds up so it is never shorter than asked.
   const int64_t dash = (int64_t{style.dash} << 32) / len + 1;
   const int64_t period = dash + (int64_t{style.gap} << 32) / len;
   if (kind == PieceKind::kContour) return diagonal_dashes(e, edge, t0, t1, dash, period, emit);
-  // A run that starts at the first corner of an edge longer than a dash and a gap begins with
-  // half a gap: the hidden edges that leave one corner would otherwise each begin with a whole
-  // dash there, drawn as one stroke twice as long. An edge shorter than that (a finely divided
-  // curve) keeps its dash from the corner, or it would be only a dot; where an edge comes out
-  // from behind a face the run begins with a dash. (Both depend on the edge alone, so a band
-  // decides as the whole plot does.)
-  const bool long_edge = len > int64_t{style.dash} + style.gap;
-  const int64_t lead = t0 == 0 && long_edge ? (period - dash) / 2 : 0;
+  // A run that starts at the first corner of the edge begins with half a gap: the hidden edges
+  // that leave one corner would otherwise each begin with a whole dash there, drawn as one
+  // stroke twice as long; where an edge comes out from behind a face the run begins with a
+  // dash. (Both depend on the edge alone, so a band decides as the whole plot does.)
+  const int64_t lead = t0 == 0 ? (period - dash) / 2 : 0;
   for (int64_t t = t0 + lead; t < t1; t += period) {
     const Status s = emit(make_stroke(e, edge, t, t + dash < t1 ? t + dash : t1));
     if (s != Status::kOk) return s;
