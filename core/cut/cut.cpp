@@ -666,12 +666,16 @@ struct CellParts {
   // their shared cache lines to and fro at every record.
   static void run_one(void* arg, uint32_t j) {
     CellParts* self = static_cast<CellParts*>(arg);
+    if (!kHost) {  // a controller's, with no cores to share lines between: in place
+      self->test(j, self->rec[j], self->st[j]);
+      return;
+    }
     Recorder rec = self->rec[j];
     CutStats st;
     self->test(j, rec, st);
     self->rec[j] = rec;
     self->st[j] = st;
-    if (!kHost || self->pieces == nullptr || rec.overflow) return;
+    if (self->pieces == nullptr || rec.overflow) return;
     uint32_t in_bucket[kMaxParts] = {};
     const uint32_t shift = self->pieces->shift;
     for (uint32_t i = 0; i < rec.stored; ++i) ++in_bucket[rec.out[i].behind >> shift];
