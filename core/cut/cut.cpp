@@ -600,10 +600,11 @@ void test_cells(const CutPlan& plan, const Edge3* edges, const uint32_t* cell_st
   }
 }
 
-// The cell loop's parts for each thread on a host: the runner hands them out as threads come
-// free, so a thread that starts late, or that another program slows, leaves parts to the
-// others rather than keeping them all waiting for its one share.
-constexpr uint32_t kCellPartsPerThread = kHost ? 4 : 1;
+// The cell loop's parts for each thread. More than one a thread lets the runner hand them out
+// as threads come free (a thread that starts late leaves parts to the others), but it showed
+// no gain in wall time on the paper's scene, and at 4 a thread the 1M-triangle torus's plot
+// peaked 10 MB higher on 2 threads (179 against 169 MB), so one a thread it is.
+constexpr uint32_t kCellPartsPerThread = 1;
 
 void add_stats(const CutStats& a, CutStats* sum) {
   sum->pairs_tested += a.pairs_tested;
