@@ -20,9 +20,8 @@ INK = "{http://www.inkscape.org/namespaces/inkscape}"
 CRUMB_MM = 0.2
 
 
-def svg_layers(path, per_mm):
-    """Each layer's strokes as lists of points in whole steps (the files round mm to 1/1000,
-    finer than a step, so rounding back recovers the step lattice)."""
+def svg_layer_paths(path):
+    """Each layer's label and strokes, as lists of points in mm as the file writes them."""
     root = ET.parse(path).getroot()
     layers = []
     for g in root.iter(SVG + "g"):
@@ -33,11 +32,16 @@ def svg_layers(path, per_mm):
             for sub in re.split(r"(?=M)", p.get("d") or ""):
                 nums = [float(v) for v in re.findall(r"-?\d+(?:\.\d+)?", sub)]
                 if len(nums) >= 2:
-                    pts = [(round(nums[i] * per_mm), round(nums[i + 1] * per_mm))
-                           for i in range(0, len(nums) - 1, 2)]
-                    strokes.append(pts)
-        layers.append(strokes)
+                    strokes.append([(nums[i], nums[i + 1]) for i in range(0, len(nums) - 1, 2)])
+        layers.append((g.get(INK + "label") or "", strokes))
     return layers
+
+
+def svg_layers(path, per_mm):
+    """Each layer's strokes as lists of points in whole steps (the files round mm to 1/1000,
+    finer than a step, so rounding back recovers the step lattice)."""
+    return [[[(round(x * per_mm), round(y * per_mm)) for x, y in s] for s in strokes]
+            for _, strokes in svg_layer_paths(path)]
 
 
 def gcode_strokes(path, per_mm):
