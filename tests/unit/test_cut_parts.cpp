@@ -161,7 +161,8 @@ int main() {
     parts.min_work = 0;
     CutParams p;
     p.parts = &parts;
-    CHECK_MSG(same(cut(lattice, p, 200000), lattice_one), "lattice, " + std::to_string(n) + " parts");
+    CHECK_MSG(same(cut(lattice, p, 200000), lattice_one),
+              "lattice, " + std::to_string(n) + " parts");
   }
   // More edges than average_length samples, so the parts' samples start mid-stride; and
   // fewer edges than parts.
