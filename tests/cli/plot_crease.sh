@@ -11,12 +11,9 @@
 set -u
 tool="$1"
 here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+# shellcheck source=../support/checks.sh
+. "$(cd "$(dirname "$0")" && pwd)/../support/checks.sh"
 cd "$work" || exit 1
-pass=0 fail=0
-ok() { pass=$((pass + 1)); echo "ok: $1"; }
-bad() { fail=$((fail + 1)); echo "FAILED: $1"; }
 # shellcheck source=../support/model_files.sh
 source "$here/../support/model_files.sh"
 torus_obj 1.5 0.6 24 12 > torus.obj

@@ -15,12 +15,9 @@
 # Usage: plot_weld_hint.sh HALOPLOT
 set -u
 tool="$1"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+# shellcheck source=../support/checks.sh
+. "$(cd "$(dirname "$0")" && pwd)/../support/checks.sh"
 cd "$work" || exit 1
-pass=0 fail=0
-ok() { pass=$((pass + 1)); echo "ok: $1"; }
-bad() { fail=$((fail + 1)); echo "FAILED: $1"; }
 
 # The split cube: faces as (axis, side); face k's four corners shifted by k * D in x.
 awk -v D=0.00013 'BEGIN {

@@ -157,6 +157,17 @@ std::vector<std::pair<uint32_t, bool>> faces_on(const ObjModel& m, const double 
   return out;
 }
 
+// Orients `m` and checks that its one unorientable shell's problem side is on `faces` faces,
+// as the model has them: those faces, with whether each runs the side from `from` to `to`.
+auto located_problem(ObjModel* m, uint32_t faces, RepairReport* r) {
+  orient_shells(m, r);
+  CHECK_EQ(r->unorientable_shells, 1u);
+  CHECK_EQ(r->problem.faces_on_side, faces);
+  const auto on = faces_on(*m, r->problem.from, r->problem.to);
+  CHECK_EQ(on.size(), size_t(faces));
+  return on;
+}
+
 void check_problems() {
   // A tetrahedron and a fin on its side 0 -> 1 (scale 1, centre 0: file = world).
   ObjModel fin;
@@ -165,11 +176,7 @@ void check_problems() {
        std::vector<std::vector<uint32_t>>{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 4, 1}})
     add_face(&fin, c);
   RepairReport r;
-  orient_shells(&fin, &r);
-  CHECK_EQ(r.unorientable_shells, 1u);
-  CHECK_EQ(r.problem.faces_on_side, 3u);
-  const auto on = faces_on(fin, r.problem.from, r.problem.to);
-  CHECK_EQ(on.size(), size_t(3));
+  const auto on = located_problem(&fin, 3, &r);
   bool line_on_side = false;
   for (const auto& [f, up] : on) line_on_side = line_on_side || fin.face_lines[f] == r.problem.line;
   CHECK(line_on_side);
@@ -190,11 +197,7 @@ void check_problems() {
   for (uint32_t i = 0; i + 1 < n; ++i) add_face(&strip, {2 * i, 2 * i + 1, 2 * i + 3, 2 * i + 2});
   add_face(&strip, {2 * n - 2, 2 * n - 1, 0, 1});
   RepairReport s;
-  orient_shells(&strip, &s);
-  CHECK_EQ(s.unorientable_shells, 1u);
-  CHECK_EQ(s.problem.faces_on_side, 2u);
-  const auto twist = faces_on(strip, s.problem.from, s.problem.to);
-  CHECK_EQ(twist.size(), size_t(2));
+  const auto twist = located_problem(&strip, 2, &s);
   CHECK(twist.size() == 2 && twist[0].second == twist[1].second);
   CHECK(twist.size() == 2 && (strip.face_lines[twist[0].first] == s.problem.line ||
                               strip.face_lines[twist[1].first] == s.problem.line));
